@@ -9,14 +9,26 @@
  *   lower-index vertex is corner i+1) at t = 1 − x. Hable's line is not symmetric, so this flag
  *   is what makes two triangles agree on a shared edge.
  *
- *   Internally corner 0 is the origin A, u = w1 runs along the BOTTOM edge (edge 0, A→B) and
- *   v = w2 along the LEFT edge (edge 2, read from A to C); edge 1 (B→C) is the RIGHT edge, the
- *   hypotenuse u + v = 1.
- *
+ *   Internally the pattern is built in a FRAME: an origin corner A, u along the BOTTOM edge
+ *   A→B, v along the LEFT edge A→C, and the RIGHT edge B→C is the hypotenuse u + v = 1. The
+ *   frame is chosen from the reverse flags alone (so both triangles of an edge still agree):
+ *   the left edge must be one whose line STARTS at C, because a line's new points are born
+ *   next to its start, and a row born at C collapses onto the left edge while a row born at A
+ *   would put its clamp end (c, 0) where no vertex was (a pop). In a mesh the corner with the
+ *   highest vertex index has both its edges pointing at it, so the first rotation tried there
+ *   works; the frames tried are the rotations (A, B, C) = (o, o+1, o+2) for o = 0, 1, 2, then the
+ *   reflections (o, o+2, o+1), which reverse the winding. With all edges forward the frame is
+ *   A = corner 0, bottom = edge 0, left = edge 2.
+
  * CONSTRUCTION (all integer arithmetic over ONE = 2^16)
  *   1. Parallelogram: the bottom line gives columns u_0..u_nb, the left line rows v_0..v_nl.
- *   2. Gap: each line's gap is 1 minus its last interior point; the clamp line is
- *      u + v = c with c = 1 − max(gap_u, gap_v) = min(u_{nb−1}, v_{nl−1}).
+ *   2. Gap: the clamp line is u + v = c with c = 1 − max(gap_u, gap_v). The talk takes a line's
+ *      gap as 1 minus its last interior point; here it is the LARGER OF THE LAST TWO SEGMENTS
+ *      (1 for a single segment). The two agree at powers of two, but only this one is
+ *      continuous: a point born on the end point (a reversed edge, or the 1→2 ghost) makes
+ *      "the last interior point" jump from its neighbour to 1, while the last two segments go
+ *      from (a, b) to (b, 0) with a ≤ b (checked by the continuity test). It is never smaller
+ *      than the last segment, so c ≤ u_{nb−1} and c ≤ v_{nl−1}, which step 4 needs.
  *   3. Clamp: row j ≥ 1 (v = v_j) keeps the columns with u_i < e_j = max(0, c − v_j) and ends at
  *      E_j = (e_j, v_j) on the clamp line (the talk's u = min(u, (1 − gap) − v)); columns that
  *      would pass the line collapse onto E_j and are merged into it. Row 0 is the bottom edge
@@ -38,7 +50,7 @@
  * gets its own row (the rows may be in any position), so no centre point is needed: the
  * pattern is the single triangle at (1,1,1) and grows continuously from there.
  *
- * Vertex order: row 0, row 1, …, row nl (= C), then B, then O_1..O_{nr−1}.
+ * Vertex order (in the frame): row 0, row 1, …, row nl (= C), then B, then O_1..O_{nr−1}.
  */
 import { ONE } from './fixed.ts';
 import { HABLE_OPTIONS, cachedSlots, presentSlots, slotPosition, stableFactorFixed, type Slot } from './hable-line.ts';
@@ -63,10 +75,54 @@ export function framedLine(slots: Slot[], present: number[], F: number, flip: bo
   return { x: x.map((v) => ONE - v).reverse(), key: key.map((v) => ONE - v).reverse() };
 }
 
-/** Whether each edge runs against the internal frame, given the triangle's reverse flags.
- * Bottom (edge 0): u = t. Left (edge 2): v = w2 = 1 − t. Right (edge 1): v = w2 = t. */
-export function frameFlips(reverse: Reverse): { bottom: boolean; left: boolean; right: boolean } {
-  return { bottom: reverse[0], left: !reverse[2], right: reverse[1] };
+/** The frame a triangle's pattern is built in (see the header). */
+export interface Frame {
+  /** The corners playing A (origin), B and C. */
+  a: number;
+  b: number;
+  c: number;
+  /** Edge index of the bottom (A–B), left (A–C) and right (B–C) edges. */
+  bottomEdge: number;
+  leftEdge: number;
+  rightEdge: number;
+  /** Whether each frame coordinate runs against the edge's line (coordinate = ONE − x). */
+  flipBottom: boolean;
+  flipLeft: boolean;
+  flipRight: boolean;
+  /** A reflection: the triangles' winding must be reversed to stay positive. */
+  mirrored: boolean;
+}
+
+/** Edge index joining corners p and q, and whether the frame coordinate that runs from p
+ * (0) to q (ONE) is ONE − x for that edge's line. */
+function edgeFrom(p: number, q: number, reverse: Reverse): { edge: number; flip: boolean } {
+  const edge = q === (p + 1) % 3 ? p : q;
+  // Edge e's t is the weight of corner e+1: forward t = x, reversed t = ONE − x.
+  const towardsEnd = q === (edge + 1) % 3;
+  return { edge, flip: towardsEnd === reverse[edge] };
+}
+
+function makeFrame(a: number, b: number, c: number, reverse: Reverse, mirrored: boolean): Frame {
+  const bottom = edgeFrom(a, b, reverse);
+  const left = edgeFrom(a, c, reverse);
+  const right = edgeFrom(b, c, reverse);
+  return {
+    a, b, c,
+    bottomEdge: bottom.edge, leftEdge: left.edge, rightEdge: right.edge,
+    flipBottom: bottom.flip, flipLeft: left.flip, flipRight: right.flip,
+    mirrored,
+  };
+}
+
+/** The frame for these reverse flags: the first whose left line starts at C. */
+export function chooseFrame(reverse: Reverse): Frame {
+  for (const mirrored of [false, true]) {
+    for (let o = 0; o < 3; o++) {
+      const f = mirrored ? makeFrame(o, (o + 2) % 3, (o + 1) % 3, reverse, true) : makeFrame(o, (o + 1) % 3, (o + 2) % 3, reverse, false);
+      if (f.flipLeft) return f;
+    }
+  }
+  throw new Error('unreachable: every edge points at one of its corners');
 }
 
 /**
@@ -89,12 +145,19 @@ export function gapMergeSteps(leftKey: number[], rightKey: number[]): boolean[] 
   return steps;
 }
 
+/** A line's gap at its far end: the larger of its last two segments (ONE for one segment). */
+export function endGap(x: number[]): number {
+  const n = x.length - 1;
+  if (n < 2) return ONE;
+  return Math.max(x[n] - x[n - 1], x[n - 1] - x[n - 2]);
+}
+
 /** Build the pattern from the three framed lines and the merge steps. */
 export function assembleClamped(bottom: number[], left: number[], right: number[], merge: boolean[]): TriPattern {
   const nb = bottom.length - 1;
   const nl = left.length - 1;
   const nr = right.length - 1;
-  const c = Math.min(bottom[nb - 1], left[nl - 1]);
+  const c = ONE - Math.max(endGap(bottom), endGap(left));
 
   // Rows: k[j] kept columns and the row's end u (E_j; for row 0 it is P = u_{nb−1}).
   const k = new Array<number>(nl + 1);
@@ -158,17 +221,36 @@ export interface ClampedOptions {
 /** The three framed lines of a triangle at the given factors (the pattern's only inputs). */
 export function clampedLines(
   factors: readonly [number, number, number],
-  reverse: Reverse = FORWARD,
+  frame: Frame,
   opts: ClampedOptions = {},
 ): { bottom: FramedLine; left: FramedLine; right: FramedLine } {
   const maxFactor = opts.maxFactor ?? 64;
   const slots = cachedSlots(maxFactor, HABLE_OPTIONS);
-  const flips = frameFlips(reverse);
   const edge = (i: number, flip: boolean) => {
     const F = stableFactorFixed(factors[i], maxFactor);
     return framedLine(slots, presentSlots(slots, F), F, flip);
   };
-  return { bottom: edge(0, flips.bottom), left: edge(2, flips.left), right: edge(1, flips.right) };
+  return {
+    bottom: edge(frame.bottomEdge, frame.flipBottom),
+    left: edge(frame.leftEdge, frame.flipLeft),
+    right: edge(frame.rightEdge, frame.flipRight),
+  };
+}
+
+/** Move a pattern built in a frame to the triangle's corners: (w_A, w_B, w_C) → corners
+ * (a, b, c), and reverse the winding of a mirrored frame. */
+export function fromFrame(p: TriPattern, frame: Frame): TriPattern {
+  const bary = new Array<number>(p.bary.length);
+  for (let v = 0; v < p.vertexCount; v++) {
+    bary[3 * v + frame.a] = p.bary[3 * v];
+    bary[3 * v + frame.b] = p.bary[3 * v + 1];
+    bary[3 * v + frame.c] = p.bary[3 * v + 2];
+  }
+  const triangles = p.triangles.slice();
+  if (frame.mirrored) {
+    for (let t = 0; t < triangles.length; t += 3) [triangles[t + 1], triangles[t + 2]] = [triangles[t + 2], triangles[t + 1]];
+  }
+  return { bary, triangles, vertexCount: p.vertexCount, triangleCount: p.triangleCount };
 }
 
 /** The clamped-parallelogram pattern for edge factors (f0, f1, f2), factor i on edge i. */
@@ -177,6 +259,7 @@ export function clampedTriangle(
   reverse: Reverse = FORWARD,
   opts: ClampedOptions = {},
 ): TriPattern {
-  const { bottom, left, right } = clampedLines(factors, reverse, opts);
-  return assembleClamped(bottom.x, left.x, right.x, gapMergeSteps(left.key, right.key));
+  const frame = chooseFrame(reverse);
+  const { bottom, left, right } = clampedLines(factors, frame, opts);
+  return fromFrame(assembleClamped(bottom.x, left.x, right.x, gapMergeSteps(left.key, right.key)), frame);
 }
