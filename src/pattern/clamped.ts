@@ -152,8 +152,16 @@ export function endGap(x: number[]): number {
   return Math.max(x[n] - x[n - 1], x[n - 1] - x[n - 2]);
 }
 
+/** A pattern in its frame, with what the diagrams draw of the construction. */
+export interface ClampedAssembly extends TriPattern {
+  /** The clamp line u + v = c (fixed point). */
+  c: number;
+  /** Triangles [0, gridTriangleCount) are the clamped grid, the rest the gap strip. */
+  gridTriangleCount: number;
+}
+
 /** Build the pattern from the three framed lines and the merge steps. */
-export function assembleClamped(bottom: number[], left: number[], right: number[], merge: boolean[]): TriPattern {
+export function assembleClamped(bottom: number[], left: number[], right: number[], merge: boolean[]): ClampedAssembly {
   const nb = bottom.length - 1;
   const nl = left.length - 1;
   const nr = right.length - 1;
@@ -196,6 +204,7 @@ export function assembleClamped(bottom: number[], left: number[], right: number[
     }
   }
 
+  const gridTriangleCount = tris.length / 3;
   const C = base[nl]; // row nl is the single vertex C
   const inner = (a: number) => base[a] + k[a];
   const outer = (b: number) => (b === 0 ? B : b === nr ? C : B + b);
@@ -210,7 +219,7 @@ export function assembleClamped(bottom: number[], left: number[], right: number[
   }
   if (a !== nl || b !== nr) throw new Error(`gap merge ended at (${a}, ${b}), expected (${nl}, ${nr})`);
 
-  return { bary, triangles: tris, vertexCount: bary.length / 3, triangleCount: tris.length / 3 };
+  return { bary, triangles: tris, vertexCount: bary.length / 3, triangleCount: tris.length / 3, c, gridTriangleCount };
 }
 
 export interface ClampedOptions {
@@ -253,13 +262,25 @@ export function fromFrame(p: TriPattern, frame: Frame): TriPattern {
   return { bary, triangles, vertexCount: p.vertexCount, triangleCount: p.triangleCount };
 }
 
+/** Every stage of the construction, for the diagrams: the frame, the three framed lines, and
+ * the pattern in frame coordinates (w_A, w_B, w_C) with its clamp line and grid/gap split. */
+export function clampedConstruction(
+  factors: readonly [number, number, number],
+  reverse: Reverse = FORWARD,
+  opts: ClampedOptions = {},
+): { frame: Frame; bottom: FramedLine; left: FramedLine; right: FramedLine; framed: ClampedAssembly } {
+  const frame = chooseFrame(reverse);
+  const lines = clampedLines(factors, frame, opts);
+  const framed = assembleClamped(lines.bottom.x, lines.left.x, lines.right.x, gapMergeSteps(lines.left.key, lines.right.key));
+  return { frame, ...lines, framed };
+}
+
 /** The clamped-parallelogram pattern for edge factors (f0, f1, f2), factor i on edge i. */
 export function clampedTriangle(
   factors: readonly [number, number, number],
   reverse: Reverse = FORWARD,
   opts: ClampedOptions = {},
 ): TriPattern {
-  const frame = chooseFrame(reverse);
-  const { bottom, left, right } = clampedLines(factors, frame, opts);
-  return fromFrame(assembleClamped(bottom.x, left.x, right.x, gapMergeSteps(left.key, right.key)), frame);
+  const { frame, framed } = clampedConstruction(factors, reverse, opts);
+  return fromFrame(framed, frame);
 }
