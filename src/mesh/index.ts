@@ -1,0 +1,33 @@
+export * from './types.ts';
+export * from './errors.ts';
+export * from './obj.ts';
+export * from './topology.ts';
+import { CageError, type CageIssue } from './errors.ts';
+import { parseObj } from './obj.ts';
+import { buildTopology, type Topology } from './topology.ts';
+import type { Cage } from './types.ts';
+
+export interface LoadedCage {
+  cage: Cage;
+  topology: Topology;
+  warnings: CageIssue[];
+}
+
+/**
+ * Parse and validate an OBJ cage. Throws `CageError` (with line numbers) for any
+ * malformed, degenerate or non-manifold input; never throws anything else.
+ */
+export function loadCage(text: string): LoadedCage {
+  try {
+    const { cage, warnings } = parseObj(text);
+    const topology = buildTopology(cage);
+    let unused = 0;
+    for (let v = 0; v < topology.nVerts; v++) if (topology.vertHeOffsets[v + 1] === topology.vertHeOffsets[v]) unused++;
+    if (unused) warnings.push({ line: 0, message: `${unused} vertices are not used by any face (ignored)` });
+    return { cage, topology, warnings };
+  } catch (e) {
+    if (e instanceof CageError) throw e;
+    // Defensive: an internal failure is still reported as a cage error, not a crash.
+    throw new CageError([{ line: 0, message: `internal error while reading cage: ${(e as Error)?.message ?? String(e)}` }]);
+  }
+}

@@ -1,0 +1,5 @@
+export * from './level.ts';
+export * from './bspline.ts';
+export * from './limit.ts';
+export * from './evaluate.ts';
+export * from './uniform.ts';
