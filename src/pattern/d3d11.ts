@@ -31,6 +31,17 @@
  * - Everything after that is integer fixed-point arithmetic: 1/n comes from a 64-entry table of
  *   round(2^16 / n), the blend between the floor and ceiling distributions rounds half up, and
  *   points on the second half of an edge are exact mirrors ONE − x.
+ *
+ * Quirks of the reference that are reproduced, not fixed:
+ * - New points are born on top of old ones, so just above an epoch two neighbours can be equal
+ *   (zero-length segments, zero-area triangles).
+ * - A fold in fractional_even: the reciprocal table rounds 1/6 and 1/30 up, so 3·(1/6) and
+ *   15·(1/30) land past ½ (by 1 and 7 units). For 16.16 factors in (6, 6 + 6·2⁻¹⁶] and
+ *   (30, 30 + 414·2⁻¹⁶] the point before the midpoint lies beyond it, the row is not monotone,
+ *   and a triangle edge (or ring) with such a factor gets two hairline flipped triangles.
+ *   fractional_odd and integer never fold.
+ * - The forced fractional_odd picture frame (inside ≤ 1 with some edge > 1) puts the first
+ *   ring exactly on the three corners: duplicate positions and zero-area transition triangles.
  */
 import { ONE, factorToFixed } from './fixed';
 import type { D3D11Partitioning, LinePattern, TriPattern } from './types';
@@ -272,8 +283,11 @@ export function d3d11TriCounts(
 // ---------------------------------------------------------------------------------------------
 
 /**
- * The 1D distribution of `TessellateIsoLineDomain(1, f)`: sorted 16.16 points, empty if the
- * factor culls (≤ 0 or NaN). `moving` marks, for the fractional modes between epochs (a
+ * The 1D distribution of `TessellateIsoLineDomain(1, f)`: 16.16 points in the reference's
+ * order, empty if the factor culls (≤ 0 or NaN). That order is ascending (non-decreasing: a
+ * newborn pair can coincide) except in the fractional_even fold windows just above 6 and 30
+ * (see the file header), where it is kept as the reference emits it so that it stays identical
+ * to the triangle edges. `moving` marks, for the fractional modes between epochs (a
  * non-zero fractional half factor), the pair being split apart at the ruler split point and
  * its mirror, i.e. half-edge points σ and σ+1 except the ones that never move (a corner, the
  * even midpoint). Integer and pow2 never move. pow2 first rounds the factor up to a power of
