@@ -18,7 +18,7 @@
  *   (0x5555, 0x5555), so its w is 0x5556.
  * - Triangles in the reference's emission order (ring by ring, side by side) with its
  *   TRIANGLE_CW index order: with u as x and v as y every non-degenerate triangle has a positive
- *   signed area.
+ *   signed area (but for the hairline quirks below).
  * - The isoline is `TessellateIsoLineDomain(density 1, detail f)`: the points of the v = 0 line.
  *
  * Arithmetic:
@@ -37,9 +37,15 @@
  *   (zero-length segments, zero-area triangles).
  * - A fold in fractional_even: the reciprocal table rounds 1/6 and 1/30 up, so 3·(1/6) and
  *   15·(1/30) land past ½ (by 1 and 7 units). For 16.16 factors in (6, 6 + 6·2⁻¹⁶] and
- *   (30, 30 + 414·2⁻¹⁶] the point before the midpoint lies beyond it, the row is not monotone,
- *   and a triangle edge (or ring) with such a factor gets two hairline flipped triangles.
- *   fractional_odd and integer never fold.
+ *   (30, 30 + 414·2⁻¹⁶] the point before the midpoint lies beyond it and the row is not
+ *   monotone. A triangle edge with such a factor gets two hairline inverted triangles (doubled
+ *   area up to ~2.4·2¹⁶ units², the domain's being 2³²); as the inside factor it folds every
+ *   ring side. fractional_odd and integer never fold.
+ * - Hairline slivers in both fractional modes: while a newborn pair is still within a few units
+ *   of its twin (a factor up to ~0.02 above an epoch), projecting it onto an interior ring
+ *   (⅔ of x_r and half of that as a shift, each rounded) can make a ring corner non-convex by
+ *   a unit, and a transition or ring triangle comes out inverted, with a doubled area of at
+ *   most ~1.4·2¹⁶ units² in our scans. Integer and pow2 were never seen to invert a triangle.
  * - The forced fractional_odd picture frame (inside ≤ 1 with some edge > 1) puts the first
  *   ring exactly on the three corners: duplicate positions and zero-area transition triangles.
  */
@@ -171,11 +177,10 @@ function clampFactor(f: number, lo: number, hi: number): number {
  * with a non-zero mantissa moves to the next exponent), then clamp to 64.
  */
 function pow2RoundUp(f: number): number {
-  let x = Number.isNaN(f) || f < 1 ? 1 : Math.min(f, MAX_FACTOR);
+  const x = Number.isNaN(f) || f < 1 ? 1 : Math.min(f, MAX_FACTOR);
   let p = 1;
   while (p < x) p *= 2;
-  x = p;
-  return x;
+  return p;
 }
 
 const isCulled = (f32: number) => !(f32 > 0);
@@ -409,8 +414,6 @@ function stitchRegular(
   emit(out(o), out(o + 1), inn(i));
 }
 
-const EMPTY_TRI: TriPattern = { bary: [], triangles: [], vertexCount: 0, triangleCount: 0 };
-
 /**
  * `CHWTessellator::TessellateTriDomain(e0, e1, e2, inside)` with TRIANGLE_CW output: the
  * reference's points (as u, v, w fixed-point triples) and triangles, in its order. pow2 rounds
@@ -422,7 +425,7 @@ export function d3d11Triangle(
   inside: number,
 ): TriPattern {
   const tri = processTri(partitioning, factors, inside);
-  if (!tri) return { ...EMPTY_TRI, bary: [], triangles: [] };
+  if (!tri) return { bary: [], triangles: [], vertexCount: 0, triangleCount: 0 };
   const bary: number[] = [];
   const triangles: number[] = [];
   const addPoint = (u: number, v: number) => bary.push(u, v, ONE - u - v);
