@@ -19,7 +19,11 @@ describe('every line mode', () => {
         expect(moving.length).toBe(x.length);
         expect(x[0]).toBe(0);
         expect(x[x.length - 1]).toBe(ONE);
-        for (let i = 1; i < x.length; i++) expect(x[i]).toBeGreaterThanOrEqual(x[i - 1]);
+        // The D3D11 reference itself is not sorted for fractional_even just above 6 and 30
+        // (its rounded-up reciprocals put the point before the midpoint past ½; see d3d11.ts).
+        const F = factorToFixed(f);
+        const refUnsorted = mode === 'fractional_even' && ((F > 6 * ONE && F <= 6 * ONE + 6) || (F > 30 * ONE && F <= 30 * ONE + 414));
+        if (!refUnsorted) for (let i = 1; i < x.length; i++) expect(x[i]).toBeGreaterThanOrEqual(x[i - 1]);
         for (const v of x) expect(Number.isInteger(v)).toBe(true);
       }),
       { numRuns: 3000 },

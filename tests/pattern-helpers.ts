@@ -2,9 +2,15 @@
 import { ONE } from '../src/pattern/fixed.ts';
 import type { TriPattern } from '../src/pattern/types.ts';
 
-/** Hausdorff distance between two sorted point sets (fixed point units). */
+/** Hausdorff distance between two 1D point sets (fixed point units). */
 export function hausdorffSorted(a: number[], b: number[]): number {
-  return Math.max(directed(a, b), directed(b, a));
+  const sa = isSorted(a) ? a : [...a].sort((p, q) => p - q);
+  const sb = isSorted(b) ? b : [...b].sort((p, q) => p - q);
+  return Math.max(directed(sa, sb), directed(sb, sa));
+}
+function isSorted(a: number[]): boolean {
+  for (let i = 1; i < a.length; i++) if (a[i] < a[i - 1]) return false;
+  return true;
 }
 function directed(a: number[], b: number[]): number {
   let worst = 0;

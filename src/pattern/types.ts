@@ -25,7 +25,9 @@ export type D3D11Partitioning = (typeof D3D11_PARTITIONINGS)[number];
 
 /** A line: sorted fixed-point parameters, 0 first and ONE last. */
 export interface LinePattern {
-  /** Sorted ascending, x[0] = 0 and x[last] = ONE (empty only for a culled D3D11 factor). */
+  /** Ascending, x[0] = 0 and x[last] = ONE (empty only for a culled D3D11 factor). One
+   * exception, kept to stay bit-exact with the reference: D3D11 fractional_even just above
+   * f = 6 and f = 30 puts the point before the midpoint a few 2^-16 past it (see d3d11.ts). */
   x: number[];
   /** Per point: true when its position depends on the fractional part of the factor (drawn
    * red in the diagrams: the point is sliding or newly born). */
