@@ -198,7 +198,7 @@ export function buildTopology(cage: Cage): Topology {
   const fl = (f: number): number => cage.faceLines[f] ?? 0;
   for (const p of problems) {
     const a = he.edgeVerts[2 * p.edge], b = he.edgeVerts[2 * p.edge + 1];
-    const faceList = p.faces.map((f) => `face ${f + 1}${fl(f) ? ` (line ${fl(f)})` : ''}`).join(', ');
+    const faceList = p.faces.slice(0, 4).map((f) => `face ${f + 1}${fl(f) ? ` (line ${fl(f)})` : ''}`).join(', ') + (p.faces.length > 4 ? `, ... (${p.faces.length - 4} more)` : '');
     if (p.kind === 'non-manifold-edge') {
       issues.push({ line: fl(p.faces[p.faces.length - 1]), message: `non-manifold edge ${a + 1}-${b + 1}: shared by ${p.faces.length} faces: ${faceList}` });
     } else {
