@@ -5,7 +5,7 @@ import {
 } from '../src/subdiv/index.ts';
 import { cube, fan, grid3, pentPrism, ringCrease, tetra, triPrism } from './subdiv-fixtures.ts';
 
-type V = readonly number[];
+type V = ArrayLike<number>;
 const close = (a: V, b: V, tol = 1e-13): void => {
   for (let i = 0; i < b.length; i++) expect(Math.abs(a[i] - b[i]), `component ${i}: ${a[i]} vs ${b[i]}`).toBeLessThanOrEqual(tol);
 };
