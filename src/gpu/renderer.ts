@@ -1,0 +1,499 @@
+/**
+ * Draws a stored, tessellated mesh (`TessellatedMesh`, see types.ts) every frame without
+ * rebuilding it: the talk's point is to build the geometry once and draw it in every pass.
+ *
+ *   shadow pass   depth only, from an orthographic light fitted to the model's bounds
+ *   main pass     backdrop, lit + shadowed mesh, ground, wireframe and cage overlays (4× MSAA)
+ *
+ * Both draw the mesh with drawIndexedIndirect(output.drawArgs), positions and normals bound as
+ * vertex buffers, so the CPU never needs to know how many triangles the GPU produced. The
+ * wireframe reads the same index and position buffers from storage. DOM-free: it takes a device,
+ * a colour format, and a texture to draw into.
+ */
+import commonWGSL from '../../wgsl/render-common.wgsl?raw';
+import shadingWGSL from '../../wgsl/render-shading.wgsl?raw';
+import shadowWGSL from '../../wgsl/render-shadow.wgsl?raw';
+import litWGSL from '../../wgsl/render-lit.wgsl?raw';
+import groundWGSL from '../../wgsl/render-ground.wgsl?raw';
+import backdropWGSL from '../../wgsl/render-backdrop.wgsl?raw';
+import wireArgsWGSL from '../../wgsl/wire-args.wgsl?raw';
+import wireLinesWGSL from '../../wgsl/wire-lines.wgsl?raw';
+import wireCageWGSL from '../../wgsl/wire-cage.wgsl?raw';
+import type { TessellatedMesh } from './types.ts';
+import { CAGE_LINE_STRIDE, type CageLines } from './cage-mesh.ts';
+import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
+
+export interface RendererOptions {
+  /** Format of the views render() draws into (an -srgb format gives correct blending). */
+  colorFormat: GPUTextureFormat;
+  /** Enable per-pass GPU timing (the device must have 'timestamp-query'). */
+  timestamps?: boolean;
+  shadowMapSize?: number;
+  sampleCount?: 1 | 4;
+}
+
+export interface View {
+  /** Column-major view-projection, WebGPU clip space (z in 0..1). */
+  viewProj: Float32Array;
+  /** Model to world, a rotation (e.g. camera.ts upAxisMatrix). */
+  model: Float32Array;
+  eye: Vec3;
+}
+
+export interface DrawOptions {
+  wireframe: boolean;
+  cage: boolean;
+  /** Wireframe opacity, 0..1. */
+  wireOpacity?: number;
+}
+
+const FRAME_BYTES = 256;
+const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
+/** Vertex buffers of the mesh: positions then normals, float32x3, tightly packed. */
+const MESH_BUFFERS: GPUVertexBufferLayout[] = [
+  { arrayStride: 12, attributes: [{ shaderLocation: 0, offset: 0, format: 'float32x3' }] },
+  { arrayStride: 12, attributes: [{ shaderLocation: 1, offset: 0, format: 'float32x3' }] },
+];
+const TIMED_PASSES = ['shadow', 'lit'] as const;
+
+export class Renderer {
+  readonly device: GPUDevice;
+  readonly colorFormat: GPUTextureFormat;
+  readonly sampleCount: number;
+  readonly shadowMapSize: number;
+
+  #frameBuffer: GPUBuffer;
+  #frameData = new Float32Array(FRAME_BYTES / 4);
+  #frameBindGroup: GPUBindGroup;
+  #shadingBindGroup: GPUBindGroup;
+  #shadowMap: GPUTexture;
+
+  #shadowPipeline: GPURenderPipeline;
+  #litPipeline: GPURenderPipeline;
+  #groundPipeline: GPURenderPipeline;
+  #backdropPipeline: GPURenderPipeline;
+  #wirePipeline: GPURenderPipeline;
+  #wireArgsPipeline: GPUComputePipeline;
+  #cageHiddenPipeline: GPURenderPipeline;
+  #cageVisiblePipeline: GPURenderPipeline;
+  #wireLayout: GPUBindGroupLayout;
+  #wireArgsLayout: GPUBindGroupLayout;
+
+  #wireArgs: GPUBuffer;
+  #mesh: TessellatedMesh | null = null;
+  #wireBindGroup: GPUBindGroup | null = null;
+  #wireArgsBindGroup: GPUBindGroup | null = null;
+  #cage: CageLines | null = null;
+
+  #bounds: Bounds = { min: [-1, -1, -1], max: [1, 1, 1] };
+  #lightViewProj = new Float32Array(16);
+
+  #msaaTexture: GPUTexture | null = null;
+  #depthTexture: GPUTexture | null = null;
+
+  #timing: {
+    querySet: GPUQuerySet;
+    resolve: GPUBuffer;
+    read: GPUBuffer;
+    state: 'idle' | 'copied' | 'mapping';
+    last: Record<string, number>;
+  } | null = null;
+
+  static create(device: GPUDevice, options: RendererOptions): Renderer {
+    return new Renderer(device, options);
+  }
+
+  private constructor(device: GPUDevice, options: RendererOptions) {
+    this.device = device;
+    this.colorFormat = options.colorFormat;
+    this.sampleCount = options.sampleCount ?? 4;
+    this.shadowMapSize = options.shadowMapSize ?? 2048;
+
+    this.#frameBuffer = device.createBuffer({
+      label: 'frame uniforms',
+      size: FRAME_BYTES,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
+    this.#shadowMap = device.createTexture({
+      label: 'shadow map',
+      size: [this.shadowMapSize, this.shadowMapSize],
+      format: DEPTH_FORMAT,
+      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.TEXTURE_BINDING,
+    });
+    // Hardware PCF: a linear comparison sampler blends four depth tests per tap.
+    const shadowSampler = device.createSampler({
+      label: 'shadow comparison sampler',
+      compare: 'less-equal',
+      magFilter: 'linear',
+      minFilter: 'linear',
+    });
+    this.#wireArgs = device.createBuffer({
+      label: 'wireframe draw args',
+      size: 16,
+      usage: GPUBufferUsage.INDIRECT | GPUBufferUsage.STORAGE,
+    });
+
+    const frameLayout = device.createBindGroupLayout({
+      label: 'frame bind group layout',
+      entries: [{ binding: 0, visibility: GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT, buffer: { type: 'uniform' } }],
+    });
+    const shadingLayout = device.createBindGroupLayout({
+      label: 'shading bind group layout',
+      entries: [
+        { binding: 0, visibility: GPUShaderStage.FRAGMENT, texture: { sampleType: 'depth' } },
+        { binding: 1, visibility: GPUShaderStage.FRAGMENT, sampler: { type: 'comparison' } },
+      ],
+    });
+    this.#wireLayout = device.createBindGroupLayout({
+      label: 'wireframe bind group layout',
+      entries: [
+        { binding: 0, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
+        { binding: 1, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
+      ],
+    });
+    this.#wireArgsLayout = device.createBindGroupLayout({
+      label: 'wireframe args bind group layout',
+      entries: [
+        { binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'read-only-storage' } },
+        { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } },
+      ],
+    });
+    this.#frameBindGroup = device.createBindGroup({
+      label: 'frame bind group',
+      layout: frameLayout,
+      entries: [{ binding: 0, resource: { buffer: this.#frameBuffer } }],
+    });
+    this.#shadingBindGroup = device.createBindGroup({
+      label: 'shading bind group',
+      layout: shadingLayout,
+      entries: [
+        { binding: 0, resource: this.#shadowMap.createView({ label: 'shadow map view' }) },
+        { binding: 1, resource: shadowSampler },
+      ],
+    });
+
+    const frameOnly = device.createPipelineLayout({ label: 'frame-only pipeline layout', bindGroupLayouts: [frameLayout] });
+    const shaded = device.createPipelineLayout({ label: 'shaded pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout] });
+    const wired = device.createPipelineLayout({ label: 'wireframe pipeline layout', bindGroupLayouts: [frameLayout, this.#wireLayout] });
+
+    const module = (label: string, ...sources: string[]) => device.createShaderModule({ label, code: sources.join('\n') });
+    const shadowModule = module('shadow shader', commonWGSL, shadowWGSL);
+    const litModule = module('lit shader', commonWGSL, shadingWGSL, litWGSL);
+    const groundModule = module('ground shader', commonWGSL, shadingWGSL, groundWGSL);
+    const backdropModule = module('backdrop shader', commonWGSL, backdropWGSL);
+    const wireModule = module('wireframe shader', commonWGSL, wireLinesWGSL);
+    const cageModule = module('cage overlay shader', commonWGSL, wireCageWGSL);
+    const wireArgsModule = module('wireframe args shader', wireArgsWGSL);
+
+    const multisample = { count: this.sampleCount };
+    const blend: GPUBlendState = {
+      color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha', operation: 'add' },
+      alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha', operation: 'add' },
+    };
+    const opaqueTarget = [{ format: this.colorFormat }];
+    const blendedTarget = [{ format: this.colorFormat, blend }];
+    // Overlays test against the mesh's depth but never write it.
+    const overlayDepth = (compare: GPUCompareFunction): GPUDepthStencilState => ({
+      format: DEPTH_FORMAT,
+      depthWriteEnabled: false,
+      depthCompare: compare,
+    });
+
+    this.#shadowPipeline = device.createRenderPipeline({
+      label: 'shadow pipeline',
+      layout: frameOnly,
+      vertex: { module: shadowModule, entryPoint: 'shadowVertex', buffers: [MESH_BUFFERS[0]] },
+      // Both faces cast: open surfaces have no back to hide behind.
+      primitive: { topology: 'triangle-list', cullMode: 'none' },
+      // Slope-scaled bias against acne on surfaces the light grazes.
+      depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
+    });
+    this.#litPipeline = device.createRenderPipeline({
+      label: 'lit pipeline',
+      layout: shaded,
+      vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
+      fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
+      // No culling: open surfaces are lit from whichever side is seen.
+      primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'ccw' },
+      depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
+      multisample,
+    });
+    this.#groundPipeline = device.createRenderPipeline({
+      label: 'ground pipeline',
+      layout: shaded,
+      vertex: { module: groundModule, entryPoint: 'groundVertex' },
+      fragment: { module: groundModule, entryPoint: 'groundFragment', targets: blendedTarget },
+      primitive: { topology: 'triangle-strip', cullMode: 'none' },
+      depthStencil: overlayDepth('less'),
+      multisample,
+    });
+    this.#backdropPipeline = device.createRenderPipeline({
+      label: 'backdrop pipeline',
+      layout: frameOnly,
+      vertex: { module: backdropModule, entryPoint: 'backdropVertex' },
+      fragment: { module: backdropModule, entryPoint: 'backdropFragment', targets: opaqueTarget },
+      primitive: { topology: 'triangle-list' },
+      depthStencil: overlayDepth('always'),
+      multisample,
+    });
+    this.#wirePipeline = device.createRenderPipeline({
+      label: 'wireframe pipeline',
+      layout: wired,
+      vertex: { module: wireModule, entryPoint: 'wireVertex' },
+      fragment: { module: wireModule, entryPoint: 'wireFragment', targets: blendedTarget },
+      primitive: { topology: 'line-list' },
+      depthStencil: overlayDepth('less-equal'),
+      multisample,
+    });
+    const cagePipeline = (label: string, opacity: number, compare: GPUCompareFunction) =>
+      device.createRenderPipeline({
+        label,
+        layout: frameOnly,
+        vertex: {
+          module: cageModule,
+          entryPoint: 'cageVertex',
+          buffers: [{
+            arrayStride: CAGE_LINE_STRIDE,
+            attributes: [
+              { shaderLocation: 0, offset: 0, format: 'float32x3' },
+              { shaderLocation: 1, offset: 12, format: 'unorm8x4' },
+            ],
+          }],
+        },
+        fragment: { module: cageModule, entryPoint: 'cageFragment', targets: blendedTarget, constants: { OPACITY: opacity } },
+        primitive: { topology: 'line-list' },
+        depthStencil: overlayDepth(compare),
+        multisample,
+      });
+    // The cage mostly floats outside the limit surface; where it dips behind, show it as a ghost.
+    this.#cageHiddenPipeline = cagePipeline('cage overlay (hidden part) pipeline', 0.22, 'greater');
+    this.#cageVisiblePipeline = cagePipeline('cage overlay pipeline', 1.0, 'less-equal');
+    this.#wireArgsPipeline = device.createComputePipeline({
+      label: 'wireframe args pipeline',
+      layout: device.createPipelineLayout({ label: 'wireframe args pipeline layout', bindGroupLayouts: [this.#wireArgsLayout] }),
+      compute: { module: wireArgsModule, entryPoint: 'wireArgsMain' },
+    });
+
+    if (options.timestamps) {
+      const count = TIMED_PASSES.length * 2;
+      this.#timing = {
+        querySet: device.createQuerySet({ label: 'render timestamps', type: 'timestamp', count }),
+        resolve: device.createBuffer({ label: 'render timestamps resolve', size: count * 8, usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC }),
+        read: device.createBuffer({ label: 'render timestamps readback', size: count * 8, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST }),
+        state: 'idle',
+        last: {},
+      };
+    }
+  }
+
+  /** The mesh to draw: the tessellator's output (its buffers live as long as it does) or the cage's. */
+  setMesh(mesh: TessellatedMesh | null): void {
+    this.#mesh = mesh;
+    this.#wireBindGroup = null;
+    this.#wireArgsBindGroup = null;
+    if (!mesh) return;
+    this.#wireBindGroup = this.device.createBindGroup({
+      label: 'wireframe bind group',
+      layout: this.#wireLayout,
+      entries: [
+        { binding: 0, resource: { buffer: mesh.indices } },
+        { binding: 1, resource: { buffer: mesh.positions } },
+      ],
+    });
+    this.#wireArgsBindGroup = this.device.createBindGroup({
+      label: 'wireframe args bind group',
+      layout: this.#wireArgsLayout,
+      entries: [
+        { binding: 0, resource: { buffer: mesh.drawArgs, size: 20 } },
+        { binding: 1, resource: { buffer: this.#wireArgs } },
+      ],
+    });
+  }
+
+  /** The cage overlay's lines (the renderer does not own them). */
+  setCage(cage: CageLines | null): void {
+    this.#cage = cage;
+  }
+
+  /**
+   * The model's bounds in world space (the cage's are conservative: the limit surface lies
+   * inside its hull): they fit the light's box and place the ground.
+   */
+  setBounds(bounds: Bounds): void {
+    this.#bounds = bounds;
+    this.#lightViewProj.set(lightViewProj(boundingSphere(bounds), DEFAULT_LIGHT_DIR));
+  }
+
+  /** Encode the shadow and main passes, drawing into `target` (any size; attachments follow it). */
+  render(encoder: GPUCommandEncoder, target: GPUTexture, view: View, options: DrawOptions): void {
+    this.#ensureAttachments(target.width, target.height);
+    this.#writeFrame(view, target.width, target.height, options.wireOpacity ?? 0.45);
+    const mesh = this.#mesh;
+    const timing = this.#timing;
+
+    if (mesh && options.wireframe && this.#wireArgsBindGroup) {
+      // Tracks whatever index count the tessellator last wrote, at the cost of one thread.
+      const pass = encoder.beginComputePass({ label: 'wireframe args pass' });
+      pass.setPipeline(this.#wireArgsPipeline);
+      pass.setBindGroup(0, this.#wireArgsBindGroup);
+      pass.dispatchWorkgroups(1);
+      pass.end();
+    }
+
+    const shadowPass = encoder.beginRenderPass({
+      label: 'shadow pass',
+      colorAttachments: [],
+      depthStencilAttachment: {
+        view: this.#shadowMap.createView({ label: 'shadow map attachment' }),
+        depthClearValue: 1,
+        depthLoadOp: 'clear',
+        depthStoreOp: 'store',
+      },
+      timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 } : undefined,
+    });
+    if (mesh) {
+      shadowPass.setPipeline(this.#shadowPipeline);
+      shadowPass.setBindGroup(0, this.#frameBindGroup);
+      shadowPass.setVertexBuffer(0, mesh.positions);
+      shadowPass.setIndexBuffer(mesh.indices, 'uint32');
+      shadowPass.drawIndexedIndirect(mesh.drawArgs, 0);
+    }
+    shadowPass.end();
+
+    const msaa = this.sampleCount > 1;
+    const targetView = target.createView({ label: 'render target view', format: this.colorFormat });
+    const pass = encoder.beginRenderPass({
+      label: 'lit pass',
+      colorAttachments: [{
+        view: msaa ? this.#msaaTexture!.createView({ label: 'msaa colour view' }) : targetView,
+        resolveTarget: msaa ? targetView : undefined,
+        clearValue: [0, 0, 0, 1],
+        loadOp: 'clear',
+        // The multisampled colour is only needed until it is resolved.
+        storeOp: msaa ? 'discard' : 'store',
+      }],
+      depthStencilAttachment: {
+        view: this.#depthTexture!.createView({ label: 'depth view' }),
+        depthClearValue: 1,
+        depthLoadOp: 'clear',
+        depthStoreOp: 'discard',
+      },
+      timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 2, endOfPassWriteIndex: 3 } : undefined,
+    });
+    pass.setBindGroup(0, this.#frameBindGroup);
+    pass.setBindGroup(1, this.#shadingBindGroup);
+    pass.setPipeline(this.#backdropPipeline);
+    pass.draw(3);
+    if (mesh) {
+      pass.setPipeline(this.#litPipeline);
+      pass.setVertexBuffer(0, mesh.positions);
+      pass.setVertexBuffer(1, mesh.normals);
+      pass.setIndexBuffer(mesh.indices, 'uint32');
+      pass.drawIndexedIndirect(mesh.drawArgs, 0);
+    }
+    pass.setPipeline(this.#groundPipeline);
+    pass.draw(4);
+    if (mesh && options.wireframe && this.#wireBindGroup) {
+      pass.setPipeline(this.#wirePipeline);
+      pass.setBindGroup(1, this.#wireBindGroup);
+      pass.drawIndirect(this.#wireArgs, 0);
+    }
+    const cage = this.#cage;
+    if (cage && options.cage && cage.vertexCount > 0) {
+      pass.setVertexBuffer(0, cage.vertices);
+      pass.setPipeline(this.#cageHiddenPipeline);
+      pass.draw(cage.vertexCount);
+      pass.setPipeline(this.#cageVisiblePipeline);
+      pass.draw(cage.vertexCount);
+    }
+    pass.end();
+
+    if (timing) {
+      encoder.resolveQuerySet(timing.querySet, 0, TIMED_PASSES.length * 2, timing.resolve, 0);
+      // Copy only into an idle readback buffer: a mapped or mapping one cannot be written.
+      if (timing.state === 'idle') {
+        encoder.copyBufferToBuffer(timing.resolve, 0, timing.read, 0, timing.read.size);
+        timing.state = 'copied';
+      }
+    }
+  }
+
+  /**
+   * Milliseconds per pass ({ shadow, lit }) of the latest frame whose timestamps have come back;
+   * {} without 'timestamp-query'. Call after submitting the frame that render() encoded.
+   */
+  async readTimings(): Promise<Record<string, number>> {
+    const timing = this.#timing;
+    if (!timing) return {};
+    if (timing.state === 'copied') {
+      timing.state = 'mapping';
+      try {
+        await timing.read.mapAsync(GPUMapMode.READ);
+        const ticks = new BigInt64Array(timing.read.getMappedRange().slice(0));
+        timing.read.unmap();
+        const out: Record<string, number> = {};
+        TIMED_PASSES.forEach((name, i) => {
+          const ns = Number(ticks[2 * i + 1] - ticks[2 * i]);
+          // Timestamps may be quantized or reordered; a negative span means "unknown".
+          if (ns >= 0) out[name] = ns / 1e6;
+        });
+        timing.last = out;
+      } catch {
+        // The device was lost or destroyed while mapping: keep the last numbers.
+      } finally {
+        timing.state = 'idle';
+      }
+    }
+    return { ...timing.last };
+  }
+
+  destroy(): void {
+    this.#frameBuffer.destroy();
+    this.#shadowMap.destroy();
+    this.#wireArgs.destroy();
+    this.#msaaTexture?.destroy();
+    this.#depthTexture?.destroy();
+    if (this.#timing) {
+      this.#timing.querySet.destroy();
+      this.#timing.resolve.destroy();
+      this.#timing.read.destroy();
+    }
+  }
+
+  #ensureAttachments(width: number, height: number): void {
+    const depth = this.#depthTexture;
+    if (depth && depth.width === width && depth.height === height) return;
+    this.#msaaTexture?.destroy();
+    this.#depthTexture?.destroy();
+    this.#msaaTexture = this.sampleCount > 1
+      ? this.device.createTexture({
+          label: 'msaa colour target',
+          size: [width, height],
+          format: this.colorFormat,
+          sampleCount: this.sampleCount,
+          usage: GPUTextureUsage.RENDER_ATTACHMENT,
+        })
+      : null;
+    this.#depthTexture = this.device.createTexture({
+      label: 'depth target',
+      size: [width, height],
+      format: DEPTH_FORMAT,
+      sampleCount: this.sampleCount,
+      usage: GPUTextureUsage.RENDER_ATTACHMENT,
+    });
+  }
+
+  #writeFrame(view: View, width: number, height: number, wireOpacity: number): void {
+    const f = this.#frameData;
+    const sphere = boundingSphere(this.#bounds);
+    f.set(view.viewProj, 0);
+    f.set(this.#lightViewProj, 16);
+    f.set(view.model, 32);
+    f.set([...view.eye, sphere.radius], 48);
+    f.set([...DEFAULT_LIGHT_DIR, 1 / this.shadowMapSize], 52);
+    // The ground sits at the cage's lowest point, a hair lower so it never z-fights the surface.
+    f.set([...sphere.center, this.#bounds.min[1] - sphere.radius * 1e-3], 56);
+    f.set([width, height, wireOpacity, 0], 60);
+    this.device.queue.writeBuffer(this.#frameBuffer, 0, f);
+  }
+}

@@ -1,0 +1,47 @@
+// A ground plane under the model: a faint grid that catches the shadow and fades into the
+// backdrop (prepended: render-common.wgsl, render-shading.wgsl). Drawn as a 4-vertex strip.
+
+const GROUND_EXTENT = 4.0; // in bounding radii; camera.ts sizes the clip planes and light box to it
+
+struct VertexOut {
+  @builtin(position) clip: vec4f,
+  @location(0) world: vec3f,
+}
+
+@vertex
+fn groundVertex(@builtin(vertex_index) i: u32) -> VertexOut {
+  let corner = vec2f(f32(i & 1u), f32(i >> 1u)) * 2.0 - 1.0;
+  let r = frame.eye.w * GROUND_EXTENT;
+  let world = vec3f(frame.center.x + corner.x * r, frame.center.w, frame.center.z + corner.y * r);
+  var out: VertexOut;
+  out.clip = frame.viewProj * vec4f(world, 1.0);
+  out.world = world;
+  return out;
+}
+
+// Coverage of grid lines of this spacing, about one pixel wide whatever the distance.
+fn gridLines(p: vec2f, spacing: f32) -> f32 {
+  let q = p / spacing;
+  let width = fwidth(q);
+  let d = abs(fract(q - 0.5) - 0.5) / max(width, vec2f(1e-6));
+  return 1.0 - min(min(d.x, d.y), 1.0);
+}
+
+@fragment
+fn groundFragment(in: VertexOut) -> @location(0) vec4f {
+  let r = frame.eye.w;
+  // Grid spacing: a power of ten near a quarter of the model's radius, with a minor grid.
+  let major = pow(10.0, round(log2(r * 0.5) / log2(10.0)));
+  let rel = in.world.xz - frame.center.xz;
+  let lines = max(gridLines(rel, major) * 0.7, gridLines(rel, major * 0.2) * 0.25);
+
+  let up = vec3f(0.0, 1.0, 0.0);
+  let shadow = shadowFactor(in.world, up);
+  let base = linearFromSrgb(vec3f(0.20, 0.22, 0.26));
+  let lit = base * (0.55 + 0.45 * max(frame.toLight.y, 0.0) * shadow);
+  let colour = mix(lit, linearFromSrgb(vec3f(0.36, 0.40, 0.47)), lines * (0.35 + 0.65 * shadow));
+
+  // Fade out towards the edge of the plane so it has no visible border.
+  let fade = 1.0 - smoothstep(0.35, 1.0, length(rel) / (r * GROUND_EXTENT));
+  return vec4f(colour, fade);
+}

@@ -1,0 +1,44 @@
+// The tessellated mesh, lit and shadowed (prepended: render-common.wgsl, render-shading.wgsl).
+
+struct VertexOut {
+  @builtin(position) clip: vec4f,
+  @location(0) world: vec3f,
+  @location(1) normal: vec3f,
+}
+
+@vertex
+fn litVertex(@location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
+  let world = modelToWorld(position);
+  var out: VertexOut;
+  out.clip = frame.viewProj * vec4f(world, 1.0);
+  out.world = world;
+  out.normal = (frame.model * vec4f(normal, 0.0)).xyz;
+  return out;
+}
+
+@fragment
+fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) vec4f {
+  let toEye = normalize(frame.eye.xyz - in.world);
+  // The facet's normal, for vertices whose normal is degenerate (a zero sum of faces).
+  var faceNormal = normalize(cross(dpdx(in.world), dpdy(in.world)));
+  faceNormal = select(-faceNormal, faceNormal, dot(faceNormal, toEye) >= 0.0);
+  var n = faceNormal;
+  if (dot(in.normal, in.normal) > 1e-12) {
+    n = normalize(in.normal);
+    // Open surfaces show their back: light it as seen, from the viewer's side.
+    n = select(-n, n, front);
+  }
+
+  // Clay front, a cooler tint inside open surfaces.
+  let albedo = select(linearFromSrgb(vec3f(0.56, 0.66, 0.78)), linearFromSrgb(vec3f(0.86, 0.80, 0.72)), front);
+  let l = frame.toLight.xyz;
+  let ndl = max(dot(n, l), 0.0);
+  let shadow = shadowFactor(in.world, n);
+  let h = normalize(l + toEye);
+  let specular = pow(max(dot(n, h), 0.0), 64.0) * 0.22 * ndl;
+  // A faint rim keeps the silhouette readable against the dark backdrop.
+  let rim = pow(1.0 - max(dot(n, toEye), 0.0), 4.0) * 0.18;
+
+  let colour = albedo * (ambient(n) + SUN * ndl * shadow) + SUN * specular * shadow + vec3f(rim) * ambient(n);
+  return vec4f(toneMap(colour), 1.0);
+}

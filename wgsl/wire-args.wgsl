@@ -1,0 +1,14 @@
+// The wireframe's indirect draw: six line vertices per triangle of whatever the tessellator
+// last built. One thread; it runs on the GPU because only the GPU knows the index count.
+
+@group(0) @binding(0) var<storage, read> drawArgs: array<u32, 5>;
+@group(0) @binding(1) var<storage, read_write> wireArgs: array<u32, 4>;
+
+@compute @workgroup_size(1)
+fn wireArgsMain() {
+  // drawIndirect layout: vertexCount, instanceCount, firstVertex, firstInstance.
+  wireArgs[0] = (drawArgs[0] / 3u) * 6u;
+  wireArgs[1] = drawArgs[1];
+  wireArgs[2] = 0u;
+  wireArgs[3] = 0u;
+}
