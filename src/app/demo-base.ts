@@ -1,0 +1,270 @@
+/**
+ * The small base every WebGPU page of the site can share (after toji's TinyWebGpuDemo): it owns
+ * the canvas and its HiDPI size, the device (and its recovery after a loss), the orbit camera
+ * and its input, the frame loop and its timing. A page overrides onInit / onFrame.
+ *
+ * Frames are drawn on demand: only when something changed (camera, size, settings) or while
+ * animating. `frozenTime` (the URL's ?t=) pins the clock for deterministic screenshots.
+ */
+import { createGpu, GpuUnavailableError, type GpuContext } from '../gpu/device.ts';
+import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
+import { setLoading, setPageState, showFatal, showToast } from './ui.ts';
+
+export interface DemoBaseOptions {
+  /** Seconds: render as if at this time, and never advance the clock. */
+  frozenTime: number | null;
+}
+
+export interface FrameTiming {
+  /** Milliseconds between the last frames drawn (0 when idle). */
+  frameMs: number;
+  /** Milliseconds of JavaScript spent encoding a frame. */
+  jsMs: number;
+}
+
+const SAMPLES = 20;
+const ORBIT_RADIANS_PER_PIXEL = 0.008;
+const KEY_ORBIT_STEP = (5 * Math.PI) / 180;
+
+export abstract class DemoBase {
+  readonly canvas: HTMLCanvasElement;
+  readonly frozenTime: number | null;
+  gpu!: GpuContext;
+  context!: GPUCanvasContext;
+  /** The canvas texture's format, and the view format the renderer draws with (its -srgb twin). */
+  canvasFormat!: GPUTextureFormat;
+  renderFormat!: GPUTextureFormat;
+  camera: OrbitCamera | null = null;
+  readonly timing: FrameTiming = { frameMs: 0, jsMs: 0 };
+
+  #dirty = true;
+  #lastFrameAt = 0;
+  #frameSamples: number[] = [];
+  #jsSamples: number[] = [];
+  #startedAt = performance.now();
+  #recovering = false;
+  #pointers = new Map<number, { x: number; y: number }>();
+
+  constructor(canvas: HTMLCanvasElement, options: DemoBaseOptions) {
+    this.canvas = canvas;
+    this.frozenTime = options.frozenTime;
+  }
+
+  /** Called with each new device (the first, and again after a device loss): create GPU resources. */
+  protected abstract onInit(): Promise<void> | void;
+  /** Encode one frame into `target` (the canvas's current texture). */
+  protected abstract onFrame(encoder: GPUCommandEncoder, target: GPUTexture, time: number): void;
+  /** After the frame's commands were submitted: read back timings and counters. */
+  protected onAfterSubmit(): void {}
+  /** The user moved the camera. */
+  protected onCameraChanged(): void {}
+  /** Release GPU resources of a lost device (they are garbage, but hold JS references). */
+  protected onDeviceLost(): void {}
+  /** Whether to keep drawing frames without further input (animation). */
+  protected isAnimating(): boolean {
+    return false;
+  }
+
+  /** Seconds since start, or the frozen time. */
+  get time(): number {
+    return this.frozenTime ?? (performance.now() - this.#startedAt) / 1000;
+  }
+
+  get aspect(): number {
+    return this.canvas.width / Math.max(1, this.canvas.height);
+  }
+
+  async start(): Promise<boolean> {
+    setLoading('Starting WebGPU…');
+    try {
+      await this.#initDevice();
+    } catch (e) {
+      if (e instanceof GpuUnavailableError) showFatal(e.problem, e.message);
+      else showFatal('other', (e as Error)?.stack ?? String(e));
+      return false;
+    }
+    this.#observeSize();
+    this.#bindInput();
+    const loop = () => {
+      this.#tick();
+      requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+    return true;
+  }
+
+  /** Draw a frame at the next animation frame. */
+  requestFrame(): void {
+    this.#dirty = true;
+  }
+
+  /** Frame the model, or restore an explicit camera. */
+  setCamera(camera: OrbitCamera): void {
+    this.camera = camera;
+    this.onCameraChanged();
+    this.requestFrame();
+  }
+
+  frameBounds(bounds: Bounds): OrbitCamera {
+    return fitOrbit(bounds, this.aspect);
+  }
+
+  async #initDevice(): Promise<void> {
+    this.gpu = await createGpu({
+      gpu: navigator.gpu,
+      onLost: (info) => void this.#recover(info),
+      onUncapturedError: (error) => {
+        console.error(`WebGPU ${error.constructor.name}: ${error.message}`);
+        showToast(error.message, { kind: 'error', title: 'WebGPU error' });
+      },
+    });
+    this.context = this.canvas.getContext('webgpu') as GPUCanvasContext;
+    this.canvasFormat = navigator.gpu.getPreferredCanvasFormat();
+    // Draw through an -srgb view: lighting stays linear, blending and MSAA resolve happen in
+    // linear space, and the canvas (whose own format cannot be -srgb) stores encoded values.
+    this.renderFormat = `${this.canvasFormat}-srgb` as GPUTextureFormat;
+    this.context.configure({
+      device: this.gpu.device,
+      format: this.canvasFormat,
+      viewFormats: [this.renderFormat],
+      alphaMode: 'opaque',
+    });
+    await this.onInit();
+    this.requestFrame();
+  }
+
+  async #recover(info: GPUDeviceLostInfo): Promise<void> {
+    if (this.#recovering) return;
+    this.#recovering = true;
+    console.warn(`WebGPU device lost (${info.reason}): ${info.message}`);
+    setPageState('lost');
+    showToast(`${info.message || 'no message'} — recreating the device and its resources.`, { kind: 'info', title: 'GPU device lost', timeout: 5000 });
+    this.onDeviceLost();
+    for (let attempt = 0; attempt < 3; attempt++) {
+      try {
+        this.context.unconfigure();
+        await this.#initDevice();
+        this.#recovering = false;
+        setPageState('ready');
+        return;
+      } catch (e) {
+        console.error('device recovery failed', e);
+        await new Promise((r) => setTimeout(r, 250 * (attempt + 1)));
+      }
+    }
+    showFatal('lost', info.message);
+  }
+
+  #tick(): void {
+    if (this.#recovering || !this.camera) return;
+    if (!this.#dirty && !(this.frozenTime === null && this.isAnimating())) {
+      this.#lastFrameAt = 0;
+      return;
+    }
+    this.#dirty = false;
+    const now = performance.now();
+    if (this.#lastFrameAt) push(this.#frameSamples, now - this.#lastFrameAt);
+    this.#lastFrameAt = now;
+
+    const device = this.gpu.device;
+    const encoder = device.createCommandEncoder({ label: 'frame encoder' });
+    this.onFrame(encoder, this.context.getCurrentTexture(), this.time);
+    device.queue.submit([encoder.finish()]);
+    push(this.#jsSamples, performance.now() - now);
+    this.timing.frameMs = average(this.#frameSamples);
+    this.timing.jsMs = average(this.#jsSamples);
+    this.onAfterSubmit();
+  }
+
+  #observeSize(): void {
+    const maxSize = this.gpu.device.limits.maxTextureDimension2D;
+    const observer = new ResizeObserver(([entry]) => {
+      // Device pixels when the browser reports them exactly; otherwise CSS pixels × DPR.
+      const box = entry.devicePixelContentBoxSize?.[0];
+      const dpr = window.devicePixelRatio || 1;
+      const width = box ? box.inlineSize : Math.round(entry.contentBoxSize[0].inlineSize * dpr);
+      const height = box ? box.blockSize : Math.round(entry.contentBoxSize[0].blockSize * dpr);
+      this.canvas.width = Math.max(1, Math.min(width, maxSize));
+      this.canvas.height = Math.max(1, Math.min(height, maxSize));
+      this.onCameraChanged();
+      this.requestFrame();
+    });
+    try {
+      observer.observe(this.canvas, { box: 'device-pixel-content-box' });
+    } catch {
+      observer.observe(this.canvas);
+    }
+  }
+
+  #moveCamera(change: (c: OrbitCamera) => OrbitCamera): void {
+    if (!this.camera) return;
+    this.camera = change(this.camera);
+    this.onCameraChanged();
+    this.requestFrame();
+  }
+
+  #bindInput(): void {
+    const canvas = this.canvas;
+    canvas.addEventListener('pointerdown', (e) => {
+      canvas.setPointerCapture(e.pointerId);
+      this.#pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    });
+    const release = (e: PointerEvent) => this.#pointers.delete(e.pointerId);
+    canvas.addEventListener('pointerup', release);
+    canvas.addEventListener('pointercancel', release);
+    canvas.addEventListener('pointermove', (e) => {
+      const last = this.#pointers.get(e.pointerId);
+      if (!last) return;
+      if (this.#pointers.size === 1) {
+        const dx = e.clientX - last.x;
+        const dy = e.clientY - last.y;
+        this.#moveCamera((c) => orbit(c, -dx * ORBIT_RADIANS_PER_PIXEL, dy * ORBIT_RADIANS_PER_PIXEL));
+      } else if (this.#pointers.size === 2) {
+        // Pinch: zoom by the change of the distance between the two fingers.
+        const other = [...this.#pointers.entries()].find(([id]) => id !== e.pointerId)![1];
+        const before = Math.hypot(last.x - other.x, last.y - other.y);
+        const after = Math.hypot(e.clientX - other.x, e.clientY - other.y);
+        if (before > 0 && after > 0) this.#moveCamera((c) => dolly(c, before / after));
+      }
+      this.#pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });
+    });
+    canvas.addEventListener(
+      'wheel',
+      (e) => {
+        e.preventDefault();
+        // Lines or pages from some mice; pixels from trackpads.
+        const pixels = e.deltaY * (e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? 400 : 1);
+        this.#moveCamera((c) => dolly(c, Math.exp(Math.max(-200, Math.min(200, pixels)) * 0.0015)));
+      },
+      { passive: false },
+    );
+    window.addEventListener('keydown', (e) => {
+      const target = e.target as HTMLElement | null;
+      if (target && (target.isContentEditable || /^(INPUT|TEXTAREA|SELECT)$/.test(target.tagName))) return;
+      if (e.ctrlKey || e.metaKey || e.altKey) return;
+      const moves: Record<string, (c: OrbitCamera) => OrbitCamera> = {
+        ArrowLeft: (c) => orbit(c, -KEY_ORBIT_STEP, 0),
+        ArrowRight: (c) => orbit(c, KEY_ORBIT_STEP, 0),
+        ArrowUp: (c) => orbit(c, 0, KEY_ORBIT_STEP),
+        ArrowDown: (c) => orbit(c, 0, -KEY_ORBIT_STEP),
+        '+': (c) => dolly(c, 1 / 1.15),
+        '=': (c) => dolly(c, 1 / 1.15),
+        '-': (c) => dolly(c, 1.15),
+        _: (c) => dolly(c, 1.15),
+      };
+      const move = moves[e.key];
+      if (!move) return;
+      e.preventDefault();
+      this.#moveCamera(move);
+    });
+  }
+}
+
+function push(samples: number[], x: number): void {
+  samples.push(x);
+  if (samples.length > SAMPLES) samples.shift();
+}
+
+function average(samples: number[]): number {
+  return samples.length ? samples.reduce((a, b) => a + b, 0) / samples.length : 0;
+}

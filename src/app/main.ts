@@ -1,0 +1,396 @@
+/**
+ * The demo page: a cage, tessellated on the GPU, drawn lit and shadowed with optional wireframe
+ * and cage overlays. The geometry is rebuilt only when the model, the factors or (in adaptive
+ * mode) the camera change; every other frame draws the stored buffers again.
+ */
+import GUI from 'lil-gui';
+import { CageError } from '../mesh/index.ts';
+import { mat4 } from 'gl-matrix';
+import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
+import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
+import { Renderer } from '../gpu/renderer.ts';
+import type { FactorParams } from '../gpu/types.ts';
+import { DemoBase } from './demo-base.ts';
+import { CountsReader, type MeshCounts } from './counts.ts';
+import { createGeometry, type GeometrySource } from './geometry.ts';
+import {
+  BUILTIN_MODELS, DEFAULT_MODEL, fetchModelList, loadModelFromFile, loadModelFromUrl, modelUrl,
+  type LoadedModel, type ModelEntry,
+} from './models.ts';
+import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { renderStats } from './stats.ts';
+import { setLoading, setPageState, showToast } from './ui.ts';
+
+/** Turntable speed, radians per second. */
+const SPIN_SPEED = 0.35;
+
+class TessellationDemo extends DemoBase {
+  params: DemoParams;
+  models: ModelEntry[] = BUILTIN_MODELS;
+  model: LoadedModel | null = null;
+  /** The model's bounds in world space, and its model-to-world rotation (up axis to +Y). */
+  bounds: Bounds | null = null;
+  modelMatrix = upAxisMatrix('z') as Float32Array;
+
+  renderer: Renderer | null = null;
+  geometry: GeometrySource | null = null;
+  cageLines: CageLines | null = null;
+  counts: CountsReader | null = null;
+
+  lastCounts: MeshCounts | null = null;
+  /** GPU milliseconds of the last rebuild's passes, and of the last frame's draw passes. */
+  tessTimes: Record<string, number> = {};
+  drawTimes: Record<string, number> = {};
+  rebuilds = 0;
+  #geometryDirty = true;
+  #rebuiltThisFrame = false;
+  #statsDue = 0;
+  #firstFrameShown = false;
+
+  constructor(canvas: HTMLCanvasElement, params: DemoParams) {
+    super(canvas, { frozenTime: params.t });
+    this.params = params;
+  }
+
+  protected override async onInit(): Promise<void> {
+    const device = this.gpu.device;
+    this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
+    this.geometry = await createGeometry(device);
+    this.counts = new CountsReader(device);
+    // After a device loss: upload the current model to the new device.
+    if (this.model) this.#uploadModel(this.model);
+  }
+
+  protected override onDeviceLost(): void {
+    this.renderer = null;
+    this.geometry = null;
+    this.cageLines = null;
+    this.counts = null;
+  }
+
+  protected override isAnimating(): boolean {
+    return this.params.spin;
+  }
+
+  protected override onCameraChanged(): void {
+    if (this.geometry?.dependsOnCamera(this.params)) this.#geometryDirty = true;
+  }
+
+  /** Factors or model changed: rebuild at the next frame. */
+  invalidateGeometry(): void {
+    this.#geometryDirty = true;
+    this.requestFrame();
+  }
+
+  /** The camera as drawn at `time`: the user's, turned by the turntable. */
+  viewCamera(time: number): OrbitCamera {
+    const cam = this.camera!;
+    return this.params.spin ? { ...cam, yaw: cam.yaw + time * SPIN_SPEED } : cam;
+  }
+
+  protected override onFrame(encoder: GPUCommandEncoder, target: GPUTexture, time: number): void {
+    const renderer = this.renderer;
+    const geometry = this.geometry;
+    if (!renderer || !geometry) return;
+    const cam = this.viewCamera(time);
+    const m = cameraMatrices(cam, target.width / Math.max(1, target.height));
+    const viewProj = m.viewProj as Float32Array;
+
+    // While spinning, adaptive factors follow the moving camera: rebuild every frame.
+    if (this.params.spin && geometry.dependsOnCamera(this.params)) this.#geometryDirty = true;
+    this.#rebuiltThisFrame = false;
+    if (this.#geometryDirty && geometry.output) {
+      // The tessellator works in the cage's own space: hand it the camera in model space.
+      const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.modelMatrix) as Float32Array;
+      const worldToModel = mat4.invert(mat4.create(), this.modelMatrix)!;
+      const factors: FactorParams = {
+        mode: this.params.mode,
+        fixedFactor: this.params.factor,
+        lodScale: this.params.lod,
+        viewProj: modelViewProj,
+        eye: transformPoint(worldToModel, m.eye),
+        viewportHeight: target.height,
+        fovY: cam.fovY,
+      };
+      geometry.encode(encoder, factors);
+      this.counts?.copy(encoder, geometry.output.counts);
+      this.#geometryDirty = false;
+      this.#rebuiltThisFrame = true;
+      this.rebuilds++;
+    }
+    renderer.render(encoder, target, { viewProj, model: this.modelMatrix, eye: m.eye }, { wireframe: this.params.wire, cage: this.params.cage });
+  }
+
+  protected override onAfterSubmit(): void {
+    const renderer = this.renderer;
+    const geometry = this.geometry;
+    const rebuilt = this.#rebuiltThisFrame;
+    void (async () => {
+      const [draw, tess, counts] = await Promise.all([
+        renderer?.readTimings() ?? {},
+        rebuilt ? geometry?.readTimings() ?? {} : null,
+        this.counts?.read() ?? null,
+      ]);
+      if (tess) this.tessTimes = tess;
+      this.drawTimes = draw;
+      if (counts) this.lastCounts = counts;
+      this.updateStats();
+    })();
+    if (!this.#firstFrameShown && this.model) {
+      this.#firstFrameShown = true;
+      // Ready once the GPU has finished the first complete frame (what screenshots wait for).
+      void this.gpu.device.queue.onSubmittedWorkDone().then(() => {
+        setLoading(null);
+        setPageState('ready');
+      });
+    }
+  }
+
+  updateStats(force = false): void {
+    const now = performance.now();
+    if (!force && now < this.#statsDue) return;
+    this.#statsDue = now + 250;
+    const panel = document.getElementById('stats');
+    if (!panel || !this.params.ui) return;
+    panel.innerHTML = renderStats({
+      model: this.model,
+      counts: this.lastCounts,
+      vertexCapacity: this.geometry?.output?.vertexCapacity ?? 0,
+      triangleCapacity: this.geometry?.output?.triangleCapacity ?? 0,
+      source: this.geometry?.kind ?? 'cage',
+      mode: this.params.mode,
+      tessTimes: this.tessTimes,
+      drawTimes: this.drawTimes,
+      timestamps: this.gpu.timestamps,
+      frameMs: this.timing.frameMs,
+      jsMs: this.timing.jsMs,
+      rebuilds: this.rebuilds,
+      adapter: this.gpu.adapterName,
+    });
+  }
+
+  /** Show a model; on failure keep the current one and say why. */
+  async showModel(load: () => Promise<LoadedModel>, what: string, camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): Promise<boolean> {
+    setLoading(`Loading ${what}…`);
+    let model: LoadedModel;
+    try {
+      model = await load();
+    } catch (e) {
+      setLoading(null);
+      const message = e instanceof CageError ? e.message : (e as Error)?.message ?? String(e);
+      const kept = this.model ? `\n\nStill showing ${this.model.title}.` : '';
+      showToast(message + kept, { kind: 'error', title: `Could not load ${what}` });
+      if (!this.model) setPageState('error');
+      return false;
+    }
+    try {
+      this.#uploadModel(model);
+    } catch (e) {
+      setLoading(null);
+      showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${what}` });
+      if (this.model) this.#uploadModel(this.model);
+      return false;
+    }
+    for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
+    const previous = this.model;
+    this.model = model;
+    this.placeModel(camera);
+    this.lastCounts = null;
+    this.invalidateGeometry();
+    if (previous) setLoading(null);
+    this.updateStats(true);
+    return true;
+  }
+
+  /** World bounds, light and camera for the current model and up axis. */
+  placeModel(camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): void {
+    if (!this.model) return;
+    this.modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
+    this.bounds = transformBounds(boundsOf(this.model.cage.positions), this.modelMatrix);
+    this.renderer!.setBounds(this.bounds);
+    this.setCamera(this.#initialCamera(this.bounds, camera));
+    this.invalidateGeometry();
+  }
+
+  #uploadModel(model: LoadedModel): void {
+    const device = this.gpu.device;
+    this.geometry!.setCage(model.cage);
+    this.renderer!.setMesh(this.geometry!.output);
+    this.cageLines?.vertices.destroy();
+    this.cageLines = uploadCageLines(device, model.cage);
+    this.renderer!.setCage(this.cageLines);
+    if (this.bounds) this.renderer!.setBounds(this.bounds);
+    this.invalidateGeometry();
+  }
+
+  #initialCamera(bounds: Bounds, p?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): OrbitCamera {
+    const cam = this.frameBounds(bounds);
+    const deg = Math.PI / 180;
+    return {
+      ...cam,
+      yaw: p?.yaw != null ? p.yaw * deg : cam.yaw,
+      pitch: p?.pitch != null ? p.pitch * deg : cam.pitch,
+      distance: p?.dist != null ? p.dist * cam.subject.radius : cam.distance,
+    };
+  }
+
+  resetCamera(): void {
+    if (this.bounds) this.setCamera(this.frameBounds(this.bounds));
+  }
+
+  /** The current view as URL parameters (camera included), for sharing. */
+  shareUrl(): string {
+    const cam = this.camera;
+    const p: DemoParams = { ...this.params, t: null };
+    if (cam) {
+      p.yaw = (cam.yaw * 180) / Math.PI;
+      p.pitch = (cam.pitch * 180) / Math.PI;
+      p.dist = cam.distance / cam.subject.radius;
+    }
+    return `${location.origin}${location.pathname}${formatParams(p)}`;
+  }
+}
+
+function syncUrl(params: DemoParams): void {
+  // Camera angles in the URL describe the first view only: drop them once the user changes anything.
+  const p: DemoParams = { ...params, yaw: null, pitch: null, dist: null };
+  history.replaceState(null, '', `${location.pathname}${formatParams(p)}`);
+}
+
+interface Panel {
+  gui: GUI;
+  /** Show this model as picked (when it came from the URL, or after a fallback). */
+  showPicked(name: string): void;
+}
+
+function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
+  const p = demo.params;
+  const gui = new GUI({ title: 'Controls', width: 272 });
+  gui.domElement.classList.add('panel');
+  const state = {
+    model: initialModel,
+    open: () => openFile(demo),
+    reset: () => demo.resetCamera(),
+    share: () => {
+      const url = demo.shareUrl();
+      void navigator.clipboard?.writeText(url).then(
+        () => showToast('Link to this view copied.', { timeout: 2500 }),
+        () => showToast(url, { title: 'Link to this view' }),
+      );
+    },
+  };
+  const options = Object.fromEntries(demo.models.map((m) => [m.label, m.name]));
+  const modelFolder = gui.addFolder('Model');
+  const picker = modelFolder.add(state, 'model', options).name('cage').onChange((name: string) => {
+    p.model = name;
+    syncUrl(p);
+    void demo.showModel(() => loadModelFromUrl(modelUrl(name), name), name);
+  });
+  modelFolder.add(p, 'up', { 'Z (project models)': 'z', Y: 'y' }).name('up axis').onChange(() => {
+    syncUrl(p);
+    demo.placeModel();
+  });
+  modelFolder.add(state, 'open').name('open an OBJ file…');
+
+  const tess = gui.addFolder('Tessellation');
+  const changed = () => {
+    syncUrl(p);
+    demo.invalidateGeometry();
+  };
+  tess.add(p, 'mode', { adaptive: 'adaptive', fixed: 'fixed' }).name('factors').onChange(() => {
+    showMode();
+    changed();
+  });
+  const lod = tess.add(p, 'lod', LOD_RANGE.min, LOD_RANGE.max, 0.05).name('LOD scale').onChange(changed);
+  const factor = tess.add(p, 'factor', FACTOR_RANGE.min, FACTOR_RANGE.max, 0.25).name('fixed factor').onChange(changed);
+  const showMode = () => {
+    lod.show(p.mode === 'adaptive');
+    factor.show(p.mode === 'fixed');
+  };
+  showMode();
+
+  const view = gui.addFolder('View');
+  const redraw = () => {
+    syncUrl(p);
+    demo.requestFrame();
+  };
+  view.add(p, 'wire').name('wireframe').onChange(redraw);
+  view.add(p, 'cage').name('cage overlay').onChange(redraw);
+  view.add(p, 'spin').name('turntable').onChange(redraw);
+  view.add(state, 'reset').name('reset camera');
+  view.add(state, 'share').name('copy link to this view');
+  if (window.matchMedia('(max-width: 640px)').matches) gui.close();
+  return {
+    gui,
+    showPicked(name: string) {
+      state.model = name;
+      picker.updateDisplay();
+    },
+  };
+}
+
+function openFile(demo: TessellationDemo): void {
+  const input = document.createElement('input');
+  input.type = 'file';
+  input.accept = '.obj,text/plain';
+  input.addEventListener('change', () => {
+    const file = input.files?.[0];
+    if (file) void demo.showModel(() => loadModelFromFile(file), file.name);
+  });
+  input.click();
+}
+
+function enableDrop(demo: TessellationDemo): void {
+  const overlay = document.getElementById('drop-target')!;
+  let depth = 0;
+  const hasFiles = (e: DragEvent) => [...(e.dataTransfer?.types ?? [])].includes('Files');
+  window.addEventListener('dragenter', (e) => {
+    if (!hasFiles(e)) return;
+    depth++;
+    overlay.hidden = false;
+  });
+  window.addEventListener('dragleave', () => {
+    depth = Math.max(0, depth - 1);
+    if (depth === 0) overlay.hidden = true;
+  });
+  window.addEventListener('dragover', (e) => {
+    if (hasFiles(e)) e.preventDefault();
+  });
+  window.addEventListener('drop', (e) => {
+    e.preventDefault();
+    depth = 0;
+    overlay.hidden = true;
+    const file = e.dataTransfer?.files?.[0];
+    if (file) void demo.showModel(() => loadModelFromFile(file), file.name);
+  });
+}
+
+async function main(): Promise<void> {
+  const params = parseParams(location.search);
+  document.body.classList.toggle('no-ui', !params.ui);
+  const canvas = document.getElementById('view') as HTMLCanvasElement;
+  const demo = new TessellationDemo(canvas, params);
+  // Debug and test hook: the live demo, and a way to simulate a device loss.
+  (window as unknown as { tessellab: unknown }).tessellab = {
+    demo,
+    loseDevice: () => demo.gpu.device.destroy(),
+  };
+  const [started, models] = await Promise.all([demo.start(), fetchModelList()]);
+  if (!started) return;
+  demo.models = models;
+
+  const name = params.model ?? DEFAULT_MODEL;
+  const panel = params.ui ? buildPanel(demo, isModelUrl(name) ? DEFAULT_MODEL : name) : null;
+  enableDrop(demo);
+
+  const camera = { yaw: params.yaw, pitch: params.pitch, dist: params.dist };
+  if (isModelUrl(name)) {
+    await demo.showModel(() => loadModelFromUrl(name, name.split('/').pop() || name), name, camera);
+  } else {
+    const ok = await demo.showModel(() => loadModelFromUrl(modelUrl(name), name), name, camera);
+    if (!ok && name !== DEFAULT_MODEL) await demo.showModel(() => loadModelFromUrl(modelUrl(DEFAULT_MODEL), DEFAULT_MODEL), DEFAULT_MODEL, camera);
+    if (!ok) panel?.showPicked(demo.model?.title ?? DEFAULT_MODEL);
+  }
+}
+
+void main();

@@ -1,0 +1,125 @@
+/**
+ * The demo's tunables, read from and written back to the URL, so that any view can be shared
+ * or reproduced: `?model=torus&mode=fixed&factor=12&wire=1&cage=0&lod=1.5&up=z&t=0`.
+ * Pure functions (no DOM) so the unit tests can hold them to their contract.
+ */
+
+export type Mode = 'adaptive' | 'fixed';
+export type UpAxis = 'y' | 'z';
+
+export interface DemoParams {
+  /** A model name from the project's list, or a URL of an OBJ file. */
+  model: string | null;
+  /** The model's up axis: the project's models are Z-up; many OBJ exporters write Y-up. */
+  up: UpAxis;
+  mode: Mode;
+  /** Adaptive mode's global LOD scale (1 = the default density). */
+  lod: number;
+  /** Fixed mode's one factor. */
+  factor: number;
+  wire: boolean;
+  cage: boolean;
+  /** Turntable: the camera turns around the model (and adaptive mode rebuilds every frame). */
+  spin: boolean;
+  /** Render one fixed frame at this time (seconds) and stop: deterministic screenshots. */
+  t: number | null;
+  /** Camera yaw and pitch in degrees, and distance in bounding radii (null = framed automatically). */
+  yaw: number | null;
+  pitch: number | null;
+  dist: number | null;
+  /** Show the control panel and stats (off for clean embeds). */
+  ui: boolean;
+}
+
+export const LOD_RANGE = { min: 0.05, max: 8 } as const;
+export const FACTOR_RANGE = { min: 1, max: 64 } as const;
+
+export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
+  model: null,
+  up: 'z',
+  mode: 'adaptive',
+  lod: 1,
+  factor: 8,
+  wire: true,
+  cage: false,
+  spin: false,
+  t: null,
+  yaw: null,
+  pitch: null,
+  dist: null,
+  ui: true,
+});
+
+function num(v: string | null, min: number, max: number): number | null {
+  if (v === null || v.trim() === '') return null;
+  const x = Number(v);
+  if (!Number.isFinite(x)) return null;
+  return Math.min(max, Math.max(min, x));
+}
+
+function bool(v: string | null): boolean | null {
+  if (v === null) return null;
+  const s = v.trim().toLowerCase();
+  if (s === '' || s === '1' || s === 'true' || s === 'yes' || s === 'on') return true;
+  if (s === '0' || s === 'false' || s === 'no' || s === 'off') return false;
+  return null;
+}
+
+/**
+ * Parse a query string (with or without the leading '?'). Unknown keys are ignored, bad values
+ * fall back to the defaults, numbers are clamped to their ranges: a URL can never break the page.
+ * `freeze=1` is a synonym of `t=0`.
+ */
+export function parseParams(search: string): DemoParams {
+  const q = new URLSearchParams(search.startsWith('?') ? search.slice(1) : search);
+  const p: DemoParams = { ...DEFAULT_PARAMS };
+  const model = q.get('model');
+  if (model !== null && model.trim() !== '') p.model = model.trim();
+  const up = q.get('up')?.trim().toLowerCase();
+  if (up === 'y' || up === 'z') p.up = up;
+  const mode = q.get('mode')?.trim().toLowerCase();
+  if (mode === 'adaptive' || mode === 'fixed') p.mode = mode;
+  p.lod = num(q.get('lod'), LOD_RANGE.min, LOD_RANGE.max) ?? p.lod;
+  p.factor = num(q.get('factor'), FACTOR_RANGE.min, FACTOR_RANGE.max) ?? p.factor;
+  p.wire = bool(q.get('wire')) ?? p.wire;
+  p.cage = bool(q.get('cage')) ?? p.cage;
+  p.spin = bool(q.get('spin')) ?? p.spin;
+  p.ui = bool(q.get('ui')) ?? p.ui;
+  p.t = num(q.get('t'), 0, 1e6);
+  if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
+  p.yaw = num(q.get('yaw'), -1e4, 1e4);
+  p.pitch = num(q.get('pitch'), -89, 89);
+  p.dist = num(q.get('dist'), 0.5, 40);
+  return p;
+}
+
+/** The query string for these params, listing only what differs from the defaults. */
+export function formatParams(p: DemoParams): string {
+  const q = new URLSearchParams();
+  const d = DEFAULT_PARAMS;
+  if (p.model) q.set('model', p.model);
+  if (p.up !== d.up) q.set('up', p.up);
+  if (p.mode !== d.mode) q.set('mode', p.mode);
+  if (p.lod !== d.lod) q.set('lod', String(round(p.lod, 3)));
+  if (p.factor !== d.factor) q.set('factor', String(round(p.factor, 3)));
+  if (p.wire !== d.wire) q.set('wire', p.wire ? '1' : '0');
+  if (p.cage !== d.cage) q.set('cage', p.cage ? '1' : '0');
+  if (p.spin !== d.spin) q.set('spin', p.spin ? '1' : '0');
+  if (p.ui !== d.ui) q.set('ui', p.ui ? '1' : '0');
+  if (p.t !== null) q.set('t', String(p.t));
+  if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
+  if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));
+  if (p.dist !== null) q.set('dist', String(round(p.dist, 2)));
+  const s = q.toString();
+  return s ? `?${s}` : '';
+}
+
+function round(x: number, digits: number): number {
+  const k = 10 ** digits;
+  return Math.round(x * k) / k;
+}
+
+/** A model parameter that names a file rather than one of the project's models. */
+export function isModelUrl(model: string): boolean {
+  return /[/.:]/.test(model);
+}
