@@ -1,0 +1,3 @@
+import { mountFigurePage } from './figure-page.ts';
+
+mountFigurePage('line');
