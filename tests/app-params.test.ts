@@ -1,0 +1,60 @@
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_PARAMS, FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams } from '../src/app/params.ts';
+
+describe('URL parameters', () => {
+  it('an empty query gives the defaults', () => {
+    expect(parseParams('')).toEqual(DEFAULT_PARAMS);
+    expect(parseParams('?')).toEqual(DEFAULT_PARAMS);
+  });
+
+  it('reads every tunable', () => {
+    const p = parseParams('?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0');
+    expect(p).toEqual({
+      model: 'torus', up: 'y', mode: 'fixed', lod: 2.5, factor: 12, wire: false, cage: true, spin: true, t: 1.5,
+      yaw: 30, pitch: -10, dist: 3, ui: false,
+    });
+  });
+
+  it('clamps numbers to their ranges and ignores garbage', () => {
+    const p = parseParams('lod=1000&factor=-3&t=abc&mode=weird&wire=maybe&pitch=400&up=x');
+    expect(p.lod).toBe(LOD_RANGE.max);
+    expect(p.factor).toBe(FACTOR_RANGE.min);
+    expect(p.t).toBeNull();
+    expect(p.mode).toBe(DEFAULT_PARAMS.mode);
+    expect(p.wire).toBe(DEFAULT_PARAMS.wire);
+    expect(p.pitch).toBe(89);
+    expect(p.up).toBe('z');
+    expect(parseParams('lod=NaN&factor=Infinity').lod).toBe(DEFAULT_PARAMS.lod);
+  });
+
+  it('accepts the usual spellings of booleans; a bare key means true', () => {
+    for (const v of ['1', 'true', 'yes', 'on', '']) expect(parseParams(`cage=${v}`).cage).toBe(true);
+    for (const v of ['0', 'false', 'no', 'off']) expect(parseParams(`wire=${v}`).wire).toBe(false);
+    expect(parseParams('cage').cage).toBe(true);
+  });
+
+  it('freeze=1 is t=0, and an explicit t wins', () => {
+    expect(parseParams('freeze=1').t).toBe(0);
+    expect(parseParams('freeze=0').t).toBeNull();
+    expect(parseParams('freeze=1&t=2').t).toBe(2);
+  });
+
+  it('keeps model URLs intact', () => {
+    const p = parseParams(`model=${encodeURIComponent('https://example.com/a b.obj?x=1')}`);
+    expect(p.model).toBe('https://example.com/a b.obj?x=1');
+    expect(isModelUrl(p.model!)).toBe(true);
+    expect(isModelUrl('torus')).toBe(false);
+    expect(isModelUrl('creased-box')).toBe(false);
+    expect(isModelUrl('models/torus.obj')).toBe(true);
+  });
+
+  it('formats only what differs from the defaults, and round-trips', () => {
+    expect(formatParams(DEFAULT_PARAMS)).toBe('');
+    const cases = ['?model=gear&mode=fixed&factor=7.5', '?lod=0.25&wire=0&cage=1', '?model=sheet&up=y&t=0&yaw=12.5&pitch=20&dist=2.5', '?spin=1&ui=0'];
+    for (const q of cases) {
+      const p = parseParams(q);
+      expect(parseParams(formatParams(p))).toEqual(p);
+    }
+    expect(formatParams(parseParams('?mode=fixed&factor=7.5'))).toBe('?mode=fixed&factor=7.5');
+  });
+});
