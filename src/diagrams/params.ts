@@ -385,7 +385,10 @@ export function toQuery(p: Params, extra: Record<string, string> = {}): string {
   const have = formatParams(base);
   const sp = new URLSearchParams();
   if (p.fig) sp.set('fig', p.fig);
-  for (const [k, v] of want) if (have.get(k) !== v) sp.set(k === 'maxfactor' ? 'maxFactor' : k, v);
+  for (const [k, v] of want) if (k !== 'duration' && have.get(k) !== v) sp.set(k === 'maxfactor' ? 'maxFactor' : k, v);
+  // The duration defaults from the factors: give it only when the rest would not imply it.
+  const implied = formatParams(parseParams(p.kind, sp).params).get('duration');
+  if (implied !== want.get('duration')) sp.set('duration', want.get('duration') as string);
   for (const [k, v] of Object.entries(extra)) sp.set(k, v);
   return sp.toString().replace(/%2C/g, ',');
 }

@@ -48,7 +48,8 @@ export function phaseAt(tm: Timing, t: number): number {
 export function trackValue(track: Track, s: number, ease: Ease): number {
   const n = track.length;
   if (n === 1) return track[0];
-  const x = Math.min(1, Math.max(0, s)) * (n - 1);
+  let x = Math.min(1, Math.max(0, s)) * (n - 1);
+  if (Math.abs(x - Math.round(x)) < 1e-9) x = Math.round(x); // land exactly on the keys
   const i = Math.min(Math.floor(x), n - 2);
   const f = x - i;
   const a = track[i];
