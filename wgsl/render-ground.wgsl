@@ -24,7 +24,9 @@ fn gridLines(p: vec2f, spacing: f32) -> f32 {
   let q = p / spacing;
   let width = fwidth(q);
   let d = abs(fract(q - 0.5) - 0.5) / max(width, vec2f(1e-6));
-  return 1.0 - min(min(d.x, d.y), 1.0);
+  let line = 1.0 - min(min(d.x, d.y), 1.0);
+  // Where cells shrink to a few pixels (far away, grazing) the lines would turn into moiré: fade them.
+  return line * (1.0 - smoothstep(0.08, 0.3, max(width.x, width.y)));
 }
 
 @fragment
@@ -33,15 +35,15 @@ fn groundFragment(in: VertexOut) -> @location(0) vec4f {
   // Grid spacing: a power of ten near a quarter of the model's radius, with a minor grid.
   let major = pow(10.0, round(log2(r * 0.5) / log2(10.0)));
   let rel = in.world.xz - frame.center.xz;
-  let lines = max(gridLines(rel, major) * 0.7, gridLines(rel, major * 0.2) * 0.25);
+  let lines = max(gridLines(rel, major) * 0.5, gridLines(rel, major * 0.2) * 0.18);
 
   let up = vec3f(0.0, 1.0, 0.0);
   let shadow = shadowFactor(in.world, up);
-  let base = linearFromSrgb(vec3f(0.20, 0.22, 0.26));
-  let lit = base * (0.55 + 0.45 * max(frame.toLight.y, 0.0) * shadow);
-  let colour = mix(lit, linearFromSrgb(vec3f(0.36, 0.40, 0.47)), lines * (0.35 + 0.65 * shadow));
+  let base = linearFromSrgb(vec3f(0.25, 0.27, 0.31));
+  let lit = base * (0.35 + 0.65 * shadow);
+  let colour = mix(lit, linearFromSrgb(vec3f(0.42, 0.46, 0.53)), lines * (0.3 + 0.7 * shadow));
 
   // Fade out towards the edge of the plane so it has no visible border.
-  let fade = 1.0 - smoothstep(0.35, 1.0, length(rel) / (r * GROUND_EXTENT));
+  let fade = 1.0 - smoothstep(0.15, 0.8, length(rel) / (r * GROUND_EXTENT));
   return vec4f(colour, fade);
 }

@@ -9,7 +9,7 @@ const SUN = vec3f(1.0, 0.94, 0.86) * 2.2;
 fn ambient(n: vec3f) -> vec3f {
   let sky = linearFromSrgb(vec3f(0.64, 0.72, 0.84));
   let bounce = linearFromSrgb(vec3f(0.36, 0.32, 0.30));
-  return mix(bounce, sky, 0.5 + 0.5 * n.y) * 0.55;
+  return mix(bounce, sky, 0.5 + 0.5 * n.y) * 0.7;
 }
 
 // 0 in shadow, 1 lit. 4×4 taps of the hardware's bilinear comparison: a soft, stable edge.

@@ -178,6 +178,11 @@ export abstract class DemoBase {
 
   #observeSize(): void {
     const maxSize = this.gpu.device.limits.maxTextureDimension2D;
+    // Size the canvas now: the first frame (and the camera framed for its aspect) must not
+    // depend on when the observer's first callback comes.
+    const dpr = window.devicePixelRatio || 1;
+    this.canvas.width = Math.max(1, Math.min(Math.round(this.canvas.clientWidth * dpr), maxSize));
+    this.canvas.height = Math.max(1, Math.min(Math.round(this.canvas.clientHeight * dpr), maxSize));
     const observer = new ResizeObserver(([entry]) => {
       // Device pixels when the browser reports them exactly; otherwise CSS pixels × DPR.
       const box = entry.devicePixelContentBoxSize?.[0];

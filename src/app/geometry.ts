@@ -53,7 +53,7 @@ export class CageGeometry implements GeometrySource {
   }
 }
 
-/** The geometry source of the page: the flat cage until the compute tessellator is wired in. */
-export async function createGeometry(device: GPUDevice): Promise<GeometrySource> {
+/** The page's geometry source: the flat cage until the compute tessellator lands. */
+export async function createGeometry(device: GPUDevice, _capacity: number): Promise<GeometrySource> {
   return new CageGeometry(device);
 }

@@ -55,7 +55,7 @@ class TessellationDemo extends DemoBase {
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
     this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
-    this.geometry = await createGeometry(device);
+    this.geometry = await createGeometry(device, this.params.capacity * 1e6);
     this.counts = new CountsReader(device);
     // After a device loss: upload the current model to the new device.
     if (this.model) this.#uploadModel(this.model);

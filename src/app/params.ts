@@ -29,10 +29,13 @@ export interface DemoParams {
   dist: number | null;
   /** Show the control panel and stats (off for clean embeds). */
   ui: boolean;
+  /** Output buffer capacity, millions of vertices (and as many triangles). The talk uses 16. */
+  capacity: number;
 }
 
 export const LOD_RANGE = { min: 0.05, max: 8 } as const;
 export const FACTOR_RANGE = { min: 1, max: 64 } as const;
+export const CAPACITY_RANGE = { min: 0.01, max: 16 } as const;
 
 export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
@@ -48,6 +51,7 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   pitch: null,
   dist: null,
   ui: true,
+  capacity: 4,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -85,6 +89,7 @@ export function parseParams(search: string): DemoParams {
   p.cage = bool(q.get('cage')) ?? p.cage;
   p.spin = bool(q.get('spin')) ?? p.spin;
   p.ui = bool(q.get('ui')) ?? p.ui;
+  p.capacity = num(q.get('cap'), CAPACITY_RANGE.min, CAPACITY_RANGE.max) ?? p.capacity;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -106,6 +111,7 @@ export function formatParams(p: DemoParams): string {
   if (p.cage !== d.cage) q.set('cage', p.cage ? '1' : '0');
   if (p.spin !== d.spin) q.set('spin', p.spin ? '1' : '0');
   if (p.ui !== d.ui) q.set('ui', p.ui ? '1' : '0');
+  if (p.capacity !== d.capacity) q.set('cap', String(p.capacity));
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));

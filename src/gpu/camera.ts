@@ -76,8 +76,8 @@ export function fitOrbit(bounds: Bounds, aspect: number, fovY = DEFAULT_FOV_Y): 
   return {
     target: [...subject.center],
     distance: fitDistance(subject.radius, aspect, fovY),
-    yaw: -0.6,
-    pitch: 0.38,
+    yaw: 0.55,
+    pitch: 0.36,
     fovY,
     subject,
   };
@@ -87,7 +87,8 @@ export function fitOrbit(bounds: Bounds, aspect: number, fovY = DEFAULT_FOV_Y): 
 export function fitDistance(radius: number, aspect: number, fovY: number): number {
   const fovX = 2 * Math.atan(Math.tan(fovY / 2) * Math.max(aspect, 1e-3));
   const half = Math.min(fovY, fovX) / 2;
-  return (radius / Math.sin(half)) * 1.05;
+  // A margin around the sphere leaves room for the page's panels.
+  return (radius / Math.sin(half)) * 1.2;
 }
 
 export function eyePosition(cam: OrbitCamera): Vec3 {
@@ -143,8 +144,8 @@ export function cameraMatrices(cam: OrbitCamera, aspect: number): CameraMatrices
   return { view, proj, viewProj, eye, near, far };
 }
 
-/** Unit vector towards the light: a sun high on the right of the default view, so the shadow falls into view. */
-export const DEFAULT_LIGHT_DIR: Vec3 = normalize([0.6, 1.0, 0.45]);
+/** Unit vector towards the light: a sun high on the left of the default view, so the shadow falls into view. */
+export const DEFAULT_LIGHT_DIR: Vec3 = normalize([-0.65, 1.0, 0.5]);
 
 export function normalize(v: Vec3): Vec3 {
   const n = Math.hypot(v[0], v[1], v[2]) || 1;
