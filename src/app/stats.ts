@@ -57,14 +57,15 @@ export function renderStats(s: StatsInput): string {
     rows.push(row('buffers', buffers, 'stats-buffers'));
   }
   if (s.timestamps) {
-    const tess = Object.values(s.tessTimes).reduce((a, b) => a + b, 0);
-    const parts: string[] = [];
-    if (Object.keys(s.tessTimes).length) {
-      const detail = Object.entries(s.tessTimes).map(([k, v]) => `${esc(k)} ${ms(v)}`).join(', ');
-      parts.push(`<span title="${detail}">build ${ms(tess)}</span>`);
+    // The build runs only when the camera, factors or model change; the draw passes every frame.
+    const tess = Object.entries(s.tessTimes);
+    if (tess.length) {
+      const total = tess.reduce((a, [, v]) => a + v, 0);
+      const detail = tess.map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
+      rows.push(row('build ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>`, 'stats-build'));
     }
-    for (const [k, v] of Object.entries(s.drawTimes)) parts.push(`${esc(k)} ${ms(v)}`);
-    rows.push(row('GPU ms', parts.join(' · ') || '…', 'stats-gpu'));
+    const draw = Object.entries(s.drawTimes).map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
+    rows.push(row('draw ms', draw || '…', 'stats-gpu'));
   } else {
     rows.push(row('GPU ms', '<span class="muted">no timestamp-query on this device</span>', 'stats-gpu'));
   }

@@ -57,7 +57,8 @@ export function showToast(message: string, options: ToastOptions = {}): HTMLElem
 
 const HELP_LINKS = `<p class="links">
   <a href="https://caniuse.com/webgpu">Which browsers support WebGPU</a> ·
-  <a href="https://github.com/gpuweb/gpuweb/wiki/Implementation-Status">Implementation status</a></p>`;
+  <a href="https://github.com/gpuweb/gpuweb/wiki/Implementation-Status">Implementation status</a></p>
+  <p>Meanwhile, the <a href="./diagrams/index.html">animated diagrams of the patterns</a> need no WebGPU.</p>`;
 
 const FATAL_TEXT: Record<GpuProblem | 'lost' | 'other', { title: string; html: string }> = {
   'no-webgpu': {
