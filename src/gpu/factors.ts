@@ -1,0 +1,114 @@
+/**
+ * The edge tess-factor rule and the buffer budget, in TypeScript: the reference that
+ * wgsl/tess-common.wgsl (edgeFactor) mirrors, and what the unit tests hold it to.
+ *
+ * ADAPTIVE RULE (Hable: "the offset from the Phong midpoint to the linear midpoint, using arc
+ * angle instead of screen projection"). For an edge p0–p1 with unit normals n0, n1 and
+ * d = p1 − p0, Phong tessellation's midpoint minus the linear midpoint is
+ *     e = (α/4)·((d·n1)n1 − (d·n0)n0),  α = 3/4,
+ * symmetric in the two ends. Split into k segments a curved edge's chord error falls as 1/k²,
+ * so the error seen from the eye, as an angle, is |e| / (k²·dist). Asking for at most one pixel
+ * (pixelAngle = fovY / viewportHeight) at LOD scale 1 gives
+ *     k = sqrt(lodScale·|e| / (dist·pixelAngle)).
+ * Edges whose bounding sphere (centre: the Phong midpoint, radius |d|/2 + |e|) is outside the
+ * view frustum, and edges whose two ends both face away from the eye, drop to factor 1.
+ * Factors are clamped to [1, maxFactor]; NaN becomes 1, so nothing else reaches the
+ * tessellator.
+ */
+export const PHONG_ALPHA = 0.75;
+
+export type Vec3 = readonly [number, number, number];
+
+const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+
+/** Phong midpoint minus linear midpoint of an edge. */
+export function phongMidpointOffset(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3): Vec3 {
+  const d = sub(p1, p0);
+  const a = dot(d, n1), b = dot(d, n0);
+  const s = PHONG_ALPHA / 4;
+  return [s * (a * n1[0] - b * n0[0]), s * (a * n1[1] - b * n0[1]), s * (a * n1[2] - b * n0[2])];
+}
+
+export interface FactorRule {
+  mode: 'fixed' | 'adaptive';
+  fixedFactor: number;
+  lodScale: number;
+  /** Column-major view-projection, WebGPU clip space (z in 0..1). */
+  viewProj: ArrayLike<number>;
+  eye: Vec3;
+  /** fovY / viewportHeight, radians per pixel. */
+  pixelAngle: number;
+  maxFactor: number;
+}
+
+/** Is a sphere entirely outside one of the six frustum planes of viewProj? */
+export function sphereOutsideFrustum(m: ArrayLike<number>, c: Vec3, r: number): boolean {
+  const row = (i: number) => [m[i], m[4 + i], m[8 + i], m[12 + i]];
+  const r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
+  const planes = [
+    r3.map((v, i) => v + r0[i]), r3.map((v, i) => v - r0[i]),
+    r3.map((v, i) => v + r1[i]), r3.map((v, i) => v - r1[i]),
+    r2, r3.map((v, i) => v - r2[i]), // WebGPU: 0 ≤ z ≤ w
+  ];
+  for (const p of planes) {
+    const len = Math.hypot(p[0], p[1], p[2]);
+    if (p[0] * c[0] + p[1] * c[1] + p[2] * c[2] + p[3] < -r * len) return true;
+  }
+  return false;
+}
+
+export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorRule): number {
+  let f: number;
+  if (rule.mode === 'fixed') {
+    f = rule.fixedFactor;
+  } else {
+    const e = phongMidpointOffset(p0, p1, n0, n1);
+    const el = Math.hypot(e[0], e[1], e[2]);
+    const mid: Vec3 = [(p0[0] + p1[0]) / 2 + e[0], (p0[1] + p1[1]) / 2 + e[1], (p0[2] + p1[2]) / 2 + e[2]];
+    const radius = Math.hypot(...sub(p1, p0)) / 2 + el;
+    const toEye0 = sub(rule.eye, p0), toEye1 = sub(rule.eye, p1);
+    const away = dot(n0, toEye0) < -0.1 * Math.hypot(...toEye0) && dot(n1, toEye1) < -0.1 * Math.hypot(...toEye1);
+    if (away || sphereOutsideFrustum(rule.viewProj, mid, radius)) {
+      f = 1;
+    } else {
+      const dist = Math.max(Math.hypot(...sub(mid, rule.eye)), 1e-6);
+      f = Math.sqrt((rule.lodScale * el) / (dist * rule.pixelAngle));
+    }
+  }
+  if (!(f >= 1)) return 1; // NaN, ≤ 1
+  return Math.min(f, rule.maxFactor);
+}
+
+/**
+ * The budget: if a rebuild would need more than the buffers hold, every factor is scaled by
+ * s (counts grow about as factor², hence the square root) and the counts are taken again; if
+ * that still does not fit, every factor drops to 1. Returns the scale for the next attempt
+ * (1 when it fits).
+ */
+export function budgetScale(vertices: number, triangles: number, vertexCapacity: number, triangleCapacity: number): number {
+  if (vertices <= vertexCapacity && triangles <= triangleCapacity) return 1;
+  const ratio = Math.min(vertexCapacity / vertices, triangleCapacity / triangles);
+  return 0.9 * Math.sqrt(ratio);
+}
+
+/** Bytes of output per vertex and per triangle (positions, normals, bary, srcTri; indices). */
+export const BYTES_PER_VERTEX = 12 + 12 + 4 + 4;
+export const BYTES_PER_TRIANGLE = 12;
+
+/**
+ * Output capacities from the device limits: each output buffer must fit one storage binding
+ * (positions and normals are the largest per vertex, indices per triangle), and a request can
+ * only lower them.
+ */
+export function outputCapacity(
+  limits: { maxStorageBufferBindingSize: number; maxBufferSize: number },
+  request: { vertexCapacity?: number; triangleCapacity?: number } = {},
+): { vertexCapacity: number; triangleCapacity: number } {
+  const largest = Math.min(limits.maxStorageBufferBindingSize, limits.maxBufferSize);
+  const byLimit = Math.floor(largest / 12);
+  return {
+    vertexCapacity: Math.max(0, Math.min(byLimit, request.vertexCapacity ?? 1 << 24)),
+    triangleCapacity: Math.max(0, Math.min(byLimit, request.triangleCapacity ?? 1 << 24)),
+  };
+}

@@ -1,0 +1,28 @@
+/**
+ * Phong tessellation (Boubekeur & Alexa 2008) on the CPU, in double precision: the reference
+ * that wgsl/tess-common.wgsl evalSurface is held to.
+ */
+import { PHONG_ALPHA } from './factors.ts';
+import type { PreparedMesh } from './prepare.ts';
+
+export function phongPoint(mesh: PreparedMesh, t: number, w: readonly [number, number, number]): { pos: number[]; normal: number[] } {
+  const P = mesh.positions, N = mesh.normals;
+  const v = [mesh.triVerts[3 * t], mesh.triVerts[3 * t + 1], mesh.triVerts[3 * t + 2]];
+  const p = [0, 1, 2].map((c) => w[0] * P[3 * v[0] + c] + w[1] * P[3 * v[1] + c] + w[2] * P[3 * v[2] + c]);
+  const phong = [0, 0, 0];
+  const n = [0, 0, 0];
+  for (let i = 0; i < 3; i++) {
+    const pi = [P[3 * v[i]], P[3 * v[i] + 1], P[3 * v[i] + 2]];
+    const ni = [N[3 * v[i]], N[3 * v[i] + 1], N[3 * v[i] + 2]];
+    const d = (p[0] - pi[0]) * ni[0] + (p[1] - pi[1]) * ni[1] + (p[2] - pi[2]) * ni[2];
+    for (let c = 0; c < 3; c++) {
+      phong[c] += w[i] * (p[c] - d * ni[c]);
+      n[c] += w[i] * ni[c];
+    }
+  }
+  const len = Math.hypot(n[0], n[1], n[2]);
+  return {
+    pos: p.map((x, c) => x + PHONG_ALPHA * (phong[c] - x)),
+    normal: len > 0 ? n.map((x) => x / len) : [N[3 * v[0]], N[3 * v[0] + 1], N[3 * v[0] + 2]],
+  };
+}

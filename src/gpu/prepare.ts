@@ -1,0 +1,158 @@
+/**
+ * CPU preparation of a cage for the compute tessellator, done once per model: plain flat
+ * arrays that the GPU passes read (cage → topology → patches in the data flow).
+ *
+ *  - Faces are split into triangles (quads along the 0–2 diagonal, n-gons as a fan from corner
+ *    0); hole faces are dropped. Each triangle keeps its source face.
+ *  - Vertex normals: area-weighted (the sum of the faces' cross products), for Phong
+ *    tessellation and for the adaptive factor rule.
+ *  - Edges: every undirected edge of the triangulation once, canonically from its lower to
+ *    its higher vertex index. The factor of an edge is computed and stored once per edge, so the
+ *    two triangles of an edge can never disagree; its line runs in that canonical direction.
+ *  - Per triangle: its three edge ids, and its pattern frame (clamped.ts chooseFrame) from the
+ *    reverse flags, packed in one u32.
+ */
+import type { Cage } from '../mesh/types.ts';
+import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
+
+export interface PreparedMesh {
+  vertexCount: number;
+  triangleCount: number;
+  edgeCount: number;
+  /** xyz per cage vertex (f32). */
+  positions: Float32Array;
+  /** Unit vertex normals, xyz per cage vertex (f32). */
+  normals: Float32Array;
+  /** Three cage vertices per triangle. */
+  triVerts: Uint32Array;
+  /** Three edge ids per triangle: edge i joins corner i to corner i+1. */
+  triEdges: Uint32Array;
+  /** Pattern frame per triangle (packFrame). */
+  triFrame: Uint32Array;
+  /** Source face of each triangle. */
+  triFace: Uint32Array;
+  /** Two cage vertices per edge, lower index first. */
+  edgeVerts: Uint32Array;
+  /** One triangle of each edge and the edge's local index in it (tri·4 + local). */
+  edgeOwner: Uint32Array;
+  /** One triangle of each vertex and its corner in it (tri·4 + corner), 0xFFFFFFFF if unused. */
+  vertexOwner: Uint32Array;
+  /** Bounding box diagonal length: the model's size for tolerances. */
+  size: number;
+  bboxMin: [number, number, number];
+  bboxMax: [number, number, number];
+}
+
+export const NO_OWNER = 0xffffffff;
+
+/**
+ * Frame bits: a | b << 2 | c << 4 (the corners playing A, B, C), bottom/left/right edge
+ * indices at bits 6, 8, 10, flips at bits 12, 13, 14, mirrored at bit 15.
+ */
+export function packFrame(reverse: Reverse): number {
+  const f = chooseFrame(reverse);
+  return (
+    f.a | (f.b << 2) | (f.c << 4) | (f.bottomEdge << 6) | (f.leftEdge << 8) | (f.rightEdge << 10) |
+    (Number(f.flipBottom) << 12) | (Number(f.flipLeft) << 13) | (Number(f.flipRight) << 14) | (Number(f.mirrored) << 15)
+  );
+}
+
+export function prepareMesh(cage: Cage): PreparedMesh {
+  const nV = cage.positions.length / 3;
+  const holes = new Set(cage.holes);
+  const tris: number[] = [];
+  const faces: number[] = [];
+  const nFaces = cage.faceOffsets.length - 1;
+  for (let f = 0; f < nFaces; f++) {
+    if (holes.has(f)) continue;
+    const s = cage.faceOffsets[f];
+    const n = cage.faceOffsets[f + 1] - s;
+    for (let k = 1; k + 1 < n; k++) {
+      tris.push(cage.faceIndices[s], cage.faceIndices[s + k], cage.faceIndices[s + k + 1]);
+      faces.push(f);
+    }
+  }
+  const nT = tris.length / 3;
+
+  const P = cage.positions;
+  const acc = new Float64Array(3 * nV);
+  for (let f = 0; f < nFaces; f++) {
+    // Newell's method: robust for non-planar polygons, area-weighted.
+    const s = cage.faceOffsets[f];
+    const n = cage.faceOffsets[f + 1] - s;
+    let nx = 0, ny = 0, nz = 0;
+    for (let k = 0; k < n; k++) {
+      const a = cage.faceIndices[s + k], b = cage.faceIndices[s + ((k + 1) % n)];
+      nx += (P[3 * a + 1] - P[3 * b + 1]) * (P[3 * a + 2] + P[3 * b + 2]);
+      ny += (P[3 * a + 2] - P[3 * b + 2]) * (P[3 * a] + P[3 * b]);
+      nz += (P[3 * a] - P[3 * b]) * (P[3 * a + 1] + P[3 * b + 1]);
+    }
+    for (let k = 0; k < n; k++) {
+      const v = cage.faceIndices[s + k];
+      acc[3 * v] += nx;
+      acc[3 * v + 1] += ny;
+      acc[3 * v + 2] += nz;
+    }
+  }
+  const normals = new Float32Array(3 * nV);
+  for (let v = 0; v < nV; v++) {
+    const l = Math.hypot(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
+    if (l > 0) for (let c = 0; c < 3; c++) normals[3 * v + c] = acc[3 * v + c] / l;
+    else normals[3 * v + 2] = 1; // an unused or degenerate vertex: any unit vector
+  }
+
+  const edgeIds = new Map<number, number>();
+  const edgeVerts: number[] = [];
+  const edgeOwner: number[] = [];
+  const triEdges = new Uint32Array(3 * nT);
+  const triFrame = new Uint32Array(nT);
+  const vertexOwner = new Uint32Array(nV).fill(NO_OWNER);
+  for (let t = 0; t < nT; t++) {
+    const reverse: boolean[] = [];
+    for (let i = 0; i < 3; i++) {
+      const a = tris[3 * t + i], b = tris[3 * t + ((i + 1) % 3)];
+      const lo = Math.min(a, b), hi = Math.max(a, b);
+      const key = lo * nV + hi;
+      let e = edgeIds.get(key);
+      if (e === undefined) {
+        e = edgeVerts.length / 2;
+        edgeIds.set(key, e);
+        edgeVerts.push(lo, hi);
+        edgeOwner.push(t * 4 + i);
+      }
+      triEdges[3 * t + i] = e;
+      reverse.push(a > b); // walked from its higher vertex: reversed
+      if (vertexOwner[a] === NO_OWNER) vertexOwner[a] = t * 4 + i;
+    }
+    triFrame[t] = packFrame(reverse as unknown as Reverse);
+  }
+
+  const bboxMin: [number, number, number] = [Infinity, Infinity, Infinity];
+  const bboxMax: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (let v = 0; v < nV; v++) {
+    if (vertexOwner[v] === NO_OWNER) continue;
+    for (let c = 0; c < 3; c++) {
+      bboxMin[c] = Math.min(bboxMin[c], P[3 * v + c]);
+      bboxMax[c] = Math.max(bboxMax[c], P[3 * v + c]);
+    }
+  }
+  const size = nT ? Math.hypot(bboxMax[0] - bboxMin[0], bboxMax[1] - bboxMin[1], bboxMax[2] - bboxMin[2]) : 0;
+
+  return {
+    vertexCount: nV,
+    triangleCount: nT,
+    edgeCount: edgeVerts.length / 2,
+    positions: Float32Array.from(P),
+    normals,
+    triVerts: Uint32Array.from(tris),
+    triEdges,
+    triFrame,
+    triFace: Uint32Array.from(faces),
+    edgeVerts: Uint32Array.from(edgeVerts),
+    edgeOwner: Uint32Array.from(edgeOwner),
+    vertexOwner,
+    size,
+    bboxMin,
+    bboxMax,
+  };
+}

@@ -1,0 +1,130 @@
+/**
+ * Checks of a GPU tessellation against the CPU: patterns, counts, surface, watertightness.
+ * Used by the GPU tests (Node and browser) and by the headless CLI's test.
+ */
+import { ONE } from '../src/pattern/fixed.ts';
+import { clampedTriangle, type Reverse } from '../src/pattern/clamped.ts';
+import { phongPoint } from '../src/gpu/phong.ts';
+import { hableLine } from '../src/pattern/hable-line.ts';
+import { NO_OWNER } from '../src/gpu/prepare.ts';
+import type { PreparedMesh } from '../src/gpu/prepare.ts';
+import type { MeshReadback } from '../src/gpu/readback.ts';
+import { BARY_CORNER1, BARY_CORNER2 } from '../src/gpu/types.ts';
+
+export interface TessReport {
+  problems: string[];
+  maxPositionError: number; // relative to the model size
+  maxNormalError: number; // radians
+  expectedVertices: number;
+  expectedTriangles: number;
+}
+
+/** Angle between two vectors, accurate for small angles too (acos is not, near 1). */
+export function angleBetween(a: number[], b: number[]): number {
+  const cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
+  return Math.atan2(Math.hypot(cx, cy, cz), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+
+/** Weights of an output vertex per cage vertex, from its (srcTri, bary). */
+function weightsByCageVertex(mesh: PreparedMesh, out: MeshReadback, v: number): Map<number, number> {
+  const s = out.srcTri[v];
+  const packed = out.bary[v];
+  const tv = [mesh.triVerts[3 * s], mesh.triVerts[3 * s + 1], mesh.triVerts[3 * s + 2]];
+  let w: number[];
+  if (packed === BARY_CORNER1) w = [0, ONE, 0];
+  else if (packed === BARY_CORNER2) w = [0, 0, ONE];
+  else {
+    const w1 = packed & 0xffff, w2 = packed >>> 16;
+    w = [ONE - w1 - w2, w1, w2];
+  }
+  const m = new Map<number, number>();
+  w.forEach((x, i) => {
+    if (x !== 0) m.set(tv[i], x);
+  });
+  return m;
+}
+
+export function checkTessellation(mesh: PreparedMesh, edgeF: Uint32Array, out: MeshReadback, opts: { closed: boolean; maxErrors?: number }): TessReport {
+  const problems: string[] = [];
+  const add = (p: string) => {
+    if (problems.length < (opts.maxErrors ?? 20)) problems.push(p);
+  };
+  // Expected patterns from the GPU's own edge factors (the rule is tested separately).
+  let expectedTriangles = 0;
+  let expectedVertices = mesh.vertexCount;
+  for (let e = 0; e < mesh.edgeCount; e++) expectedVertices += hableLine(edgeF[e] / ONE).x.length - 2; // interior points
+  let triOut = 0;
+  for (let t = 0; t < mesh.triangleCount; t++) {
+    const tv = [mesh.triVerts[3 * t], mesh.triVerts[3 * t + 1], mesh.triVerts[3 * t + 2]];
+    const factors = [0, 1, 2].map((i) => edgeF[mesh.triEdges[3 * t + i]] / ONE) as [number, number, number];
+    const reverse = [0, 1, 2].map((i) => tv[i] > tv[(i + 1) % 3]) as unknown as Reverse;
+    const p = clampedTriangle(factors, reverse);
+    expectedTriangles += p.triangleCount;
+    let interior = 0;
+    for (let v = 0; v < p.vertexCount; v++) if (p.bary[3 * v] && p.bary[3 * v + 1] && p.bary[3 * v + 2]) interior++;
+    expectedVertices += interior;
+    for (let k = 0; k < p.triangleCount && triOut + k < out.triangleCount; k++) {
+      for (let c = 0; c < 3; c++) {
+        const gv = out.indices[3 * (triOut + k) + c];
+        if (gv >= out.vertexCount) {
+          add(`triangle ${triOut + k}: index ${gv} out of range`);
+          continue;
+        }
+        const m = weightsByCageVertex(mesh, out, gv);
+        const got = tv.map((x) => m.get(x) ?? 0);
+        const lv = p.triangles[3 * k + c];
+        const want = [p.bary[3 * lv], p.bary[3 * lv + 1], p.bary[3 * lv + 2]];
+        if (got[0] + got[1] + got[2] !== ONE || got.some((x, i) => x !== want[i])) {
+          add(`cage triangle ${t}, pattern triangle ${k}, corner ${c}: GPU barycentric ${got} ≠ CPU ${want}`);
+        }
+      }
+    }
+    triOut += p.triangleCount;
+  }
+  if (out.triangleCount !== expectedTriangles) add(`triangle count ${out.triangleCount} ≠ CPU ${expectedTriangles}`);
+  if (out.vertexCount !== expectedVertices) add(`vertex count ${out.vertexCount} ≠ CPU ${expectedVertices}`);
+
+  // Surface: every vertex against the CPU's Phong evaluation at its barycentrics.
+  let maxPositionError = 0;
+  let maxNormalError = 0;
+  for (let v = 0; v < out.vertexCount; v++) {
+    const s = out.srcTri[v];
+    if (v < mesh.vertexCount && mesh.vertexOwner[v] === NO_OWNER) continue; // a cage vertex no face uses
+    const m = weightsByCageVertex(mesh, out, v);
+    const w = [0, 1, 2].map((i) => (m.get(mesh.triVerts[3 * s + i]) ?? 0) / ONE) as [number, number, number];
+    const ref = phongPoint(mesh, s, w);
+    const pos = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
+    const nrm = [out.normals[3 * v], out.normals[3 * v + 1], out.normals[3 * v + 2]];
+    if (pos.some((x) => !Number.isFinite(x)) || nrm.some((x) => !Number.isFinite(x))) add(`vertex ${v}: NaN or infinity`);
+    const dp = Math.hypot(pos[0] - ref.pos[0], pos[1] - ref.pos[1], pos[2] - ref.pos[2]) / mesh.size;
+    maxPositionError = Math.max(maxPositionError, dp);
+    maxNormalError = Math.max(maxNormalError, angleBetween(nrm, ref.normal));
+  }
+  if (maxPositionError > 1e-5) add(`position error ${maxPositionError} of the model size > 1e-5`);
+
+  // Watertight: every edge of a closed output used by exactly two triangles, once each way.
+  const directed = new Map<string, number>();
+  for (let t = 0; t < out.triangleCount; t++) {
+    for (let c = 0; c < 3; c++) {
+      const a = out.indices[3 * t + c], b = out.indices[3 * t + ((c + 1) % 3)];
+      if (a === b) add(`triangle ${t} repeats vertex ${a}`);
+      const k = `${a},${b}`;
+      directed.set(k, (directed.get(k) ?? 0) + 1);
+    }
+  }
+  for (const [k, n] of directed) {
+    const [a, b] = k.split(',');
+    if (n > 1) add(`directed edge ${k} used ${n} times`);
+    if (opts.closed && !directed.has(`${b},${a}`)) add(`edge ${k} has no opposite: not watertight`);
+  }
+  // No two vertices left at the same position that should have been one.
+  const seen = new Map<string, number>();
+  for (let v = 0; v < out.vertexCount; v++) {
+    if (v < mesh.vertexCount && mesh.vertexOwner[v] === NO_OWNER) continue;
+    const k = `${out.positions[3 * v]},${out.positions[3 * v + 1]},${out.positions[3 * v + 2]}`;
+    const other = seen.get(k);
+    if (other !== undefined) add(`vertices ${other} and ${v} share the position ${k} but are not welded`);
+    seen.set(k, v);
+  }
+  return { problems, maxPositionError, maxNormalError, expectedVertices, expectedTriangles };
+}

@@ -1,0 +1,31 @@
+// Pass 3 of each budget attempt, one thread: do the counts fit the output buffers? If so,
+// accept them and write the indirect draw arguments; if not, pick the scale for the next
+// attempt (src/gpu/factors.ts budgetScale), and after that, factor 1 everywhere. Nothing
+// overflows and nothing is lost at any camera: the emit passes only run once accepted.
+
+@group(0) @binding(9) var<storage, read_write> drawArgs: array<u32, 5>;
+@group(0) @binding(10) var<storage, read_write> counts: array<u32, 4>;
+
+@compute @workgroup_size(1)
+fn main() {
+  let b = params.offBudget;
+  if (work[b + BUDGET_ACCEPTED] != 0u) { return; }
+  let attempt = work[b + BUDGET_ATTEMPT];
+  let vertices = params.nVerts + work[params.offEdgeBase + params.nEdges] + work[params.offTriVertBase + params.nTris];
+  let triangles = work[params.offTriTriBase + params.nTris];
+  let fits = vertices <= params.vertexCapacity && triangles <= params.triangleCapacity;
+  if (fits || attempt >= 2u) {
+    work[b + BUDGET_ACCEPTED] = 1u;
+    work[b + BUDGET_FITS] = select(0u, 1u, fits);
+    let shown = select(0u, triangles, fits);
+    drawArgs = array<u32, 5>(3u * shown, 1u, 0u, 0u, 0u);
+    var scale = 1.0;
+    if (attempt == 1u) { scale = bitcast<f32>(work[b + BUDGET_SCALE]); }
+    if (attempt >= 2u) { scale = 0.0; }
+    counts = array<u32, 4>(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
+    return;
+  }
+  let ratio = min(f32(params.vertexCapacity) / f32(vertices), f32(params.triangleCapacity) / f32(triangles));
+  work[b + BUDGET_SCALE] = bitcast<u32>(0.9 * sqrt(ratio));
+  work[b + BUDGET_ATTEMPT] = attempt + 1u;
+}

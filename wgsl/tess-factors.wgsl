@@ -1,0 +1,52 @@
+// Pass 1 of each budget attempt, one thread per mesh edge: the edge's tess factor (computed
+// once per edge, so its two triangles cannot disagree), its line state and segment count.
+// Mirrors src/gpu/factors.ts edgeFactor.
+
+fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
+  let m = transpose(params.viewProj); // rows of viewProj
+  let planes = array<vec4<f32>, 6>(m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]);
+  for (var i = 0u; i < 6u; i++) {
+    let p = planes[i];
+    if (dot(p.xyz, c) + p.w < -r * length(p.xyz)) { return true; }
+  }
+  return false;
+}
+
+fn adaptiveFactor(e: u32) -> f32 {
+  let a = edgeVert(e, 0u);
+  let b = edgeVert(e, 1u);
+  let p0 = cagePos(a);
+  let p1 = cagePos(b);
+  let n0 = cageNormal(a);
+  let n1 = cageNormal(b);
+  let d = p1 - p0;
+  // Phong midpoint minus linear midpoint: symmetric in the two ends.
+  let off = (PHONG_ALPHA / 4.0) * (dot(d, n1) * n1 - dot(d, n0) * n0);
+  let err = length(off);
+  let mid = 0.5 * (p0 + p1) + off;
+  let toEye0 = params.eye.xyz - p0;
+  let toEye1 = params.eye.xyz - p1;
+  let away = dot(n0, toEye0) < -0.1 * length(toEye0) && dot(n1, toEye1) < -0.1 * length(toEye1);
+  if (away || sphereOutsideFrustum(mid, 0.5 * length(d) + err)) { return 1.0; }
+  let dist = max(length(mid - params.eye.xyz), 1e-6);
+  return sqrt(params.lodScale * err / (dist * params.pixelAngle));
+}
+
+@compute @workgroup_size(64)
+fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let e = flatIndex(wid, lid, 64u);
+  if (e >= params.nEdges || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
+  let attempt = work[params.offBudget + BUDGET_ATTEMPT];
+  var f = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
+  if (attempt == 1u) { f = f * bitcast<f32>(work[params.offBudget + BUDGET_SCALE]); }
+  if (attempt >= 2u) { f = 1.0; }
+  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
+  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
+  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
+  let s = lineState(F);
+  work[params.offEdgeF + e] = F;
+  work[params.offEdgeState + e] = s;
+  let segments = statePointCount(s) - 1u;
+  work[params.offEdgeSegs + e] = segments;
+  work[params.offEdgeInterior + e] = segments - 1u;
+}

@@ -1,0 +1,42 @@
+// The weld. Every vertex that two or more triangles share is evaluated exactly once, here, and
+// every triangle refers to it by index, so the output is watertight by construction: the
+// vertices on shared corners and shared edges are not just bit-identical, they are one.
+//   corners: vertex v of the output is cage vertex v (Phong tessellation interpolates its
+//            corners), one thread per cage vertex;
+//   edges:   the interior points of each mesh edge's line, in the edge's canonical direction
+//            (lower to higher vertex), one thread per edge; they are evaluated through one
+//            triangle of the edge, whose barycentrics are stored.
+
+@compute @workgroup_size(64)
+fn corners(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let v = flatIndex(wid, lid, 64u);
+  if (v >= params.nVerts || !emitEnabled()) { return; }
+  let owner = staticBuf[params.offVertexOwner + v];
+  if (owner == NO_OWNER) { return; } // not used by any face
+  let t = owner >> 2u;
+  var w = vec3<u32>(0u);
+  w[owner & 3u] = ONE;
+  writeVertex(v, t, w);
+}
+
+@compute @workgroup_size(64)
+fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let e = flatIndex(wid, lid, 64u);
+  if (e >= params.nEdges || !emitEnabled()) { return; }
+  let owner = staticBuf[params.offEdgeOwner + e];
+  let t = owner >> 2u;
+  let i = owner & 3u; // the owner's edge i runs from its corner i to corner i+1
+  let forward = triVert(t, i) == edgeVert(e, 0u);
+  let s = edgeState(e);
+  let F = edgeF(e);
+  let n = edgeSegments(e);
+  let base = params.nVerts + work[params.offEdgeBase + e];
+  for (var k = 1u; k < n; k++) {
+    let x = linePoint(s, F, k);
+    let tw = select(ONE - x, x, forward); // weight of corner i+1
+    var w = vec3<u32>(0u);
+    w[(i + 1u) % 3u] = tw;
+    w[i] = ONE - tw;
+    writeVertex(base + k - 1u, t, w);
+  }
+}
