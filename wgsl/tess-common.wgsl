@@ -100,7 +100,9 @@ fn unpackFrame(bits: u32) -> Frame {
                ((bits >> 15u) & 1u) == 1u);
 }
 
-// ---- the surface: Phong tessellation over the cage's vertex normals --------------------
+// ---- the surface -------------------------------------------------------------------------
+// `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` comes from the surface module
+// (wgsl/surface-phong.wgsl, or the Catmull-Clark one), appended after this file.
 fn cagePos(v: u32) -> vec3<f32> { return vec3<f32>(cageBuf[3u * v], cageBuf[3u * v + 1u], cageBuf[3u * v + 2u]); }
 fn cageNormal(v: u32) -> vec3<f32> {
   let o = params.offNormals + 3u * v;
@@ -108,30 +110,6 @@ fn cageNormal(v: u32) -> vec3<f32> {
 }
 
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32> }
-
-// Boubekeur & Alexa 2008: project the linear point onto the three vertex tangent planes,
-// interpolate the projections, blend with α. The one function the Catmull-Clark surface
-// replaces.
-fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
-  let w = vec3<f32>(wFixed) / 65536.0;
-  let v0 = triVert(t, 0u);
-  let v1 = triVert(t, 1u);
-  let v2 = triVert(t, 2u);
-  let p0 = cagePos(v0);
-  let p1 = cagePos(v1);
-  let p2 = cagePos(v2);
-  let n0 = cageNormal(v0);
-  let n1 = cageNormal(v1);
-  let n2 = cageNormal(v2);
-  let p = w.x * p0 + w.y * p1 + w.z * p2;
-  let q0 = p - dot(p - p0, n0) * n0;
-  let q1 = p - dot(p - p1, n1) * n1;
-  let q2 = p - dot(p - p2, n2) * n2;
-  let phong = w.x * q0 + w.y * q1 + w.z * q2;
-  let n = w.x * n0 + w.y * n1 + w.z * n2;
-  let len = length(n);
-  return SurfacePoint(mix(p, phong, PHONG_ALPHA), select(n0, n / len, len > 0.0));
-}
 
 // (w1, w2) in 16 bits each; a corner of the source triangle is stored as a sentinel whose
 // sum exceeds 2^16 (src/gpu/types.ts).

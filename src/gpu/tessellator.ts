@@ -22,6 +22,7 @@ import budgetWgsl from '../../wgsl/tess-budget.wgsl?raw';
 import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
 import trianglesWgsl from '../../wgsl/tess-triangles.wgsl?raw';
 import scanWgsl from '../../wgsl/scan.wgsl?raw';
+import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
 import { outputCapacity } from './factors.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -89,6 +90,9 @@ const PASS_BINDINGS: Record<PassName, number[]> = {
 export interface TessellatorOptions {
   vertexCapacity?: number;
   triangleCapacity?: number;
+  /** WGSL that defines `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` for the emit
+   * passes (see wgsl/tess-common.wgsl). Default: Phong tessellation (wgsl/surface-phong.wgsl). */
+  surfaceWgsl?: string;
 }
 
 /** Timing categories reported by readTimings (ms). */
@@ -143,14 +147,15 @@ export class Tessellator {
     const module = (label: string, ...parts: string[]) => device.createShaderModule({ label, code: [PARAMS.wgsl, commonWgsl, ...parts].join('\n') });
     const pipeline = (label: string, mod: GPUShaderModule, entryPoint = 'main') =>
       device.createComputePipeline({ label, layout: 'auto', compute: { module: mod, entryPoint } });
-    const weld = module('tess weld', outputsWgsl, weldWgsl);
+    const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
+    const weld = module('tess weld', surface, outputsWgsl, weldWgsl);
     this.pipelines = {
       factors: pipeline('tess factors', module('tess factors', factorsWgsl)),
       count: pipeline('tess count', module('tess count', countWgsl)),
       budget: pipeline('tess budget', module('tess budget', budgetWgsl)),
       corners: pipeline('tess weld corners', weld, 'corners'),
       edges: pipeline('tess weld edges', weld, 'edges'),
-      triangles: pipeline('tess triangles', module('tess triangles', outputsWgsl, trianglesWgsl)),
+      triangles: pipeline('tess triangles', module('tess triangles', surface, outputsWgsl, trianglesWgsl)),
     };
     // The three scan steps share one bind group, so they share an explicit layout.
     this.scanLayout = device.createBindGroupLayout({
