@@ -6,6 +6,8 @@
 import type { Cage } from '../mesh/types.ts';
 import type { FactorParams, TessellatedMesh } from '../gpu/types.ts';
 import { destroyMesh, uploadCageMesh } from '../gpu/cage-mesh.ts';
+import { prepareMesh, Tessellator } from '../gpu/tessellator.ts';
+import { bakeTables } from '../pattern/tables.ts';
 
 export interface GeometrySource {
   readonly kind: 'cage' | 'tessellator';
@@ -53,7 +55,49 @@ export class CageGeometry implements GeometrySource {
   }
 }
 
-/** The page's geometry source: the flat cage until the compute tessellator lands. */
-export async function createGeometry(device: GPUDevice, _capacity: number): Promise<GeometrySource> {
-  return new CageGeometry(device);
+/** Largest tess factor of the baked pattern tables. */
+const MAX_FACTOR = 64;
+
+export class TessellatorGeometry implements GeometrySource {
+  readonly kind = 'tessellator';
+  readonly #tessellator: Tessellator;
+  #hasMesh = false;
+
+  constructor(device: GPUDevice, capacity: number) {
+    // The tables are baked in JavaScript from the same pattern code the tests check (~50 ms).
+    this.#tessellator = Tessellator.create(device, bakeTables(MAX_FACTOR), { vertexCapacity: capacity, triangleCapacity: capacity });
+  }
+
+  get output(): TessellatedMesh | null {
+    return this.#hasMesh ? this.#tessellator.output : null;
+  }
+
+  setCage(cage: Cage): void {
+    this.#tessellator.setMesh(prepareMesh(cage));
+    this.#hasMesh = true;
+  }
+
+  encode(encoder: GPUCommandEncoder, params: FactorParams): void {
+    this.#tessellator.encode(encoder, params);
+  }
+
+  dependsOnCamera(params: Pick<FactorParams, 'mode'>): boolean {
+    return params.mode === 'adaptive';
+  }
+
+  readTimings(): Promise<Record<string, number>> {
+    return this.#tessellator.readTimings();
+  }
+
+  destroy(): void {
+    this.#tessellator.destroy();
+  }
+}
+
+/**
+ * The page's geometry source: the compute tessellator, its output buffers sized for
+ * `capacity` vertices and as many triangles (clamped to the device's limits).
+ */
+export async function createGeometry(device: GPUDevice, capacity: number): Promise<GeometrySource> {
+  return new TessellatorGeometry(device, capacity);
 }
