@@ -12,7 +12,7 @@ import { Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
 import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
-import { createGeometry, type GeometrySource } from './geometry.ts';
+import { CageGeometry, createGeometry, type GeometrySource } from './geometry.ts';
 import {
   BUILTIN_MODELS, DEFAULT_MODEL, fetchModelList, loadModelFromFile, loadModelFromUrl, modelUrl,
   type LoadedModel, type ModelEntry,
@@ -33,7 +33,9 @@ class TessellationDemo extends DemoBase {
   modelMatrix = upAxisMatrix('z') as Float32Array;
 
   renderer: Renderer | null = null;
-  geometry: GeometrySource | null = null;
+  /** The tessellated surface, and the flat cage (for before/after). */
+  tessellated: GeometrySource | null = null;
+  flat: CageGeometry | null = null;
   cageLines: CageLines | null = null;
   counts: CountsReader | null = null;
 
@@ -55,7 +57,8 @@ class TessellationDemo extends DemoBase {
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
     this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
-    this.geometry = await createGeometry(device, this.params.capacity * 1e6);
+    this.tessellated = await createGeometry(device, this.params.capacity * 1e6);
+    this.flat = new CageGeometry(device);
     this.counts = new CountsReader(device);
     // After a device loss: upload the current model to the new device.
     if (this.model) this.#uploadModel(this.model);
@@ -63,9 +66,22 @@ class TessellationDemo extends DemoBase {
 
   protected override onDeviceLost(): void {
     this.renderer = null;
-    this.geometry = null;
+    this.tessellated = null;
+    this.flat = null;
     this.cageLines = null;
     this.counts = null;
+  }
+
+  /** What is drawn now: the tessellated surface or the flat cage. */
+  get geometry(): GeometrySource | null {
+    return this.params.surface === 'cage' ? this.flat : this.tessellated;
+  }
+
+  /** Switch between the tessellated surface and the flat cage. */
+  showSurface(): void {
+    this.renderer?.setMesh(this.geometry?.output ?? null);
+    this.lastCounts = null;
+    this.invalidateGeometry();
   }
 
   protected override isAnimating(): boolean {
@@ -214,7 +230,8 @@ class TessellationDemo extends DemoBase {
 
   #uploadModel(model: LoadedModel): void {
     const device = this.gpu.device;
-    this.geometry!.setCage(model.cage);
+    this.tessellated!.setCage(model.cage);
+    this.flat!.setCage(model.cage);
     this.renderer!.setMesh(this.geometry!.output);
     this.cageLines?.vertices.destroy();
     this.cageLines = uploadCageLines(device, model.cage);
@@ -314,6 +331,10 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     syncUrl(p);
     demo.requestFrame();
   };
+  view.add(p, 'surface', { tessellated: 'tessellated', 'flat cage': 'cage' }).name('surface').onChange(() => {
+    syncUrl(p);
+    demo.showSurface();
+  });
   view.add(p, 'wire').name('wireframe').onChange(redraw);
   view.add(p, 'cage').name('cage overlay').onChange(redraw);
   view.add(p, 'spin').name('turntable').onChange(redraw);

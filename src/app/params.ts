@@ -13,6 +13,8 @@ export interface DemoParams {
   /** The model's up axis: the project's models are Z-up; many OBJ exporters write Y-up. */
   up: UpAxis;
   mode: Mode;
+  /** Draw the tessellated surface, or the cage's own faces (flat, before tessellation). */
+  surface: 'tessellated' | 'cage';
   /** Adaptive mode's global LOD scale (1 = the default density). */
   lod: number;
   /** Fixed mode's one factor. */
@@ -41,6 +43,7 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
   up: 'z',
   mode: 'adaptive',
+  surface: 'tessellated',
   lod: 1,
   factor: 8,
   wire: true,
@@ -83,6 +86,8 @@ export function parseParams(search: string): DemoParams {
   if (up === 'y' || up === 'z') p.up = up;
   const mode = q.get('mode')?.trim().toLowerCase();
   if (mode === 'adaptive' || mode === 'fixed') p.mode = mode;
+  const surface = q.get('surface')?.trim().toLowerCase();
+  if (surface === 'tessellated' || surface === 'cage') p.surface = surface;
   p.lod = num(q.get('lod'), LOD_RANGE.min, LOD_RANGE.max) ?? p.lod;
   p.factor = num(q.get('factor'), FACTOR_RANGE.min, FACTOR_RANGE.max) ?? p.factor;
   p.wire = bool(q.get('wire')) ?? p.wire;
@@ -105,6 +110,7 @@ export function formatParams(p: DemoParams): string {
   if (p.model) q.set('model', p.model);
   if (p.up !== d.up) q.set('up', p.up);
   if (p.mode !== d.mode) q.set('mode', p.mode);
+  if (p.surface !== d.surface) q.set('surface', p.surface);
   if (p.lod !== d.lod) q.set('lod', String(round(p.lod, 3)));
   if (p.factor !== d.factor) q.set('factor', String(round(p.factor, 3)));
   if (p.wire !== d.wire) q.set('wire', p.wire ? '1' : '0');
