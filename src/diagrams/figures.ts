@@ -86,7 +86,7 @@ export const FIGURES: readonly Figure[] = [
     slide: 'Why DX11 does not converge',
     title: 'Why D3D11 does not converge',
     caption:
-      'Each new point pushes the points above it up and those below it down. Follow the point that sits in the middle of the half-edge at every power of two (red) over four octaves, 2 → 4 → 8 → 16 → 32: within each octave it goes 0.5 → 2/3 → 0.5. The points never settle, however high the factor.',
+      'Each new point pushes the points above it up and those below it down. Follow the point that sits in the middle of the half-edge at every power of two (red): born at the middle of the edge in the first octave (2 → 4), it then goes 0.5 → 2/3 → 0.5 in every octave, 4 → 8 → 16 → 32. The points never settle, however high the factor.',
     query: 'mode=fractional_even&from=2&to=32&ease=log&view=trace&half=1&track=0.5&marks=0.5,0.6667&duration=12&start=4.5',
   },
   {

@@ -47,10 +47,10 @@ function countsText(c: PanelCounts): string {
   return `${plural(c.vertices, 'point')} · ${plural(c.triangles, 'segment')}${z}`;
 }
 
-function header(b: SceneBuilder, p: LineParams, f: number, width: number): void {
+function header(b: SceneBuilder, p: LineParams, f: number): void {
   b.text(24, 34, 'factor', 13, 'muted');
   b.text(70, 34, fmtFactor(f), 20, 'ink', { weight: 600, mono: true });
-  if (p.snap) b.text(width - 24, 34, 'whole factors only', 12, 'muted', { anchor: 'end' });
+  if (p.snap) b.text(150, 34, 'whole factors only', 12, 'muted');
 }
 
 /** Factor axis under the rows: ticks, the swept range and the current factor. */
@@ -107,7 +107,7 @@ function drawRows(b: SceneBuilder, p: LineParams, f: number, top: number, x0: nu
       const len = (pat.x[i] - pat.x[i - 1]) / ONE;
       if (p.segments) b.line(X(a), y, X(Math.min(1, e)), y, segmentRole(len, f), 3.5);
       const w = X(Math.min(1, e)) - X(a);
-      if (p.labels && e <= 1 + 1e-9 && w >= 16) b.text((X(a) + X(e)) / 2, y - 10, (len * f).toFixed(w >= 34 ? 2 : 1), 10, 'muted', { anchor: 'middle', mono: true });
+      if (p.labels && e <= 1 + 1e-9 && w >= 12) b.text((X(a) + X(e)) / 2, y - 10, (len * f).toFixed(w >= 34 ? 2 : 1), 10, 'muted', { anchor: 'middle', mono: true });
     }
     // Points: still ones in ink, moving (newest or sliding) ones in red, on top.
     const still: number[] = [];
@@ -234,7 +234,7 @@ function drawTrace(b: SceneBuilder, p: LineParams, f: number, width: number, cou
   const left = 56;
   const right = 20;
   const pw = (width - left - right - gap * (n - 1)) / n;
-  const top = 64;
+  const top = 112;
   const ph = 360;
   const log = p.ease === 'log';
   const span = hi > lo ? hi : lo + 1;
@@ -246,7 +246,7 @@ function drawTrace(b: SceneBuilder, p: LineParams, f: number, width: number, cou
     const step = span - lo <= 16 ? (span - lo <= 8 ? 1 : 2) : 4;
     for (let v = Math.ceil(lo / step) * step; v <= span + 1e-9; v += step) ticks.push(v);
   }
-  b.text(left - 10, top - 12, 'factor', 10.5, 'muted', { anchor: 'end' });
+  b.text(left - 10, top - 10, 'factor', 10.5, 'muted', { anchor: 'end' });
   for (const v of ticks) b.text(left - 10, Y(v) + 4, String(v), 10.5, 'muted', { anchor: 'end' });
   p.modes.forEach((mode, k) => {
     const x0 = left + k * (pw + gap);
@@ -276,8 +276,8 @@ function drawTrace(b: SceneBuilder, p: LineParams, f: number, width: number, cou
       b.dots([X(fx), yc], 6.5, 'bg', 'accent', 2);
       b.text(X(fx) + 10, yc - 8, fmtPos(fx), 12, 'accent', { weight: 600, mono: true });
     }
-    b.text(x0, top - 28, LINE_MODE_LABEL[mode], 13.5, 'ink', { weight: 600 });
-    b.text(x0, top - 12, countsText(counts[counts.length - 1]), 11, 'muted');
+    b.text(x0, top - 46, LINE_MODE_LABEL[mode], 13.5, 'ink', { weight: 600 });
+    b.text(x0, top - 30, countsText(counts[counts.length - 1]), 11, 'muted');
     for (const v of [0, 0.5, 1]) b.text(X(v), top + ph + 16, fmtPos(v), 10.5, 'muted', { anchor: v === 0 ? 'start' : v === 1 ? 'end' : 'middle' });
     for (const m of p.marks) if (m !== 0.5 && m !== 0 && m !== 1) b.text(X(m), top + ph + 16, fmtPos(m), 10.5, 'muted', { anchor: 'middle' });
   });
@@ -294,11 +294,11 @@ export function lineFigure(p: LineParams, t: number, title = 'Line patterns'): F
   const W = p.view === 'trace' ? Math.max(LINE_WIDTH, 56 + 20 + p.modes.length * 250) : LINE_WIDTH;
   let H: number;
   if (p.view === 'trace') {
-    header(b, p, f, W);
+    header(b, p, f);
     H = drawTrace(b, p, f, W, counts) + 8;
   } else {
-    header(b, p, f, W);
-    const x0 = 190;
+    header(b, p, f);
+    const x0 = 214;
     const x1 = W - 28;
     const marksTop = 62;
     const bottom = drawRows(b, p, f, p.marks.length ? 62 : 46, x0, x1, counts);

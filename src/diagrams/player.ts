@@ -141,7 +141,7 @@ export class DiagramPlayer {
       // Without controls there is still a visible pause button (WCAG 2.2.2).
       this.els.mini = h('button', { class: 'td-mini', type: 'button', 'data-testid': 'play' });
       this.els.mini.addEventListener('click', () => this.setPlaying(!this.playing));
-      stage.append(this.els.mini);
+      this.root.append(h('div', { class: 'td-minibar' }, this.els.mini));
     }
     opts.mount.append(this.root);
     this.canvas.addEventListener('click', () => this.setPlaying(!this.playing));

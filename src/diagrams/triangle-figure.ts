@@ -220,7 +220,7 @@ function edgeLabels(b: SceneBuilder, m: Mapper, frame: Frame, fc: TriFactors, sh
     const len = Math.hypot(nx, ny) || 1;
     nx /= len;
     ny /= len;
-    const d = 16 + extra;
+    const d = 16 + extra + (Math.abs(nx) > 0.35 && Math.abs(ny) > 0.35 ? 6 : 0);
     const x = mx + nx * d;
     const y = my + ny * d + 4;
     const anchor = Math.abs(nx) < 0.35 ? 'middle' : nx < 0 ? 'end' : 'start';
@@ -375,7 +375,7 @@ function layout(n: number, shape: Shape, stage: TriParams['stage'], modes: TriMo
   const cols = n <= 3 ? n : Math.ceil(n / 2);
   const rows = Math.ceil(n / cols);
   const avail = (TRI_WIDTH - 40 - (cols - 1) * 56) / cols;
-  const maxH = n === 1 ? 380 : rows > 1 ? 250 : 300;
+  const maxH = shape === 'thin' ? 440 : n === 1 ? 380 : rows > 1 ? 250 : 300;
   const S = Math.min(maxH / bh, (avail - 24) / bw);
   return { cols, rows, S, bw, bh, corners };
 }
@@ -390,7 +390,7 @@ export function triangleFigure(p: TriParams, t: number, title = 'Triangle patter
   const minX = Math.min(...L.corners.map((c) => c[0]));
   const minY = Math.min(...L.corners.map((c) => c[1]));
   const headH = 56;
-  const footH = 40;
+  const footH = 52;
   const cellW = TRI_WIDTH / L.cols;
   const cellH = headH + L.bh * L.S + footH;
   const hasD3D = p.modes.some((m) => m !== 'clamped');
@@ -430,7 +430,7 @@ export function triangleFigure(p: TriParams, t: number, title = 'Triangle patter
     const sub = mode !== 'clamped' && hasD3D ? `inside ${fmtFactor(fc.inside)}` : mode === 'clamped' && hasD3D ? 'no inside factor' : '';
     if (sub) b.text(cx, titleY + 16, sub, 11, 'muted', { anchor: 'middle', mono: mode !== 'clamped' });
     const bottom = top + L.bh * L.S;
-    b.text(cx, bottom + 34, countsLine(c), 11.5, 'ink', { anchor: 'middle' });
+    b.text(cx, bottom + 44, countsLine(c), 11.5, 'ink', { anchor: 'middle' });
   });
   const H = L.rows * cellH + 4;
   const factors: FactorValue[] = [

@@ -1,0 +1,320 @@
+// End-to-end checks of the diagram pages (diagrams/*.html) in the system Chromium.
+import { execFileSync } from 'node:child_process';
+import { expect, test, type Page } from '@playwright/test';
+import { FIGURES } from '../src/diagrams/figures.ts';
+
+test.use({ viewport: { width: 1100, height: 900 } });
+
+/** Collect console errors and uncaught exceptions of a page. */
+function watchErrors(page: Page): string[] {
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(`console: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+  return errors;
+}
+
+/** The pattern CLI's counts (the reference the page must agree with). */
+function cli(args: string[]): { vertexCount: number; triangleCount: number } {
+  const out = execFileSync('npx', ['tsx', 'scripts/pattern-cli.ts', ...args, '--json'], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  return JSON.parse(out);
+}
+
+interface Shown {
+  mode: string;
+  vertices: number;
+  triangles: number;
+  degenerate: number;
+}
+async function shownCounts(page: Page, scope = 'body'): Promise<Shown[]> {
+  return page.locator(`${scope} [data-testid="counts"] .td-count`).evaluateAll((els) =>
+    els.map((e) => {
+      const d = (e as HTMLElement).dataset;
+      return { mode: d.mode as string, vertices: Number(d.vertices), triangles: Number(d.triangles), degenerate: Number(d.degenerate) };
+    }),
+  );
+}
+
+/** Whether a canvas has drawn something besides its background. */
+async function canvasHasInk(page: Page, selector = '[data-testid="diagram-canvas"]'): Promise<boolean> {
+  return page.locator(selector).first().evaluate((c: HTMLCanvasElement) => {
+    const ctx = c.getContext('2d');
+    if (!ctx || c.width === 0) return false;
+    const { data } = ctx.getImageData(0, 0, c.width, c.height);
+    const bg = [data[0], data[1], data[2]];
+    let differ = 0;
+    for (let i = 0; i < data.length; i += 4 * 7) if (Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]) > 60) differ++;
+    return differ > 50;
+  });
+}
+
+test.describe('pages load without console errors', () => {
+  for (const path of ['diagrams/index.html', 'diagrams/line.html', 'diagrams/triangle.html', 'diagrams/embed.html']) {
+    test(path, async ({ page }) => {
+      const errors = watchErrors(page);
+      await page.goto(path);
+      await page.waitForLoadState('networkidle');
+      if (path.includes('index')) {
+        await expect(page.locator('[data-testid="figure-card"]')).toHaveCount(FIGURES.length);
+      } else {
+        await expect(page.locator('[data-testid="diagram-canvas"]').first()).toBeVisible();
+      }
+      await page.waitForTimeout(300);
+      expect(errors).toEqual([]);
+    });
+  }
+
+  test('every figure of the index opens, draws and reports no problem', async ({ page }) => {
+    test.setTimeout(120_000);
+    const errors = watchErrors(page);
+    for (const f of FIGURES) {
+      await page.goto(`diagrams/${f.kind}.html?fig=${f.id}&autoplay=0`);
+      await expect(page.locator('[data-testid="diagram-canvas"]')).toBeVisible();
+      await expect(page.locator('.td-title')).toHaveText(f.title);
+      await expect(page.locator('[data-testid="messages"]')).toBeHidden();
+      expect(await canvasHasInk(page), f.id).toBe(true);
+    }
+    expect(errors).toEqual([]);
+  });
+
+  test('the index shows a thumbnail and a working link for every figure', async ({ page }) => {
+    await page.goto('diagrams/index.html');
+    const cards = page.locator('[data-testid="figure-card"]');
+    await expect(cards).toHaveCount(FIGURES.length);
+    for (const f of FIGURES) {
+      const card = page.locator(`[data-testid="figure-card"][data-fig="${f.id}"]`);
+      await expect(card.locator('.thumb svg')).toBeVisible();
+      await expect(card.locator('h3 a')).toHaveAttribute('href', `${f.kind}.html?fig=${f.id}`);
+    }
+  });
+});
+
+test.describe('counts shown equal the pattern CLI', () => {
+  test('triangle, every mode at 3.5, 7, 12 (inside 5)', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?mode=clamped,integer,pow2,fractional_odd,fractional_even&f0=3.5&f1=7&f2=12&inside=5&autoplay=0');
+    const shown = await shownCounts(page);
+    expect(shown.map((s) => s.mode)).toEqual(['clamped', 'integer', 'pow2', 'fractional_odd', 'fractional_even']);
+    for (const s of shown) {
+      const ref = cli(['tri', '--mode', s.mode, '--factors', '3.5,7,12', ...(s.mode === 'clamped' ? [] : ['--inside', '5'])]);
+      expect({ mode: s.mode, v: s.vertices, t: s.triangles }).toEqual({ mode: s.mode, v: ref.vertexCount, t: ref.triangleCount });
+    }
+  });
+
+  test('triangle, reversed edges and the inefficient-16 figure', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?f0=2.25&f1=9.5&f2=5&reverse=0,1,1&autoplay=0');
+    const [clamped] = await shownCounts(page);
+    const ref = cli(['tri', '--mode', 'clamped', '--factors', '2.25,9.5,5', '--reverse', '0,1,1']);
+    expect([clamped.vertices, clamped.triangles]).toEqual([ref.vertexCount, ref.triangleCount]);
+
+    await page.goto('diagrams/triangle.html?fig=inefficient-16');
+    const shown = await shownCounts(page);
+    expect(shown.map((s) => s.triangles)).toEqual([384, 256]);
+    const fe = cli(['tri', '--mode', 'fractional_even', '--factors', '16,16,16', '--inside', '16']);
+    const cl = cli(['tri', '--mode', 'clamped', '--factors', '16,16,16']);
+    expect(shown.map((s) => [s.vertices, s.triangles])).toEqual([
+      [fe.vertexCount, fe.triangleCount],
+      [cl.vertexCount, cl.triangleCount],
+    ]);
+  });
+
+  test('line, stacked modes at 10.3', async ({ page }) => {
+    await page.goto('diagrams/line.html?mode=hable,even,fractional_odd,fractional_even,pow2-snap&factor=10.3');
+    for (const s of await shownCounts(page)) {
+      const ref = cli(['line', '--mode', s.mode, '--factor', '10.3']);
+      expect({ mode: s.mode, points: s.vertices }).toEqual({ mode: s.mode, points: ref.vertexCount });
+      expect(s.triangles).toBe(ref.vertexCount - 1);
+    }
+  });
+});
+
+test.describe('frozen frames match the committed screenshots', () => {
+  test('line: even redistribution at 10.3', async ({ page }) => {
+    await page.goto('diagrams/line.html?fig=even-10.3&t=2.3&chrome=0&theme=light');
+    await expect(page.locator('[data-testid="diagram"]')).toHaveAttribute('data-state', 'paused');
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('line-even-10.3.png', { maxDiffPixels: 10, threshold: 0.05 });
+  });
+
+  test('triangle: gap matching', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?fig=gap-matching&t=2.5&chrome=0&theme=light');
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('triangle-gap-matching.png', { maxDiffPixels: 10, threshold: 0.05 });
+  });
+
+  test('line trace, dark theme: D3D11 does not converge', async ({ page }) => {
+    await page.goto('diagrams/line.html?fig=d3d11-does-not-converge&t=4.5&chrome=0&theme=dark');
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('line-d3d11-does-not-converge-dark.png', { maxDiffPixels: 10, threshold: 0.05 });
+  });
+
+  test('triangle: D3D11 next to clamped', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?fig=d3d11-vs-clamped&t=3.2&chrome=0&theme=light');
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('triangle-d3d11-vs-clamped.png', { maxDiffPixels: 10, threshold: 0.05 });
+  });
+});
+
+test.describe('embedding', () => {
+  test('the iframe renders and is sized by its postMessage', async ({ page }) => {
+    const errors = watchErrors(page);
+    await page.goto('diagrams/embed.html');
+    const frame = page.frameLocator('[data-testid="embed-iframe"]');
+    await expect(frame.locator('[data-testid="diagram-canvas"]')).toBeVisible();
+    await expect(frame.locator('[data-testid="controls"]')).toHaveCount(0); // chrome=0
+    await expect(frame.locator('[data-testid="play"]')).toBeVisible(); // but a pause button
+    // The parent set the iframe's height from the message: the whole figure fits, no scrollbar.
+    await expect.poll(async () => page.locator('[data-testid="embed-iframe"]').evaluate((f: HTMLIFrameElement) => parseFloat(f.style.height))).toBeGreaterThan(200); // it starts at 150px
+    const fit = await page.locator('[data-testid="embed-iframe"]').evaluate((f: HTMLIFrameElement) => {
+      const doc = f.contentDocument as Document;
+      return Math.abs(doc.documentElement.scrollHeight - f.clientHeight);
+    });
+    expect(fit).toBeLessThanOrEqual(2);
+    const inner = page.frames().find((f) => f.url().includes('line.html'));
+    expect(inner).toBeTruthy();
+    expect(errors).toEqual([]);
+  });
+
+  test('the custom element renders in its shadow root', async ({ page }) => {
+    const errors = watchErrors(page);
+    await page.goto('diagrams/embed.html');
+    const el = page.locator('tess-diagram#embed-element');
+    await expect(el.locator('[data-testid="diagram-canvas"]')).toBeVisible();
+    await expect(el.locator('.td-title')).toHaveText('The minimum triangle count: 6 against 1');
+    expect(await canvasHasInk(page, 'tess-diagram#embed-element [data-testid="diagram-canvas"]')).toBe(true);
+    // A second element, added the way a blog post would write it.
+    await page.evaluate(() => {
+      const d = document.createElement('tess-diagram');
+      d.id = 'added';
+      d.setAttribute('kind', 'triangle');
+      d.setAttribute('mode', 'fractional_even,clamped');
+      d.setAttribute('from', '16');
+      d.setAttribute('to', '16');
+      d.setAttribute('inside', '16');
+      document.querySelector('article')?.append(d);
+    });
+    const shown = await shownCounts(page, 'tess-diagram#added');
+    expect(shown.map((s) => [s.mode, s.triangles])).toEqual([
+      ['fractional_even', 384],
+      ['clamped', 256],
+    ]);
+    // Changing an attribute redraws.
+    await page.evaluate(() => document.querySelector('#added')?.setAttribute('mode', 'clamped'));
+    await expect.poll(async () => (await shownCounts(page, 'tess-diagram#added')).map((s) => s.mode)).toEqual(['clamped']);
+    expect(errors).toEqual([]);
+  });
+
+  test('a bad attribute shows a message, not a blank figure', async ({ page }) => {
+    await page.goto('diagrams/embed.html');
+    await page.evaluate(() => {
+      const d = document.createElement('tess-diagram');
+      d.id = 'bad';
+      d.setAttribute('kind', 'line');
+      d.setAttribute('mode', 'hable,wobbly');
+      d.setAttribute('to', 'lots');
+      document.querySelector('article')?.append(d);
+    });
+    const msgs = page.locator('tess-diagram#bad [data-testid="messages"]');
+    await expect(msgs).toBeVisible();
+    await expect(msgs).toContainText('wobbly');
+    await expect(msgs).toContainText('to="lots"');
+    expect(await canvasHasInk(page, 'tess-diagram#bad [data-testid="diagram-canvas"]')).toBe(true);
+  });
+});
+
+test.describe('behaviour', () => {
+  test('bad URL values get a visible message and the figure is still drawn', async ({ page }) => {
+    const errors = watchErrors(page);
+    await page.goto('diagrams/line.html?mode=hable,nope&from=abc&speed=fast');
+    const msgs = page.locator('[data-testid="messages"]');
+    await expect(msgs).toBeVisible();
+    await expect(msgs).toContainText('unknown mode "nope"');
+    await expect(msgs).toContainText('from="abc"');
+    await expect(msgs).toContainText('speed="fast"');
+    expect(await canvasHasInk(page)).toBe(true);
+    expect(errors).toEqual([]);
+  });
+
+  test('plays by default; space, the button and ?t= pause it', async ({ page }) => {
+    await page.goto('diagrams/line.html?fig=hable');
+    const fig = page.locator('[data-testid="diagram"]');
+    const canvas = page.locator('[data-testid="diagram-canvas"]');
+    await expect(fig).toHaveAttribute('data-state', 'playing');
+    const t0 = Number(await canvas.getAttribute('data-time'));
+    await expect.poll(async () => Number(await canvas.getAttribute('data-time'))).toBeGreaterThan(t0);
+    await fig.focus();
+    await page.keyboard.press('Space');
+    await expect(fig).toHaveAttribute('data-state', 'paused');
+    const t1 = await canvas.getAttribute('data-time');
+    await page.waitForTimeout(300);
+    expect(await canvas.getAttribute('data-time')).toBe(t1);
+    await page.keyboard.press('ArrowRight');
+    expect(Number(await canvas.getAttribute('data-time'))).toBeCloseTo(Number(t1) + 0.1, 3);
+    await page.locator('[data-testid="play"]').click();
+    await expect(fig).toHaveAttribute('data-state', 'playing');
+
+    await page.goto('diagrams/line.html?fig=hable&t=3');
+    await expect(fig).toHaveAttribute('data-state', 'paused');
+    await expect(canvas).toHaveAttribute('data-time', '3.000');
+  });
+
+  test('the scrub slider and a factor slider change the figure', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?f0=2..8&f1=4&f2=4&autoplay=0');
+    const scrub = page.locator('[data-testid="scrub"]');
+    await scrub.focus();
+    await scrub.fill('2');
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveAttribute('data-time', '2.000');
+    const slider = page.locator('[data-testid="slider-f0"]');
+    await slider.fill('500'); // log scale: 64^0.5 = 8
+    const [c] = await shownCounts(page);
+    const ref = cli(['tri', '--mode', 'clamped', '--factors', '8,4,4']);
+    expect([c.vertices, c.triangles]).toEqual([ref.vertexCount, ref.triangleCount]);
+    expect(page.url()).toContain('f0=8');
+  });
+
+  test('the chrome can be hidden; a pause button stays', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?fig=full-pattern&chrome=0');
+    await expect(page.locator('[data-testid="controls"]')).toHaveCount(0);
+    const play = page.locator('[data-testid="play"]');
+    await expect(play).toBeVisible();
+    await expect(play).toHaveAttribute('aria-label', 'Pause animation');
+    await play.click();
+    await expect(play).toHaveAttribute('aria-label', 'Play animation');
+  });
+
+  test('exports PNG, SVG, GIF and WebM', async ({ page }) => {
+    test.setTimeout(90_000);
+    await page.goto('diagrams/line.html?mode=hable&from=1&to=2&duration=0.5&hold=0&autoplay=0');
+    const status = page.locator('[data-testid="status"]');
+    const save = async (label: string) => {
+      const [dl] = await Promise.all([page.waitForEvent('download'), page.locator(`[data-testid="export-${label}"]`).click()]);
+      const path = await dl.path();
+      const { readFileSync } = await import('node:fs');
+      return { name: dl.suggestedFilename(), bytes: readFileSync(path) };
+    };
+    const png = await save('png');
+    expect(png.name).toMatch(/\.png$/);
+    expect(png.bytes.subarray(1, 4).toString()).toBe('PNG');
+    const svg = await save('svg');
+    expect(svg.bytes.toString()).toContain('<svg xmlns="http://www.w3.org/2000/svg"');
+    const gif = await save('gif');
+    expect(gif.bytes.subarray(0, 6).toString()).toBe('GIF89a');
+    await expect(status).toContainText('GIF saved');
+    const webm = await save('webm');
+    expect(webm.bytes.readUInt32BE(0)).toBe(0x1a45dfa3); // EBML
+    await expect(status).toContainText('WebM saved');
+  });
+});
+
+test.describe('reduced motion', () => {
+  test.use({ reducedMotion: 'reduce' });
+  test('starts paused on its poster frame, with a visible play control', async ({ page }) => {
+    await page.goto('diagrams/line.html?fig=hable');
+    const fig = page.locator('[data-testid="diagram"]');
+    await expect(fig).toHaveAttribute('data-state', 'paused');
+    const canvas = page.locator('[data-testid="diagram-canvas"]');
+    const t0 = await canvas.getAttribute('data-time');
+    await page.waitForTimeout(400);
+    expect(await canvas.getAttribute('data-time')).toBe(t0);
+    await expect(page.locator('[data-testid="play"]')).toHaveAttribute('aria-label', 'Play animation');
+    // The custom element too.
+    await page.goto('diagrams/embed.html');
+    await expect(page.locator('tess-diagram#embed-element [data-testid="diagram"]')).toHaveAttribute('data-state', 'paused');
+  });
+});
