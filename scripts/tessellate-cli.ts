@@ -1,0 +1,118 @@
+/**
+ * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
+ *   --out out.obj [--params out.json|out.txt] [--surface phong]`
+ * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
+ * GPU) and writes the welded mesh. --params writes every output vertex's source cage face and
+ * parameter in the CPU reference's addressing: JSON `{"params": [[f,u,v] | [f,k,s,t], ...]}`, or
+ * with a .txt name the `f u v` / `f k s t` lines that `npm run subdiv -- --points` reads.
+ * Bad input: a message and exit code 2.
+ */
+import { readFileSync, writeFileSync, existsSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
+import { loadCage, CageError } from '../src/mesh/index.ts';
+import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/node-device.ts';
+import { tessellateOnce, meshToObj, vertexParams, paramsToText, type HeadlessOptions } from '../src/gpu/headless.ts';
+
+const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) --out out.obj [--params out.json|out.txt] [--surface phong]`;
+
+class UsageError extends Error {}
+
+function vec3(text: string | undefined, what: string): [number, number, number] {
+  const parts = (text ?? '').split(',').map((s) => Number(s.trim()));
+  if (parts.length !== 3 || parts.some((x) => !Number.isFinite(x))) throw new UsageError(`${what}: expected x,y,z, got '${text}'`);
+  return parts as [number, number, number];
+}
+
+function parse(argv: string[]) {
+  let model: string | undefined;
+  const o: HeadlessOptions = { mode: 'adaptive' };
+  let modeSeen = 0;
+  let out: string | undefined;
+  let params: string | undefined;
+  let surface = 'phong';
+  for (let i = 0; i < argv.length; i++) {
+    const a = argv[i];
+    const value = () => {
+      const v = argv[++i];
+      if (v === undefined || v.startsWith('--')) throw new UsageError(`${a} needs a value`);
+      return v;
+    };
+    switch (a) {
+      case '--fixed': {
+        const f = Number(value());
+        if (!(f >= 1 && f <= 64)) throw new UsageError(`--fixed: a tess factor in [1, 64], got ${argv[i]}`);
+        o.mode = 'fixed';
+        o.fixedFactor = f;
+        modeSeen++;
+        break;
+      }
+      case '--adaptive':
+        o.mode = 'adaptive';
+        modeSeen++;
+        break;
+      case '--lod': {
+        const s = Number(value());
+        if (!(s > 0) || !Number.isFinite(s)) throw new UsageError(`--lod: a positive number, got ${argv[i]}`);
+        o.lodScale = s;
+        break;
+      }
+      case '--eye': o.eye = vec3(value(), '--eye'); break;
+      case '--target': o.target = vec3(value(), '--target'); break;
+      case '--out': out = value(); break;
+      case '--params': params = value(); break;
+      case '--surface': surface = value(); break;
+      default:
+        if (a.startsWith('--')) throw new UsageError(`unknown option ${a}`);
+        if (model) throw new UsageError(`one model only (got '${model}' and '${a}')`);
+        model = a;
+    }
+  }
+  if (!model) throw new UsageError('no model given');
+  if (modeSeen !== 1) throw new UsageError('give exactly one of --fixed F or --adaptive');
+  if (!out) throw new UsageError('--out is required');
+  if (surface !== 'phong') throw new UsageError(`unknown surface '${surface}' (available: phong)`);
+  if (o.mode === 'fixed' && (o.lodScale || o.eye || o.target)) throw new UsageError('--lod, --eye and --target apply to --adaptive only');
+  return { model, o, out, params };
+}
+
+export async function main(argv: string[]): Promise<number> {
+  let args: ReturnType<typeof parse>;
+  let cage;
+  try {
+    args = parse(argv);
+    if (!existsSync(args.model)) throw new UsageError(`no such file: ${args.model}`);
+    cage = loadCage(readFileSync(args.model, 'utf8')).cage;
+  } catch (e) {
+    if (e instanceof UsageError) {
+      console.error(`tessellate: ${e.message}\n${USAGE}`);
+      return 2;
+    }
+    if (e instanceof CageError) {
+      console.error(`tessellate: ${argv.find((a) => !a.startsWith('--'))}: ${e.message}`);
+      return 2;
+    }
+    throw e;
+  }
+  let device: GPUDevice;
+  let adapterName: string;
+  try {
+    ({ device, adapterName } = await createNodeDevice());
+  } catch (e) {
+    // No GPU: run again on SwiftShader, if it is installed.
+    if (!process.env.VK_ICD_FILENAMES && existsSync(SWIFTSHADER_ICD)) {
+      const r = spawnSync(process.execPath, process.argv.slice(1), { stdio: 'inherit', env: { ...process.env, VK_ICD_FILENAMES: SWIFTSHADER_ICD } });
+      return r.status ?? 1;
+    }
+    console.error(`tessellate: ${(e as Error).message}`);
+    return 1;
+  }
+  const r = await tessellateOnce(device, cage, args.o);
+  writeFileSync(args.out, meshToObj(r, `tessellab: ${args.model}, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`));
+  if (args.params) {
+    const p = vertexParams(r, cage);
+    writeFileSync(args.params, args.params.endsWith('.txt') ? paramsToText(p) : JSON.stringify({ vertexCount: p.length, params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])) }) + '\n');
+  }
+  console.error(`tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}; wrote ${args.out}${args.params ? ` and ${args.params}` : ''}`);
+  device.destroy();
+  return 0;
+}

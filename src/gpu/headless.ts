@@ -1,0 +1,109 @@
+/**
+ * The tessellation pipeline without a browser: cage in, welded mesh out (OBJ, and the
+ * parameter of every vertex on its cage face). Used by `npm run tessellate` and the benchmark.
+ */
+import { mat4 } from 'gl-matrix';
+import { Tessellator } from './tessellator.ts';
+import { prepareMesh, type PreparedMesh } from './prepare.ts';
+import { readBuffer, readMesh, type MeshReadback } from './readback.ts';
+import { faceParam, type FaceParam } from './face-params.ts';
+import { BARY_CORNER1, BARY_CORNER2, type FactorParams } from './types.ts';
+import { bakeTables } from '../pattern/tables.ts';
+import type { Cage } from '../mesh/types.ts';
+
+export interface HeadlessOptions {
+  mode: 'fixed' | 'adaptive';
+  fixedFactor?: number;
+  lodScale?: number;
+  eye?: [number, number, number];
+  target?: [number, number, number];
+  viewportHeight?: number;
+  fovY?: number;
+  vertexCapacity?: number;
+  triangleCapacity?: number;
+}
+
+/** A camera for adaptive mode: the given eye and target, or a three-quarter view that frames the model. */
+export function headlessCamera(mesh: PreparedMesh, o: HeadlessOptions): FactorParams {
+  const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
+  const target = o.target ?? centre;
+  const eye = o.eye ?? ([centre[0] + 0.55 * mesh.size, centre[1] + 0.45 * mesh.size, centre[2] + 1.1 * mesh.size] as [number, number, number]);
+  const fovY = o.fovY ?? Math.PI / 4;
+  const dist = Math.hypot(eye[0] - target[0], eye[1] - target[1], eye[2] - target[2]);
+  const view = mat4.lookAt(mat4.create(), eye, target, [0, 1, 0]);
+  const proj = mat4.perspectiveZO(mat4.create(), fovY, 16 / 9, Math.max(1e-4, dist * 1e-3), dist + 4 * mesh.size);
+  return {
+    mode: o.mode,
+    fixedFactor: o.fixedFactor ?? 1,
+    lodScale: o.lodScale ?? 1,
+    viewProj: mat4.multiply(mat4.create(), proj, view) as Float32Array,
+    eye,
+    viewportHeight: o.viewportHeight ?? 1080,
+    fovY,
+  };
+}
+
+export interface HeadlessResult {
+  mesh: PreparedMesh;
+  out: MeshReadback;
+  edgeF: Uint32Array;
+  timings: Record<string, number>;
+}
+
+export async function tessellateOnce(device: GPUDevice, cage: Cage, o: HeadlessOptions, tess?: Tessellator): Promise<HeadlessResult> {
+  const mesh = prepareMesh(cage);
+  const own = !tess;
+  const t = tess ?? Tessellator.create(device, bakeTables(64), { vertexCapacity: o.vertexCapacity, triangleCapacity: o.triangleCapacity });
+  try {
+    t.setMesh(mesh);
+    device.pushErrorScope('validation');
+    const enc = device.createCommandEncoder({ label: 'headless rebuild' });
+    t.encode(enc, headlessCamera(mesh, o));
+    device.queue.submit([enc.finish()]);
+    const error = await device.popErrorScope();
+    if (error) throw new Error(`WebGPU validation error: ${error.message}`);
+    const out = await readMesh(device, t.output);
+    const edgeF = new Uint32Array(await readBuffer(device, t.workBuffer, 4 * mesh.edgeCount, 4 * t.workLayout.edgeF));
+    const timings = await t.readTimings();
+    return { mesh, out, edgeF, timings };
+  } finally {
+    if (own) t.destroy();
+  }
+}
+
+/** Float barycentric weights of output vertex v on its source triangle. */
+export function vertexWeights(out: MeshReadback, v: number): [number, number, number] {
+  const packed = out.bary[v];
+  if (packed === BARY_CORNER1) return [0, 1, 0];
+  if (packed === BARY_CORNER2) return [0, 0, 1];
+  const w1 = (packed & 0xffff) / 65536, w2 = (packed >>> 16) / 65536;
+  return [1 - w1 - w2, w1, w2];
+}
+
+/** The welded mesh as OBJ (positions, normals, 1-based triangles). */
+export function meshToObj(r: HeadlessResult, header: string): string {
+  const { out } = r;
+  const lines: string[] = [`# ${header}`, `# ${out.vertexCount} vertices, ${out.triangleCount} triangles`];
+  for (let v = 0; v < out.vertexCount; v++) lines.push(`v ${out.positions[3 * v]} ${out.positions[3 * v + 1]} ${out.positions[3 * v + 2]}`);
+  for (let v = 0; v < out.vertexCount; v++) lines.push(`vn ${out.normals[3 * v]} ${out.normals[3 * v + 1]} ${out.normals[3 * v + 2]}`);
+  for (let t = 0; t < out.triangleCount; t++) {
+    const [a, b, c] = [out.indices[3 * t] + 1, out.indices[3 * t + 1] + 1, out.indices[3 * t + 2] + 1];
+    lines.push(`f ${a}//${a} ${b}//${b} ${c}//${c}`);
+  }
+  return lines.join('\n') + '\n';
+}
+
+/** Every output vertex's source face and parameter (unused cage vertices: null). */
+export function vertexParams(r: HeadlessResult, cage: Cage): (FaceParam | null)[] {
+  const params: (FaceParam | null)[] = [];
+  for (let v = 0; v < r.out.vertexCount; v++) {
+    if (v < r.mesh.vertexCount && r.mesh.vertexOwner[v] === 0xffffffff) params.push(null);
+    else params.push(faceParam(r.mesh, cage, r.out.srcTri[v], vertexWeights(r.out, v)));
+  }
+  return params;
+}
+
+/** One `f u v` or `f k s t` per line, the input format of `npm run subdiv -- --points`. */
+export function paramsToText(params: (FaceParam | null)[]): string {
+  return params.map((p) => (p === null ? '# unused cage vertex' : 'u' in p ? `${p.face} ${p.u} ${p.v}` : `${p.face} ${p.k} ${p.s} ${p.t}`)).join('\n') + '\n';
+}

@@ -1,0 +1,54 @@
+/** The headless CLI end to end: a real process, Dawn in Node (SwiftShader here). */
+import { describe, it, expect } from 'vitest';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const dir = mkdtempSync(join(tmpdir(), 'tessellab-cli-'));
+const run = (...args: string[]) =>
+  spawnSync(process.execPath, ['scripts/vite-run.mjs', 'scripts/tessellate-cli.ts', ...args], { encoding: 'utf8', timeout: 120_000 });
+
+describe('npm run tessellate', () => {
+  it('writes a watertight OBJ and one parameter per vertex', () => {
+    const out = join(dir, 'torus.obj');
+    const params = join(dir, 'torus.txt');
+    const r = run('public/models/torus.obj', '--fixed', '4', '--out', out, '--params', params);
+    expect(r.status, r.stderr).toBe(0);
+    const obj = readFileSync(out, 'utf8').split('\n');
+    const v = obj.filter((l) => l.startsWith('v ')).length;
+    const faces = obj.filter((l) => l.startsWith('f ')).map((l) => l.slice(2).split(' ').map((x) => Number(x.split('//')[0])));
+    const cageFaces = readFileSync('public/models/torus.obj', 'utf8').split('\n').filter((l) => l.startsWith('f ')).length;
+    expect(faces.length).toBe(cageFaces * 2 * 16); // quads → 2 triangles → 16 each at factor 4
+    const directed = new Set<string>();
+    for (const f of faces) for (let i = 0; i < 3; i++) directed.add(`${f[i]},${f[(i + 1) % 3]}`);
+    for (const e of directed) {
+      const [a, b] = e.split(',');
+      expect(directed.has(`${b},${a}`)).toBe(true);
+    }
+    const lines = readFileSync(params, 'utf8').trim().split('\n');
+    expect(lines.length).toBe(v);
+    for (const l of lines) {
+      const [f, u, w] = l.split(' ').map(Number);
+      expect(f).toBeGreaterThanOrEqual(0);
+      expect(u).toBeGreaterThanOrEqual(0);
+      expect(w).toBeLessThanOrEqual(1);
+    }
+  });
+
+  it('rejects bad input with a message and exit code 2', () => {
+    const bad = join(dir, 'bad.obj');
+    writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');
+    for (const args of [
+      ['public/models/torus.obj', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--fixed', '0', '--out', join(dir, 'x.obj')],
+      ['missing.obj', '--fixed', '3', '--out', join(dir, 'x.obj')],
+      [bad, '--fixed', '3', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--adaptive', '--eye', '1,2', '--out', join(dir, 'x.obj')],
+    ]) {
+      const r = run(...args);
+      expect(r.status, args.join(' ')).toBe(2);
+      expect(r.stderr).toMatch(/tessellate: /);
+    }
+  });
+});
