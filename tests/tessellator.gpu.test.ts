@@ -94,3 +94,60 @@ describe('compute tessellator', () => {
     expect(checkTessellation(mesh, edgeF, out, { closed: true }).problems).toEqual([]);
   });
 });
+
+// The project's own models, at several cameras and settings.
+import creasedBox from '../public/models/creased-box.obj?raw';
+import creature from '../public/models/creature.obj?raw';
+import gear from '../public/models/gear.obj?raw';
+import icosphere from '../public/models/icosphere.obj?raw';
+import pawn from '../public/models/pawn.obj?raw';
+import sheetModel from '../public/models/sheet.obj?raw';
+import torusModel from '../public/models/torus.obj?raw';
+import { loadCage } from '../src/mesh/index.ts';
+import { edgeFactor } from '../src/gpu/factors.ts';
+import { ONE } from '../src/pattern/fixed.ts';
+
+const models: [string, string, boolean][] = [
+  ['creased-box', creasedBox, true], ['creature', creature, true], ['gear', gear, true], ['icosphere', icosphere, true],
+  ['pawn', pawn, true], ['sheet', sheetModel, false], ['torus', torusModel, true],
+];
+
+describe('compute tessellator on the project models', () => {
+  for (const [name, text, closed] of models) {
+    it(`${name}: fixed 7.3, adaptive near and far match the CPU and are watertight`, async () => {
+      const cage = loadCage(text).cage;
+      for (const params of [
+        (m: PreparedMesh) => camera(m, 4, 7.3),
+        (m: PreparedMesh) => camera(m, 0.9 * m.size, undefined, 8),
+        (m: PreparedMesh) => camera(m, 3 * m.size, undefined, 2),
+      ]) {
+        const { mesh, out, edgeF, error } = await tessellate(cage, params);
+        expect(error?.message).toBeUndefined();
+        const report = checkTessellation(mesh, edgeF, out, { closed });
+        expect(report.problems).toEqual([]);
+        expect(report.maxNormalError).toBeLessThan(1e-4);
+      }
+    });
+  }
+
+  it('computes the adaptive factor rule of src/gpu/factors.ts', async () => {
+    const cage = loadCage(creature).cage;
+    const p = (m: PreparedMesh) => camera(m, 1.2 * m.size, undefined, 3);
+    const { mesh, edgeF } = await tessellate(cage, p);
+    const fp = p(mesh);
+    let compared = 0;
+    for (let e = 0; e < mesh.edgeCount; e++) {
+      const [a, b] = [mesh.edgeVerts[2 * e], mesh.edgeVerts[2 * e + 1]];
+      const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
+      const cpu = edgeFactor(v(mesh.positions, a), v(mesh.positions, b), v(mesh.normals, a), v(mesh.normals, b), {
+        mode: 'adaptive', fixedFactor: 1, lodScale: fp.lodScale, viewProj: fp.viewProj, eye: fp.eye, pixelAngle: fp.fovY / fp.viewportHeight, maxFactor: 64,
+      });
+      const gpu = edgeF[e] / ONE;
+      // f32 against f64: the same within 1e-4 relative, except where a culling test sits on its threshold.
+      if (Math.abs(gpu - cpu) > 1e-4 * cpu && (gpu === 1 || cpu === 1)) continue;
+      expect(Math.abs(gpu - cpu)).toBeLessThanOrEqual(1e-4 * cpu + 2 / ONE);
+      compared++;
+    }
+    expect(compared).toBeGreaterThan(0.95 * mesh.edgeCount);
+  });
+});
