@@ -61,6 +61,47 @@ test.describe('frozen frames (?t=) match their references', () => {
   });
 });
 
+/** The number of geometry builds so far, from the stats panel. */
+async function builds(page: Page): Promise<number> {
+  const text = (await page.getByTestId('stats-frame').textContent()) ?? '';
+  return Number(/([\d,]+) builds?/.exec(text)?.[1].replace(/,/g, '') ?? NaN);
+}
+
+test('rebuilds the geometry only when the camera (adaptive), factors or model change', async ({ page }) => {
+  await page.goto('/?model=torus&t=0');
+  await ready(page);
+  await expect.poll(() => builds(page)).toBe(1);
+  // Overlays redraw the stored mesh: no rebuild.
+  await page.locator('.lil-gui.panel').getByText('wireframe').click();
+  await page.locator('.lil-gui.panel').getByText('cage overlay').click();
+  await page.waitForTimeout(300);
+  expect(await builds(page)).toBe(1);
+  // Adaptive factors follow the camera: a drag rebuilds.
+  const box = (await page.locator('#view').boundingBox())!;
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 10, { steps: 3 });
+  await page.mouse.up();
+  await expect.poll(() => builds(page)).toBeGreaterThan(1);
+  // Fixed factors do not depend on the camera: switching rebuilds once, turning the view does not.
+  await page.goto('/?model=torus&t=0&mode=fixed&factor=3');
+  await ready(page);
+  await expect.poll(() => builds(page)).toBe(1);
+  await page.locator('#view').focus();
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('+');
+  await page.waitForTimeout(500);
+  expect(await builds(page)).toBe(1);
+});
+
+test('the turntable rebuilds adaptive geometry every frame without errors', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&spin=1');
+  await ready(page);
+  await expect.poll(() => builds(page), { timeout: 20_000 }).toBeGreaterThan(3);
+  expect(errors).toEqual([]);
+});
+
 test('a bad OBJ shows its error with line numbers and keeps the model', async ({ page }) => {
   await page.goto('/?model=torus&t=0');
   await ready(page);

@@ -46,6 +46,7 @@ class TessellationDemo extends DemoBase {
   rebuilds = 0;
   #geometryDirty = true;
   #rebuiltThisFrame = false;
+  #tessTimingInFlight = false;
   #statsDue = 0;
   #firstFrameShown = false;
 
@@ -81,6 +82,7 @@ class TessellationDemo extends DemoBase {
   showSurface(): void {
     this.renderer?.setMesh(this.geometry?.output ?? null);
     this.lastCounts = null;
+    this.tessTimes = {};
     this.invalidateGeometry();
   }
 
@@ -140,14 +142,19 @@ class TessellationDemo extends DemoBase {
   protected override onAfterSubmit(): void {
     const renderer = this.renderer;
     const geometry = this.geometry;
-    const rebuilt = this.#rebuiltThisFrame;
+    // One read of the build's timestamps at a time: while one is mapping, later builds (a
+    // turntable rebuilds every frame) go untimed rather than map the same buffer twice.
+    const readTess = this.#rebuiltThisFrame && !this.#tessTimingInFlight;
+    if (readTess) this.#tessTimingInFlight = true;
+    const quietly = <T>(p: Promise<T> | undefined, fallback: T) => (p ?? Promise.resolve(fallback)).catch(() => fallback);
     void (async () => {
       const [draw, tess, counts] = await Promise.all([
-        renderer?.readTimings() ?? {},
-        rebuilt ? geometry?.readTimings() ?? {} : null,
-        this.counts?.read() ?? null,
+        quietly(renderer?.readTimings(), {}),
+        readTess ? quietly(geometry?.readTimings(), {}) : null,
+        quietly(this.counts?.read(), null),
       ]);
-      if (tess) this.tessTimes = tess;
+      if (readTess) this.#tessTimingInFlight = false;
+      if (tess && Object.keys(tess).length) this.tessTimes = tess;
       this.drawTimes = draw;
       if (counts) this.lastCounts = counts;
       this.updateStats();
