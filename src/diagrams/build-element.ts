@@ -1,7 +1,7 @@
 /**
  * Builds the <tess-diagram> element as ONE file with a stable name, for blogs:
  *
- *   npm run build && npx tsx src/diagrams/build-element.ts     → dist/diagrams/tess-diagram.js
+ *   npm run build && npx tsx src/diagrams/build-element.ts [outDir]   → dist/diagrams/tess-diagram.js
  *
  * The site build (vite.config.ts) names its chunks by content hash, which a blog cannot link to;
  * this library build puts the element, the pattern code and the styles in `tess-diagram.js`
@@ -20,7 +20,7 @@ await build({
   logLevel: 'warn',
   publicDir: false,
   build: {
-    outDir: resolve(root, 'dist/diagrams'),
+    outDir: resolve(process.argv[2] ?? resolve(root, 'dist/diagrams')),
     emptyOutDir: false,
     target: 'es2022',
     minify: true,
@@ -28,4 +28,4 @@ await build({
     rollupOptions: { output: { chunkFileNames: 'tess-diagram-[name]-[hash].js' } },
   },
 });
-console.log('dist/diagrams/tess-diagram.js');
+console.log(`${process.argv[2] ?? 'dist/diagrams'}/tess-diagram.js`);

@@ -275,8 +275,12 @@ export class DiagramPlayer {
   }
 
   private syncPlayButtons(): void {
+    const still = !this.animated;
     for (const b of [this.els.play, this.els.mini]) {
       if (!b) continue;
+      // A figure whose factors never change has nothing to play (a sweep makes it move again).
+      b.disabled = still;
+      b.title = still ? 'Every factor is fixed in this figure: set a sweep to animate it' : '';
       b.innerHTML = (this.playing ? ICON_PAUSE : ICON_PLAY) + (b === this.els.play ? `<span>${this.playing ? 'Pause' : 'Play'}</span>` : '');
       b.setAttribute('aria-label', this.playing ? 'Pause animation' : 'Play animation');
       b.dataset.state = this.playing ? 'playing' : 'paused';
@@ -339,6 +343,7 @@ export class DiagramPlayer {
 
   private changed(): void {
     this.render();
+    this.syncPlayButtons();
     this.schedule();
     const q = toQuery(this.params);
     this.opts.onParamsChange?.(q);
