@@ -302,6 +302,17 @@ test.describe('behaviour', () => {
   });
 });
 
+test.describe('HiDPI', () => {
+  test.use({ deviceScaleFactor: 2 });
+  test('the canvas has two pixels per CSS pixel', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?fig=inefficient-16');
+    const c = page.locator('[data-testid="diagram-canvas"]');
+    await expect(c).toBeVisible();
+    const [w, cssW] = await c.evaluate((el: HTMLCanvasElement) => [el.width, el.getBoundingClientRect().width]);
+    expect(Math.abs(w - 2 * cssW)).toBeLessThanOrEqual(1);
+  });
+});
+
 test.describe('reduced motion', () => {
   test.use({ reducedMotion: 'reduce' });
   test('starts paused on its poster frame, with a visible play control', async ({ page }) => {

@@ -163,6 +163,18 @@ export class DiagramPlayer {
     const onTheme = () => this.render();
     this.darkQuery?.addEventListener('change', onTheme);
     this.cleanup.push(() => this.darkQuery?.removeEventListener('change', onTheme));
+    // A new pixel ratio (another screen, zoom) needs a sharper or smaller backing store.
+    const watchDpr = () => {
+      if (typeof matchMedia !== 'function') return;
+      const mq = matchMedia(`(resolution: ${devicePixelRatio}dppx)`);
+      const onDpr = () => {
+        this.render();
+        watchDpr();
+      };
+      mq.addEventListener('change', onDpr, { once: true });
+      this.cleanup.push(() => mq.removeEventListener('change', onDpr));
+    };
+    watchDpr();
     const onVis = () => this.schedule();
     document.addEventListener('visibilitychange', onVis);
     this.cleanup.push(() => document.removeEventListener('visibilitychange', onVis));
