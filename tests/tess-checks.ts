@@ -44,7 +44,10 @@ function weightsByCageVertex(mesh: PreparedMesh, out: MeshReadback, v: number): 
   return m;
 }
 
-export function checkTessellation(mesh: PreparedMesh, edgeF: Uint32Array, out: MeshReadback, opts: { closed: boolean; maxErrors?: number }): TessReport {
+export function checkTessellation(
+  mesh: PreparedMesh, edgeF: Uint32Array, out: MeshReadback,
+  opts: { closed: boolean; maxErrors?: number; reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] } },
+): TessReport {
   const problems: string[] = [];
   const add = (p: string) => {
     if (problems.length < (opts.maxErrors ?? 20)) problems.push(p);
@@ -84,7 +87,7 @@ export function checkTessellation(mesh: PreparedMesh, edgeF: Uint32Array, out: M
   if (out.triangleCount !== expectedTriangles) add(`triangle count ${out.triangleCount} ≠ CPU ${expectedTriangles}`);
   if (out.vertexCount !== expectedVertices) add(`vertex count ${out.vertexCount} ≠ CPU ${expectedVertices}`);
 
-  // Surface: every vertex against the CPU's Phong evaluation at its barycentrics.
+  // Surface: every vertex against the CPU's Phong evaluation (or opts.reference) at its barycentrics.
   let maxPositionError = 0;
   let maxNormalError = 0;
   for (let v = 0; v < out.vertexCount; v++) {
@@ -92,7 +95,7 @@ export function checkTessellation(mesh: PreparedMesh, edgeF: Uint32Array, out: M
     if (v < mesh.vertexCount && mesh.vertexOwner[v] === NO_OWNER) continue; // a cage vertex no face uses
     const m = weightsByCageVertex(mesh, out, v);
     const w = [0, 1, 2].map((i) => (m.get(mesh.triVerts[3 * s + i]) ?? 0) / ONE) as [number, number, number];
-    const ref = phongPoint(mesh, s, w);
+    const ref = opts.reference ? opts.reference(s, w) : phongPoint(mesh, s, w);
     const pos = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
     const nrm = [out.normals[3 * v], out.normals[3 * v + 1], out.normals[3 * v + 2]];
     if (pos.some((x) => !Number.isFinite(x)) || nrm.some((x) => !Number.isFinite(x))) add(`vertex ${v}: NaN or infinity`);

@@ -5,7 +5,8 @@
 //   staticBuf  the baked pattern tables (src/pattern/tables.ts layout) followed by the mesh's
 //              topology (src/gpu/prepare.ts): triVerts, triEdges, triFrame, edgeVerts,
 //              edgeOwner, vertexOwner at the offsets in Params
-//   cageBuf    cage positions then vertex normals, 3 f32 each (may change every frame)
+//   cageBuf    cage positions then vertex normals, 3 f32 each (may change every frame); with
+//              the Catmull-Clark surface then its control points and the cage vertices' limits
 //   work       per-edge and per-triangle counts, their prefix sums, and the budget state
 
 @group(0) @binding(0) var<uniform> params: Params;
@@ -106,6 +107,17 @@ fn unpackFrame(bits: u32) -> Frame {
 fn cagePos(v: u32) -> vec3<f32> { return vec3<f32>(cageBuf[3u * v], cageBuf[3u * v + 1u], cageBuf[3u * v + 2u]); }
 fn cageNormal(v: u32) -> vec3<f32> {
   let o = params.offNormals + 3u * v;
+  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
+}
+
+// What the factor rule reads: the cage itself (Phong), or the limit positions and normals of the
+// cage vertices (Catmull-Clark, written by wgsl/cc-build.wgsl).
+fn factorPos(v: u32) -> vec3<f32> {
+  let o = params.offFactorPos + 3u * v;
+  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
+}
+fn factorNormal(v: u32) -> vec3<f32> {
+  let o = params.offFactorNormal + 3u * v;
   return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
 }
 

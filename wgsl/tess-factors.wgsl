@@ -15,10 +15,10 @@ fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
 fn adaptiveFactor(e: u32) -> f32 {
   let a = edgeVert(e, 0u);
   let b = edgeVert(e, 1u);
-  let p0 = cagePos(a);
-  let p1 = cagePos(b);
-  let n0 = cageNormal(a);
-  let n1 = cageNormal(b);
+  let p0 = factorPos(a);
+  let p1 = factorPos(b);
+  let n0 = factorNormal(a);
+  let n1 = factorNormal(b);
   let d = p1 - p0;
   // Phong midpoint minus linear midpoint: symmetric in the two ends.
   let off = (PHONG_ALPHA / 4.0) * (dot(d, n1) * n1 - dot(d, n0) * n0);

@@ -11,6 +11,9 @@
  *     budget     accept (and write the indirect draw args) or rescale      wgsl/tess-budget.wgsl
  *   weld         corner and edge vertices, evaluated once each              wgsl/tess-weld.wgsl
  *   tessellate   one workgroup per triangle: interior vertices, triangles  wgsl/tess-triangles.wgsl
+ * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
+ *   subdivision  control points from the cage positions (stencils), then the cage vertices'
+ *                limit positions and normals for the factor rule           wgsl/cc-build.wgsl
  * Attempts after the accepted one are no-ops on the GPU (they test a flag), so no readback is
  * ever needed.
  */
@@ -23,6 +26,9 @@ import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
 import trianglesWgsl from '../../wgsl/tess-triangles.wgsl?raw';
 import scanWgsl from '../../wgsl/scan.wgsl?raw';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
+import ccSurfaceWgsl from '../../wgsl/surface-cc.wgsl?raw';
+import ccBuildWgsl from '../../wgsl/cc-build.wgsl?raw';
+import type { CatmullClarkData } from './cc/build.ts';
 import { defineStruct } from './layout.ts';
 import { outputCapacity } from './factors.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -41,6 +47,11 @@ export const PARAMS = defineStruct('Params', [
   ['offBudget', 'u32'], ['vertexCapacity', 'u32'], ['triangleCapacity', 'u32'],
   ['mode', 'u32'], ['fixedFactor', 'f32'], ['lodScale', 'f32'], ['pixelAngle', 'f32'],
   ['eye', 'vec4<f32>'],
+  // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
+  ['offFactorPos', 'u32'], ['offFactorNormal', 'u32'],
+  // Catmull-Clark tables (src/gpu/cc/build.ts): staticBuf word offsets, control points in cageBuf.
+  ['ccTri', 'u32'], ['ccPoly', 'u32'], ['ccNodes', 'u32'], ['ccRows', 'u32'], ['ccEntries', 'u32'],
+  ['nCtrl', 'u32'], ['ccVertexLimits', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
 ] as const);
 
 const SCAN_PARAMS = defineStruct('ScanParams', [['inOff', 'u32'], ['outOff', 'u32'], ['n', 'u32'], ['sumsOff', 'u32']] as const);
@@ -76,7 +87,7 @@ function workLayout(nE: number, nT: number): WorkLayout {
   };
 }
 
-type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'triangles';
+type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'triangles' | 'ccPoints' | 'ccLimits';
 /** Bindings each pass uses (its pipeline layout is derived from the WGSL: 'auto'). */
 const PASS_BINDINGS: Record<PassName, number[]> = {
   factors: [0, 1, 2, 3],
@@ -85,6 +96,8 @@ const PASS_BINDINGS: Record<PassName, number[]> = {
   corners: [0, 1, 2, 3, 4, 5, 6, 7],
   edges: [0, 1, 2, 3, 4, 5, 6, 7],
   triangles: [0, 1, 2, 3, 4, 5, 6, 7, 8],
+  ccPoints: [0, 1, 2],
+  ccLimits: [0, 2],
 };
 
 export interface TessellatorOptions {
@@ -93,14 +106,23 @@ export interface TessellatorOptions {
   /** WGSL that defines `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` for the emit
    * passes (see wgsl/tess-common.wgsl). Default: Phong tessellation (wgsl/surface-phong.wgsl). */
   surfaceWgsl?: string;
+  /** 'catmull-clark': the exact Catmull-Clark limit surface (wgsl/surface-cc.wgsl); setMesh then
+   * needs the tables of src/gpu/cc/build.ts buildCatmullClark. Default 'phong'. */
+  surface?: 'phong' | 'catmull-clark';
+  /** Catmull-Clark: blend from the flat triangle (corner limit positions) to the surface as the
+   * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
+  flatBaseline?: boolean;
 }
 
 /** Timing categories reported by readTimings (ms). */
-export const TIMED_STAGES = ['factors', 'count+budget', 'weld', 'tessellate'] as const;
+export const TIMED_STAGES = ['subdivision', 'factors', 'count+budget', 'weld', 'tessellate'] as const;
 
 export class Tessellator {
   readonly output: TessellatedMesh;
   readonly maxFactor: number;
+  readonly surface: 'phong' | 'catmull-clark';
+  /** Catmull-Clark flat-baseline blend by tess factor (see TessellatorOptions.flatBaseline). */
+  flatBaseline: boolean;
   private readonly params: GPUBuffer;
   private readonly paramsBytes: ArrayBuffer;
   private readonly pipelines: Record<PassName, GPUComputePipeline>;
@@ -114,6 +136,7 @@ export class Tessellator {
     layout: WorkLayout;
     groups: Record<PassName, GPUBindGroup>;
     scans: { group: GPUBindGroup; n: number }[];
+    cc?: CatmullClarkData;
   };
   private readonly timing?: { set: GPUQuerySet; resolve: GPUBuffer; read: GPUBuffer; pending: boolean; stages: string[] };
 
@@ -127,6 +150,8 @@ export class Tessellator {
     opts: TessellatorOptions,
   ) {
     this.maxFactor = new PatternTables(tables).maxFactor;
+    this.surface = opts.surface ?? 'phong';
+    this.flatBaseline = opts.flatBaseline ?? true;
     const cap = outputCapacity(device.limits, opts);
     const buffer = (label: string, size: number, usage: number) => device.createBuffer({ label, size: Math.max(16, size), usage });
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST;
@@ -147,7 +172,8 @@ export class Tessellator {
     const module = (label: string, ...parts: string[]) => device.createShaderModule({ label, code: [PARAMS.wgsl, commonWgsl, ...parts].join('\n') });
     const pipeline = (label: string, mod: GPUShaderModule, entryPoint = 'main') =>
       device.createComputePipeline({ label, layout: 'auto', compute: { module: mod, entryPoint } });
-    const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
+    const cc = this.surface === 'catmull-clark';
+    const surface = opts.surfaceWgsl ?? (cc ? ccSurfaceWgsl : phongSurfaceWgsl);
     const weld = module('tess weld', surface, outputsWgsl, weldWgsl);
     this.pipelines = {
       factors: pipeline('tess factors', module('tess factors', factorsWgsl)),
@@ -156,7 +182,12 @@ export class Tessellator {
       corners: pipeline('tess weld corners', weld, 'corners'),
       edges: pipeline('tess weld edges', weld, 'edges'),
       triangles: pipeline('tess triangles', module('tess triangles', surface, outputsWgsl, trianglesWgsl)),
-    };
+    } as Record<PassName, GPUComputePipeline>;
+    if (cc) {
+      const build = device.createShaderModule({ label: 'cc patch build', code: [PARAMS.wgsl, ccBuildWgsl].join('\n') });
+      this.pipelines.ccPoints = pipeline('cc control points', build, 'points');
+      this.pipelines.ccLimits = pipeline('cc vertex limits', build, 'limits');
+    }
     // The three scan steps share one bind group, so they share an explicit layout.
     this.scanLayout = device.createBindGroupLayout({
       label: 'scan',
@@ -176,7 +207,7 @@ export class Tessellator {
     };
 
     if (device.features.has('timestamp-query')) {
-      const count = 2 * 3 * ATTEMPTS + 4;
+      const count = 2 * 3 * ATTEMPTS + 6;
       this.timing = {
         set: device.createQuerySet({ label: 'tess timestamps', type: 'timestamp', count }),
         resolve: device.createBuffer({ label: 'tess timestamps resolve', size: 8 * count, usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC }),
@@ -187,10 +218,13 @@ export class Tessellator {
     }
   }
 
-  /** Upload a prepared mesh: topology once; positions may be updated later (updatePositions). */
-  setMesh(prepared: PreparedMesh): void {
+  /** Upload a prepared mesh: topology once; positions may be updated later (updateCage). The
+   * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
+  setMesh(prepared: PreparedMesh, cc?: CatmullClarkData): void {
     const device = this.device;
     if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
+    if (this.surface === 'catmull-clark' && !cc) throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
+    if (this.surface !== 'catmull-clark') cc = undefined;
     if (prepared.triangleCount > this.output.triangleCapacity || prepared.vertexCount + prepared.edgeCount > this.output.vertexCapacity) {
       throw new Error(
         `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
@@ -204,16 +238,23 @@ export class Tessellator {
       offsets.push(at);
       at += p.length;
     }
+    const ccBase = at;
+    if (cc) at += cc.words.length;
     const staticWords = new Uint32Array(at);
     staticWords.set(this.tables, 0);
     parts.forEach((p, i) => staticWords.set(p, offsets[i]));
+    if (cc) staticWords.set(cc.words, ccBase);
     const staticBuf = device.createBuffer({ label: 'tess tables + topology', size: staticWords.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
     device.queue.writeBuffer(staticBuf, 0, staticWords);
 
-    const cageWords = new Float32Array(6 * prepared.vertexCount);
+    const nV = prepared.vertexCount;
+    // Catmull-Clark: control points, then limit positions and normals of the cage vertices.
+    const offCtrl = 6 * nV;
+    const offLimits = offCtrl + 3 * (cc?.ctrlCount ?? 0);
+    const cageWords = new Float32Array(cc ? offLimits + 6 * nV : 6 * nV);
     cageWords.set(prepared.positions, 0);
     cageWords.set(prepared.normals, 3 * prepared.vertexCount);
-    const cageBuf = device.createBuffer({ label: 'tess cage', size: Math.max(16, cageWords.byteLength), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    const cageBuf = device.createBuffer({ label: 'tess cage', size: Math.max(16, cageWords.byteLength), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC });
     device.queue.writeBuffer(cageBuf, 0, cageWords);
 
     const layout = workLayout(prepared.edgeCount, prepared.triangleCount);
@@ -227,6 +268,9 @@ export class Tessellator {
       offEdgeF: layout.edgeF, offEdgeState: layout.edgeState, offEdgeSegs: layout.edgeSegs, offEdgeInterior: layout.edgeInterior, offEdgeBase: layout.edgeBase,
       offTriVertCount: layout.triVertCount, offTriVertBase: layout.triVertBase, offTriTriCount: layout.triTriCount, offTriTriBase: layout.triTriBase,
       offBudget: layout.budget, vertexCapacity: this.output.vertexCapacity, triangleCapacity: this.output.triangleCapacity,
+      offFactorPos: cc ? offLimits : 0, offFactorNormal: cc ? offLimits + 3 * nV : 3 * nV,
+      ccTri: ccBase + (cc?.offTri ?? 0), ccPoly: ccBase + (cc?.offPoly ?? 0), ccNodes: ccBase + (cc?.offNodes ?? 0), ccRows: ccBase + (cc?.offRows ?? 0),
+      ccEntries: ccBase + (cc?.offEntries ?? 0), nCtrl: cc?.ctrlCount ?? 0, ccVertexLimits: cc?.vertexLimitBase ?? 0, offCtrl,
     });
 
     const resources: Record<number, GPUBindingResource> = {
@@ -244,6 +288,7 @@ export class Tessellator {
     };
     const groups = {} as Record<PassName, GPUBindGroup>;
     for (const name of Object.keys(PASS_BINDINGS) as PassName[]) {
+      if (!this.pipelines[name]) continue;
       groups[name] = device.createBindGroup({
         label: `tess ${name}`,
         layout: this.pipelines[name].getBindGroupLayout(0),
@@ -268,7 +313,7 @@ export class Tessellator {
       });
       return { group, n: s.n, uniform };
     });
-    this.mesh = { prepared, staticBuf, cageBuf, work, layout, groups, scans: scans.map(({ group, n }) => ({ group, n })) };
+    this.mesh = { prepared, staticBuf, cageBuf, work, layout, groups, scans: scans.map(({ group, n }) => ({ group, n })), cc };
     this.scanUniforms = scans.map((s) => s.uniform);
   }
 
@@ -279,6 +324,20 @@ export class Tessellator {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 4 * 3 * m.prepared.vertexCount, normals);
+  }
+
+  /** The uniform and static buffers (for extra passes over the same mesh, e.g. surface sampling). */
+  get paramsBuffer(): GPUBuffer {
+    return this.params;
+  }
+
+  get staticBuffer(): GPUBuffer {
+    return this.requireMesh().staticBuf;
+  }
+
+  /** The cage buffer (positions, normals; Catmull-Clark control points and vertex limits): for checks. */
+  get cageBuffer(): GPUBuffer {
+    return this.requireMesh().cageBuf;
   }
 
   get prepared(): PreparedMesh | undefined {
@@ -315,6 +374,7 @@ export class Tessellator {
       lodScale: p.lodScale,
       pixelAngle: p.fovY / Math.max(1, p.viewportHeight),
       eye: [p.eye[0], p.eye[1], p.eye[2], 0],
+      ccFlat: this.flatBaseline ? 1 : 0,
     });
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
   }
@@ -341,6 +401,11 @@ export class Tessellator {
       cp.dispatchWorkgroups(...grid2d(groups));
     };
 
+    if (m.cc) {
+      const cp = pass('cc patch build', 'subdivision');
+      this.recordPatchBuild(cp, m);
+      cp.end();
+    }
     for (let attempt = 0; attempt < ATTEMPTS; attempt++) {
       let cp = pass(`tess factors ${attempt}`, 'factors');
       run(cp, 'factors', Math.ceil(nE / 64));
@@ -374,6 +439,27 @@ export class Tessellator {
       this.timing.stages = stages;
       this.timing.pending = true;
     }
+  }
+
+  private recordPatchBuild(cp: GPUComputePassEncoder, m: NonNullable<Tessellator['mesh']>): void {
+    const cc = m.cc!;
+    cp.setBindGroup(0, m.groups.ccPoints);
+    cp.setPipeline(this.pipelines.ccPoints);
+    cp.dispatchWorkgroups(...grid2d(Math.ceil(cc.ctrlCount / 64)));
+    cp.setBindGroup(0, m.groups.ccLimits);
+    cp.setPipeline(this.pipelines.ccLimits);
+    cp.dispatchWorkgroups(...grid2d(Math.ceil(m.prepared.vertexCount / 64)));
+  }
+
+  /** Record only the Catmull-Clark patch build (control points and vertex limits from the
+   * current cage positions): what a deforming cage needs before the next tessellation. encode()
+   * runs it too. */
+  encodePatchBuild(encoder: GPUCommandEncoder): void {
+    const m = this.requireMesh();
+    if (!m.cc) return;
+    const cp = encoder.beginComputePass({ label: 'cc patch build' });
+    this.recordPatchBuild(cp, m);
+    cp.end();
   }
 
   /** GPU milliseconds per stage of the last encoded rebuild ({} without timestamp queries). */
