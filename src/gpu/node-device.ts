@@ -7,15 +7,15 @@ import { existsSync } from 'node:fs';
 
 export const SWIFTSHADER_ICD = '/usr/lib/chromium/vk_swiftshader_icd.json';
 
-// Dawn's instance must outlive its devices: a collected instance kills the process.
-let instance: unknown;
+// Dawn's instances must outlive their devices: a collected instance kills the process.
+const instances: unknown[] = [];
 
 export async function createNodeDevice(dawnToggles: string[] = []): Promise<{ device: GPUDevice; adapterName: string }> {
   const name = 'webgpu';
   const { create, globals } = await import(/* @vite-ignore */ name);
   Object.assign(globalThis, globals);
   const gpu = create(dawnToggles) as GPU;
-  instance = gpu;
+  instances.push(gpu);
   const adapter = await gpu.requestAdapter({ powerPreference: 'high-performance' });
   if (!adapter) {
     const hint = existsSync(SWIFTSHADER_ICD)
@@ -35,6 +35,6 @@ export async function createNodeDevice(dawnToggles: string[] = []): Promise<{ de
   return { device, adapterName: [info.vendor, info.architecture, info.device, info.description].filter(Boolean).join(' ') || 'unknown adapter' };
 }
 
-export function keepInstance(): unknown {
-  return instance;
+export function liveInstances(): number {
+  return instances.length;
 }
