@@ -118,18 +118,13 @@ export async function main(argv: string[]): Promise<number> {
     return 1;
   }
   const tess = Tessellator.create(device, bakeTables(64));
-  // A second device without the zero-initialisation of workgroup memory that WGSL requires:
-  // SwiftShader spends most of the tessellate pass there (a real GPU does not), so the
-  // tessellate pass is reported both ways. The shaders never read workgroup memory before
-  // writing it, so the output is the same.
-  const noInit = await createNodeDevice(['disable-dawn-features=timestamp_quantization', 'enable-dawn-features=disable_workgroup_init']);
-  const tessNoInit = Tessellator.create(noInit.device, bakeTables(64));
+
   const models = readdirSync('public/models').filter((f) => f.endsWith('.obj')).sort();
   const rows: string[] = [];
   const lodScale = 4;
   const adaptive: HeadlessOptions = { mode: 'adaptive', lodScale };
-  const header = '| model | cage tris | mode | out verts | out tris | factors ms | count+budget ms | weld ms | tessellate ms | total ms | Mtris/ms | write-bound ms | efficiency | tessellate ms, no wg init | efficiency, no wg init |';
-  const rule = '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|';
+  const header = '| model | cage tris | mode | out verts | out tris | factors ms | count+budget ms | weld ms | tessellate ms | total ms | Mtris/ms | write-bound ms | efficiency |';
+  const rule = '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|';
   const equalError: string[] = [];
   console.log(header);
   console.log(rule);
@@ -144,9 +139,7 @@ export async function main(argv: string[]): Promise<number> {
       const bytes = r.vertices * BYTES_PER_VERTEX + r.triangles * BYTES_PER_TRIANGLE;
       const bound = await timeTrivialWrite(device, bytes, repeats);
       const s = r.stages;
-      const n = await timeRebuild(noInit.device, tessNoInit, mesh, o, repeats);
-      const totalNoInit = Object.values(n.stages).reduce((a, b) => a + b, 0);
-      const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${label} | ${r.vertices} | ${r.triangles} | ${(s.factors ?? 0).toFixed(3)} | ${(s['count+budget'] ?? 0).toFixed(3)} | ${(s.weld ?? 0).toFixed(3)} | ${(s.tessellate ?? 0).toFixed(3)} | ${r.total.toFixed(3)} | ${(r.triangles / r.total / 1e6).toFixed(4)} | ${bound.toFixed(3)} | ${((100 * bound) / r.total).toFixed(1)} % | ${(n.stages.tessellate ?? 0).toFixed(3)} | ${((100 * bound) / totalNoInit).toFixed(1)} % |`;
+      const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${label} | ${r.vertices} | ${r.triangles} | ${(s.factors ?? 0).toFixed(3)} | ${(s['count+budget'] ?? 0).toFixed(3)} | ${(s.weld ?? 0).toFixed(3)} | ${(s.tessellate ?? 0).toFixed(3)} | ${r.total.toFixed(3)} | ${(r.triangles / r.total / 1e6).toFixed(4)} | ${bound.toFixed(3)} | ${((100 * bound) / r.total).toFixed(1)} % |`;
       console.log(row);
       rows.push(row);
     }
@@ -157,9 +150,7 @@ export async function main(argv: string[]): Promise<number> {
     equalError.push(`| ${file.replace('.obj', '')} | ${F.toFixed(2)} | ${eq.vertices} | ${eq.triangles} | ${a.vertices} | ${a.triangles} | ${((100 * a.triangles) / eq.triangles).toFixed(0)} % |`);
   }
   tess.destroy();
-  tessNoInit.destroy();
   device.destroy();
-  noInit.device.destroy();
 
   const machine = `${cpus()[0]?.model ?? 'unknown CPU'} (${cpus().length} cores, ${(totalmem() / 2 ** 30).toFixed(0)} GiB)`;
   const doc = `# Benchmarks
@@ -171,7 +162,6 @@ Written by \`npm run bench\` on ${new Date().toISOString().slice(0, 10)}.
 - **Bytes per output:** ${BYTES_PER_VERTEX} per vertex (position, normal, barycentrics, source triangle), ${BYTES_PER_TRIANGLE} per triangle (indices).
 - Times are GPU timestamps (Dawn, timestamp quantization off), medians of ${repeats} rebuilds after a warm-up. The camera is a three-quarter view framing the model, 1080 px high, 45° field of view.
 - **write-bound ms** is a kernel that only writes the same number of bytes; **efficiency** = write-bound / total. On SwiftShader (a CPU rasteriser) only these ratios mean anything; GPU timings on real hardware are still owed.
-- **no wg init**: the same rebuild on a device with Dawn's \`disable_workgroup_init\` toggle. WGSL zero-initialises workgroup memory; SwiftShader does it so slowly that it dominates the tessellate pass (one workgroup per cage triangle, about 6 KB of workgroup memory each), which a real GPU does not. Browsers cannot turn it off, so the first columns are what a page gets on SwiftShader.
 
 ## Compute tessellation per model
 

@@ -77,6 +77,16 @@ describe('compute tessellator', () => {
     }
   }
 
+  it('a cage of more triangles than one scan block covers (4096) matches the CPU', async () => {
+    const big = torus(90, 48); // 4320 quads, 8640 triangles, ~13K edges: several scan blocks
+    for (const params of [(m: PreparedMesh) => camera(m, 4, 3.5), (m: PreparedMesh) => camera(m, 0.8 * m.size, undefined, 4)]) {
+      const { mesh, out, edgeF, error } = await tessellate(big, params);
+      expect(mesh.triangleCount).toBeGreaterThan(2 * 4096);
+      expect(error?.message).toBeUndefined();
+      expect(checkTessellation(mesh, edgeF, out, { closed: true }).problems).toEqual([]);
+    }
+  });
+
   it('adaptive factors rise near the eye and fall away from it', async () => {
     const near = await tessellate(torus(), (m) => camera(m, 1.2 * m.size, undefined, 2));
     const far = await tessellate(torus(), (m) => camera(m, 8 * m.size, undefined, 2));

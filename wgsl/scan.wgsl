@@ -1,22 +1,32 @@
 // Exclusive prefix sum of n u32 values inside the `work` buffer, reduce-then-scan in three
 // direct dispatches (WebGPU gives no forward-progress guarantee, so no single-pass lookback):
-//   scanBlocks   each workgroup scans 256 values and writes its block total
-//   scanSums     one workgroup scans the block totals (≤ 65535 of them) and writes the grand
-//                total at out[n]
+//   scanBlocks   each workgroup scans BLOCK = 256 × 16 values (16 consecutive ones per thread,
+//                summed serially, so a big scan needs few workgroups and few barriers) and
+//                writes its block total
+//   scanSums     one workgroup scans the block totals and writes the grand total at out[n]
 //   addSums      adds each block's offset
-// Up to 65535·256 ≈ 16.7M values.
+// Up to 65535 blocks of 4096 values. A scan whose `skipOff` word is non-zero does nothing: the
+// budget loop's later attempts skip their scans once an attempt has been accepted.
 
-struct ScanParams { inOff: u32, outOff: u32, n: u32, sumsOff: u32 }
+struct ScanParams { inOff: u32, outOff: u32, n: u32, sumsOff: u32, skipOff: u32 }
 
 @group(0) @binding(0) var<uniform> scan: ScanParams;
 @group(0) @binding(1) var<storage, read_write> work: array<u32>;
 
-const BLOCK: u32 = 256u;
+const THREADS: u32 = 256u;
+const ITEMS: u32 = 16u;
+const BLOCK: u32 = THREADS * ITEMS;
 var<workgroup> partial: array<u32, 256>;
+var<workgroup> skip: u32;
+
+fn skipped(lid: u32) -> bool {
+  if (lid == 0u) { skip = work[scan.skipOff]; }
+  return workgroupUniformLoad(&skip) != 0u;
+}
 
 // Inclusive Hillis-Steele scan of `partial` across the workgroup.
-fn scanShared(lid: u32) {
-  for (var step = 1u; step < BLOCK; step = step << 1u) {
+fn scanPartial(lid: u32) {
+  for (var step = 1u; step < THREADS; step = step << 1u) {
     workgroupBarrier();
     let add = select(0u, partial[lid - step], lid >= step);
     workgroupBarrier();
@@ -27,25 +37,37 @@ fn scanShared(lid: u32) {
 
 @compute @workgroup_size(256)
 fn scanBlocks(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let i = wid.x * BLOCK + lid;
-  let v = select(0u, work[scan.inOff + i], i < scan.n);
-  partial[lid] = v;
-  scanShared(lid);
-  if (i < scan.n) { work[scan.outOff + i] = partial[lid] - v; }
-  if (lid == BLOCK - 1u) { work[scan.sumsOff + wid.x] = partial[lid]; }
+  if (skipped(lid)) { return; }
+  let first = wid.x * BLOCK + lid * ITEMS;
+  var sum = 0u;
+  for (var k = 0u; k < ITEMS; k++) {
+    if (first + k < scan.n) { sum += work[scan.inOff + first + k]; }
+  }
+  partial[lid] = sum;
+  scanPartial(lid);
+  var run = partial[lid] - sum;
+  for (var k = 0u; k < ITEMS; k++) {
+    if (first + k < scan.n) {
+      let v = work[scan.inOff + first + k];
+      work[scan.outOff + first + k] = run;
+      run += v;
+    }
+  }
+  if (lid == THREADS - 1u) { work[scan.sumsOff + wid.x] = partial[lid]; }
 }
 
 @compute @workgroup_size(256)
 fn scanSums(@builtin(local_invocation_index) lid: u32) {
+  if (skipped(lid)) { return; }
   let blocks = (scan.n + BLOCK - 1u) / BLOCK;
-  let per = (blocks + BLOCK - 1u) / BLOCK;
+  let per = (blocks + THREADS - 1u) / THREADS;
   let first = lid * per;
   var total = 0u;
   for (var k = 0u; k < per; k++) {
     if (first + k < blocks) { total += work[scan.sumsOff + first + k]; }
   }
   partial[lid] = total;
-  scanShared(lid);
+  scanPartial(lid);
   var run = partial[lid] - total;
   for (var k = 0u; k < per; k++) {
     if (first + k < blocks) {
@@ -54,11 +76,15 @@ fn scanSums(@builtin(local_invocation_index) lid: u32) {
       run += s;
     }
   }
-  if (lid == BLOCK - 1u) { work[scan.outOff + scan.n] = partial[lid]; }
+  if (lid == THREADS - 1u) { work[scan.outOff + scan.n] = partial[lid]; }
 }
 
 @compute @workgroup_size(256)
 fn addSums(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let i = wid.x * BLOCK + lid;
-  if (i < scan.n) { work[scan.outOff + i] += work[scan.sumsOff + wid.x]; }
+  if (skipped(lid)) { return; }
+  let first = wid.x * BLOCK + lid * ITEMS;
+  let offset = work[scan.sumsOff + wid.x];
+  for (var k = 0u; k < ITEMS; k++) {
+    if (first + k < scan.n) { work[scan.outOff + first + k] += offset; }
+  }
 }

@@ -5,6 +5,14 @@
 
 @group(0) @binding(9) var<storage, read_write> drawArgs: array<u32, 5>;
 @group(0) @binding(10) var<storage, read_write> counts: array<u32, 4>;
+// Indirect dispatch arguments of the two emit passes (vertices, triangles), folded into 2D.
+@group(0) @binding(11) var<storage, read_write> emitArgs: array<u32, 6>;
+
+fn dispatchArgs(threads: u32) -> vec3<u32> {
+  let groups = (threads + 63u) / 64u;
+  if (groups == 0u) { return vec3<u32>(0u, 1u, 1u); }
+  return vec3<u32>(min(groups, GRID_X), (groups + GRID_X - 1u) / GRID_X, 1u);
+}
 
 @compute @workgroup_size(1)
 fn main() {
@@ -23,6 +31,9 @@ fn main() {
     if (attempt == 1u) { scale = bitcast<f32>(work[b + BUDGET_SCALE]); }
     if (attempt >= 2u) { scale = 0.0; }
     counts = array<u32, 4>(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
+    let v = dispatchArgs(select(0u, work[params.offTriVertBase + params.nTris], fits));
+    let t = dispatchArgs(shown);
+    emitArgs = array<u32, 6>(v.x, v.y, v.z, t.x, t.y, t.z);
     return;
   }
   let ratio = min(f32(params.vertexCapacity) / f32(vertices), f32(params.triangleCapacity) / f32(triangles));

@@ -25,6 +25,11 @@ const BUDGET_ATTEMPT: u32 = 1u;
 const BUDGET_SCALE: u32 = 2u;
 const BUDGET_FITS: u32 = 3u;
 
+// The plan and emit passes run once the budget accepted counts that fit.
+fn emitEnabled() -> bool {
+  return work[params.offBudget + BUDGET_ACCEPTED] == 1u && work[params.offBudget + BUDGET_FITS] == 1u;
+}
+
 fn flatIndex(wid: vec3<u32>, lid: u32, size: u32) -> u32 {
   return (wid.y * GRID_X + wid.x) * size + lid;
 }

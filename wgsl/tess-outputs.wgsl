@@ -4,11 +4,6 @@
 @group(0) @binding(6) var<storage, read_write> outBary: array<u32>;
 @group(0) @binding(7) var<storage, read_write> outSrcTri: array<u32>;
 
-// The emit passes run once the budget accepted counts that fit.
-fn emitEnabled() -> bool {
-  return work[params.offBudget + BUDGET_ACCEPTED] == 1u && work[params.offBudget + BUDGET_FITS] == 1u;
-}
-
 fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
   if (index >= params.vertexCapacity) { return; }
   let s = evalSurface(t, w);

@@ -3,14 +3,19 @@
  * into big flat buffers, welded, stored once and drawn by every pass. Takes a GPUDevice and
  * never touches the DOM, so the same code runs in the browser, in headless tests and in Node.
  *
- * Passes, in one command encoder (all direct dispatches; sizes are known on the CPU):
+ * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except emit):
  *   budget loop, up to 3 attempts (scale 1, a scale that fits, then factor 1 everywhere):
  *     factors    one thread per edge: tess factor, line state, segments    wgsl/tess-factors.wgsl
  *     count      one thread per triangle: interior vertices and triangles   wgsl/tess-count.wgsl
  *     scan       prefix sums of the three counts                           wgsl/scan.wgsl
  *     budget     accept (and write the indirect draw args) or rescale      wgsl/tess-budget.wgsl
  *   weld         corner and edge vertices, evaluated once each              wgsl/tess-weld.wgsl
- *   tessellate   one workgroup per triangle: interior vertices, triangles  wgsl/tess-triangles.wgsl
+ *   tessellate   plan: one thread per triangle writes its pattern's rows   wgsl/tess-plan.wgsl
+ *                emit: one thread per interior vertex, one per triangle    wgsl/tess-emit.wgsl
+ *                (the only indirect dispatches: sized by the budget pass)
+ * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers,
+ * so every output element costs the same whatever the factors (wgsl/tess-pattern.wgsl holds the
+ * pattern reading shared by count, plan and emit).
  * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
  *   subdivision  control points from the cage positions (stencils), then the cage vertices'
  *                limit positions and normals for the factor rule           wgsl/cc-build.wgsl
@@ -23,7 +28,9 @@ import factorsWgsl from '../../wgsl/tess-factors.wgsl?raw';
 import countWgsl from '../../wgsl/tess-count.wgsl?raw';
 import budgetWgsl from '../../wgsl/tess-budget.wgsl?raw';
 import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
-import trianglesWgsl from '../../wgsl/tess-triangles.wgsl?raw';
+import patternWgsl from '../../wgsl/tess-pattern.wgsl?raw';
+import planWgsl from '../../wgsl/tess-plan.wgsl?raw';
+import emitWgsl from '../../wgsl/tess-emit.wgsl?raw';
 import scanWgsl from '../../wgsl/scan.wgsl?raw';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import ccSurfaceWgsl from '../../wgsl/surface-cc.wgsl?raw';
@@ -44,6 +51,7 @@ export const PARAMS = defineStruct('Params', [
   ['offEdgeOwner', 'u32'], ['offVertexOwner', 'u32'], ['offNormals', 'u32'],
   ['offEdgeF', 'u32'], ['offEdgeState', 'u32'], ['offEdgeSegs', 'u32'], ['offEdgeInterior', 'u32'], ['offEdgeBase', 'u32'],
   ['offTriVertCount', 'u32'], ['offTriVertBase', 'u32'], ['offTriTriCount', 'u32'], ['offTriTriBase', 'u32'],
+  ['offTriRowCount', 'u32'], ['offTriRowBase', 'u32'], ['offRows', 'u32'],
   ['offBudget', 'u32'], ['vertexCapacity', 'u32'], ['triangleCapacity', 'u32'],
   ['mode', 'u32'], ['fixedFactor', 'f32'], ['lodScale', 'f32'], ['pixelAngle', 'f32'],
   ['eye', 'vec4<f32>'],
@@ -54,7 +62,9 @@ export const PARAMS = defineStruct('Params', [
   ['nCtrl', 'u32'], ['ccVertexLimits', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
 ] as const);
 
-const SCAN_PARAMS = defineStruct('ScanParams', [['inOff', 'u32'], ['outOff', 'u32'], ['n', 'u32'], ['sumsOff', 'u32']] as const);
+const SCAN_PARAMS = defineStruct('ScanParams', [['inOff', 'u32'], ['outOff', 'u32'], ['n', 'u32'], ['sumsOff', 'u32'], ['skipOff', 'u32']] as const);
+/** Values one scan workgroup covers (wgsl/scan.wgsl BLOCK). */
+const SCAN_BLOCK = 256 * 16;
 
 const GRID_X = 65535;
 const ATTEMPTS = 3;
@@ -69,33 +79,41 @@ export function grid2d(groups: number): [number, number] {
 interface WorkLayout {
   edgeF: number; edgeState: number; edgeSegs: number; edgeInterior: number; edgeBase: number;
   triVertCount: number; triVertBase: number; triTriCount: number; triTriBase: number;
+  triRowCount: number; triRowBase: number; rows: number;
   sums: number; budget: number; words: number;
 }
 
-function workLayout(nE: number, nT: number): WorkLayout {
+const SCANS = 4;
+
+/** Scratch words: per edge and per triangle counts and their prefix sums, the planned rows (a
+ * triangle has at most maxFactor + 1 rows, two words each), scan block sums, budget state. */
+function workLayout(nE: number, nT: number, maxFactor: number): WorkLayout {
   let at = 0;
   const take = (n: number) => {
     const o = at;
     at += n;
     return o;
   };
-  const sumsPerScan = Math.ceil(Math.max(nE, nT, 1) / 256) + 1;
+  const sumsPerScan = Math.ceil(Math.max(nE, nT, 1) / SCAN_BLOCK) + 1;
   return {
     edgeF: take(nE), edgeState: take(nE), edgeSegs: take(nE), edgeInterior: take(nE), edgeBase: take(nE + 1),
     triVertCount: take(nT), triVertBase: take(nT + 1), triTriCount: take(nT), triTriBase: take(nT + 1),
-    sums: take(3 * sumsPerScan), budget: take(4), words: at,
+    triRowCount: take(nT), triRowBase: take(nT + 1), rows: take(2 * (maxFactor + 1) * nT),
+    sums: take(SCANS * sumsPerScan), budget: take(4), words: at,
   };
 }
 
-type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'triangles' | 'ccPoints' | 'ccLimits';
+type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'plan' | 'emitVertices' | 'emitTriangles' | 'ccPoints' | 'ccLimits';
 /** Bindings each pass uses (its pipeline layout is derived from the WGSL: 'auto'). */
 const PASS_BINDINGS: Record<PassName, number[]> = {
   factors: [0, 1, 2, 3],
   count: [0, 1, 3],
-  budget: [0, 3, 9, 10],
+  budget: [0, 3, 9, 10, 11],
   corners: [0, 1, 2, 3, 4, 5, 6, 7],
   edges: [0, 1, 2, 3, 4, 5, 6, 7],
-  triangles: [0, 1, 2, 3, 4, 5, 6, 7, 8],
+  plan: [0, 1, 3],
+  emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
+  emitTriangles: [0, 1, 3, 8],
   ccPoints: [0, 1, 2],
   ccLimits: [0, 2],
 };
@@ -125,6 +143,8 @@ export class Tessellator {
   flatBaseline: boolean;
   private readonly params: GPUBuffer;
   private readonly paramsBytes: ArrayBuffer;
+  /** Indirect dispatch arguments of the emit passes, written by the budget pass. */
+  private readonly emitArgs: GPUBuffer;
   private readonly pipelines: Record<PassName, GPUComputePipeline>;
   private readonly scanPipelines: { blocks: GPUComputePipeline; sums: GPUComputePipeline; add: GPUComputePipeline };
   private readonly scanLayout: GPUBindGroupLayout;
@@ -138,7 +158,10 @@ export class Tessellator {
     scans: { group: GPUBindGroup; n: number }[];
     cc?: CatmullClarkData;
   };
-  private readonly timing?: { set: GPUQuerySet; resolve: GPUBuffer; read: GPUBuffer; pending: boolean; stages: string[] };
+  private readonly timing?: {
+    set: GPUQuerySet; resolve: GPUBuffer; read: GPUBuffer; pending: boolean; stages: string[];
+    reading?: Promise<Record<string, number>>;
+  };
 
   static create(device: GPUDevice, tables: Uint32Array, opts: TessellatorOptions = {}): Tessellator {
     return new Tessellator(device, tables, opts);
@@ -166,6 +189,7 @@ export class Tessellator {
       vertexCapacity: cap.vertexCapacity,
       triangleCapacity: cap.triangleCapacity,
     };
+    this.emitArgs = buffer('tess emit dispatch args', 24, GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT);
     this.paramsBytes = new ArrayBuffer(PARAMS.size);
     this.params = device.createBuffer({ label: 'tess params', size: PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
 
@@ -177,12 +201,15 @@ export class Tessellator {
     const weld = module('tess weld', surface, outputsWgsl, weldWgsl);
     this.pipelines = {
       factors: pipeline('tess factors', module('tess factors', factorsWgsl)),
-      count: pipeline('tess count', module('tess count', countWgsl)),
+      count: pipeline('tess count', module('tess count', patternWgsl, countWgsl)),
       budget: pipeline('tess budget', module('tess budget', budgetWgsl)),
       corners: pipeline('tess weld corners', weld, 'corners'),
       edges: pipeline('tess weld edges', weld, 'edges'),
-      triangles: pipeline('tess triangles', module('tess triangles', surface, outputsWgsl, trianglesWgsl)),
+      plan: pipeline('tess plan', module('tess plan', patternWgsl, planWgsl)),
     } as Record<PassName, GPUComputePipeline>;
+    const emit = module('tess emit', surface, outputsWgsl, patternWgsl, emitWgsl);
+    this.pipelines.emitVertices = pipeline('tess emit vertices', emit, 'vertices');
+    this.pipelines.emitTriangles = pipeline('tess emit triangles', emit, 'triangles');
     if (cc) {
       const build = device.createShaderModule({ label: 'cc patch build', code: [PARAMS.wgsl, ccBuildWgsl].join('\n') });
       this.pipelines.ccPoints = pipeline('cc control points', build, 'points');
@@ -257,7 +284,10 @@ export class Tessellator {
     const cageBuf = device.createBuffer({ label: 'tess cage', size: Math.max(16, cageWords.byteLength), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC });
     device.queue.writeBuffer(cageBuf, 0, cageWords);
 
-    const layout = workLayout(prepared.edgeCount, prepared.triangleCount);
+    const layout = workLayout(prepared.edgeCount, prepared.triangleCount, this.maxFactor);
+    if (4 * layout.words > device.limits.maxStorageBufferBindingSize) {
+      throw new Error(`the cage is too large: its scratch buffer (${4 * layout.words} bytes) exceeds the device's storage binding limit`);
+    }
     const work = device.createBuffer({ label: 'tess work', size: 4 * layout.words, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST });
 
     const view = new DataView(this.paramsBytes);
@@ -267,6 +297,7 @@ export class Tessellator {
       offEdgeOwner: offsets[4], offVertexOwner: offsets[5], offNormals: 3 * prepared.vertexCount,
       offEdgeF: layout.edgeF, offEdgeState: layout.edgeState, offEdgeSegs: layout.edgeSegs, offEdgeInterior: layout.edgeInterior, offEdgeBase: layout.edgeBase,
       offTriVertCount: layout.triVertCount, offTriVertBase: layout.triVertBase, offTriTriCount: layout.triTriCount, offTriTriBase: layout.triTriBase,
+      offTriRowCount: layout.triRowCount, offTriRowBase: layout.triRowBase, offRows: layout.rows,
       offBudget: layout.budget, vertexCapacity: this.output.vertexCapacity, triangleCapacity: this.output.triangleCapacity,
       offFactorPos: cc ? offLimits : 0, offFactorNormal: cc ? offLimits + 3 * nV : 3 * nV,
       ccTri: ccBase + (cc?.offTri ?? 0), ccPoly: ccBase + (cc?.offPoly ?? 0), ccNodes: ccBase + (cc?.offNodes ?? 0), ccRows: ccBase + (cc?.offRows ?? 0),
@@ -285,6 +316,7 @@ export class Tessellator {
       8: { buffer: this.output.indices },
       9: { buffer: this.output.drawArgs },
       10: { buffer: this.output.counts },
+      11: { buffer: this.emitArgs },
     };
     const groups = {} as Record<PassName, GPUBindGroup>;
     for (const name of Object.keys(PASS_BINDINGS) as PassName[]) {
@@ -295,15 +327,17 @@ export class Tessellator {
         entries: PASS_BINDINGS[name].map((binding) => ({ binding, resource: resources[binding] })),
       });
     }
-    const sumsPerScan = Math.ceil(Math.max(prepared.edgeCount, prepared.triangleCount, 1) / 256) + 1;
+    const sumsPerScan = Math.ceil(Math.max(prepared.edgeCount, prepared.triangleCount, 1) / SCAN_BLOCK) + 1;
     const scanDefs = [
       { inOff: layout.edgeInterior, outOff: layout.edgeBase, n: prepared.edgeCount },
       { inOff: layout.triVertCount, outOff: layout.triVertBase, n: prepared.triangleCount },
       { inOff: layout.triTriCount, outOff: layout.triTriBase, n: prepared.triangleCount },
+      { inOff: layout.triRowCount, outOff: layout.triRowBase, n: prepared.triangleCount },
     ];
     const scans = scanDefs.map((s, i) => {
       const bytes = new ArrayBuffer(SCAN_PARAMS.size);
-      SCAN_PARAMS.write(new DataView(bytes), { ...s, sumsOff: layout.sums + i * sumsPerScan });
+      // Skip the scan once the budget has accepted an attempt (its "accepted" word).
+      SCAN_PARAMS.write(new DataView(bytes), { ...s, sumsOff: layout.sums + i * sumsPerScan, skipOff: layout.budget });
       const uniform = device.createBuffer({ label: `scan params ${i}`, size: SCAN_PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
       device.queue.writeBuffer(uniform, 0, bytes);
       const group = device.createBindGroup({
@@ -413,7 +447,7 @@ export class Tessellator {
       cp = pass(`tess count + budget ${attempt}`, 'count+budget');
       run(cp, 'count', Math.ceil(nT / 64));
       for (const s of m.scans) {
-        const blocks = Math.ceil(Math.max(s.n, 1) / 256);
+        const blocks = Math.ceil(Math.max(s.n, 1) / SCAN_BLOCK);
         cp.setBindGroup(0, s.group);
         cp.setPipeline(this.scanPipelines.blocks);
         cp.dispatchWorkgroups(blocks);
@@ -429,8 +463,14 @@ export class Tessellator {
     run(cp, 'corners', Math.ceil(nV / 64));
     run(cp, 'edges', Math.ceil(nE / 64));
     cp.end();
-    cp = pass('tess triangles', 'tessellate');
-    run(cp, 'triangles', nT);
+    cp = pass('tess plan + emit', 'tessellate');
+    run(cp, 'plan', Math.ceil(nT / 64));
+    cp.setBindGroup(0, m.groups.emitVertices);
+    cp.setPipeline(this.pipelines.emitVertices);
+    cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
+    cp.setBindGroup(0, m.groups.emitTriangles);
+    cp.setPipeline(this.pipelines.emitTriangles);
+    cp.dispatchWorkgroupsIndirect(this.emitArgs, 12);
     cp.end();
 
     if (this.timing && stages.length) {
@@ -462,10 +502,19 @@ export class Tessellator {
     cp.end();
   }
 
-  /** GPU milliseconds per stage of the last encoded rebuild ({} without timestamp queries). */
-  async readTimings(): Promise<Record<string, number>> {
+  /** GPU milliseconds per stage of the last encoded rebuild ({} without timestamp queries).
+   * Rebuilds encoded while a read is in flight are not timed; a second call while one read is
+   * in flight gets the same answer. */
+  readTimings(): Promise<Record<string, number>> {
     const t = this.timing;
-    if (!t || !t.pending) return {};
+    if (!t || !t.pending) return Promise.resolve({});
+    t.reading ??= this.mapTimings(t).finally(() => {
+      t.reading = undefined;
+    });
+    return t.reading;
+  }
+
+  private async mapTimings(t: NonNullable<Tessellator['timing']>): Promise<Record<string, number>> {
     await t.read.mapAsync(GPUMapMode.READ);
     const ticks = new BigUint64Array(t.read.getMappedRange().slice(0));
     t.read.unmap();
@@ -489,7 +538,7 @@ export class Tessellator {
 
   destroy(): void {
     this.releaseMesh();
-    for (const b of [this.output.positions, this.output.normals, this.output.bary, this.output.srcTri, this.output.indices, this.output.drawArgs, this.output.counts, this.params]) b.destroy();
+    for (const b of [this.output.positions, this.output.normals, this.output.bary, this.output.srcTri, this.output.indices, this.output.drawArgs, this.output.counts, this.params, this.emitArgs]) b.destroy();
     this.timing?.set.destroy();
     this.timing?.resolve.destroy();
     this.timing?.read.destroy();
