@@ -1,8 +1,9 @@
 /**
  * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
- *   --out out.obj [--params out.json|out.txt] [--surface phong]`
+ *   --out out.obj [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`
  * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
- * GPU) and writes the welded mesh. --params writes every output vertex's source cage face and
+ * GPU) and writes the welded mesh: by default on the exact Catmull-Clark limit surface (with
+ * --flat-baseline, blended towards the flat cage at low factors as the demo does). --params writes every output vertex's source cage face and
  * parameter in the CPU reference's addressing: JSON `{"params": [[f,u,v] | [f,k,s,t], ...]}`, or
  * with a .txt name the `f u v` / `f k s t` lines that `npm run subdiv -- --points` reads.
  * Bad input: a message and exit code 2.
@@ -13,7 +14,7 @@ import { loadCage, CageError } from '../src/mesh/index.ts';
 import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/node-device.ts';
 import { tessellateOnce, meshToObj, vertexParams, paramsToText, type HeadlessOptions } from '../src/gpu/headless.ts';
 
-const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) --out out.obj [--params out.json|out.txt] [--surface phong]`;
+const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) --out out.obj [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`;
 
 class UsageError extends Error {}
 
@@ -29,7 +30,7 @@ function parse(argv: string[]) {
   let modeSeen = 0;
   let out: string | undefined;
   let params: string | undefined;
-  let surface = 'phong';
+  let surface = 'catmull-clark';
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const value = () => {
@@ -61,6 +62,7 @@ function parse(argv: string[]) {
       case '--out': out = value(); break;
       case '--params': params = value(); break;
       case '--surface': surface = value(); break;
+      case '--flat-baseline': o.flatBaseline = true; break;
       default:
         if (a.startsWith('--')) throw new UsageError(`unknown option ${a}`);
         if (model) throw new UsageError(`one model only (got '${model}' and '${a}')`);
@@ -70,7 +72,9 @@ function parse(argv: string[]) {
   if (!model) throw new UsageError('no model given');
   if (modeSeen !== 1) throw new UsageError('give exactly one of --fixed F or --adaptive');
   if (!out) throw new UsageError('--out is required');
-  if (surface !== 'phong') throw new UsageError(`unknown surface '${surface}' (available: phong)`);
+  if (surface !== 'phong' && surface !== 'catmull-clark') throw new UsageError(`unknown surface '${surface}' (catmull-clark or phong)`);
+  o.surface = surface;
+  if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
   if (o.mode === 'fixed' && (o.lodScale || o.eye || o.target)) throw new UsageError('--lod, --eye and --target apply to --adaptive only');
   return { model, o, out, params };
 }
@@ -107,7 +111,7 @@ export async function main(argv: string[]): Promise<number> {
     return 1;
   }
   const r = await tessellateOnce(device, cage, args.o);
-  writeFileSync(args.out, meshToObj(r, `tessellab: ${args.model}, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`));
+  writeFileSync(args.out, meshToObj(r, `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`));
   if (args.params) {
     const p = vertexParams(r, cage);
     writeFileSync(args.params, args.params.endsWith('.txt') ? paramsToText(p) : JSON.stringify({ vertexCount: p.length, params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])) }) + '\n');

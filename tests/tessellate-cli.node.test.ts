@@ -13,7 +13,7 @@ describe('npm run tessellate', () => {
   it('writes a watertight OBJ and one parameter per vertex', () => {
     const out = join(dir, 'torus.obj');
     const params = join(dir, 'torus.txt');
-    const r = run('public/models/torus.obj', '--fixed', '4', '--out', out, '--params', params);
+    const r = run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', out, '--params', params);
     expect(r.status, r.stderr).toBe(0);
     const obj = readFileSync(out, 'utf8').split('\n');
     const v = obj.filter((l) => l.startsWith('v ')).length;
@@ -36,6 +36,27 @@ describe('npm run tessellate', () => {
     }
   });
 
+  it('puts every vertex on the exact Catmull-Clark limit: --params read back by `subdiv --points`', () => {
+    const out = join(dir, 'creature.obj');
+    const params = join(dir, 'creature.txt');
+    const r = run('public/models/creature.obj', '--adaptive', '--lod', '2', '--out', out, '--params', params);
+    expect(r.status, r.stderr).toBe(0);
+    const gpu = readFileSync(out, 'utf8').split('\n').filter((l) => l.startsWith('v ')).map((l) => l.slice(2).split(' ').map(Number));
+    const ref = spawnSync(process.execPath, ['node_modules/tsx/dist/cli.mjs', 'scripts/subdiv-cli.ts', '--points', params, 'public/models/creature.obj'], { encoding: 'utf8', timeout: 120_000, maxBuffer: 1 << 28 });
+    expect(ref.status, ref.stderr).toBe(0);
+    const points = JSON.parse(ref.stdout).points as { P: number[] }[];
+    expect(points.length).toBe(gpu.length);
+    const lo = [0, 1, 2].map((c) => Math.min(...gpu.map((p) => p[c])));
+    const hi = [0, 1, 2].map((c) => Math.max(...gpu.map((p) => p[c])));
+    const diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    let worst = 0;
+    points.forEach((p, i) => {
+      worst = Math.max(worst, Math.hypot(p.P[0] - gpu[i][0], p.P[1] - gpu[i][1], p.P[2] - gpu[i][2]) / diagonal);
+    });
+    console.log(`tessellate --surface catmull-clark vs subdiv --points: max ${worst.toExponential(2)} of the diagonal`);
+    expect(worst).toBeLessThan(1e-5);
+  });
+
   it('rejects bad input with a message and exit code 2', () => {
     const bad = join(dir, 'bad.obj');
     writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');
@@ -45,6 +66,8 @@ describe('npm run tessellate', () => {
       ['missing.obj', '--fixed', '3', '--out', join(dir, 'x.obj')],
       [bad, '--fixed', '3', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--adaptive', '--eye', '1,2', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--fixed', '2', '--surface', 'loop', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--fixed', '2', '--surface', 'phong', '--flat-baseline', '--out', join(dir, 'x.obj')],
     ]) {
       const r = run(...args);
       expect(r.status, args.join(' ')).toBe(2);

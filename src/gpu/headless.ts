@@ -9,10 +9,16 @@ import { readBuffer, readMesh, type MeshReadback } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
 import { BARY_CORNER1, BARY_CORNER2, type FactorParams } from './types.ts';
 import { bakeTables } from '../pattern/tables.ts';
+import { buildCatmullClark } from './cc/build.ts';
 import type { Cage } from '../mesh/types.ts';
 
 export interface HeadlessOptions {
   mode: 'fixed' | 'adaptive';
+  /** The surface: the Catmull-Clark limit surface (default) or Phong tessellation. */
+  surface?: 'catmull-clark' | 'phong';
+  /** Catmull-Clark: blend towards the flat triangle at low tess factors (default off here, so
+   * every vertex lies on the exact limit surface). */
+  flatBaseline?: boolean;
   fixedFactor?: number;
   lodScale?: number;
   eye?: [number, number, number];
@@ -52,10 +58,11 @@ export interface HeadlessResult {
 
 export async function tessellateOnce(device: GPUDevice, cage: Cage, o: HeadlessOptions, tess?: Tessellator): Promise<HeadlessResult> {
   const mesh = prepareMesh(cage);
+  const surface = o.surface ?? 'catmull-clark';
   const own = !tess;
-  const t = tess ?? Tessellator.create(device, bakeTables(64), { vertexCapacity: o.vertexCapacity, triangleCapacity: o.triangleCapacity });
+  const t = tess ?? Tessellator.create(device, bakeTables(64), { vertexCapacity: o.vertexCapacity, triangleCapacity: o.triangleCapacity, surface, flatBaseline: o.flatBaseline ?? false });
   try {
-    t.setMesh(mesh);
+    t.setMesh(mesh, t.surface === 'catmull-clark' ? buildCatmullClark(cage, mesh) : undefined);
     device.pushErrorScope('validation');
     const enc = device.createCommandEncoder({ label: 'headless rebuild' });
     t.encode(enc, headlessCamera(mesh, o));
