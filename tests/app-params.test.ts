@@ -10,9 +10,21 @@ describe('URL parameters', () => {
   it('reads every tunable', () => {
     const p = parseParams('?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage');
     expect(p).toEqual({
-      model: 'torus', up: 'y', mode: 'fixed', surface: 'cage', lod: 2.5, factor: 12, wire: false, cage: true, spin: true, t: 1.5,
+      model: 'torus', up: 'y', mode: 'fixed', surface: 'cage', patches: false, flat: true, lod: 2.5, factor: 12, wire: false, cage: true, spin: true, t: 1.5,
       yaw: 30, pitch: -10, dist: 3, ui: false, capacity: 0.5,
     });
+  });
+
+  it('reads the surface (Catmull-Clark by default; older links\' "tessellated" was Phong), patch colours and the flat baseline', () => {
+    expect(DEFAULT_PARAMS.surface).toBe('catmull-clark');
+    expect(parseParams('surface=phong').surface).toBe('phong');
+    expect(parseParams('surface=Catmull-Clark').surface).toBe('catmull-clark');
+    expect(parseParams('surface=cc').surface).toBe('catmull-clark');
+    expect(parseParams('surface=tessellated').surface).toBe('phong');
+    expect(parseParams('surface=bogus').surface).toBe('catmull-clark');
+    expect(parseParams('patches=1').patches).toBe(true);
+    expect(parseParams('flat=0').flat).toBe(false);
+    expect(formatParams(parseParams('surface=phong&patches=1&flat=0'))).toBe('?surface=phong&patches=1&flat=0');
   });
 
   it('clamps numbers to their ranges and ignores garbage', () => {
@@ -50,7 +62,7 @@ describe('URL parameters', () => {
 
   it('formats only what differs from the defaults, and round-trips', () => {
     expect(formatParams(DEFAULT_PARAMS)).toBe('');
-    const cases = ['?model=gear&mode=fixed&factor=7.5', '?lod=0.25&wire=0&cage=1&surface=cage', '?model=sheet&up=y&t=0&yaw=12.5&pitch=20&dist=2.5', '?spin=1&ui=0&cap=16'];
+    const cases = ['?model=gear&mode=fixed&factor=7.5', '?lod=0.25&wire=0&cage=1&surface=cage', '?model=sheet&up=y&t=0&yaw=12.5&pitch=20&dist=2.5', '?spin=1&ui=0&cap=16', '?surface=phong', '?patches=1&flat=0'];
     for (const q of cases) {
       const p = parseParams(q);
       expect(parseParams(formatParams(p))).toEqual(p);

@@ -1,11 +1,13 @@
 /**
  * The demo's tunables, read from and written back to the URL, so that any view can be shared
- * or reproduced: `?model=torus&mode=fixed&factor=12&wire=1&cage=0&lod=1.5&up=z&t=0`.
+ * or reproduced: `?model=torus&mode=fixed&factor=12&wire=1&cage=0&lod=1.5&up=z&t=0&surface=phong`.
  * Pure functions (no DOM) so the unit tests can hold them to their contract.
  */
 
 export type Mode = 'adaptive' | 'fixed';
 export type UpAxis = 'y' | 'z';
+/** What is drawn: the Catmull-Clark limit surface, Phong tessellation, or the cage's flat faces. */
+export type Surface = 'catmull-clark' | 'phong' | 'cage';
 
 export interface DemoParams {
   /** A model name from the project's list, or a URL of an OBJ file. */
@@ -13,8 +15,13 @@ export interface DemoParams {
   /** The model's up axis: the project's models are Z-up; many OBJ exporters write Y-up. */
   up: UpAxis;
   mode: Mode;
-  /** Draw the tessellated surface, or the cage's own faces (flat, before tessellation). */
-  surface: 'tessellated' | 'cage';
+  /** The tessellated Catmull-Clark or Phong surface, or the cage's own faces (flat, before
+   * tessellation). `surface=tessellated` (older links) reads as Phong, what it used to draw. */
+  surface: Surface;
+  /** Tint the Catmull-Clark surface by the kind of patch under it (regular, irregular, ...). */
+  patches: boolean;
+  /** Catmull-Clark: blend from the flat triangle to the surface at low tess factors (no pops). */
+  flat: boolean;
   /** Adaptive mode's global LOD scale (1 = the default density). */
   lod: number;
   /** Fixed mode's one factor. */
@@ -43,7 +50,9 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
   up: 'z',
   mode: 'adaptive',
-  surface: 'tessellated',
+  surface: 'catmull-clark',
+  patches: false,
+  flat: true,
   lod: 1,
   factor: 8,
   wire: true,
@@ -87,7 +96,11 @@ export function parseParams(search: string): DemoParams {
   const mode = q.get('mode')?.trim().toLowerCase();
   if (mode === 'adaptive' || mode === 'fixed') p.mode = mode;
   const surface = q.get('surface')?.trim().toLowerCase();
-  if (surface === 'tessellated' || surface === 'cage') p.surface = surface;
+  if (surface === 'catmull-clark' || surface === 'cc' || surface === 'catmullclark') p.surface = 'catmull-clark';
+  else if (surface === 'phong' || surface === 'tessellated') p.surface = 'phong';
+  else if (surface === 'cage') p.surface = 'cage';
+  p.patches = bool(q.get('patches')) ?? p.patches;
+  p.flat = bool(q.get('flat')) ?? p.flat;
   p.lod = num(q.get('lod'), LOD_RANGE.min, LOD_RANGE.max) ?? p.lod;
   p.factor = num(q.get('factor'), FACTOR_RANGE.min, FACTOR_RANGE.max) ?? p.factor;
   p.wire = bool(q.get('wire')) ?? p.wire;
@@ -111,6 +124,8 @@ export function formatParams(p: DemoParams): string {
   if (p.up !== d.up) q.set('up', p.up);
   if (p.mode !== d.mode) q.set('mode', p.mode);
   if (p.surface !== d.surface) q.set('surface', p.surface);
+  if (p.patches !== d.patches) q.set('patches', p.patches ? '1' : '0');
+  if (p.flat !== d.flat) q.set('flat', p.flat ? '1' : '0');
   if (p.lod !== d.lod) q.set('lod', String(round(p.lod, 3)));
   if (p.factor !== d.factor) q.set('factor', String(round(p.factor, 3)));
   if (p.wire !== d.wire) q.set('wire', p.wire ? '1' : '0');
