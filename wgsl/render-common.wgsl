@@ -11,7 +11,7 @@ struct Frame {
   toLight: vec4f,
   // xyz: the bounding sphere's centre; w: the ground's height.
   center: vec4f,
-  // x, y: render target size in pixels; z: wireframe opacity; w: unused.
+  // x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.
   viewport: vec4f,
 }
 

@@ -1,18 +1,43 @@
 // The tessellated mesh, lit and shadowed (prepended: render-common.wgsl, render-shading.wgsl).
 
+// Patch colours: each vertex's source triangle (the tessellator's srcTri output, read by vertex
+// index: an indexed draw's vertex_index is the index value) and that triangle's patch kind + 1
+// (0: none; src/gpu/renderer.ts setPatchKinds).
+@group(2) @binding(0) var<storage, read> srcTri: array<u32>;
+@group(2) @binding(1) var<storage, read> patchKind: array<u32>;
+
 struct VertexOut {
   @builtin(position) clip: vec4f,
   @location(0) world: vec3f,
   @location(1) normal: vec3f,
+  // 0: the usual colours; k + 1: patch kind k.
+  @location(2) @interpolate(flat) kind: u32,
+}
+
+// Keep in step with PATCH_COLOURS in src/gpu/renderer.ts (the legend).
+fn patchColour(kind: u32) -> vec3f {
+  switch kind {
+    case 1u: { return vec3f(0.56, 0.80, 0.52); }
+    case 2u: { return vec3f(0.95, 0.47, 0.33); }
+    case 3u: { return vec3f(0.50, 0.60, 0.98); }
+    default: { return vec3f(0.96, 0.82, 0.30); }
+  }
 }
 
 @vertex
-fn litVertex(@location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
+fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
   let world = modelToWorld(position);
   var out: VertexOut;
   out.clip = frame.viewProj * vec4f(world, 1.0);
   out.world = world;
   out.normal = (frame.model * vec4f(normal, 0.0)).xyz;
+  out.kind = 0u;
+  if (frame.viewport.w > 0.5 && index < arrayLength(&srcTri)) {
+    let t = srcTri[index];
+    if (t < arrayLength(&patchKind)) {
+      out.kind = min(patchKind[t], 4u);
+    }
+  }
   return out;
 }
 
@@ -30,7 +55,10 @@ fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0
   }
 
   // Clay front, a cooler tint inside open surfaces.
-  let albedo = select(linearFromSrgb(vec3f(0.56, 0.66, 0.78)), linearFromSrgb(vec3f(0.86, 0.80, 0.72)), front);
+  var albedo = select(linearFromSrgb(vec3f(0.56, 0.66, 0.78)), linearFromSrgb(vec3f(0.86, 0.80, 0.72)), front);
+  if (in.kind > 0u) {
+    albedo = linearFromSrgb(patchColour(in.kind)) * select(0.7, 1.0, front);
+  }
   let l = frame.toLight.xyz;
   let ndl = max(dot(n, l), 0.0);
   let shadow = shadowFactor(in.world, n);

@@ -7,7 +7,9 @@
  *
  * Both draw the mesh with drawIndexedIndirect(output.drawArgs), positions and normals bound as
  * vertex buffers, so the CPU never needs to know how many triangles the GPU produced. The
- * wireframe reads the same index and position buffers from storage. DOM-free: it takes a device,
+ * wireframe reads the same index and position buffers from storage. Patch colours (the NVIDIA
+ * sample's "show irregular patches") read each vertex's source triangle (output.srcTri, from
+ * storage by vertex index) and that triangle's kind (setPatchKinds). DOM-free: it takes a device,
  * a colour format, and a texture to draw into.
  */
 import commonWGSL from '../../wgsl/render-common.wgsl?raw';
@@ -43,6 +45,8 @@ export interface View {
 export interface DrawOptions {
   wireframe: boolean;
   cage: boolean;
+  /** Tint the surface by the patch kind of each vertex's source triangle (see setPatchKinds). */
+  patchColours?: boolean;
   /** Wireframe opacity, 0..1. */
   wireOpacity?: number;
 }
@@ -55,6 +59,14 @@ const MESH_BUFFERS: GPUVertexBufferLayout[] = [
   { arrayStride: 12, attributes: [{ shaderLocation: 1, offset: 0, format: 'float32x3' }] },
 ];
 const TIMED_PASSES = ['shadow', 'lit'] as const;
+
+/** Patch kinds (src/gpu/cc/build.ts PatchKind) in patch-colour mode, sRGB; the demo's legend uses the same. */
+export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
+  { kind: 0, name: 'regular', srgb: [0.56, 0.80, 0.52] },
+  { kind: 1, name: 'irregular quad', srgb: [0.95, 0.47, 0.33] },
+  { kind: 2, name: 'triangle / n-gon region', srgb: [0.50, 0.60, 0.98] },
+  { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.30] },
+];
 
 export class Renderer {
   readonly device: GPUDevice;
@@ -78,6 +90,10 @@ export class Renderer {
   #cageVisiblePipeline: GPURenderPipeline;
   #wireLayout: GPUBindGroupLayout;
   #wireArgsLayout: GPUBindGroupLayout;
+  #patchLayout: GPUBindGroupLayout;
+  /** One u32 kind per source triangle (a single 0 when there are none). */
+  #patchKinds: GPUBuffer;
+  #patchBindGroup: GPUBindGroup | null = null;
 
   #wireArgs: GPUBuffer;
   #mesh: TessellatedMesh | null = null;
@@ -158,6 +174,14 @@ export class Renderer {
         { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } },
       ],
     });
+    this.#patchLayout = device.createBindGroupLayout({
+      label: 'patch colours bind group layout',
+      entries: [
+        { binding: 0, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
+        { binding: 1, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
+      ],
+    });
+    this.#patchKinds = device.createBuffer({ label: 'patch kinds (none)', size: 4, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
     this.#frameBindGroup = device.createBindGroup({
       label: 'frame bind group',
       layout: frameLayout,
@@ -174,6 +198,7 @@ export class Renderer {
 
     const frameOnly = device.createPipelineLayout({ label: 'frame-only pipeline layout', bindGroupLayouts: [frameLayout] });
     const shaded = device.createPipelineLayout({ label: 'shaded pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout] });
+    const litLayout = device.createPipelineLayout({ label: 'lit pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout, this.#patchLayout] });
     const wired = device.createPipelineLayout({ label: 'wireframe pipeline layout', bindGroupLayouts: [frameLayout, this.#wireLayout] });
 
     const module = (label: string, ...sources: string[]) => device.createShaderModule({ label, code: sources.join('\n') });
@@ -210,7 +235,7 @@ export class Renderer {
     });
     this.#litPipeline = device.createRenderPipeline({
       label: 'lit pipeline',
-      layout: shaded,
+      layout: litLayout,
       vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
       fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
       // No culling: open surfaces are lit from whichever side is seen.
@@ -291,7 +316,9 @@ export class Renderer {
     this.#mesh = mesh;
     this.#wireBindGroup = null;
     this.#wireArgsBindGroup = null;
+    this.#patchBindGroup = null;
     if (!mesh) return;
+    this.#bindPatches();
     this.#wireBindGroup = this.device.createBindGroup({
       label: 'wireframe bind group',
       layout: this.#wireLayout,
@@ -308,6 +335,38 @@ export class Renderer {
         { binding: 1, resource: { buffer: this.#wireArgs } },
       ],
     });
+  }
+
+  /**
+   * The patch kind of each source triangle of the mesh (src/gpu/cc/build.ts CatmullClarkData.triKind:
+   * 0 regular, 1 irregular quad, 2 triangle region, 3 crease), for patch colours; null for none
+   * (the surface is then drawn in its usual colours even with patchColours on).
+   */
+  setPatchKinds(kinds: ArrayLike<number> | null): void {
+    this.#patchKinds.destroy();
+    const n = kinds?.length ?? 0;
+    this.#patchKinds = this.device.createBuffer({
+      label: n ? 'patch kinds' : 'patch kinds (none)',
+      size: 4 * Math.max(1, n),
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
+    // Kinds are offset by one on the GPU: 0 means "no kind", drawn in the usual colours.
+    if (kinds && n) this.device.queue.writeBuffer(this.#patchKinds, 0, Uint32Array.from(kinds, (k) => k + 1));
+    this.#bindPatches();
+  }
+
+  #bindPatches(): void {
+    const mesh = this.#mesh;
+    this.#patchBindGroup = mesh
+      ? this.device.createBindGroup({
+          label: 'patch colours bind group',
+          layout: this.#patchLayout,
+          entries: [
+            { binding: 0, resource: { buffer: mesh.srcTri } },
+            { binding: 1, resource: { buffer: this.#patchKinds } },
+          ],
+        })
+      : null;
   }
 
   /** The cage overlay's lines (the renderer does not own them). */
@@ -327,7 +386,7 @@ export class Renderer {
   /** Encode the shadow and main passes, drawing into `target` (any size; attachments follow it). */
   render(encoder: GPUCommandEncoder, target: GPUTexture, view: View, options: DrawOptions): void {
     this.#ensureAttachments(target.width, target.height);
-    this.#writeFrame(view, target.width, target.height, options.wireOpacity ?? 0.45);
+    this.#writeFrame(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
     const mesh = this.#mesh;
     const timing = this.#timing;
 
@@ -384,8 +443,9 @@ export class Renderer {
     pass.setBindGroup(1, this.#shadingBindGroup);
     pass.setPipeline(this.#backdropPipeline);
     pass.draw(3);
-    if (mesh) {
+    if (mesh && this.#patchBindGroup) {
       pass.setPipeline(this.#litPipeline);
+      pass.setBindGroup(2, this.#patchBindGroup);
       pass.setVertexBuffer(0, mesh.positions);
       pass.setVertexBuffer(1, mesh.normals);
       pass.setIndexBuffer(mesh.indices, 'uint32');
@@ -451,6 +511,7 @@ export class Renderer {
     this.#frameBuffer.destroy();
     this.#shadowMap.destroy();
     this.#wireArgs.destroy();
+    this.#patchKinds.destroy();
     this.#msaaTexture?.destroy();
     this.#depthTexture?.destroy();
     if (this.#timing) {
@@ -483,7 +544,7 @@ export class Renderer {
     });
   }
 
-  #writeFrame(view: View, width: number, height: number, wireOpacity: number): void {
+  #writeFrame(view: View, width: number, height: number, wireOpacity: number, patchColours: boolean): void {
     const f = this.#frameData;
     const sphere = boundingSphere(this.#bounds);
     f.set(view.viewProj, 0);
@@ -493,7 +554,7 @@ export class Renderer {
     f.set([...DEFAULT_LIGHT_DIR, 1 / this.shadowMapSize], 52);
     // The ground sits at the cage's lowest point, a hair lower so it never z-fights the surface.
     f.set([...sphere.center, this.#bounds.min[1] - sphere.radius * 1e-3], 56);
-    f.set([width, height, wireOpacity, 0], 60);
+    f.set([width, height, wireOpacity, patchColours ? 1 : 0], 60);
     this.device.queue.writeBuffer(this.#frameBuffer, 0, f);
   }
 }
