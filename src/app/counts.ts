@@ -24,6 +24,11 @@ export class CountsReader {
     });
   }
 
+  /** Whether a copy would be taken now (no read in flight). */
+  get idle(): boolean {
+    return this.#state === 'idle';
+  }
+
   /** Encode a copy of `counts` (skipped while a previous read is still in flight). */
   copy(encoder: GPUCommandEncoder, counts: GPUBuffer): void {
     if (this.#state !== 'idle') return;

@@ -1,20 +1,25 @@
 /**
  * What fills the mesh buffers the renderer draws. Both sources produce a `TessellatedMesh`:
  *  - `CageGeometry`: the cage itself, fan-triangulated (the "before" view and a fallback);
- *  - `TessellatorGeometry`: the compute tessellator, rebuilt when the camera, factors or model change.
+ *  - `TessellatorGeometry`: the compute tessellator (Phong or Catmull-Clark), rebuilt when the
+ *    camera, factors or model change.
  */
 import type { Cage } from '../mesh/types.ts';
 import type { FactorParams, TessellatedMesh } from '../gpu/types.ts';
 import { destroyMesh, uploadCageMesh } from '../gpu/cage-mesh.ts';
 import { prepareMesh, Tessellator } from '../gpu/tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
+import type { CatmullClarkData } from '../gpu/cc/build.ts';
+
+export type TessSurface = 'phong' | 'catmull-clark';
 
 export interface GeometrySource {
   readonly kind: 'cage' | 'tessellator';
   /** The buffers to draw (null before the first model). */
   readonly output: TessellatedMesh | null;
-  /** Upload a new model. Throws (with a message fit to show) if it cannot be used. */
-  setCage(cage: Cage): void;
+  /** Upload a new model (with its Catmull-Clark tables for that surface). Throws (with a
+   * message fit to show) if it cannot be used. */
+  setCage(cage: Cage, cc?: CatmullClarkData): void;
   /** Encode a rebuild of `output` for these factors. */
   encode(encoder: GPUCommandEncoder, params: FactorParams): void;
   /** Whether `encode` depends on the camera (adaptive factors) or only on the factors. */
@@ -58,22 +63,37 @@ export class CageGeometry implements GeometrySource {
 /** Largest tess factor of the baked pattern tables. */
 const MAX_FACTOR = 64;
 
+let bakedTables: Uint32Array | null = null;
+
 export class TessellatorGeometry implements GeometrySource {
   readonly kind = 'tessellator';
+  readonly surface: TessSurface;
   readonly #tessellator: Tessellator;
   #hasMesh = false;
 
-  constructor(device: GPUDevice, capacity: number) {
-    // The tables are baked in JavaScript from the same pattern code the tests check (~50 ms).
-    this.#tessellator = Tessellator.create(device, bakeTables(MAX_FACTOR), { vertexCapacity: capacity, triangleCapacity: capacity });
+  constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong') {
+    // The tables are baked in JavaScript from the same pattern code the tests check (~50 ms), once.
+    bakedTables ??= bakeTables(MAX_FACTOR);
+    this.surface = surface;
+    this.#tessellator = Tessellator.create(device, bakedTables, { vertexCapacity: capacity, triangleCapacity: capacity, surface });
+  }
+
+  /** Catmull-Clark: the flat-baseline blend at low tess factors (Tessellator.flatBaseline). */
+  get flatBaseline(): boolean {
+    return this.#tessellator.flatBaseline;
+  }
+
+  set flatBaseline(on: boolean) {
+    this.#tessellator.flatBaseline = on;
   }
 
   get output(): TessellatedMesh | null {
     return this.#hasMesh ? this.#tessellator.output : null;
   }
 
-  setCage(cage: Cage): void {
-    this.#tessellator.setMesh(prepareMesh(cage));
+  setCage(cage: Cage, cc?: CatmullClarkData): void {
+    this.#hasMesh = false;
+    this.#tessellator.setMesh(prepareMesh(cage), cc);
     this.#hasMesh = true;
   }
 
@@ -95,9 +115,9 @@ export class TessellatorGeometry implements GeometrySource {
 }
 
 /**
- * The page's geometry source: the compute tessellator, its output buffers sized for
- * `capacity` vertices and as many triangles (clamped to the device's limits).
+ * The page's geometry source: the compute tessellator for one surface, its output buffers sized
+ * for `capacity` vertices and as many triangles (clamped to the device's limits).
  */
-export async function createGeometry(device: GPUDevice, capacity: number): Promise<GeometrySource> {
-  return new TessellatorGeometry(device, capacity);
+export async function createGeometry(device: GPUDevice, capacity: number, surface: TessSurface = 'phong'): Promise<TessellatorGeometry> {
+  return new TessellatorGeometry(device, capacity, surface);
 }
