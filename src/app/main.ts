@@ -1,24 +1,27 @@
 /**
- * The demo page: a cage, tessellated on the GPU, drawn lit and shadowed with optional wireframe
- * and cage overlays. The geometry is rebuilt only when the model, the factors or (in adaptive
- * mode) the camera change; every other frame draws the stored buffers again.
+ * The demo page: a cage, tessellated on the GPU (the Catmull-Clark limit surface, or Phong
+ * tessellation), drawn lit and shadowed with optional wireframe, cage overlay and patch colours.
+ * The geometry is rebuilt only when the model, the factors or (in adaptive mode) the camera
+ * change; every other frame draws the stored buffers again. The Catmull-Clark tables are built
+ * on the CPU once per model, in a worker (cc-tables.ts).
  */
 import GUI from 'lil-gui';
 import { CageError } from '../mesh/index.ts';
 import { mat4 } from 'gl-matrix';
 import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
-import { Renderer } from '../gpu/renderer.ts';
+import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
+import { CcTableCache, type CcTables } from './cc-tables.ts';
 import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
-import { CageGeometry, createGeometry, type GeometrySource } from './geometry.ts';
+import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import {
   BUILTIN_MODELS, DEFAULT_MODEL, fetchModelList, loadModelFromFile, loadModelFromUrl, modelUrl,
   type LoadedModel, type ModelEntry,
 } from './models.ts';
-import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
-import { renderStats } from './stats.ts';
+import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams, type Surface } from './params.ts';
+import { renderStats, type OtherModeCounts } from './stats.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 
 /** Turntable speed, radians per second. */
@@ -33,11 +36,30 @@ class TessellationDemo extends DemoBase {
   modelMatrix = upAxisMatrix('z') as Float32Array;
 
   renderer: Renderer | null = null;
-  /** The tessellated surface, and the flat cage (for before/after). */
-  tessellated: GeometrySource | null = null;
+  /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
+   * the flat cage (for before/after). */
+  #tess: Partial<Record<TessSurface, TessellatorGeometry>> = {};
   flat: CageGeometry | null = null;
   cageLines: CageLines | null = null;
   counts: CountsReader | null = null;
+
+  /** Catmull-Clark tables per cage (built in a worker), the current model's, or why it has none. */
+  readonly ccTables = new CcTableCache();
+  cc: CcTables | null = null;
+  ccError: string | null = null;
+  buildingTables = false;
+  #loadSerial = 0;
+
+  /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
+  otherCounts: OtherModeCounts | null = null;
+  #otherReader: CountsReader | null = null;
+  #probeKey = '';
+  #probeCameraMoved = false;
+  #lastProbeAt = 0;
+  #probeTimer = 0;
+  /** The factors of this frame's camera, and of the build the output holds now. */
+  #frameFactors: FactorParams | null = null;
+  #builtFactors: FactorParams | null = null;
 
   lastCounts: MeshCounts | null = null;
   /** GPU milliseconds of the last rebuild's passes, and of the last frame's draw passes. */
@@ -58,32 +80,113 @@ class TessellationDemo extends DemoBase {
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
     this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
-    this.tessellated = await createGeometry(device, this.params.capacity * 1e6);
     this.flat = new CageGeometry(device);
     this.counts = new CountsReader(device);
+    this.#otherReader = new CountsReader(device);
+    this.#probeKey = '';
     // After a device loss: upload the current model to the new device.
     if (this.model) this.#uploadModel(this.model);
   }
 
   protected override onDeviceLost(): void {
     this.renderer = null;
-    this.tessellated = null;
+    this.#tess = {};
     this.flat = null;
     this.cageLines = null;
     this.counts = null;
+    this.#otherReader = null;
+    this.#frameFactors = this.#builtFactors = null;
+  }
+
+  /** The surface drawn now: the one asked for, but Phong where the model has no Catmull-Clark
+   * tables (refused, or still being built). */
+  get shownSurface(): Surface {
+    const s = this.params.surface;
+    return s === 'catmull-clark' && !this.cc ? 'phong' : s;
   }
 
   /** What is drawn now: the tessellated surface or the flat cage. */
   get geometry(): GeometrySource | null {
-    return this.params.surface === 'cage' ? this.flat : this.tessellated;
+    const s = this.shownSurface;
+    return s === 'cage' ? this.flat : this.#tess[s] ?? null;
   }
 
-  /** Switch between the tessellated surface and the flat cage. */
-  showSurface(): void {
-    this.renderer?.setMesh(this.geometry?.output ?? null);
+  /** The tessellator for `surface`, created on first use (the other one is freed). */
+  #tessellator(surface: TessSurface): TessellatorGeometry {
+    let tess = this.#tess[surface];
+    if (!tess) {
+      for (const other of Object.values(this.#tess)) other.destroy();
+      tess = new TessellatorGeometry(this.gpu.device, this.params.capacity * 1e6, surface);
+      this.#tess = { [surface]: tess };
+    }
+    return tess;
+  }
+
+  /** Switch surfaces (Catmull-Clark, Phong, flat cage), building the Catmull-Clark tables first
+   * if the model has none yet; the old picture stays up meanwhile. */
+  async showSurface(): Promise<void> {
+    const model = this.model;
+    if (model && this.params.surface === 'catmull-clark' && !this.cc && !this.ccError) {
+      const tables = await this.#tablesFor(model);
+      if (this.model !== model) return; // another model came meanwhile, with its own tables
+      this.cc = tables.cc;
+      this.ccError = tables.error;
+      setLoading(null);
+      if (tables.error) this.#reportFallback(model.title);
+    }
+    if (this.model && this.renderer) {
+      try {
+        this.#uploadModel(this.model);
+      } catch (e) {
+        showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${this.model.title}` });
+      }
+    }
     this.lastCounts = null;
     this.tessTimes = {};
     this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** Build (or take from the cache) the Catmull-Clark tables of `model`, saying so meanwhile. */
+  async #tablesFor(model: LoadedModel): Promise<{ cc: CcTables | null; error: string | null }> {
+    if (!this.ccTables.has(model.cage)) setLoading('Building subdivision tables…');
+    this.buildingTables = true;
+    this.updateStats(true);
+    try {
+      return { cc: await this.ccTables.get(model.cage), error: null };
+    } catch (e) {
+      return { cc: null, error: (e as Error)?.message ?? String(e) };
+    } finally {
+      this.buildingTables = false;
+    }
+  }
+
+  #reportFallback(title: string): void {
+    showToast(`${this.ccError}\n\nShowing the Phong surface instead.`, {
+      kind: 'info',
+      title: `No Catmull-Clark surface for ${title}`,
+      timeout: 10_000,
+    });
+  }
+
+  /** Patch colours are on and there are patches to colour. */
+  get patchColours(): boolean {
+    return this.params.patches && this.shownSurface === 'catmull-clark';
+  }
+
+  /** The legend of the patch colours, with each kind's share of the cage's triangles. */
+  updateLegend(): void {
+    const legend = document.getElementById('legend');
+    if (!legend) return;
+    legend.hidden = !this.patchColours;
+    if (legend.hidden) return;
+    const kinds = this.cc?.data.triKind ?? new Uint8Array();
+    const count = [0, 0, 0, 0];
+    for (const k of kinds) count[k]++;
+    const hex = (c: readonly number[]) => `#${c.map((x) => Math.round(x * 255).toString(16).padStart(2, '0')).join('')}`;
+    legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
+      (p) => `<li><span class="swatch" style="background:${hex(p.srgb)}"></span>${p.name} <span class="muted">${count[p.kind]}</span></li>`,
+    ).join('')}</ul>`;
   }
 
   protected override isAnimating(): boolean {
@@ -92,6 +195,7 @@ class TessellationDemo extends DemoBase {
 
   protected override onCameraChanged(): void {
     if (this.geometry?.dependsOnCamera(this.params)) this.#geometryDirty = true;
+    this.#probeCameraMoved = true;
   }
 
   /** Factors or model changed: rebuild at the next frame. */
@@ -117,31 +221,86 @@ class TessellationDemo extends DemoBase {
     // While spinning, adaptive factors follow the moving camera: rebuild every frame.
     if (this.params.spin && geometry.dependsOnCamera(this.params)) this.#geometryDirty = true;
     this.#rebuiltThisFrame = false;
+    // The tessellator works in the cage's own space: hand it the camera in model space.
+    const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.modelMatrix) as Float32Array;
+    const worldToModel = mat4.invert(mat4.create(), this.modelMatrix)!;
+    const factors: FactorParams = {
+      mode: this.params.mode,
+      fixedFactor: this.params.factor,
+      lodScale: this.params.lod,
+      viewProj: modelViewProj,
+      eye: transformPoint(worldToModel, m.eye),
+      viewportHeight: target.height,
+      fovY: cam.fovY,
+    };
+    this.#frameFactors = factors;
     if (this.#geometryDirty && geometry.output) {
-      // The tessellator works in the cage's own space: hand it the camera in model space.
-      const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.modelMatrix) as Float32Array;
-      const worldToModel = mat4.invert(mat4.create(), this.modelMatrix)!;
-      const factors: FactorParams = {
-        mode: this.params.mode,
-        fixedFactor: this.params.factor,
-        lodScale: this.params.lod,
-        viewProj: modelViewProj,
-        eye: transformPoint(worldToModel, m.eye),
-        viewportHeight: target.height,
-        fovY: cam.fovY,
-      };
+      if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
+      this.#builtFactors = factors;
       this.counts?.copy(encoder, geometry.output.counts);
       this.#geometryDirty = false;
       this.#rebuiltThisFrame = true;
       this.rebuilds++;
     }
-    renderer.render(encoder, target, { viewProj, model: this.modelMatrix, eye: m.eye }, { wireframe: this.params.wire, cage: this.params.cage });
+    renderer.render(encoder, target, { viewProj, model: this.modelMatrix, eye: m.eye }, {
+      wireframe: this.params.wire,
+      cage: this.params.cage,
+      patchColours: this.patchColours,
+    });
+  }
+
+  /**
+   * The stats' other factor mode (fixed while adaptive is drawn, and the reverse): after this
+   * frame, one extra build in that mode whose counts are read back, then the drawn build again
+   * (separate submissions: each build writes the tessellator's parameters with writeBuffer).
+   * Redone when the model, surface, flat baseline or the other mode's setting change, and, for
+   * adaptive, at most once a second while the camera moves. The tessellator times only one
+   * build at a time, so these extra builds never take the drawn build's timings.
+   */
+  #countOtherMode(): void {
+    const geometry = this.geometry;
+    const reader = this.#otherReader;
+    const frame = this.#frameFactors;
+    const built = this.#builtFactors;
+    if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
+    const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
+    const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
+    const key = [this.#loadSerial, this.shownSurface, this.params.flat, other, setting].join('|');
+    if (key !== this.#probeKey) this.otherCounts = null;
+    else if (!(other === 'adaptive' && this.#probeCameraMoved)) return;
+    const wait = this.#lastProbeAt + 1000 - performance.now();
+    if (key === this.#probeKey && wait > 0) {
+      // The camera moved just after a count: count again a little later.
+      if (!this.#probeTimer) this.#probeTimer = window.setTimeout(() => {
+        this.#probeTimer = 0;
+        this.requestFrame();
+      }, wait);
+      return;
+    }
+    if (!reader.idle) return;
+    const device = this.gpu.device;
+    let encoder = device.createCommandEncoder({ label: `count ${other} output` });
+    geometry.encode(encoder, { ...frame, mode: other });
+    reader.copy(encoder, geometry.output.counts);
+    device.queue.submit([encoder.finish()]);
+    encoder = device.createCommandEncoder({ label: 'rebuild the drawn output' });
+    geometry.encode(encoder, built);
+    device.queue.submit([encoder.finish()]);
+    this.#probeKey = key;
+    this.#probeCameraMoved = false;
+    this.#lastProbeAt = performance.now();
+    void reader.read().then((counts) => {
+      if (!counts || this.#probeKey !== key) return;
+      this.otherCounts = { mode: other, setting, counts };
+      this.updateStats(true);
+    });
   }
 
   protected override onAfterSubmit(): void {
     const renderer = this.renderer;
     const geometry = this.geometry;
+    this.#countOtherMode();
     // One read of the build's timestamps at a time: while one is mapping, later builds (a
     // turntable rebuilds every frame) go untimed rather than map the same buffer twice.
     const readTess = this.#rebuiltThisFrame && !this.#tessTimingInFlight;
@@ -181,6 +340,15 @@ class TessellationDemo extends DemoBase {
       vertexCapacity: this.geometry?.output?.vertexCapacity ?? 0,
       triangleCapacity: this.geometry?.output?.triangleCapacity ?? 0,
       source: this.geometry?.kind ?? 'cage',
+      surface: {
+        shown: this.shownSurface,
+        fallback: this.params.surface === 'catmull-clark' ? this.ccError : null,
+        building: this.buildingTables,
+        kinds: this.cc ? kindCounts(this.cc.data.triKind) : undefined,
+        tablesMs: this.cc?.ms,
+        tablesWhere: this.cc?.where,
+      },
+      other: this.otherCounts,
       mode: this.params.mode,
       tessTimes: this.tessTimes,
       drawTimes: this.drawTimes,
@@ -194,10 +362,16 @@ class TessellationDemo extends DemoBase {
 
   /** Show a model; on failure keep the current one and say why. */
   async showModel(load: () => Promise<LoadedModel>, what: string, camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): Promise<boolean> {
+    const serial = ++this.#loadSerial;
     setLoading(`Loading ${what}…`);
     let model: LoadedModel;
+    let tables: { cc: CcTables | null; error: string | null } = { cc: null, error: null };
     try {
       model = await load();
+      if (serial !== this.#loadSerial) return false; // a later request replaced this one
+      // The Catmull-Clark tables first (in a worker; the old model stays up meanwhile).
+      if (this.params.surface === 'catmull-clark') tables = await this.#tablesFor(model);
+      if (serial !== this.#loadSerial) return false;
     } catch (e) {
       setLoading(null);
       const message = e instanceof CageError ? e.message : (e as Error)?.message ?? String(e);
@@ -206,22 +380,31 @@ class TessellationDemo extends DemoBase {
       if (!this.model) setPageState('error');
       return false;
     }
+    const kept = { cc: this.cc, ccError: this.ccError };
+    this.cc = tables.cc;
+    this.ccError = tables.error;
     try {
       this.#uploadModel(model);
     } catch (e) {
       setLoading(null);
       showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${what}` });
+      this.cc = kept.cc;
+      this.ccError = kept.ccError;
       if (this.model) this.#uploadModel(this.model);
       return false;
     }
+    if (tables.error) this.#reportFallback(model.title);
     for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
     const previous = this.model;
     this.model = model;
     this.placeModel(camera);
     this.lastCounts = null;
+    this.tessTimes = {};
     this.invalidateGeometry();
     if (previous) setLoading(null);
     this.updateStats(true);
+    // The surface was switched to Catmull-Clark while this model loaded without tables.
+    if (this.params.surface === 'catmull-clark' && !this.cc && !this.ccError) void this.showSurface();
     return true;
   }
 
@@ -235,11 +418,28 @@ class TessellationDemo extends DemoBase {
     this.invalidateGeometry();
   }
 
+  /** Upload `model` (whose tables, if any, are this.cc) for the surface shown; where the
+   * Catmull-Clark tessellator refuses it, fall back to Phong (this.ccError says why). */
   #uploadModel(model: LoadedModel): void {
+    try {
+      this.#upload(model);
+    } catch (e) {
+      if (this.shownSurface !== 'catmull-clark') throw e;
+      this.cc = null;
+      this.ccError = (e as Error)?.message ?? String(e);
+      this.#upload(model);
+      this.#reportFallback(model.title);
+    }
+  }
+
+  #upload(model: LoadedModel): void {
     const device = this.gpu.device;
-    this.tessellated!.setCage(model.cage);
+    const surface = this.shownSurface;
     this.flat!.setCage(model.cage);
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? this.cc!.data : undefined);
     this.renderer!.setMesh(this.geometry!.output);
+    this.renderer!.setPatchKinds(surface === 'catmull-clark' ? this.cc!.data.triKind : null);
+    this.updateLegend();
     this.cageLines?.vertices.destroy();
     this.cageLines = uploadCageLines(device, model.cage);
     this.renderer!.setCage(this.cageLines);
@@ -273,6 +473,12 @@ class TessellationDemo extends DemoBase {
     }
     return `${location.origin}${location.pathname}${formatParams(p)}`;
   }
+}
+
+function kindCounts(kinds: Uint8Array): [number, number, number, number] {
+  const n: [number, number, number, number] = [0, 0, 0, 0];
+  for (const k of kinds) n[k & 3]++;
+  return n;
 }
 
 function syncUrl(params: DemoParams): void {
@@ -321,6 +527,14 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     syncUrl(p);
     demo.invalidateGeometry();
   };
+  tess.add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' }).name('surface').onChange(() => {
+    syncUrl(p);
+    showFlat();
+    void demo.showSurface();
+  });
+  const flat = tess.add(p, 'flat').name('flat baseline').onChange(changed);
+  const showFlat = () => flat.show(p.surface === 'catmull-clark');
+  showFlat();
   tess.add(p, 'mode', { adaptive: 'adaptive', fixed: 'fixed' }).name('factors').onChange(() => {
     showMode();
     changed();
@@ -338,9 +552,9 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     syncUrl(p);
     demo.requestFrame();
   };
-  view.add(p, 'surface', { tessellated: 'tessellated', 'flat cage': 'cage' }).name('surface').onChange(() => {
-    syncUrl(p);
-    demo.showSurface();
+  view.add(p, 'patches').name('patch colours').onChange(() => {
+    demo.updateLegend();
+    redraw();
   });
   view.add(p, 'wire').name('wireframe').onChange(redraw);
   view.add(p, 'cage').name('cage overlay').onChange(redraw);

@@ -5,9 +5,34 @@
 import type { LoadedModel } from './models.ts';
 import type { MeshCounts } from './counts.ts';
 
+/** The surface drawn, and what the Catmull-Clark tables are (or why there are none). */
+export interface SurfaceStats {
+  /** What is drawn now. */
+  shown: 'catmull-clark' | 'phong' | 'cage';
+  /** Catmull-Clark was asked for but the build refused the model: the reason. */
+  fallback?: string | null;
+  /** The tables are being built (the previous picture stays meanwhile). */
+  building?: boolean;
+  /** Triangles per patch kind (regular, irregular quad, triangle region, crease). */
+  kinds?: [number, number, number, number];
+  /** Wall-clock ms of the CPU table build, and where it ran. */
+  tablesMs?: number;
+  tablesWhere?: string;
+}
+
+/** The other factor mode's output, counted by an occasional extra build. */
+export interface OtherModeCounts {
+  mode: 'adaptive' | 'fixed';
+  /** Its setting: "factor 8" or "LOD 1". */
+  setting: string;
+  counts: MeshCounts;
+}
+
 export interface StatsInput {
   model: LoadedModel | null;
   counts: MeshCounts | null;
+  surface?: SurfaceStats;
+  other?: OtherModeCounts | null;
   vertexCapacity: number;
   triangleCapacity: number;
   source: 'cage' | 'tessellator';
@@ -37,6 +62,11 @@ function ms(x: number): string {
   return x < 0.01 ? '<0.01' : x.toFixed(2);
 }
 
+const SURFACE_NAMES = { 'catmull-clark': 'Catmull-Clark', phong: 'Phong', cage: 'flat cage' } as const;
+
+/** Timing stages of the Catmull-Clark patch build; every other stage is tessellation. */
+const SUBDIVISION_STAGES = new Set(['subdivision']);
+
 function row(label: string, value: string, testid?: string): string {
   return `<dt>${label}</dt><dd${testid ? ` data-testid="${testid}"` : ''}>${value}</dd>`;
 }
@@ -48,9 +78,33 @@ export function renderStats(s: StatsInput): string {
     const nf = s.model.cage.faceOffsets.length - 1;
     rows.push(row('cage', `<b>${esc(s.model.title)}</b> · ${int.format(nv)} verts · ${int.format(nf)} faces`, 'stats-cage'));
   }
+  if (s.surface) {
+    const sf = s.surface;
+    let text = `<b>${SURFACE_NAMES[sf.shown]}</b>`;
+    if (sf.building) text += ' <span class="muted">building subdivision tables…</span>';
+    if (sf.fallback) text += ` <span class="warn">Catmull-Clark unavailable: ${esc(sf.fallback)}</span>`;
+    if (sf.shown === 'catmull-clark' && sf.kinds) {
+      const [reg, irr, tri, crease] = sf.kinds;
+      text += ` <span class="muted">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;
+      if (sf.tablesMs !== undefined) text += ` · tables ${(sf.tablesMs / 1000).toFixed(sf.tablesMs < 1000 ? 2 : 1)} s${sf.tablesWhere ? ` (${esc(sf.tablesWhere)})` : ''}`;
+      text += '</span>';
+    }
+    rows.push(row('surface', text, 'stats-surface'));
+  }
   const c = s.counts;
   const what = s.source === 'cage' ? 'cage (flat)' : s.mode;
-  rows.push(row('output', c ? `${int.format(c.vertexCount)} verts · ${int.format(c.triangleCount)} tris <span class="muted">${what}</span>` : '…', 'stats-output'));
+  const size = (m: MeshCounts) => `${int.format(m.vertexCount)} verts · ${int.format(m.triangleCount)} tris`;
+  rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>` : '…', 'stats-output'));
+  // The other factor mode, for the talk's fixed-vs-adaptive comparison: counted by one extra
+  // build (then the drawn one again) when its settings, the model or the surface change.
+  const o = s.source === 'cage' ? null : s.other;
+  if (o && o.mode !== s.mode) {
+    let text = `${size(o.counts)} <span class="muted">${o.mode}, ${esc(o.setting)}`;
+    if (c && c.triangleCount > 0) text += ` · ${(o.counts.triangleCount / c.triangleCount).toFixed(2)}× the drawn tris`;
+    text += '</span>';
+    if (o.counts.budgetScale < 1) text += ` <span class="warn">over budget</span>`;
+    rows.push(row(`vs ${o.mode}`, text, 'stats-other'));
+  }
   if (c) {
     let buffers = `verts ${percent(c.vertexCount, s.vertexCapacity)} · tris ${percent(c.triangleCount, s.triangleCapacity)}`;
     if (c.budgetScale < 1) buffers += ` · <span class="warn">over budget: factors ×${c.budgetScale.toFixed(2)}</span>`;
@@ -58,11 +112,18 @@ export function renderStats(s: StatsInput): string {
   }
   if (s.timestamps) {
     // The build runs only when the camera, factors or model change; the draw passes every frame.
-    const tess = Object.entries(s.tessTimes);
+    // Subdivision (the Catmull-Clark patch build) and tessellation are shown apart.
+    const all = Object.entries(s.tessTimes);
+    const subdiv = all.filter(([k]) => SUBDIVISION_STAGES.has(k));
+    const tess = all.filter(([k]) => !SUBDIVISION_STAGES.has(k));
+    if (all.length && s.surface?.shown === 'catmull-clark') {
+      const total = subdiv.reduce((a, [, v]) => a + v, 0);
+      rows.push(row('subdivision ms', subdiv.length ? `<b>${ms(total)}</b> <span class="muted">patch build</span>` : '–', 'stats-subdiv'));
+    }
     if (tess.length) {
       const total = tess.reduce((a, [, v]) => a + v, 0);
       const detail = tess.map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
-      rows.push(row('build ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>`, 'stats-build'));
+      rows.push(row('tessellation ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>`, 'stats-build'));
     }
     const draw = Object.entries(s.drawTimes).map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
     rows.push(row('draw ms', draw || '…', 'stats-gpu'));
