@@ -20,6 +20,9 @@ import { phongMidpointOffset } from '../src/gpu/factors.ts';
 import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { loadCage } from '../src/mesh/index.ts';
+import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
+import { timeDrawPasses } from './draw-timing.ts';
+import { mat4 } from 'gl-matrix';
 
 const REPEATS = 5;
 
@@ -35,8 +38,8 @@ function median(xs: number[]): number {
   return s[Math.floor(s.length / 2)];
 }
 
-async function timeRebuild(device: GPUDevice, tess: Tessellator, mesh: PreparedMesh, o: HeadlessOptions, repeats: number): Promise<Run> {
-  tess.setMesh(mesh);
+async function timeRebuild(device: GPUDevice, tess: Tessellator, mesh: PreparedMesh, o: HeadlessOptions, repeats: number, cc?: CatmullClarkData): Promise<Run> {
+  tess.setMesh(mesh, cc);
   const samples: Record<string, number>[] = [];
   for (let i = 0; i < repeats + 1; i++) {
     const enc = device.createCommandEncoder({ label: 'bench rebuild' });
@@ -150,6 +153,35 @@ export async function main(argv: string[]): Promise<number> {
     equalError.push(`| ${file.replace('.obj', '')} | ${F.toFixed(2)} | ${eq.vertices} | ${eq.triangles} | ${a.vertices} | ${a.triangles} | ${((100 * a.triangles) / eq.triangles).toFixed(0)} % |`);
   }
   tess.destroy();
+
+  // Catmull-Clark: the talk's table (subdivision = the patch build from the cage, tessellation =
+  // everything after it), and the draw passes per million triangles.
+  const cc = Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' });
+  const talk: string[] = [];
+  const draws: string[] = [];
+  for (const file of models) {
+    const cage = loadCage(readFileSync(`public/models/${file}`, 'utf8')).cage;
+    const mesh = prepareMesh(cage);
+    const started = performance.now();
+    const data = buildCatmullClark(cage, mesh);
+    const buildMs = performance.now() - started;
+    const run = (o: HeadlessOptions) => timeRebuild(device, cc, mesh, o, repeats, data);
+    const adaptiveRun = await run(adaptive);
+    const fixedRun = await run({ mode: 'fixed', fixedFactor }); // last, so the draw passes see it
+    const sub = fixedRun.stages.subdivision ?? 0;
+    const tessMs = fixedRun.total - sub;
+    talk.push(`| ${file.replace('.obj', '')} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} |`);
+    const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
+    const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
+    const r = mesh.size / 2;
+    const lightView = mat4.lookAt(mat4.create(), [centre[0] + 2 * r, centre[1] + 3 * r, centre[2] + 2 * r], centre, [0, 1, 0]);
+    const lightProj = mat4.orthoZO(mat4.create(), -r, r, -r, r, 0.1 * r, 8 * r);
+    const { litMs, shadowMs } = await timeDrawPasses(device, cc.output, cam.viewProj, mat4.multiply(mat4.create(), lightProj, lightView) as Float32Array, repeats);
+    const perM = 1e6 / fixedRun.triangles;
+    draws.push(`| ${file.replace('.obj', '')} | ${fixedRun.triangles} | ${(fixedRun.total * perM).toFixed(2)} | ${(litMs * perM).toFixed(2)} | ${(shadowMs * perM).toFixed(2)} | ${((litMs + 4 * shadowMs) * perM).toFixed(2)} |`);
+    console.log(talk[talk.length - 1]);
+  }
+  cc.destroy();
   device.destroy();
 
   const machine = `${cpus()[0]?.model ?? 'unknown CPU'} (${cpus().length} cores, ${(totalmem() / 2 ** 30).toFixed(0)} GiB)`;
@@ -168,6 +200,28 @@ Written by \`npm run bench\` on ${new Date().toISOString().slice(0, 10)}.
 ${header}
 ${rule}
 ${rows.join('\n')}
+
+## Catmull-Clark: the talk's table
+
+The exact limit surface (flat baseline on, as in the demo). *subdivision* is the patch build
+(control points and vertex limits from the cage positions, every frame for a deforming cage);
+*tessellation* is everything after it (factors from the limit positions and normals, counts,
+budget, weld, plan, emit with the surface evaluated per vertex). Fixed factor ${fixedFactor}; adaptive at
+LOD ${lodScale}. *CPU build ms* is the one-off CPU construction of the patch tables per topology.
+
+| model | out tris (fixed) | subdivision ms | tessellation ms | sub + tess ms | Mtris/ms | fixed verts | adaptive verts | adaptive / fixed | fixed tris | adaptive tris | adaptive / fixed | CPU build ms |
+|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+${talk.join('\n')}
+
+## Drawing the stored mesh: ms per 1M triangles
+
+Built once, drawn by every pass (the talk's point against re-tessellating per pass): a lit pass
+(1920×1080, Lambert) and a depth-only shadow pass (2048²), both \`drawIndexedIndirect\` from the
+tessellator's buffers, on the fixed-factor Catmull-Clark mesh.
+
+| model | tris | build (sub + tess) per 1M | lit pass per 1M | shadow pass per 1M | lit + 4 shadows per 1M |
+|---|---:|---:|---:|---:|---:|
+${draws.join('\n')}
 
 ## Adaptive against fixed at equal maximum edge error
 
