@@ -5,17 +5,16 @@
  * no NaN; an animated cage re-running only the patch build; the flat-baseline pop test.
  */
 import { describe, it, expect, afterAll } from 'vitest';
-import { mat4 } from 'gl-matrix';
-import { getDevice, releaseDevice } from './gpu-device.ts';
+import { getDevice, releaseDevice, testCamera } from './gpu-device.ts';
 import { checkTessellation } from './tess-checks.ts';
 import { CCReference, randomSamples } from './cc-checks.ts';
 import { Tessellator } from '../src/gpu/tessellator.ts';
-import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
+import { prepareMesh } from '../src/gpu/prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from '../src/gpu/readback.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { sampleSurface } from '../src/gpu/cc/sample.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { BARY_CORNER1, BARY_CORNER2, type FactorParams } from '../src/gpu/types.ts';
+import { BARY_CORNER1, BARY_CORNER2 } from '../src/gpu/types.ts';
 import { loadCage } from '../src/mesh/index.ts';
 import creasedBox from '../public/models/creased-box.obj?raw';
 import creature from '../public/models/creature.obj?raw';
@@ -37,14 +36,7 @@ export const POSITION_BOUND = 1e-5;
 export const NORMAL_BOUND_DEG = 0.1;
 export const BLENDED_POSITION_BOUND = 1e-4;
 
-function camera(mesh: PreparedMesh, eyeDistance: number, fixed?: number, lodScale = 1): FactorParams {
-  const c = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
-  const eye: [number, number, number] = [c[0] + 0.3 * eyeDistance, c[1] + 0.5 * eyeDistance, c[2] + eyeDistance];
-  const view = mat4.lookAt(mat4.create(), eye, c, [0, 1, 0]);
-  const proj = mat4.perspectiveZO(mat4.create(), Math.PI / 4, 1, 0.01, 100);
-  const viewProj = mat4.multiply(mat4.create(), proj, view) as Float32Array;
-  return { mode: fixed ? 'fixed' : 'adaptive', fixedFactor: fixed ?? 1, lodScale, viewProj, eye, viewportHeight: 720, fovY: Math.PI / 4 };
-}
+const camera = testCamera;
 
 async function tessellator(): Promise<Tessellator> {
   const device = await getDevice();

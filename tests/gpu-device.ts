@@ -33,3 +33,17 @@ export async function releaseDevice(): Promise<void> {
   pending = undefined;
   if (instance) instance = undefined;
 }
+
+import { mat4 } from 'gl-matrix';
+import type { PreparedMesh } from '../src/gpu/prepare.ts';
+import type { FactorParams } from '../src/gpu/types.ts';
+
+/** A test camera looking at the model's centre from eyeDistance (fixed mode when `fixed` is given). */
+export function testCamera(mesh: PreparedMesh, eyeDistance: number, fixed?: number, lodScale = 1): FactorParams {
+  const c = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
+  const eye: [number, number, number] = [c[0] + 0.3 * eyeDistance, c[1] + 0.5 * eyeDistance, c[2] + eyeDistance];
+  const view = mat4.lookAt(mat4.create(), eye, c, [0, 1, 0]);
+  const proj = mat4.perspectiveZO(mat4.create(), Math.PI / 4, 1, 0.01, 100);
+  const viewProj = mat4.multiply(mat4.create(), proj, view) as Float32Array;
+  return { mode: fixed ? 'fixed' : 'adaptive', fixedFactor: fixed ?? 1, lodScale, viewProj, eye, viewportHeight: 720, fovY: Math.PI / 4 };
+}

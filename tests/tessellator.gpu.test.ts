@@ -4,8 +4,7 @@
  * 1e-5 of the model size, watertight after the weld, no NaN, the budget respected.
  */
 import { describe, it, expect, afterAll } from 'vitest';
-import { mat4 } from 'gl-matrix';
-import { getDevice, releaseDevice } from './gpu-device.ts';
+import { getDevice, releaseDevice, testCamera } from './gpu-device.ts';
 import { checkTessellation } from './tess-checks.ts';
 import { cube, octahedron, torus, sheet } from './cages/shapes.ts';
 import { Tessellator } from '../src/gpu/tessellator.ts';
@@ -19,14 +18,7 @@ const tables = bakeTables(64);
 afterAll(() => releaseDevice());
 
 
-function camera(mesh: PreparedMesh, eyeDistance: number, fixed?: number, lodScale = 1): FactorParams {
-  const c = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
-  const eye: [number, number, number] = [c[0] + 0.3 * eyeDistance, c[1] + 0.5 * eyeDistance, c[2] + eyeDistance];
-  const view = mat4.lookAt(mat4.create(), eye, c, [0, 1, 0]);
-  const proj = mat4.perspectiveZO(mat4.create(), Math.PI / 4, 1, 0.01, 100);
-  const viewProj = mat4.multiply(mat4.create(), proj, view) as Float32Array;
-  return { mode: fixed ? 'fixed' : 'adaptive', fixedFactor: fixed ?? 1, lodScale, viewProj, eye, viewportHeight: 720, fovY: Math.PI / 4 };
-}
+const camera = testCamera;
 
 // Pipelines compile once per capacity setting (SwiftShader compiles slowly).
 const tessellators = new Map<string, Tessellator>();

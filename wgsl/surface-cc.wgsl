@@ -141,14 +141,8 @@ fn ccNgonParam(poly: u32, n: u32, fan: u32, w: vec3<f32>) -> vec3<f32> {
   return vec3<f32>(f32(k), clamp(s, 0.0, 1.0), clamp(t, 0.0, 1.0));
 }
 
-fn ccLimitPos(v: u32) -> vec3<f32> {
-  let o = params.offFactorPos + 3u * v;
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
-fn ccLimitNormal(v: u32) -> vec3<f32> {
-  let o = params.offFactorNormal + 3u * v;
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
+// The cage vertices' limit positions and normals (cc-build.wgsl writes them where the factor
+// rule reads: factorPos / factorNormal).
 
 fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
@@ -174,8 +168,8 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let v0 = triVert(t, 0u);
   let v1 = triVert(t, 1u);
   let v2 = triVert(t, 2u);
-  let flat = w.x * ccLimitPos(v0) + w.y * ccLimitPos(v1) + w.z * ccLimitPos(v2);
-  let fn0 = w.x * ccLimitNormal(v0) + w.y * ccLimitNormal(v1) + w.z * ccLimitNormal(v2);
+  let flat = w.x * factorPos(v0) + w.y * factorPos(v1) + w.z * factorPos(v2);
+  let fn0 = w.x * factorNormal(v0) + w.y * factorNormal(v1) + w.z * factorNormal(v2);
   let e01 = w.x * w.y;
   let e12 = w.y * w.z;
   let e20 = w.z * w.x;

@@ -109,22 +109,14 @@ fn unpackFrame(bits: u32) -> Frame {
 // ---- the surface -------------------------------------------------------------------------
 // `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` comes from the surface module
 // (wgsl/surface-phong.wgsl, or the Catmull-Clark one), appended after this file.
-fn cagePos(v: u32) -> vec3<f32> { return vec3<f32>(cageBuf[3u * v], cageBuf[3u * v + 1u], cageBuf[3u * v + 2u]); }
-fn cageNormal(v: u32) -> vec3<f32> {
-  let o = params.offNormals + 3u * v;
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
+fn cageVec3(o: u32) -> vec3<f32> { return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]); }
+fn cagePos(v: u32) -> vec3<f32> { return cageVec3(3u * v); }
+fn cageNormal(v: u32) -> vec3<f32> { return cageVec3(params.offNormals + 3u * v); }
 
 // What the factor rule reads: the cage itself (Phong), or the limit positions and normals of the
 // cage vertices (Catmull-Clark, written by wgsl/cc-build.wgsl).
-fn factorPos(v: u32) -> vec3<f32> {
-  let o = params.offFactorPos + 3u * v;
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
-fn factorNormal(v: u32) -> vec3<f32> {
-  let o = params.offFactorNormal + 3u * v;
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
+fn factorPos(v: u32) -> vec3<f32> { return cageVec3(params.offFactorPos + 3u * v); }
+fn factorNormal(v: u32) -> vec3<f32> { return cageVec3(params.offFactorNormal + 3u * v); }
 
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32> }
 
