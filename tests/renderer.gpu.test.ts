@@ -50,7 +50,7 @@ function view(): View {
 }
 
 /** Render one frame and read it back as RGBA8 rows (tightly packed). */
-async function draw(renderer: Renderer, options: { wireframe: boolean; cage: boolean }): Promise<Uint8Array> {
+async function draw(renderer: Renderer, options: { wireframe: boolean; cage: boolean; patchColours?: boolean }): Promise<Uint8Array> {
   const device = ctx.device;
   const target = device.createTexture({ label: 'test target', size: [W, H], format: FORMAT, usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
   const bytesPerRow = Math.ceil((W * 4) / 256) * 256;
@@ -153,6 +153,35 @@ describe('renderer', () => {
     renderer.destroy();
     destroyMesh(mesh);
     lines.vertices.destroy();
+  });
+
+  it('tints the surface by patch kind only with patch colours on and kinds given', async () => {
+    const device = ctx.device;
+    device.pushErrorScope('validation');
+    const renderer = Renderer.create(device, { colorFormat: FORMAT, shadowMapSize: 256 });
+    const mesh = uploadCageMesh(device, cube);
+    renderer.setBounds(boundsOf(cube.positions));
+    renderer.setMesh(mesh);
+    const plain = await draw(renderer, { wireframe: false, cage: false });
+    // No kinds: patch colours on changes nothing.
+    expect(differing(plain, await draw(renderer, { wireframe: false, cage: false, patchColours: true }))).toBe(0);
+    // Every triangle a crease patch (yellow), then every one regular (green).
+    const triangles = 12;
+    renderer.setPatchKinds(new Uint8Array(triangles).fill(3));
+    expect(differing(plain, await draw(renderer, { wireframe: false, cage: false }))).toBe(0);
+    const crease = await draw(renderer, { wireframe: false, cage: false, patchColours: true });
+    renderer.setPatchKinds(new Uint8Array(triangles).fill(0));
+    const regular = await draw(renderer, { wireframe: false, cage: false, patchColours: true });
+    expect(await device.popErrorScope()).toBeNull();
+    const c = pixel(crease, W / 2, H / 2);
+    const r = pixel(regular, W / 2, H / 2);
+    expect(c[0]).toBeGreaterThan(c[2] + 20); // yellow: red over blue
+    expect(r[1]).toBeGreaterThan(r[0]); // green
+    expect(r[1]).toBeGreaterThan(r[2]);
+    // The backdrop is untouched.
+    expect(pixel(crease, 2, 2)).toEqual(pixel(plain, 2, 2));
+    renderer.destroy();
+    destroyMesh(mesh);
   });
 
   it('follows the mesh\'s GPU-written draw args (indirect): zero triangles draw nothing', async () => {

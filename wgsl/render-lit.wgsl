@@ -10,18 +10,18 @@ struct VertexOut {
   @builtin(position) clip: vec4f,
   @location(0) world: vec3f,
   @location(1) normal: vec3f,
-  // 0: the usual colours; k + 1: patch kind k.
-  @location(2) @interpolate(flat) kind: u32,
+  // Patch colours: one-hot weights of the vertex's patch kind (regular, irregular quad, triangle,
+  // crease), zero for the usual colours. Interpolated: a tessellated triangle whose vertices were
+  // welded to neighbouring source triangles blends their colours (flat shading would take its
+  // first vertex's and draw saw teeth along the patch boundaries).
+  @location(2) patchWeights: vec4f,
 }
 
 // Keep in step with PATCH_COLOURS in src/gpu/renderer.ts (the legend).
-fn patchColour(kind: u32) -> vec3f {
-  switch kind {
-    case 1u: { return vec3f(0.56, 0.80, 0.52); }
-    case 2u: { return vec3f(0.95, 0.47, 0.33); }
-    case 3u: { return vec3f(0.50, 0.60, 0.98); }
-    default: { return vec3f(0.96, 0.82, 0.30); }
-  }
+fn patchColour(w: vec4f) -> vec3f {
+  let c = w.x * linearFromSrgb(vec3f(0.56, 0.80, 0.52)) + w.y * linearFromSrgb(vec3f(0.95, 0.47, 0.33))
+    + w.z * linearFromSrgb(vec3f(0.50, 0.60, 0.98)) + w.w * linearFromSrgb(vec3f(0.96, 0.82, 0.30));
+  return c / max(dot(w, vec4f(1.0)), 1e-6);
 }
 
 @vertex
@@ -31,11 +31,12 @@ fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @l
   out.clip = frame.viewProj * vec4f(world, 1.0);
   out.world = world;
   out.normal = (frame.model * vec4f(normal, 0.0)).xyz;
-  out.kind = 0u;
+  out.patchWeights = vec4f(0.0);
   if (frame.viewport.w > 0.5 && index < arrayLength(&srcTri)) {
     let t = srcTri[index];
     if (t < arrayLength(&patchKind)) {
-      out.kind = min(patchKind[t], 4u);
+      let k = patchKind[t];
+      out.patchWeights = select(vec4f(0.0), vec4f(1.0), vec4<u32>(k) == vec4<u32>(1u, 2u, 3u, 4u));
     }
   }
   return out;
@@ -56,8 +57,8 @@ fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0
 
   // Clay front, a cooler tint inside open surfaces.
   var albedo = select(linearFromSrgb(vec3f(0.56, 0.66, 0.78)), linearFromSrgb(vec3f(0.86, 0.80, 0.72)), front);
-  if (in.kind > 0u) {
-    albedo = linearFromSrgb(patchColour(in.kind)) * select(0.7, 1.0, front);
+  if (dot(in.patchWeights, vec4f(1.0)) > 0.01) {
+    albedo = patchColour(in.patchWeights) * select(0.7, 1.0, front);
   }
   let l = frame.toLight.xyz;
   let ndl = max(dot(n, l), 0.0);
