@@ -1,6 +1,7 @@
 // The demo page (index.html) end to end, in headless Chromium on SwiftShader: it starts without
-// console errors, draws a deterministic frozen frame, survives a bad OBJ and a lost device, and
-// explains itself when WebGPU is missing.
+// console errors on the Catmull-Clark surface, draws deterministic frozen frames (Catmull-Clark,
+// patch colours, Phong), falls back to Phong where the subdivision tables are refused, survives a
+// bad OBJ and a lost device, and explains itself when WebGPU is missing.
 import { expect, test, type Page } from '@playwright/test';
 
 /** Console errors and uncaught exceptions of a page, collected from the start. */
@@ -35,6 +36,15 @@ test('loads a model without console errors and shows its stats', async ({ page }
   await expect(page.getByTestId('stats-cage')).toContainText('torus');
   await expect(page.getByTestId('stats-cage')).toContainText('128 verts');
   await expect(page.getByTestId('stats-output')).toContainText('tris');
+  // Catmull-Clark by default, its tables built in the worker; the talk's numbers in the panel.
+  await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark');
+  await expect(page.getByTestId('stats-surface')).toContainText('256 regular');
+  await expect(page.getByTestId('stats-other')).toContainText(/fixed, factor 8/);
+  await expect(page.getByTestId('stats-other')).toContainText('tris');
+  if (await page.evaluate(() => (window as unknown as { tessellab: { demo: { gpu: { timestamps: boolean } } } }).tessellab.demo.gpu.timestamps)) {
+    await expect(page.getByTestId('stats-subdiv')).toContainText('patch build');
+    await expect(page.getByTestId('stats-build')).toContainText('tessellate');
+  }
   await expect(page.locator('#loading')).toBeHidden();
   await expect(page.locator('.lil-gui.panel')).toContainText('Tessellation');
   await expect(page.getByRole('link', { name: /diagrams/i })).toHaveAttribute('href', './diagrams/index.html');
@@ -54,11 +64,98 @@ test.describe('frozen frames (?t=) match their references', () => {
     expect(errors).toEqual([]);
   });
 
-  test('the canvas alone, fixed factors', async ({ page }) => {
-    await page.goto('/?model=creature&t=0&ui=0&mode=fixed&factor=6');
+  test('the canvas alone, Phong, fixed factors', async ({ page }) => {
+    await page.goto('/?model=creature&t=0&ui=0&mode=fixed&factor=6&surface=phong');
     await ready(page);
     await expect(page.locator('#view')).toHaveScreenshot('creature-fixed-6.png');
   });
+
+  test('the canvas alone, Catmull-Clark (the default), adaptive', async ({ page }) => {
+    const errors = collectErrors(page);
+    await page.goto('/?model=creature&t=0&ui=0');
+    await ready(page);
+    await expect(page.locator('#view')).toHaveScreenshot('creature-cc.png');
+    expect(errors).toEqual([]);
+  });
+
+  test('Catmull-Clark with patch colours and the legend', async ({ page }) => {
+    const errors = collectErrors(page);
+    await page.goto('/?model=pawn&t=0&patches=1&wire=0');
+    await ready(page);
+    await expect(page.getByTestId('legend')).toContainText('irregular quad');
+    // The stats show live timings: mask them.
+    await expect(page.locator('#view')).toHaveScreenshot('pawn-cc-patches.png', { mask: [page.locator('#stats')], maskColor: '#161a20' });
+    expect(errors).toEqual([]);
+  });
+});
+
+/** The panel's control labelled `name`. */
+function control(page: Page, name: string) {
+  return page.locator('.lil-gui.panel .lil-controller').filter({ has: page.locator('.lil-name', { hasText: new RegExp(`^${name}$`) }) });
+}
+
+test('the patch-colour toggle changes the picture, and back', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=pawn&t=0');
+  await ready(page);
+  const legend = page.getByTestId('legend');
+  await expect(legend).toBeHidden();
+  // The canvas, less the panels over it (timings change with every frame; the focus ring moves).
+  const canvas = () => page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')] });
+  const before = await canvas();
+  await control(page, 'patch colours').locator('input').check();
+  await expect(legend).toBeVisible();
+  await expect(legend).toContainText('crease');
+  await expect.poll(async () => Buffer.compare(await canvas(), before)).not.toBe(0);
+  await control(page, 'patch colours').locator('input').uncheck();
+  await expect(legend).toBeHidden();
+  await expect.poll(async () => Buffer.compare(await canvas(), before)).toBe(0);
+  expect(errors).toEqual([]);
+});
+
+test('the surface switch: Phong, flat cage and back to Catmull-Clark', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&t=0');
+  await ready(page);
+  const surface = control(page, 'surface').locator('select');
+  await surface.selectOption({ label: 'Phong' });
+  await expect(page.getByTestId('stats-surface')).toHaveText('Phong');
+  await expect(control(page, 'flat baseline')).toBeHidden();
+  await expect(page).toHaveURL(/surface=phong/);
+  await surface.selectOption({ label: 'flat cage' });
+  await expect(page.getByTestId('stats-output')).toContainText('cage (flat)');
+  await surface.selectOption({ label: 'Catmull-Clark' });
+  await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark');
+  await expect(control(page, 'flat baseline')).toBeVisible();
+  await control(page, 'flat baseline').locator('input').uncheck();
+  await expect(page).toHaveURL(/flat=0/);
+  await expect(page.getByTestId('stats-output')).toContainText('tris');
+  expect(errors).toEqual([]);
+});
+
+test('a model whose subdivision tables are refused falls back to Phong with a message', async ({ page }) => {
+  const errors = collectErrors(page);
+  // A worker that refuses every cage, as buildCatmullClark does with one it cannot handle.
+  await page.addInitScript(() => {
+    class RefusingWorker extends EventTarget {
+      onmessage: ((e: MessageEvent) => void) | null = null;
+      onerror: ((e: Event) => void) | null = null;
+      postMessage(request: { id: number }): void {
+        setTimeout(() => this.onmessage?.(new MessageEvent('message', { data: { id: request.id, ok: false, message: 'the test refuses this cage' } })), 10);
+      }
+      terminate(): void {}
+    }
+    (window as unknown as { Worker: unknown }).Worker = RefusingWorker;
+  });
+  await page.goto('/?model=torus&t=0');
+  await ready(page);
+  const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for torus' });
+  await expect(toast).toContainText('the test refuses this cage');
+  await expect(toast).toContainText('Showing the Phong surface instead');
+  await expect(page.getByTestId('stats-surface')).toContainText('Phong');
+  await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark unavailable: the test refuses this cage');
+  await expect(page.getByTestId('stats-output')).toContainText('tris');
+  expect(errors).toEqual([]);
 });
 
 /** The number of geometry builds so far, from the stats panel. */
