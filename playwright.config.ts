@@ -4,15 +4,8 @@
 // Screenshots: e2e/__screenshots__/<spec file>/<name>.png, compared strictly (2D drawing on
 // SwiftShader is deterministic on one machine; give a spec its own tolerance for 3D views).
 import { defineConfig, devices } from '@playwright/test';
+import { chromiumArgs, chromiumPath } from './chromium-flags.ts';
 
-export const chromiumArgs = [
-  '--enable-unsafe-webgpu',
-  '--enable-features=Vulkan',
-  '--use-vulkan=swiftshader',
-  '--use-webgpu-adapter=swiftshader',
-  '--use-angle=swiftshader',
-  '--no-sandbox',
-];
 
 // E2E_PORT: run beside another server (or another run) on 4173.
 const port = Number(process.env.E2E_PORT ?? 4173);
@@ -42,7 +35,7 @@ export default defineConfig({
         viewport: { width: 800, height: 600 },
         deviceScaleFactor: 1,
         launchOptions: {
-          executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+          executablePath: chromiumPath,
           args: chromiumArgs,
         },
       },
