@@ -34,7 +34,3 @@ export async function createNodeDevice(dawnToggles: string[] = []): Promise<{ de
   const info = adapter.info;
   return { device, adapterName: [info.vendor, info.architecture, info.device, info.description].filter(Boolean).join(' ') || 'unknown adapter' };
 }
-
-export function liveInstances(): number {
-  return instances.length;
-}

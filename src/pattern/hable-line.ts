@@ -38,7 +38,7 @@
  * the recursive odd-first (bit-reversed) order; K = 4 for `hable`; slides are linear in the
  * factor (so the speed is constant inside a window; see the continuity constant in the tests).
  */
-import { FRAC_BITS, ONE, factorToFixed } from './fixed.ts';
+import { ONE, factorToFixed } from './fixed.ts';
 import type { LinePattern } from './types.ts';
 
 export interface StableLineOptions {
@@ -183,5 +183,3 @@ export function stableLine(factor: number, opt: StableLineOptions, maxFactor = 6
 export function hableLine(factor: number, maxFactor = 64): LinePattern {
   return stableLine(factor, HABLE_OPTIONS, maxFactor);
 }
-
-export { FRAC_BITS };

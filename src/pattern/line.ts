@@ -15,7 +15,7 @@
  * Factors for the talk's modes are clamped to [1, maxFactor] (NaN → 1); the D3D11 modes clamp
  * and cull exactly as the reference does.
  */
-import { ONE, factorToFixed } from './fixed.ts';
+import { ONE } from './fixed.ts';
 import { d3d11Line } from './d3d11.ts';
 import { HABLE_OPTIONS, cachedSlots, stableFactorFixed, stableLineFixed, type StableLineOptions } from './hable-line.ts';
 import type { LineMode, LinePattern } from './types.ts';
@@ -90,5 +90,3 @@ export function line(mode: LineMode, factor: number, opts: LineOptions = {}): Li
 export function reversed(p: LinePattern): LinePattern {
   return { x: p.x.map((v) => ONE - v).reverse(), moving: [...p.moving].reverse() };
 }
-
-export { factorToFixed };

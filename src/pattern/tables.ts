@@ -191,8 +191,3 @@ export class PatternTables {
     return fromFrame(assembleClamped(bottom.x, left.x, right.x, merge), frame);
   }
 }
-
-/** Table size in bytes for a max factor, as `npm run bake` prints it. */
-export function tableBytes(maxFactor: number): number {
-  return bakeTables(maxFactor).byteLength;
-}
