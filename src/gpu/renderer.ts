@@ -88,9 +88,10 @@ export class Renderer {
   #wireArgsPipeline: GPUComputePipeline;
   #cageHiddenPipeline: GPURenderPipeline;
   #cageVisiblePipeline: GPURenderPipeline;
-  #wireLayout: GPUBindGroupLayout;
+  /** Two read-only storage buffers for the vertex stage: the wireframe's indices and positions,
+   * and the patch colours' source triangles and kinds share it. */
+  #vertexStorageLayout: GPUBindGroupLayout;
   #wireArgsLayout: GPUBindGroupLayout;
-  #patchLayout: GPUBindGroupLayout;
   /** One u32 kind per source triangle (a single 0 when there are none). */
   #patchKinds: GPUBuffer;
   #patchBindGroup: GPUBindGroup | null = null;
@@ -160,8 +161,8 @@ export class Renderer {
         { binding: 1, visibility: GPUShaderStage.FRAGMENT, sampler: { type: 'comparison' } },
       ],
     });
-    this.#wireLayout = device.createBindGroupLayout({
-      label: 'wireframe bind group layout',
+    this.#vertexStorageLayout = device.createBindGroupLayout({
+      label: 'vertex-stage storage bind group layout',
       entries: [
         { binding: 0, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
         { binding: 1, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
@@ -172,13 +173,6 @@ export class Renderer {
       entries: [
         { binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'read-only-storage' } },
         { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } },
-      ],
-    });
-    this.#patchLayout = device.createBindGroupLayout({
-      label: 'patch colours bind group layout',
-      entries: [
-        { binding: 0, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
-        { binding: 1, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
       ],
     });
     this.#patchKinds = device.createBuffer({ label: 'patch kinds (none)', size: 4, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
@@ -198,8 +192,8 @@ export class Renderer {
 
     const frameOnly = device.createPipelineLayout({ label: 'frame-only pipeline layout', bindGroupLayouts: [frameLayout] });
     const shaded = device.createPipelineLayout({ label: 'shaded pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout] });
-    const litLayout = device.createPipelineLayout({ label: 'lit pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout, this.#patchLayout] });
-    const wired = device.createPipelineLayout({ label: 'wireframe pipeline layout', bindGroupLayouts: [frameLayout, this.#wireLayout] });
+    const litLayout = device.createPipelineLayout({ label: 'lit pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout, this.#vertexStorageLayout] });
+    const wired = device.createPipelineLayout({ label: 'wireframe pipeline layout', bindGroupLayouts: [frameLayout, this.#vertexStorageLayout] });
 
     const module = (label: string, ...sources: string[]) => device.createShaderModule({ label, code: sources.join('\n') });
     const shadowModule = module('shadow shader', commonWGSL, shadowWGSL);
@@ -321,7 +315,7 @@ export class Renderer {
     this.#bindPatches();
     this.#wireBindGroup = this.device.createBindGroup({
       label: 'wireframe bind group',
-      layout: this.#wireLayout,
+      layout: this.#vertexStorageLayout,
       entries: [
         { binding: 0, resource: { buffer: mesh.indices } },
         { binding: 1, resource: { buffer: mesh.positions } },
@@ -360,7 +354,7 @@ export class Renderer {
     this.#patchBindGroup = mesh
       ? this.device.createBindGroup({
           label: 'patch colours bind group',
-          layout: this.#patchLayout,
+          layout: this.#vertexStorageLayout,
           entries: [
             { binding: 0, resource: { buffer: mesh.srcTri } },
             { binding: 1, resource: { buffer: this.#patchKinds } },
