@@ -70,6 +70,7 @@ class TessellationDemo extends DemoBase {
   #rebuiltThisFrame = false;
   #tessTimingInFlight = false;
   #statsDue = 0;
+  #statsTimer = 0;
   #firstFrameShown = false;
 
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
@@ -305,19 +306,24 @@ class TessellationDemo extends DemoBase {
     // turntable rebuilds every frame) go untimed rather than map the same buffer twice.
     const readTess = this.#rebuiltThisFrame && !this.#tessTimingInFlight;
     if (readTess) this.#tessTimingInFlight = true;
+    // Each read updates the stats on its own: the counts never wait on a timing read (on some
+    // drivers a timestamp buffer's map settles late or not at all).
     const quietly = <T>(p: Promise<T> | undefined, fallback: T) => (p ?? Promise.resolve(fallback)).catch(() => fallback);
-    void (async () => {
-      const [draw, tess, counts] = await Promise.all([
-        quietly(renderer?.readTimings(), {}),
-        readTess ? quietly(geometry?.readTimings(), {}) : null,
-        quietly(this.counts?.read(), null),
-      ]);
-      if (readTess) this.#tessTimingInFlight = false;
-      if (tess && Object.keys(tess).length) this.tessTimes = tess;
-      this.drawTimes = draw;
+    void quietly(this.counts?.read(), null).then((counts) => {
       if (counts) this.lastCounts = counts;
       this.updateStats();
-    })();
+    });
+    void quietly(renderer?.readTimings(), {}).then((draw) => {
+      this.drawTimes = draw;
+      this.updateStats();
+    });
+    if (readTess) {
+      void quietly(geometry?.readTimings(), {}).then((tess) => {
+        this.#tessTimingInFlight = false;
+        if (Object.keys(tess).length) this.tessTimes = tess;
+        this.updateStats();
+      });
+    }
     if (!this.#firstFrameShown && this.model) {
       this.#firstFrameShown = true;
       // Ready once the GPU has finished the first complete frame (what screenshots wait for).
@@ -328,9 +334,24 @@ class TessellationDemo extends DemoBase {
     }
   }
 
+  /**
+   * Redraw the stats panel, at most every 250 ms unless forced. A throttled call leaves a
+   * trailing one behind: the demo draws on demand, so no later frame may come to show what
+   * arrived in between (counts read back just after the last update would stay "…").
+   */
   updateStats(force = false): void {
     const now = performance.now();
-    if (!force && now < this.#statsDue) return;
+    if (!force && now < this.#statsDue) {
+      if (!this.#statsTimer) this.#statsTimer = window.setTimeout(() => {
+        this.#statsTimer = 0;
+        this.updateStats(true);
+      }, this.#statsDue - now);
+      return;
+    }
+    if (this.#statsTimer) {
+      window.clearTimeout(this.#statsTimer);
+      this.#statsTimer = 0;
+    }
     this.#statsDue = now + 250;
     const panel = document.getElementById('stats');
     if (!panel || !this.params.ui) return;
