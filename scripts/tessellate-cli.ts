@@ -1,11 +1,15 @@
 /**
  * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
- *   --out out.obj [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`
+ *   (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`
  * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
  * GPU) and writes the welded mesh: by default on the exact Catmull-Clark limit surface (with
  * --flat-baseline, blended towards the flat cage at low factors as the demo does). --params writes every output vertex's source cage face and
  * parameter in the CPU reference's addressing: JSON `{"params": [[f,u,v] | [f,k,s,t], ...]}`, or
  * with a .txt name the `f u v` / `f k s t` lines that `npm run subdiv -- --points` reads.
+ * --stats prints one JSON line on stdout: {"faces" (cage faces), "cpuPrepMs" (the CPU
+ * Catmull-Clark preparation per topology), "gpuBytes" (GPU memory of the subdivision data),
+ * "subdivisionMs", "tessellationMs" (GPU timestamps of the one rebuild: the patch build, and
+ * everything after it; null without timestamp queries), "vertices", "triangles", "adapter"}.
  * Bad input: a message and exit code 2.
  */
 import { readFileSync, writeFileSync, existsSync } from 'node:fs';
@@ -13,8 +17,28 @@ import { spawnSync } from 'node:child_process';
 import { loadCage, CageError } from '../src/mesh/index.ts';
 import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/node-device.ts';
 import { tessellateOnce, meshToObj, vertexParams, paramsToText, type HeadlessOptions } from '../src/gpu/headless.ts';
+import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
+import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
+import { faceCount, type Cage } from '../src/mesh/index.ts';
 
-const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) --out out.obj [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`;
+const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`;
+
+/** The CLI's one Catmull-Clark preparation call (CPU, per topology): the new builder of issue 9
+ * replaces this line. */
+function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
+  return buildCatmullClark(cage, mesh);
+}
+
+/**
+ * GPU bytes of the subdivision data: what Tessellator.setMesh uploads for the Catmull-Clark
+ * surface on top of the Phong path: the static table words (u32), and in the cage buffer the
+ * control points (3 f32 each) and the cage vertices' limit positions and normals (6 f32 each).
+ * Computed here from the data object because the Tessellator has no accessor for it yet; the
+ * new builder's merge switches this to one.
+ */
+function subdivisionGpuBytes(cc: CatmullClarkData, mesh: PreparedMesh): number {
+  return 4 * cc.words.length + 4 * 3 * cc.ctrlCount + 4 * 6 * mesh.vertexCount;
+}
 
 class UsageError extends Error {}
 
@@ -30,6 +54,7 @@ function parse(argv: string[]) {
   let modeSeen = 0;
   let out: string | undefined;
   let params: string | undefined;
+  let stats = false;
   let surface = 'catmull-clark';
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
@@ -61,6 +86,7 @@ function parse(argv: string[]) {
       case '--target': o.target = vec3(value(), '--target'); break;
       case '--out': out = value(); break;
       case '--params': params = value(); break;
+      case '--stats': stats = true; break;
       case '--surface': surface = value(); break;
       case '--flat-baseline': o.flatBaseline = true; break;
       default:
@@ -71,12 +97,12 @@ function parse(argv: string[]) {
   }
   if (!model) throw new UsageError('no model given');
   if (modeSeen !== 1) throw new UsageError('give exactly one of --fixed F or --adaptive');
-  if (!out) throw new UsageError('--out is required');
+  if (!out && !stats) throw new UsageError('--out (or --stats) is required');
   if (surface !== 'phong' && surface !== 'catmull-clark') throw new UsageError(`unknown surface '${surface}' (catmull-clark or phong)`);
   o.surface = surface;
   if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
   if (o.mode === 'fixed' && (o.lodScale || o.eye || o.target)) throw new UsageError('--lod, --eye and --target apply to --adaptive only');
-  return { model, o, out, params };
+  return { model, o, out, params, stats };
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -100,7 +126,8 @@ export async function main(argv: string[]): Promise<number> {
   let device: GPUDevice;
   let adapterName: string;
   try {
-    ({ device, adapterName } = await createNodeDevice());
+    // --stats reads GPU timestamps: unquantised, as the benchmark reads them.
+    ({ device, adapterName } = await createNodeDevice(args.stats ? ['disable-dawn-features=timestamp_quantization'] : []));
   } catch (e) {
     // No GPU: run again on SwiftShader, if it is installed.
     if (!process.env.VK_ICD_FILENAMES && existsSync(SWIFTSHADER_ICD)) {
@@ -110,13 +137,33 @@ export async function main(argv: string[]): Promise<number> {
     console.error(`tessellate: ${(e as Error).message}`);
     return 1;
   }
-  const r = await tessellateOnce(device, cage, args.o);
-  writeFileSync(args.out, meshToObj(r, `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`));
+  const mesh = prepareMesh(cage);
+  const started = performance.now();
+  const cc = args.o.surface === 'catmull-clark' ? prepareCatmullClark(cage, mesh) : undefined;
+  const cpuPrepMs = performance.now() - started;
+  const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc });
+  if (args.out) writeFileSync(args.out, meshToObj(r, `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`));
   if (args.params) {
     const p = vertexParams(r, cage);
     writeFileSync(args.params, args.params.endsWith('.txt') ? paramsToText(p) : JSON.stringify({ vertexCount: p.length, params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])) }) + '\n');
   }
-  console.error(`tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}; wrote ${args.out}${args.params ? ` and ${args.params}` : ''}`);
+  if (args.stats) {
+    const timed = Object.keys(r.timings).length > 0;
+    const total = Object.values(r.timings).reduce((a, b) => a + b, 0);
+    const subdivision = r.timings.subdivision ?? 0;
+    console.log(JSON.stringify({
+      faces: faceCount(cage),
+      cpuPrepMs: Number(cpuPrepMs.toFixed(3)),
+      gpuBytes: cc ? subdivisionGpuBytes(cc, mesh) : 0,
+      subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
+      tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
+      vertices: r.out.vertexCount,
+      triangles: r.out.triangleCount,
+      adapter: adapterName,
+    }));
+  }
+  const wrote = [args.out, args.params].filter(Boolean).join(' and ');
+  console.error(`tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`);
   device.destroy();
   return 0;
 }

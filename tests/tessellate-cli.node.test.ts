@@ -57,6 +57,28 @@ describe('npm run tessellate', () => {
     expect(worst).toBeLessThan(1e-5);
   });
 
+  it('--stats prints one JSON line whose counts are the cage\'s and the written OBJ\'s', () => {
+    const model = 'public/models/creased-box.obj';
+    const out = join(dir, 'stats.obj');
+    const r = run(model, '--fixed', '4', '--stats', '--out', out);
+    expect(r.status, r.stderr).toBe(0);
+    const lines = r.stdout.trim().split('\n').filter((l) => l.startsWith('{'));
+    expect(lines.length).toBe(1);
+    const s = JSON.parse(lines[0]);
+    const cageFaces = readFileSync(model, 'utf8').split('\n').filter((l) => l.startsWith('f ')).length;
+    const obj = readFileSync(out, 'utf8').split('\n');
+    expect(s.faces).toBe(cageFaces);
+    expect(s.vertices).toBe(obj.filter((l) => l.startsWith('v ')).length);
+    expect(s.triangles).toBe(obj.filter((l) => l.startsWith('f ')).length);
+    expect(s.triangles).toBe(2 * cageFaces * 16); // all quads → 2 triangles → 16 each at factor 4
+    expect(s.cpuPrepMs).toBeGreaterThan(0);
+    expect(s.gpuBytes).toBeGreaterThan(0);
+    expect(s.gpuBytes % 4).toBe(0);
+    // Dawn offers timestamp queries on Vulkan adapters, SwiftShader included.
+    expect(s.subdivisionMs).toBeGreaterThan(0);
+    expect(s.tessellationMs).toBeGreaterThan(0);
+  });
+
   it('rejects bad input with a message and exit code 2', () => {
     const bad = join(dir, 'bad.obj');
     writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');
@@ -68,6 +90,7 @@ describe('npm run tessellate', () => {
       ['public/models/torus.obj', '--adaptive', '--eye', '1,2', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--fixed', '2', '--surface', 'loop', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--fixed', '2', '--surface', 'phong', '--flat-baseline', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--fixed', '2'], // neither --out nor --stats
     ]) {
       const r = run(...args);
       expect(r.status, args.join(' ')).toBe(2);

@@ -9,7 +9,7 @@ import { readBuffer, readMesh, type MeshReadback } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
 import { BARY_CORNER1, BARY_CORNER2, type FactorParams } from './types.ts';
 import { bakeTables } from '../pattern/tables.ts';
-import { buildCatmullClark } from './cc/build.ts';
+import { buildCatmullClark, type CatmullClarkData } from './cc/build.ts';
 import type { Cage } from '../mesh/types.ts';
 
 export interface HeadlessOptions {
@@ -56,13 +56,17 @@ export interface HeadlessResult {
   timings: Record<string, number>;
 }
 
-export async function tessellateOnce(device: GPUDevice, cage: Cage, o: HeadlessOptions, tess?: Tessellator): Promise<HeadlessResult> {
-  const mesh = prepareMesh(cage);
+/** `prepared`: the mesh and Catmull-Clark data made by the caller (e.g. to time the preparation),
+ * instead of making them here. */
+export async function tessellateOnce(
+  device: GPUDevice, cage: Cage, o: HeadlessOptions, tess?: Tessellator, prepared?: { mesh: PreparedMesh; cc?: CatmullClarkData },
+): Promise<HeadlessResult> {
+  const mesh = prepared?.mesh ?? prepareMesh(cage);
   const surface = o.surface ?? 'catmull-clark';
   const own = !tess;
   const t = tess ?? Tessellator.create(device, bakeTables(64), { vertexCapacity: o.vertexCapacity, triangleCapacity: o.triangleCapacity, surface, flatBaseline: o.flatBaseline ?? false });
   try {
-    t.setMesh(mesh, t.surface === 'catmull-clark' ? buildCatmullClark(cage, mesh) : undefined);
+    t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined);
     device.pushErrorScope('validation');
     const enc = device.createCommandEncoder({ label: 'headless rebuild' });
     t.encode(enc, headlessCamera(mesh, o));
