@@ -1,5 +1,5 @@
 /**
- * `npm run bench [-- --quick] [--out BENCHMARKS.md]`: the compute tessellator per project model,
+ * `npm run bench [-- --quick] [--models a,b] [--out BENCHMARKS.md]`: the compute tessellator per project model,
  * at a fixed factor and adaptive, timed with GPU timestamps on whatever adapter Dawn finds
  * (SwiftShader here; a real GPU elsewhere). Prints a table and writes it to BENCHMARKS.md with
  * the machine it ran on.
@@ -8,8 +8,16 @@
  * only writes as many bytes as the pipeline's output, and reports the pipeline's efficiency as
  * the ratio of the two (the talk's pipeline reaches about 30 % of its GPU's write bound).
  * It also compares adaptive and fixed at equal maximum screen-space edge error.
+ *
+ * The Catmull-Clark table also takes the talk's four models (suzanne, bigguy, monsterfrog, imrod)
+ * when ../shared/cages is present (third-party cages: read from there, never copied into the
+ * project), and, where tools/osd-check/build-time.sh builds (g++ and libosd-dev), OpenSubdiv's
+ * time for the same cage measured in the same run (tools/osd-check/osd_time.cpp), with the ratio.
+ * --models limits both tables to the named models; with --models and no --out nothing is
+ * written (a partial table must not replace BENCHMARKS.md).
  */
-import { readFileSync, writeFileSync, readdirSync } from 'node:fs';
+import { existsSync, readFileSync, writeFileSync, readdirSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
 import { cpus, totalmem } from 'node:os';
 import { createNodeDevice } from '../src/gpu/node-device.ts';
 import { Tessellator } from '../src/gpu/tessellator.ts';
@@ -19,12 +27,67 @@ import { readBuffer } from '../src/gpu/readback.ts';
 import { phongMidpointOffset } from '../src/gpu/factors.ts';
 import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { loadCage } from '../src/mesh/index.ts';
+import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { timeDrawPasses } from './draw-timing.ts';
 import { mat4 } from 'gl-matrix';
 
 const REPEATS = 5;
+
+/** The talk's four models, third-party: read from here when present, never copied. */
+const TALK_CAGES = '../shared/cages';
+const TALK_MODELS = ['suzanne', 'bigguy', 'monsterfrog', 'imrod'];
+/** A model whose Catmull-Clark preparation takes longer than this is left out of the table. */
+const PREPARE_LIMIT_MS = 60_000;
+/** OpenSubdiv runs per cage (median; cheap next to the rest). */
+const OSD_REPEATS = 3;
+/** Today's table builder (src/gpu/cc/build.ts) runs out of memory on imrod (8,995 faces, 4 GB
+ * heap, issue 9): refuse large cages at once instead. The new builder removes this limit. */
+const TODAY_BUILDER_FACE_LIMIT = 4000;
+
+/**
+ * The one Catmull-Clark preparation call of the benchmark (CPU, per topology), so that the
+ * new builder of issue 9 replaces one line here. Throws for cages it cannot prepare.
+ */
+function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
+  const faces = faceCount(cage);
+  if (faces > TODAY_BUILDER_FACE_LIMIT) {
+    throw new Error(`${faces} faces: today's table builder runs out of memory above about ${TODAY_BUILDER_FACE_LIMIT} faces (issue 9)`);
+  }
+  return buildCatmullClark(cage, mesh);
+}
+
+interface OsdTiming {
+  faces: number;
+  samples: number;
+  ms_load: number;
+  ms_setup: number;
+  ms_eval: number;
+  ms_total: number;
+}
+
+/** Build tools/osd-check/osd_time (g++ against libosd); its path, or why there is none. */
+function buildOsdTimer(): { bin: string } | { reason: string } {
+  const r = spawnSync('bash', ['tools/osd-check/build-time.sh'], { encoding: 'utf8' });
+  if (r.status !== 0) {
+    const why = (r.stderr || r.error?.message || '').trim().split('\n').slice(-1)[0];
+    return { reason: `the OpenSubdiv timing program did not build (${why || `exit ${r.status}`}); is libosd-dev installed?` };
+  }
+  return { bin: r.stdout.trim().split('\n').slice(-1)[0] };
+}
+
+/** OpenSubdiv on the same cage in its own process: load, exact surfaces of every face and
+ * evaluation at 9×9 samples per (sub-)face, timed in-process; median of `repeats` runs. */
+function timeOpenSubdiv(bin: string, objPath: string, repeats: number): OsdTiming | string {
+  const runs: OsdTiming[] = [];
+  for (let i = 0; i < repeats; i++) {
+    const r = spawnSync(bin, [objPath], { encoding: 'utf8', timeout: 120_000 });
+    if (r.status !== 0) return `osd_time failed on ${objPath}: ${(r.stderr || r.error?.message || `exit ${r.status}`).trim()}`;
+    runs.push(JSON.parse(r.stdout) as OsdTiming);
+  }
+  runs.sort((a, b) => a.ms_total - b.ms_total);
+  return runs[Math.floor(runs.length / 2)];
+}
 
 interface Run {
   vertices: number;
@@ -112,7 +175,9 @@ function fixedFactorForError(mesh: PreparedMesh, o: HeadlessOptions, errorPixels
 export async function main(argv: string[]): Promise<number> {
   const quick = argv.includes('--quick');
   const outIdx = argv.indexOf('--out');
-  const outFile = outIdx >= 0 ? argv[outIdx + 1] : 'BENCHMARKS.md';
+  const modelsIdx = argv.indexOf('--models');
+  const only = modelsIdx >= 0 ? new Set((argv[modelsIdx + 1] ?? '').split(',').map((m) => m.trim().replace(/\.obj$/, '')).filter(Boolean)) : undefined;
+  const outFile = outIdx >= 0 ? argv[outIdx + 1] : only ? undefined : 'BENCHMARKS.md';
   const fixedFactor = quick ? 8 : 16;
   const repeats = quick ? 2 : REPEATS;
   const { device, adapterName } = await createNodeDevice(['disable-dawn-features=timestamp_quantization']);
@@ -122,7 +187,26 @@ export async function main(argv: string[]): Promise<number> {
   }
   const tess = Tessellator.create(device, bakeTables(64));
 
-  const models = readdirSync('public/models').filter((f) => f.endsWith('.obj')).sort();
+  const models = readdirSync('public/models').filter((f) => f.endsWith('.obj')).sort()
+    .filter((f) => !only || only.has(f.replace('.obj', '')));
+  // The Catmull-Clark table: the project's models, then the talk's where ../shared is present.
+  const ccModels: { name: string; path: string }[] = models.map((f) => ({ name: f.replace('.obj', ''), path: `public/models/${f}` }));
+  if (existsSync(TALK_CAGES)) {
+    for (const name of TALK_MODELS) {
+      const path = `${TALK_CAGES}/${name}.obj`;
+      if ((!only || only.has(name)) && existsSync(path)) ccModels.push({ name, path });
+    }
+  } else console.log(`note: ${TALK_CAGES} not found; the talk's four models are left out`);
+  if (only) {
+    const known = new Set(ccModels.map((m) => m.name));
+    const unknown = [...only].filter((m) => !known.has(m));
+    if (unknown.length) {
+      console.error(`bench: unknown model(s) ${unknown.join(', ')}`);
+      return 2;
+    }
+  }
+  const osd = buildOsdTimer();
+  if ('reason' in osd) console.log(`note: no OpenSubdiv column: ${osd.reason}`);
   const rows: string[] = [];
   const lodScale = 4;
   const adaptive: HeadlessOptions = { mode: 'adaptive', lodScale };
@@ -159,18 +243,43 @@ export async function main(argv: string[]): Promise<number> {
   const cc = Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' });
   const talk: string[] = [];
   const draws: string[] = [];
-  for (const file of models) {
-    const cage = loadCage(readFileSync(`public/models/${file}`, 'utf8')).cage;
+  const skipped: string[] = [];
+  for (const { name, path } of ccModels) {
+    const cage = loadCage(readFileSync(path, 'utf8')).cage;
+    const faces = faceCount(cage);
+    const o = 'bin' in osd ? timeOpenSubdiv(osd.bin, path, OSD_REPEATS) : undefined;
+    if (typeof o === 'string') console.log(`note: ${o}`);
+    const osdMs = o && typeof o !== 'string' ? o.ms_total : undefined;
+    const osdCells = (cpuMs: number | undefined) =>
+      osdMs === undefined ? '— | —' : `${osdMs.toFixed(osdMs < 10 ? 2 : 1)} | ${cpuMs === undefined ? '—' : `${(cpuMs / osdMs).toFixed(1)}×`}`;
     const mesh = prepareMesh(cage);
     const started = performance.now();
-    const data = buildCatmullClark(cage, mesh);
+    let data: CatmullClarkData;
+    try {
+      data = prepareCatmullClark(cage, mesh);
+    } catch (e) {
+      const why = `${name}: Catmull-Clark preparation failed: ${(e as Error).message}`;
+      console.log(`skipped ${why}`);
+      skipped.push(why);
+      talk.push(`| ${name} | ${faces} |${' — |'.repeat(11)} skipped | ${osdCells(undefined)} |`);
+      console.log(talk[talk.length - 1]);
+      continue;
+    }
     const buildMs = performance.now() - started;
+    if (buildMs > PREPARE_LIMIT_MS) {
+      const why = `${name}: Catmull-Clark preparation took ${(buildMs / 1000).toFixed(0)} s (limit ${PREPARE_LIMIT_MS / 1000} s)`;
+      console.log(`skipped ${why}`);
+      skipped.push(why);
+      talk.push(`| ${name} | ${faces} |${' — |'.repeat(11)} ${buildMs.toFixed(0)} | ${osdCells(buildMs)} |`);
+      console.log(talk[talk.length - 1]);
+      continue;
+    }
     const run = (o: HeadlessOptions) => timeRebuild(device, cc, mesh, o, repeats, data);
     const adaptiveRun = await run(adaptive);
     const fixedRun = await run({ mode: 'fixed', fixedFactor }); // last, so the draw passes see it
     const sub = fixedRun.stages.subdivision ?? 0;
     const tessMs = fixedRun.total - sub;
-    talk.push(`| ${file.replace('.obj', '')} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} |`);
+    talk.push(`| ${name} | ${faces} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} | ${osdCells(buildMs)} |`);
     const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
     const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
     const r = mesh.size / 2;
@@ -178,12 +287,20 @@ export async function main(argv: string[]): Promise<number> {
     const lightProj = mat4.orthoZO(mat4.create(), -r, r, -r, r, 0.1 * r, 8 * r);
     const { litMs, shadowMs } = await timeDrawPasses(device, cc.output, cam.viewProj, mat4.multiply(mat4.create(), lightProj, lightView) as Float32Array, repeats);
     const perM = 1e6 / fixedRun.triangles;
-    draws.push(`| ${file.replace('.obj', '')} | ${fixedRun.triangles} | ${(fixedRun.total * perM).toFixed(2)} | ${(litMs * perM).toFixed(2)} | ${(shadowMs * perM).toFixed(2)} | ${((litMs + 4 * shadowMs) * perM).toFixed(2)} |`);
+    draws.push(`| ${name} | ${fixedRun.triangles} | ${(fixedRun.total * perM).toFixed(2)} | ${(litMs * perM).toFixed(2)} | ${(shadowMs * perM).toFixed(2)} | ${((litMs + 4 * shadowMs) * perM).toFixed(2)} |`);
     console.log(talk[talk.length - 1]);
   }
   cc.destroy();
   device.destroy();
 
+  const osdNote = 'bin' in osd
+    ? `*OpenSubdiv ms* is OpenSubdiv (libosd) on the same cage in the same run, in its own process on the same machine
+(tools/osd-check/osd_time.cpp, timed in-process, median of ${OSD_REPEATS}): reading the OBJ, the topology refiner and Bfr
+surface factory, an exact \`Bfr::Surface<double>\` (approximation level 10) for every face, and 9×9 evaluations per
+(sub-)face. *CPU build / OpenSubdiv* is the ratio of the two CPU times (issue 9's target: ≤ 1).
+`
+    : `(No OpenSubdiv column: ${osd.reason})
+`;
   const machine = `${cpus()[0]?.model ?? 'unknown CPU'} (${cpus().length} cores, ${(totalmem() / 2 ** 30).toFixed(0)} GiB)`;
   const doc = `# Benchmarks
 
@@ -208,10 +325,11 @@ The exact limit surface (flat baseline on, as in the demo). *subdivision* is the
 *tessellation* is everything after it (factors from the limit positions and normals, counts,
 budget, weld, plan, emit with the surface evaluated per vertex). Fixed factor ${fixedFactor}; adaptive at
 LOD ${lodScale}. *CPU build ms* is the one-off CPU construction of the patch tables per topology.
-
-| model | out tris (fixed) | subdivision ms | tessellation ms | sub + tess ms | Mtris/ms | fixed verts | adaptive verts | adaptive / fixed | fixed tris | adaptive tris | adaptive / fixed | CPU build ms |
-|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
+${osdNote}
+| model | cage faces | out tris (fixed) | subdivision ms | tessellation ms | sub + tess ms | Mtris/ms | fixed verts | adaptive verts | adaptive / fixed | fixed tris | adaptive tris | adaptive / fixed | CPU build ms | OpenSubdiv ms (same machine) | CPU build / OpenSubdiv |
+|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
 ${talk.join('\n')}
+${skipped.length ? `\nLeft out: ${skipped.join('; ')}.\n` : ''}
 
 ## Drawing the stored mesh: ms per 1M triangles
 
@@ -231,7 +349,9 @@ The adaptive rule keeps every visible edge's Phong chord error below 1/${lodScal
 |---|---:|---:|---:|---:|---:|---:|
 ${equalError.join('\n')}
 `;
-  writeFileSync(outFile, doc);
-  console.log(`\nwritten to ${outFile}`);
+  if (outFile) {
+    writeFileSync(outFile, doc);
+    console.log(`\nwritten to ${outFile}`);
+  } else console.log('\n--models without --out: nothing written');
   return 0;
 }
