@@ -132,12 +132,12 @@ export function randomFaceParams(cage: Cage, n: number, seed = 7): [number, numb
 }
 
 /** Position (/ bbox diagonal) and normal (degrees) errors of an ACC surface against exact CC. */
-export function accErrors(S: AccSurface, exact: ExactAt, params: [number, number, number][]): ErrorRow {
+export function accErrors(S: AccSurface, exact: ExactAt | ReturnType<ExactAt['at']>[], params: [number, number, number][]): ErrorRow {
   const diag = bboxDiagonal(S.cage.positions);
   let maxP = 0, sp = 0, maxN = 0, sn = 0, nn = 0, nan = 0;
-  for (const [f, u, v] of params) {
-    const a = S.evaluate(f, u, v), r = exact.at(f, u, v);
-    if (![...a.P, ...a.N].every(Number.isFinite)) { nan++; continue; }
+  params.forEach(([f, u, v], i) => {
+    const a = S.evaluate(f, u, v), r = Array.isArray(exact) ? exact[i] : exact.at(f, u, v);
+    if (![...a.P, ...a.N].every(Number.isFinite)) { nan++; return; }
     const dp = Math.hypot(a.P[0] - r.P[0], a.P[1] - r.P[1], a.P[2] - r.P[2]) / diag;
     maxP = Math.max(maxP, dp);
     sp += dp * dp;
@@ -147,6 +147,6 @@ export function accErrors(S: AccSurface, exact: ExactAt, params: [number, number
       sn += dn * dn;
       nn++;
     }
-  }
+  });
   return { samples: params.length, maxP, rmsP: Math.sqrt(sp / Math.max(1, params.length)), maxN, rmsN: Math.sqrt(sn / Math.max(1, nn)), nan };
 }

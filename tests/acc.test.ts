@@ -289,6 +289,22 @@ describe('across-edge continuity (notes §8.4–8.5)', () => {
   });
 });
 
+describe('errors against exact Catmull-Clark (notes §5)', () => {
+  it('cube after one CC step, 9×9 grid per face: the notes\' measured max position / normal errors', () => {
+    const cage = ccStep(cube());
+    const exact = new ExactAt(cage);
+    const params: [number, number, number][] = [];
+    for (let f = 0; f < 24; f++) for (let j = 0; j <= 8; j++) for (let i = 0; i <= 8; i++) params.push([f, i / 8, j / 8]);
+    const expected: Record<string, [number, number]> = { 'bezier-acc': [0.0038, 1.79], 'gregory-acc': [0.0039, 1.20], 'pm-acc': [0.0051, 1.11] };
+    for (const s of ACC_SCHEMES) {
+      const e = accErrors(new AccSurface(cage, s), exact, params);
+      expect(e.nan).toBe(0);
+      expect(Math.abs(e.maxP - expected[s][0]), s).toBeLessThan(0.000055); // the notes round to 0.01%
+      expect(Math.abs(e.maxN - expected[s][1]), s).toBeLessThan(0.0055); // and to 0.01°
+    }
+  });
+});
+
 describe('what the schemes refuse or ignore', () => {
   it('n-gons and boundaries are refused with a clear error; creases are ignored with a warning', () => {
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(AccError);

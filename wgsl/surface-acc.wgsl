@@ -7,7 +7,10 @@
 //
 // evalAccPatch(patchId, u, v): quads at (u, v) with corners c0..c3 at (0,0), (1,0), (1,1), (0,1);
 // triangles at (u, v) = (w1, w2), the barycentric weights of face corners 1 and 2. Returns the
-// position and the unit shading normal (outward for counter-clockwise faces):
+// position and the unit shading normal (outward for counter-clockwise faces). From the
+// tessellator's (triangle, weights w) on a quad split along its 0–2 diagonal (src/gpu/prepare.ts):
+// (c0, c1, c2) → (u, v) = (w1 + w2, w2), (c0, c2, c3) → (w1, w1 + w2) (src/gpu/face-params.ts);
+// on a triangle face (u, v) = (w1, w2). Kinds:
 //   REGULAR       bicubic Bézier, normal = ∂u × ∂v
 //   BEZIER        bicubic geometry patch; normal = T_u × T_v of the two tangent patches
 //   GREGORY_QUAD  the 16-point Bézier with the rational interior blends; normal of that frozen
