@@ -50,6 +50,7 @@ struct Corner {
   rp: vec3<f32>, rm: vec3<f32>, // Gregory transversals (into the face) for the edges toward e_0, e_1
   eh0: vec3<f32>, eh1: vec3<f32>, // Pm valence-4-rule edge points toward e_0, e_1
   tp0: vec3<f32>, tp1: vec3<f32>, // Pm tangent points t^(0), t^(1)
+  quadNext: bool, quadPrev: bool, // the face across the edge toward e_0 (ring face n−1) / e_1 (face 1) is a quad
 }
 
 struct Ring { o: u32, n: u32, rot: u32, v: vec3<f32>, mid: bool }
@@ -117,6 +118,8 @@ fn cornerInfo(vert: u32, rot: u32, mid: bool) -> Corner {
   k.m1 = 0.5 * (k.f0 + f1);
   k.rp = (e1 - en) / 3.0 + (d0 - dn) / 6.0;
   k.rm = (e0 - e2) / 3.0 + (d0 - d1) / 6.0;
+  k.quadNext = accStatic[bp.offRingData + r.o + n + (rot + n - 1u) % n] != TRI_FACE;
+  k.quadPrev = accStatic[bp.offRingData + r.o + n + (rot + 1u) % n] != TRI_FACE;
   k.tp0 = k.p + sc0 / (nf * lambda);
   k.tp1 = k.p + sc1 / (nf * lambda);
   return k;
@@ -208,8 +211,10 @@ fn pmPatch(m: u32, ls: bool) {
   var eh1: array<vec3<f32>, 4>;
   for (var k = 0u; k < m; k++) {
     cc[k] = C[k].v + C[k].p;
-    tp[k] = C[k].v + select(C[k].tp0, C[k].m0, ls);
-    tm[k] = C[k].v + select(C[k].tp1, C[k].m1, ls);
+    // Bezier-ACC triangles: Loop–Schaefer edge points on edges shared with a quad (the quad's
+    // boundary curve), Pm tangent points on triangle–triangle edges.
+    tp[k] = C[k].v + select(C[k].tp0, C[k].m0, ls && C[k].quadNext);
+    tm[k] = C[k].v + select(C[k].tp1, C[k].m1, ls && C[k].quadPrev);
     eh0[k] = C[k].v + C[k].eh0;
     eh1[k] = C[k].v + C[k].eh1;
   }

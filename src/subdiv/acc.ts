@@ -15,11 +15,14 @@
  *   - λ_n, σ_n, cos tables: the closed forms in f64 (not the Pm code's rounded σ table), any valence.
  *   - Diagonal D_i of a ring face: quad = opposite vertex; triangle = centroid (Bezier, Gregory:
  *     the exact CC limit) or edge midpoint (Pm, as nvmesh; its corners next to triangles miss the limit).
- *   - Triangles in a Bezier-ACC cage: the 19-point Pm triangle (as the sample), but built on the
- *     Loop–Schaefer boundary (corner = exact limit, edge points = the quads' M_j, kind PM_TRI_LS).
+ *   - Triangles in a Bezier-ACC cage: the 19-point Pm triangle (as the sample), with c = the exact
+ *     limit (centroid rule) and, on every edge shared with a quad, the quad's Loop–Schaefer edge
+ *     points M_j as tangent points (kind PM_TRI_LS); on triangle–triangle edges the Pm tangent points.
  *     The sample's plain Pm triangle has a different boundary cubic from the Bezier quad next to it
- *     and cracks (notes §2.5); with this one, the cage stays watertight. Its normal is the Pm
- *     triangle's own, so across a Bezier quad–triangle edge the normal is not continuous.
+ *     and cracks (notes §2.5); this one is watertight. Its normal is the Pm triangle's own: across
+ *     quad–triangle edges, and triangle–triangle edges ending at a vertex that also has quads (the
+ *     M_j are not coplanar with the Pm tangent points), the normal is not continuous (creature:
+ *     up to ≈15°; with M_j on every edge it was 34°).
  *
  * What is not supported, and why (stated, not hidden):
  *   - Faces with more than 4 corners: refused (AccError). The sample only has quads and triangles;
@@ -269,6 +272,9 @@ export interface CornerInfo {
   eh1: V3;
   tp0: V3;
   tp1: V3;
+  /** The face across the edge toward e_0 (local ring face n−1) / toward e_1 (ring face 1) is a quad. */
+  quadNext: boolean;
+  quadPrev: boolean;
 }
 
 /**
@@ -280,6 +286,7 @@ export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, r
   const pt = (i: number): V3 => [P[3 * i], P[3 * i + 1], P[3 * i + 2]];
   const v = pt(vert);
   const e: V3[] = [], D: V3[] = [];
+  const isQuad = (j: number) => T.ringData[o + n + ((rot + j) % n)] !== TRI_FACE;
   for (let j = 0; j < n; j++) e.push(pt(T.ringData[o + ((rot + j) % n)]));
   for (let j = 0; j < n; j++) {
     const d = T.ringData[o + n + ((rot + j) % n)];
@@ -317,7 +324,7 @@ export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, r
     n, k, v, p, t0: tan(0), t1: tan(1), f0, m0: mul(add(fm, f0), 0.5), m1: mul(add(f0, f1), 0.5),
     rp: add(mul(subv(e[1], e[n - 1]), 1 / 3), mul(subv(D[0], D[n - 1]), 1 / 6)),
     rm: add(mul(subv(e[0], e[2 % n]), 1 / 3), mul(subv(D[0], D[1]), 1 / 6)),
-    eh0: ehs[0], eh1: ehs[1], tp0: tpm(0), tp1: tpm(1),
+    eh0: ehs[0], eh1: ehs[1], tp0: tpm(0), tp1: tpm(1), quadNext: isQuad(n - 1), quadPrev: isQuad(1),
   };
 }
 
@@ -401,7 +408,9 @@ function gregoryPatch(C: CornerInfo[]): V3[] {
 function pmPatch(C: CornerInfo[], face: V3[], loopSchaefer: boolean): V3[] {
   const m = C.length, mu = m === 4 ? 1 : 1.5;
   const cc = C.map((ci) => ci.p);
-  const tp = C.map((ci) => (loopSchaefer ? ci.m0 : ci.tp0)), tm = C.map((ci) => (loopSchaefer ? ci.m1 : ci.tp1));
+  // Bezier-ACC triangles: the Loop–Schaefer edge points on edges shared with a (Bezier) quad, so the
+  // boundary curves agree; the Pm tangent points on triangle–triangle edges (coplanar round a vertex).
+  const tp = C.map((ci) => (loopSchaefer && ci.quadNext ? ci.m0 : ci.tp0)), tm = C.map((ci) => (loopSchaefer && ci.quadPrev ? ci.m1 : ci.tp1));
   const phi = face.map((P, k) => m === 4
     ? comb([4 / 9, P], [2 / 9, face[(k + 1) % 4]], [2 / 9, face[(k + 3) % 4]], [1 / 9, face[(k + 2) % 4]])
     : comb([4 / 9, P], [2.5 / 9, face[(k + 1) % 3]], [2.5 / 9, face[(k + 2) % 3]]));
