@@ -2,8 +2,8 @@
  * ACC patches on a real WebGPU adapter (Dawn in Node, headless Chromium; SwiftShader in CI): the
  * patch build (wgsl/acc-build.wgsl) against the f64 yardstick (src/subdiv/acc.ts) point by point,
  * and the surface (wgsl/surface-acc.wgsl evalAccPatch) at a few hundred random (face, u, v) per
- * scheme, corners and edges included, on small project models and the cube of the notes' §8
- * reference vectors. f32 tolerances, relative to the bounding-box diagonal: control points and
+ * scheme, corners and edges included, on small project models, the cube of the notes' §8
+ * reference vectors and an all-triangle octahedron. f32 tolerances, relative to the bounding-box diagonal: control points and
  * positions 2e-6; normals 0.02°. No NaN anywhere. A moved cage re-runs only the build.
  */
 import { describe, it, expect, afterAll } from 'vitest';
@@ -11,7 +11,7 @@ import { getDevice, releaseDevice } from './gpu-device.ts';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
 import { ACC_SCHEMES, AccSurface } from '../src/subdiv/acc.ts';
 import { AccPatches } from '../src/gpu/acc.ts';
-import { bboxDiagonal, randomFaceParams } from './acc-checks.ts';
+import { bboxDiagonal, octahedron, randomFaceParams } from './acc-checks.ts';
 import { angleBetween } from './tess-checks.ts';
 import { cube } from './subdiv-fixtures.ts';
 import creature from '../public/models/creature.obj?raw';
@@ -43,7 +43,7 @@ function params(cage: Cage, n: number, seed: number): [number, number, number][]
 }
 
 const models: [string, () => Cage][] = [
-  ['cube', () => cube()], ['creature', () => loadCage(creature).cage], ['torus', () => loadCage(torus).cage], ['creased-box', () => loadCage(creasedBox).cage],
+  ['cube', () => cube()], ['octahedron', octahedron], ['creature', () => loadCage(creature).cage], ['torus', () => loadCage(torus).cage], ['creased-box', () => loadCage(creasedBox).cage],
 ];
 
 describe('ACC patches on the GPU against the f64 yardstick', () => {

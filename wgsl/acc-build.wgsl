@@ -278,6 +278,15 @@ fn buildPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation
   for (var k = 0u; k < m; k++) {
     let b = bp.offCorners + 8u * f + 2u * k;
     C[k] = cornerInfo(accStatic[b], accStatic[b + 1u], mid);
+    if (kind == KIND_PM_TRI_LS) {
+      // Exact corner and Loop–Schaefer points (centroid rule) but the midpoint rule's Pm edge and
+      // tangent points, whose twist terms cancel across triangle–triangle edges (src/subdiv/acc.ts).
+      let cm = cornerInfo(accStatic[b], accStatic[b + 1u], true);
+      C[k].eh0 = cm.eh0;
+      C[k].eh1 = cm.eh1;
+      C[k].tp0 = C[k].p + (cm.tp0 - cm.p);
+      C[k].tp1 = C[k].p + (cm.tp1 - cm.p);
+    }
   }
   switch (kind) {
     case 0u: { geometryPatch(); }

@@ -17,7 +17,8 @@
  *     the exact CC limit) or edge midpoint (Pm, as nvmesh; its corners next to triangles miss the limit).
  *   - Triangles in a Bezier-ACC cage: the 19-point Pm triangle (as the sample), with c = the exact
  *     limit (centroid rule) and, on every edge shared with a quad, the quad's Loop–Schaefer edge
- *     points M_j as tangent points (kind PM_TRI_LS); on triangle–triangle edges the Pm tangent points.
+ *     points M_j as tangent points (kind PM_TRI_LS); on triangle–triangle edges the Pm tangent points
+ *     (of the midpoint rule, which the Pm twist terms need: an all-triangle cage is G1).
  *     The sample's plain Pm triangle has a different boundary cubic from the Bezier quad next to it
  *     and cracks (notes §2.5); this one is watertight. Its normal is the Pm triangle's own: across
  *     quad–triangle edges, and triangle–triangle edges ending at a vertex that also has quads (the
@@ -453,8 +454,17 @@ export function buildPatch(T: AccTopology, P: ArrayLike<number>, f: number): V3[
   const C: CornerInfo[] = [];
   const face: V3[] = [];
   for (let k = 0; k < m; k++) {
-    const v = T.corners[8 * f + 2 * k];
-    C.push(cornerInfo(T, P, v, T.corners[8 * f + 2 * k + 1], mid));
+    const v = T.corners[8 * f + 2 * k], rot = T.corners[8 * f + 2 * k + 1];
+    const ci = cornerInfo(T, P, v, rot, mid);
+    if (kind === KIND_PM_TRI_LS) {
+      // Exact corner and Loop–Schaefer points (centroid rule), but the Pm edge and tangent points
+      // of the midpoint rule: its twist terms 3(φ − ê)/S cancel across triangle–triangle edges
+      // only with the ê that match the Pm face points φ (with centroid-rule ê: 4.6° kinks).
+      const cm = cornerInfo(T, P, v, rot, true);
+      ci.eh0 = cm.eh0; ci.eh1 = cm.eh1;
+      ci.tp0 = add(ci.p, subv(cm.tp0, cm.p)); ci.tp1 = add(ci.p, subv(cm.tp1, cm.p));
+    }
+    C.push(ci);
     face.push([P[3 * v], P[3 * v + 1], P[3 * v + 2]]);
   }
   switch (kind) {
