@@ -2,9 +2,10 @@
  * ACC patches on a real WebGPU adapter (Dawn in Node, headless Chromium; SwiftShader in CI): the
  * patch build (wgsl/acc-build.wgsl) against the f64 yardstick (src/subdiv/acc.ts) point by point,
  * and the surface (wgsl/surface-acc.wgsl evalAccPatch) at a few hundred random (face, u, v) per
- * scheme, corners and edges included, on small project models, the cube of the notes' §8
- * reference vectors and an all-triangle octahedron. f32 tolerances, relative to the bounding-box diagonal: control points and
- * positions 2e-6; normals 0.02°. No NaN anywhere. A moved cage re-runs only the build.
+ * scheme, corners, edges and the c-patch diagonal included, on the cube of the notes' §8 reference
+ * vectors, an all-triangle octahedron and small project models. f32 tolerances, relative to the
+ * bounding-box diagonal: control points and positions 2e-6; normals 0.02° (measured: ≤ 2e-7 and
+ * ≤ 0.003°). No NaN anywhere. A moved cage re-runs only the build and matches again.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { getDevice, releaseDevice } from './gpu-device.ts';
