@@ -12,6 +12,8 @@ import {
 } from '../src/subdiv/acc.ts';
 import { ExactAt, accErrors, bboxDiagonal, ccStep, continuity, octahedron, prism, randomFaceParams } from './acc-checks.ts';
 import { cube, triPrism } from './subdiv-fixtures.ts';
+import { accFaceParam } from '../src/gpu/acc.ts';
+import { prepareMesh } from '../src/gpu/prepare.ts';
 import creature from '../public/models/creature.obj?raw';
 import torus from '../public/models/torus.obj?raw';
 import icosphere from '../public/models/icosphere.obj?raw';
@@ -23,6 +25,7 @@ const close = (a: ArrayLike<number>, b: ArrayLike<number>, tol: number) => {
 };
 const dist = (a: V3, b: V3) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 const creatureCage = loadCage(creature).cage;
+const exactCreature = new ExactAt(creatureCage);
 /** The face of the cube with corners (−1,−1,1), (1,−1,1), (1,1,1), (−1,1,1) as P0..P3. */
 const cubeTop = () => {
   const c = cube();
@@ -303,6 +306,27 @@ describe('errors against exact Catmull-Clark (notes §5)', () => {
       expect(e.nan).toBe(0);
       expect(Math.abs(e.maxP - expected[s][0]), s).toBeLessThan(0.000055); // the notes round to 0.01%
       expect(Math.abs(e.maxN - expected[s][1]), s).toBeLessThan(0.0055); // and to 0.01°
+    }
+  });
+});
+
+describe('the tessellator\'s (triangle, weights) → ACC (face, u, v)', () => {
+  it('every prepared triangle maps its corners onto its face\'s corners', () => {
+    const mesh = prepareMesh(creatureCage);
+    const S = new AccSurface(creatureCage, 'gregory-acc');
+    for (let t = 0; t < mesh.triangleCount; t++) {
+      for (let i = 0; i < 3; i++) {
+        const w: [number, number, number] = [0, 0, 0];
+        w[i] = 1;
+        const [f, u, v] = accFaceParam(mesh, creatureCage, t, w);
+        const P = S.evaluate(f, u, v).P, c = mesh.triVerts[3 * t + i];
+        // The corner's limit position: the exact reference's at that vertex.
+        expect(dist(P, exactCreature.at(f, u, v).P)).toBeLessThan(1e-12);
+        const o = creatureCage.faceOffsets[f], m = creatureCage.faceOffsets[f + 1] - o;
+        const k = [...Array(m).keys()].find((j) => creatureCage.faceIndices[o + j] === c)!;
+        const expected = m === 4 ? [[0, 0], [1, 0], [1, 1], [0, 1]][k] : [[0, 0], [1, 0], [0, 1]][k];
+        close([u, v], expected, 1e-15);
+      }
     }
   });
 });

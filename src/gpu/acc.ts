@@ -24,6 +24,8 @@ import surfaceWgsl from '../../wgsl/surface-acc.wgsl?raw';
 import type { Cage, Topology } from '../mesh/index.ts';
 import { type AccScheme, type AccTopology, KIND_POINTS, buildAccTopology, valenceTable } from '../subdiv/acc.ts';
 import { readBuffer } from './readback.ts';
+import { faceParam } from './face-params.ts';
+import type { PreparedMesh } from './prepare.ts';
 
 const WG = 64;
 const GRID_X = 65535;
@@ -38,6 +40,30 @@ export function accBindingsWgsl(group: number, patchesBinding: number, pointsBin
 
 /** The evaluator's WGSL (append after accBindingsWgsl). */
 export const ACC_SURFACE_WGSL: string = surfaceWgsl;
+
+/**
+ * The ACC parameter (face, u, v) of the tessellator's point (triangle t, weights w): quads as
+ * face-params.ts (the 0–2 diagonal split), triangles (u, v) = the weights of face corners 1 and 2.
+ * The exact reference takes the same point through faceParam, so errors are measured at one parameter.
+ */
+export function accFaceParam(mesh: PreparedMesh, cage: Cage, t: number, w: readonly [number, number, number]): [number, number, number] {
+  const face = mesh.triFace[t];
+  const start = cage.faceOffsets[face], m = cage.faceOffsets[face + 1] - start;
+  if (m === 4) {
+    const fp = faceParam(mesh, cage, t, w);
+    if (!('u' in fp)) throw new Error('quad without (u, v)');
+    return [face, fp.u, fp.v];
+  }
+  if (m !== 3) throw new Error(`face ${face} has ${m} corners: no ACC patch`);
+  const W = [0, 0, 0];
+  for (let i = 0; i < 3; i++) {
+    const v = mesh.triVerts[3 * t + i];
+    const k = [0, 1, 2].find((j) => cage.faceIndices[start + j] === v);
+    if (k === undefined) throw new Error(`triangle ${t} is not on face ${face}`);
+    W[k] += w[i];
+  }
+  return [face, W[1], W[2]];
+}
 
 const buildPipelines = new WeakMap<GPUDevice, GPUComputePipeline>();
 const samplePipelines = new WeakMap<GPUDevice, GPUComputePipeline>();
