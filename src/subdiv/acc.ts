@@ -29,9 +29,9 @@
  *   - Faces with more than 4 corners: refused (AccError). The sample only has quads and triangles;
  *     a split would change the neighbours' rings and is not the schemes' own construction.
  *   - Boundaries and holes: refused. The notes could not verify the nvmesh boundary rules (§9), and
- *     the papers' boundary stencils were not available; none of the three schemes is built here
- *     on an open cage rather than built wrong.
- *   - Creases (edge/vertex sharpness): none of the three schemes has them (the sample ignores them):
+ *     the papers' boundary stencils were not available to us: open cages are refused rather than
+ *     built wrong (scripts/acc-errors.ts lists which models this excludes).
+ *   - Creases (edge/vertex sharpness): none of the three schemes has them (nor has the sample):
  *     the surface is built smooth and a warning is returned.
  *
  * ---------------------------------------------------------------------------------------------------
