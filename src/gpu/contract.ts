@@ -1,0 +1,231 @@
+/**
+ * What the TypeScript and the WGSL must agree on, declared once. Each declaration gives both
+ * sides: the WGSL text that is prepended to the shaders, and the TypeScript that writes or reads
+ * the same bytes. Nothing here is counted by hand twice.
+ *
+ *   constants     shared numbers (workgroup sizes, the dispatch grid's width, sentinels), exported
+ *                 as TypeScript values and as a WGSL `const` prelude (constantsWgsl)
+ *   packed words  bit-field specs (defineBits): WGSL getters `word_field(w)` and a packer
+ *                 `word_pack(...)`, and the TypeScript pack/unpack of the same bits
+ *   uniforms      uniform structs (defineStruct in layout.ts): the WGSL struct and its byte offsets
+ *   bindings      the renderer's bind group layouts and which pipeline uses which, as the
+ *                 descriptors the renderer creates (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS)
+ *
+ * The compute tessellator's work layout, its Params and its passes' bindings still live in
+ * tessellator.ts; they are meant to move here with the same tools (defineStruct for Params,
+ * defineBits for the Catmull-Clark node word and the table header, bind-group declarations
+ * like the renderer's for PASS_BINDINGS). tests/contract.test.ts parses the generated WGSL back
+ * and checks it against the TypeScript views; tests/contract.gpu.test.ts runs it through a real
+ * WGSL compiler.
+ */
+import { defineStruct } from './layout.ts';
+
+// ---------------------------------------------------------------------------------------------
+// Constants
+
+/** Threads per workgroup of the tessellator's one-thread-per-item passes. */
+export const WORKGROUP_SIZE = 64;
+/** Threads per workgroup of the prefix-sum passes (wgsl/scan.wgsl). */
+export const SCAN_WORKGROUP_SIZE = 256;
+/** Widest dispatch in x (WebGPU's default maxComputeWorkgroupsPerDimension); wider ones fold into y. */
+export const GRID_X = 65535;
+
+/** The numbers every shader may read, by their WGSL names (all u32). */
+export const SHARED_CONSTANTS = { WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE, GRID_X } as const;
+
+/** `const NAME: u32 = value;` for each entry (u32 only: the shared numbers are counts and sizes). */
+export function wgslConstants(constants: Readonly<Record<string, number>>): string {
+  return Object.entries(constants)
+    .map(([name, value]) => {
+      if (!Number.isInteger(value) || value < 0 || value > 0xffffffff) throw new Error(`${name} = ${value} is not a u32`);
+      return `const ${name}: u32 = ${value}u;`;
+    })
+    .join('\n')
+    .concat('\n');
+}
+
+/** The WGSL prelude of the shared constants. */
+export const constantsWgsl = wgslConstants(SHARED_CONSTANTS);
+
+// ---------------------------------------------------------------------------------------------
+// Packed words
+
+/** A bit field: its lowest bit and its width. */
+export type BitRange = readonly [at: number, bits: number];
+
+export interface BitWord<K extends string> {
+  readonly name: string;
+  readonly fields: Readonly<Record<K, BitRange>>;
+  /** WGSL: `fn name_field(w: u32) -> u32` for each field and `fn name_pack(field, …) -> u32`. */
+  readonly wgsl: string;
+  /** The word with these field values (every field named; booleans as 0/1). Throws on a value
+   * that does not fit its field: the WGSL packer would silently truncate it. */
+  pack(values: Readonly<Record<K, number | boolean>>): number;
+  unpack(word: number): Record<K, number>;
+  get(word: number, field: K): number;
+}
+
+/** The WGSL function prefix of a word: its name with a lower-case first letter (NodeWord → nodeWord). */
+export function wgslPrefix(name: string): string {
+  return name[0].toLowerCase() + name.slice(1);
+}
+
+/**
+ * A u32 split into named bit fields, declared once for both languages, e.g.
+ * `defineBits('NodeWord', { kind: [0, 2], child: [2, 30] })` gives the WGSL getters
+ * `nodeWord_kind(w)` and `nodeWord_child(w)`, the WGSL packer `nodeWord_pack(kind, child)`, and
+ * `.pack({ kind, child })` / `.unpack(w)` in TypeScript. Fields must fit in 32 bits and not overlap;
+ * the order of declaration is the packer's argument order.
+ */
+export function defineBits<K extends string>(name: string, fields: Readonly<Record<K, BitRange>>): BitWord<K> {
+  const entries = Object.entries(fields) as [K, BitRange][];
+  let used = 0;
+  for (const [field, [at, bits]] of entries) {
+    if (!Number.isInteger(at) || !Number.isInteger(bits) || bits < 1 || at < 0 || at + bits > 32) {
+      throw new Error(`${name}.${field}: bits [${at}, ${at + bits}) do not fit a u32`);
+    }
+    const mask = maskOf(at, bits);
+    if (used & mask) throw new Error(`${name}.${field} overlaps another field`);
+    used |= mask;
+  }
+  const prefix = wgslPrefix(name);
+  const getters = entries.map(([f, [at, bits]]) => `fn ${prefix}_${f}(w: u32) -> u32 { return extractBits(w, ${at}u, ${bits}u); }`);
+  const packer = [
+    `fn ${prefix}_pack(${entries.map(([f]) => `${f}: u32`).join(', ')}) -> u32 {`,
+    '  var w = 0u;',
+    ...entries.map(([f, [at, bits]]) => `  w = insertBits(w, ${f}, ${at}u, ${bits}u);`),
+    '  return w;',
+    '}',
+  ];
+  const wgsl = `// ${name}: ${entries.map(([f, [at, bits]]) => `${f} [${at}, ${at + bits})`).join(', ')}\n${getters.join('\n')}\n${packer.join('\n')}\n`;
+  return {
+    name,
+    fields,
+    wgsl,
+    pack(values) {
+      let w = 0;
+      for (const [f, [at, bits]] of entries) {
+        const raw: number | boolean = values[f];
+        const v = Number(raw);
+        if (!Number.isInteger(v) || v < 0 || v >= 2 ** bits) throw new Error(`${name}.${f} = ${raw} does not fit ${bits} bits`);
+        w += v * 2 ** at; // arithmetic, not <<: a field reaching bit 31 must stay positive
+      }
+      return w;
+    },
+    unpack(word) {
+      const out = {} as Record<K, number>;
+      for (const [f, [at, bits]] of entries) out[f] = extract(word, at, bits);
+      return out;
+    },
+    get(word, field) {
+      const [at, bits] = fields[field];
+      return extract(word, at, bits);
+    },
+  };
+}
+
+function maskOf(at: number, bits: number): number {
+  return bits === 32 ? -1 : ((2 ** bits - 1) * 2 ** at) | 0;
+}
+
+function extract(word: number, at: number, bits: number): number {
+  return Math.floor((word >>> 0) / 2 ** at) % 2 ** bits;
+}
+
+/**
+ * The pattern frame of a triangle (src/pattern/clamped.ts chooseFrame; packed per triangle by
+ * prepare.ts packFrame and read by wgsl/tess-pattern.wgsl): the corners playing A, B, C, the
+ * edges playing bottom, left, right, whether each of those runs against its edge's line, and
+ * whether the frame is mirrored.
+ */
+export const PATTERN_FRAME_WORD = defineBits('PatternFrameWord', {
+  a: [0, 2],
+  b: [2, 2],
+  c: [4, 2],
+  bottomEdge: [6, 2],
+  leftEdge: [8, 2],
+  rightEdge: [10, 2],
+  flipBottom: [12, 1],
+  flipLeft: [13, 1],
+  flipRight: [14, 1],
+  mirrored: [15, 1],
+});
+
+/**
+ * An output vertex's barycentric weights on its source triangle (TessellatedMesh.bary, types.ts):
+ * w1 and w2 in units of 2^-16. A vertex at corner 1 or 2 is stored as a sentinel instead
+ * (BARY_CORNER1, BARY_CORNER2): their fields would sum past 2^16, which no real point does
+ * (w1 + w2 ≤ 2^16, and a weight of exactly 2^16 is a corner).
+ */
+export const BARY_WORD = defineBits('BaryWord', { w1: [0, 16], w2: [16, 16] });
+export const BARY_CORNER1 = 0xffffffff;
+export const BARY_CORNER2 = 0xfffffffe;
+
+/** The three weights (w0, w1, w2) of a bary word, in units of 2^-16 (they sum to 2^16). */
+export function decodeBary(word: number): [number, number, number] {
+  if (word === BARY_CORNER1) return [0, 65536, 0];
+  if (word === BARY_CORNER2) return [0, 0, 65536];
+  const { w1, w2 } = BARY_WORD.unpack(word);
+  return [65536 - w1 - w2, w1, w2];
+}
+
+// ---------------------------------------------------------------------------------------------
+// The renderer's uniforms and bindings
+
+/**
+ * The renderer's per-frame uniforms (wgsl/render-common.wgsl reads them as `scene`), written by
+ * Renderer every frame. The fields' comments travel into the generated WGSL.
+ */
+export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
+  ['viewProj', 'mat4x4<f32>', 'World to clip space of the camera (WebGPU clip space, z in 0..1).'],
+  ['lightViewProj', 'mat4x4<f32>', 'World to clip space of the light (the shadow map).'],
+  ['model', 'mat4x4<f32>', 'Model to world: a rotation only (the model\'s up axis to +Y), so it also turns normals.'],
+  ['eye', 'vec4<f32>', "xyz: the camera's position; w: the model's bounding radius."],
+  ['toLight', 'vec4<f32>', 'xyz: unit vector towards the light; w: one shadow-map texel in uv units.'],
+  ['center', 'vec4<f32>', "xyz: the bounding sphere's centre; w: the ground's height."],
+  ['viewport', 'vec4<f32>', 'x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.'],
+] as const);
+
+/** GPUShaderStage's bits (fixed by the WebGPU specification; the global is absent outside a GPU runtime). */
+export const STAGE = { VERTEX: 1, FRAGMENT: 2, COMPUTE: 4 } as const;
+
+/** The renderer's bind group layouts, entry for entry. The WGSL declares each at its group index
+ * in the pipelines of RENDER_PIPELINE_GROUPS (tests/contract.test.ts compares them). */
+export const RENDER_BIND_GROUPS = {
+  /** The per-frame uniforms (SCENE_UNIFORMS). */
+  scene: [{ binding: 0, visibility: STAGE.VERTEX | STAGE.FRAGMENT, buffer: { type: 'uniform' } }],
+  /** The shadow map and its comparison sampler. */
+  shading: [
+    { binding: 0, visibility: STAGE.FRAGMENT, texture: { sampleType: 'depth' } },
+    { binding: 1, visibility: STAGE.FRAGMENT, sampler: { type: 'comparison' } },
+  ],
+  /** Two arrays read by vertex index: the wireframe's indices and positions, or the patch
+   * colours' source triangles and kinds. */
+  vertexStorage: [
+    { binding: 0, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
+    { binding: 1, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
+  ],
+  /** The mesh's drawIndexedIndirect args in, the wireframe's drawIndirect args out. */
+  wireArgs: [
+    { binding: 0, visibility: STAGE.COMPUTE, buffer: { type: 'read-only-storage' } },
+    { binding: 1, visibility: STAGE.COMPUTE, buffer: { type: 'storage' } },
+  ],
+} as const satisfies Record<string, readonly GPUBindGroupLayoutEntry[]>;
+
+export type RenderBindGroup = keyof typeof RENDER_BIND_GROUPS;
+
+/** Which bind group layout sits at each group index of each of the renderer's pipelines. */
+export const RENDER_PIPELINE_GROUPS = {
+  shadow: ['scene'],
+  lit: ['scene', 'shading', 'vertexStorage'],
+  ground: ['scene', 'shading'],
+  backdrop: ['scene'],
+  wireframe: ['scene', 'vertexStorage'],
+  cage: ['scene'],
+  wireArgs: ['wireArgs'],
+} as const satisfies Record<string, readonly RenderBindGroup[]>;
+
+export type RenderPipelineName = keyof typeof RENDER_PIPELINE_GROUPS;
+
+/** The WGSL declaration of the per-frame uniforms: the struct and its binding (group 0 everywhere). */
+export const sceneWgsl = `${SCENE_UNIFORMS.wgsl}\n@group(0) @binding(0) var<uniform> scene: SceneUniforms;\n`;
