@@ -4,33 +4,42 @@
  * The geometry is rebuilt only when the model, the factors or (in adaptive mode) the camera
  * change; every other frame draws the stored buffers again. The Catmull-Clark tables are built
  * on the CPU once per model, in a worker (cc-tables.ts).
+ *
+ * What is shown (model, surface, its data) and the flow that changes it live in controller.ts;
+ * this file is the page: the canvas, the GPU objects, the panel, the stats and the messages.
  */
 import GUI from 'lil-gui';
-import { CageError } from '../mesh/index.ts';
 import { mat4 } from 'gl-matrix';
 import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
 import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
 import { CcTableCache, type CcTables } from './cc-tables.ts';
+import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
-import {
-  BUILTIN_MODELS, DEFAULT_MODEL, fetchModelList, loadModelFromFile, loadModelFromUrl, modelUrl,
-  type LoadedModel, type ModelEntry,
-} from './models.ts';
-import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams, type Surface } from './params.ts';
+import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
+import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
 import { renderStats, type OtherModeCounts } from './stats.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 
 /** Turntable speed, radians per second. */
 const SPIN_SPEED = 0.35;
 
+type CameraParams = Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>;
+
+/** What a model request carries to the page: the first view, and what the cage picker shows. */
+interface Placement {
+  camera?: CameraParams;
+  pick: string;
+}
+
 class TessellationDemo extends DemoBase {
   params: DemoParams;
-  models: ModelEntry[] = BUILTIN_MODELS;
-  model: LoadedModel | null = null;
+  /** The model, its surface data and the surface drawn, and the one flow that changes them. */
+  readonly controller: DemoController<LoadedModel, CcTables, Placement>;
+  panel: Panel | null = null;
   /** The model's bounds in world space, and its model-to-world rotation (up axis to +Y). */
   bounds: Bounds | null = null;
   modelMatrix = upAxisMatrix('z') as Float32Array;
@@ -43,12 +52,8 @@ class TessellationDemo extends DemoBase {
   cageLines: CageLines | null = null;
   counts: CountsReader | null = null;
 
-  /** Catmull-Clark tables per cage (built in a worker), the current model's, or why it has none. */
+  /** Catmull-Clark tables per cage (built in a worker): the controller's surface data. */
   readonly ccTables = new CcTableCache();
-  cc: CcTables | null = null;
-  ccError: string | null = null;
-  buildingTables = false;
-  #loadSerial = 0;
 
   /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
   otherCounts: OtherModeCounts | null = null;
@@ -67,6 +72,8 @@ class TessellationDemo extends DemoBase {
   drawTimes: Record<string, number> = {};
   rebuilds = 0;
   #geometryDirty = true;
+  /** A build's counts still to be copied for reading back. */
+  #countsOwed = false;
   #rebuiltThisFrame = false;
   #tessTimingInFlight = false;
   #statsDue = 0;
@@ -76,6 +83,51 @@ class TessellationDemo extends DemoBase {
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
     super(canvas, { frozenTime: params.t });
     this.params = params;
+    this.controller = new DemoController(this.#ports(), params.surface);
+  }
+
+  /** The page's side of the controller. */
+  #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
+    return {
+      prepareSurface: (model) => this.ccTables.get(model.cage),
+      surfaceReady: (model) => this.ccTables.has(model.cage),
+      upload: (model, surface, data) => this.#upload(model, surface, data),
+      loading: (message) => setLoading(message),
+      preparing: () => this.updateStats(true),
+      failed: (title, message, kept) => {
+        showToast(message, { kind: 'error', title });
+        if (!kept) setPageState('error');
+      },
+      fellBack: (model, reason) =>
+        showToast(`${reason}\n\nShowing the Phong surface instead.`, {
+          kind: 'info',
+          title: `No Catmull-Clark surface for ${model.title}`,
+          timeout: 10_000,
+        }),
+      shown: (model, previous, placement) => {
+        if (model !== previous) {
+          for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
+          this.placeModel(placement?.camera);
+        }
+        if (placement) this.panel?.showPicked(placement.pick);
+        this.lastCounts = null;
+        this.tessTimes = {};
+        this.updateLegend();
+        this.invalidateGeometry();
+        // The first model's message stays until its first frame is on screen (onAfterSubmit).
+        if (previous) setLoading(null);
+        this.updateStats(true);
+      },
+    };
+  }
+
+  get model(): LoadedModel | null {
+    return this.controller.model;
+  }
+
+  /** The shown model's Catmull-Clark tables (kept while another surface is drawn), or null. */
+  get cc(): CcTables | null {
+    return this.controller.data;
   }
 
   protected override async onInit(): Promise<void> {
@@ -86,7 +138,7 @@ class TessellationDemo extends DemoBase {
     this.#otherReader = new CountsReader(device);
     this.#probeKey = '';
     // After a device loss: upload the current model to the new device.
-    if (this.model) this.#uploadModel(this.model);
+    this.controller.reupload();
   }
 
   protected override onDeviceLost(): void {
@@ -101,15 +153,17 @@ class TessellationDemo extends DemoBase {
 
   /** The surface drawn now: the one asked for, but Phong where the model has no Catmull-Clark
    * tables (refused, or still being built). */
-  get shownSurface(): Surface {
-    const s = this.params.surface;
-    return s === 'catmull-clark' && !this.cc ? 'phong' : s;
+  get shownSurface(): Shown {
+    return this.controller.shownSurface;
   }
 
   /** What is drawn now: the tessellated surface or the flat cage. */
   get geometry(): GeometrySource | null {
-    const s = this.shownSurface;
-    return s === 'cage' ? this.flat : this.#tess[s] ?? null;
+    return this.#geometryFor(this.shownSurface);
+  }
+
+  #geometryFor(surface: Shown): GeometrySource | null {
+    return surface === 'cage' ? this.flat : (this.#tess[surface] ?? null);
   }
 
   /** The tessellator for `surface`, created on first use (the other one is freed). */
@@ -121,53 +175,6 @@ class TessellationDemo extends DemoBase {
       this.#tess = { [surface]: tess };
     }
     return tess;
-  }
-
-  /** Switch surfaces (Catmull-Clark, Phong, flat cage), building the Catmull-Clark tables first
-   * if the model has none yet; the old picture stays up meanwhile. */
-  async showSurface(): Promise<void> {
-    const model = this.model;
-    if (model && this.params.surface === 'catmull-clark' && !this.cc && !this.ccError) {
-      const tables = await this.#tablesFor(model);
-      if (this.model !== model) return; // another model came meanwhile, with its own tables
-      this.cc = tables.cc;
-      this.ccError = tables.error;
-      setLoading(null);
-      if (tables.error) this.#reportFallback(model.title);
-    }
-    if (this.model && this.renderer) {
-      try {
-        this.#uploadModel(this.model);
-      } catch (e) {
-        showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${this.model.title}` });
-      }
-    }
-    this.lastCounts = null;
-    this.tessTimes = {};
-    this.invalidateGeometry();
-    this.updateStats(true);
-  }
-
-  /** Build (or take from the cache) the Catmull-Clark tables of `model`, saying so meanwhile. */
-  async #tablesFor(model: LoadedModel): Promise<{ cc: CcTables | null; error: string | null }> {
-    if (!this.ccTables.has(model.cage)) setLoading('Building subdivision tables…');
-    this.buildingTables = true;
-    this.updateStats(true);
-    try {
-      return { cc: await this.ccTables.get(model.cage), error: null };
-    } catch (e) {
-      return { cc: null, error: (e as Error)?.message ?? String(e) };
-    } finally {
-      this.buildingTables = false;
-    }
-  }
-
-  #reportFallback(title: string): void {
-    showToast(`${this.ccError}\n\nShowing the Phong surface instead.`, {
-      kind: 'info',
-      title: `No Catmull-Clark surface for ${title}`,
-      timeout: 10_000,
-    });
   }
 
   /** Patch colours are on and there are patches to colour. */
@@ -239,10 +246,17 @@ class TessellationDemo extends DemoBase {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
-      this.counts?.copy(encoder, geometry.output.counts);
+      this.#countsOwed = true;
       this.#geometryDirty = false;
       this.#rebuiltThisFrame = true;
       this.rebuilds++;
+    }
+    // The counts of the latest build, copied once the reader is free: a copy skipped because a
+    // read was still in flight would leave the stats' output row at "…" until the next rebuild
+    // (and the demo draws on demand: there may be none).
+    if (this.#countsOwed && geometry.output && this.counts?.idle) {
+      this.counts.copy(encoder, geometry.output.counts);
+      this.#countsOwed = false;
     }
     renderer.render(encoder, target, { viewProj, model: this.modelMatrix, eye: m.eye }, {
       wireframe: this.params.wire,
@@ -267,7 +281,7 @@ class TessellationDemo extends DemoBase {
     if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
     const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
     const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
-    const key = [this.#loadSerial, this.shownSurface, this.params.flat, other, setting].join('|');
+    const key = [this.controller.version, this.shownSurface, this.params.flat, other, setting].join('|');
     if (key !== this.#probeKey) this.otherCounts = null;
     else if (!(other === 'adaptive' && this.#probeCameraMoved)) return;
     const wait = this.#lastProbeAt + 1000 - performance.now();
@@ -312,6 +326,7 @@ class TessellationDemo extends DemoBase {
     void quietly(this.counts?.read(), null).then((counts) => {
       if (counts) this.lastCounts = counts;
       this.updateStats();
+      if (this.#countsOwed) this.requestFrame();
     });
     void quietly(renderer?.readTimings(), {}).then((draw) => {
       this.drawTimes = draw;
@@ -363,8 +378,8 @@ class TessellationDemo extends DemoBase {
       source: this.geometry?.kind ?? 'cage',
       surface: {
         shown: this.shownSurface,
-        fallback: this.params.surface === 'catmull-clark' ? this.ccError : null,
-        building: this.buildingTables,
+        fallback: this.controller.dataError,
+        building: this.controller.preparing,
         kinds: this.cc ? kindCounts(this.cc.data.triKind) : undefined,
         tablesMs: this.cc?.ms,
         tablesWhere: this.cc?.where,
@@ -381,94 +396,47 @@ class TessellationDemo extends DemoBase {
     });
   }
 
-  /** Show a model; on failure keep the current one and say why. */
-  async showModel(load: () => Promise<LoadedModel>, what: string, camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): Promise<boolean> {
-    const serial = ++this.#loadSerial;
-    setLoading(`Loading ${what}…`);
-    let model: LoadedModel;
-    let tables: { cc: CcTables | null; error: string | null } = { cc: null, error: null };
-    try {
-      model = await load();
-      if (serial !== this.#loadSerial) return false; // a later request replaced this one
-      // The Catmull-Clark tables first (in a worker; the old model stays up meanwhile).
-      if (this.params.surface === 'catmull-clark') tables = await this.#tablesFor(model);
-      if (serial !== this.#loadSerial) return false;
-    } catch (e) {
-      setLoading(null);
-      const message = e instanceof CageError ? e.message : (e as Error)?.message ?? String(e);
-      const kept = this.model ? `\n\nStill showing ${this.model.title}.` : '';
-      showToast(message + kept, { kind: 'error', title: `Could not load ${what}` });
-      if (!this.model) setPageState('error');
-      return false;
-    }
-    const kept = { cc: this.cc, ccError: this.ccError };
-    this.cc = tables.cc;
-    this.ccError = tables.error;
-    try {
-      this.#uploadModel(model);
-    } catch (e) {
-      setLoading(null);
-      showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${what}` });
-      this.cc = kept.cc;
-      this.ccError = kept.ccError;
-      if (this.model) this.#uploadModel(this.model);
-      return false;
-    }
-    if (tables.error) this.#reportFallback(model.title);
-    for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
-    const previous = this.model;
-    this.model = model;
-    this.placeModel(camera);
-    this.lastCounts = null;
-    this.tessTimes = {};
-    this.invalidateGeometry();
-    if (previous) setLoading(null);
-    this.updateStats(true);
-    // The surface was switched to Catmull-Clark while this model loaded without tables.
-    if (this.params.surface === 'catmull-clark' && !this.cc && !this.ccError) void this.showSurface();
-    return true;
+  /** Load one of the project's models (by name), a URL, or a file; the picker shows which. */
+  loadBuiltin(name: string, camera?: CameraParams): Promise<boolean> {
+    return this.controller.loadModel(() => loadModelFromUrl(modelUrl(name), name), name, { camera, pick: name });
+  }
+
+  loadUrl(url: string, camera?: CameraParams): Promise<boolean> {
+    const title = url.split('/').pop() || url;
+    return this.controller.loadModel(() => loadModelFromUrl(url, title), url, { camera, pick: title });
+  }
+
+  loadFile(file: File): Promise<boolean> {
+    return this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
   }
 
   /** World bounds, light and camera for the current model and up axis. */
-  placeModel(camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): void {
+  placeModel(camera?: CameraParams): void {
     if (!this.model) return;
     this.modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
     this.bounds = transformBounds(boundsOf(this.model.cage.positions), this.modelMatrix);
-    this.renderer!.setBounds(this.bounds);
+    this.renderer?.setBounds(this.bounds);
     this.setCamera(this.#initialCamera(this.bounds, camera));
     this.invalidateGeometry();
   }
 
-  /** Upload `model` (whose tables, if any, are this.cc) for the surface shown; where the
-   * Catmull-Clark tessellator refuses it, fall back to Phong (this.ccError says why). */
-  #uploadModel(model: LoadedModel): void {
-    try {
-      this.#upload(model);
-    } catch (e) {
-      if (this.shownSurface !== 'catmull-clark') throw e;
-      this.cc = null;
-      this.ccError = (e as Error)?.message ?? String(e);
-      this.#upload(model);
-      this.#reportFallback(model.title);
-    }
-  }
-
-  #upload(model: LoadedModel): void {
-    const device = this.gpu.device;
-    const surface = this.shownSurface;
-    this.flat!.setCage(model.cage);
-    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? this.cc!.data : undefined);
-    this.renderer!.setMesh(this.geometry!.output);
-    this.renderer!.setPatchKinds(surface === 'catmull-clark' ? this.cc!.data.triKind : null);
-    this.updateLegend();
+  /** The controller's upload: `model` on this device, drawn as `surface`. Without a device (it
+   * was lost) there is nothing to do: onInit uploads what the controller shows to the new one. */
+  #upload(model: LoadedModel, surface: Shown, data: CcTables | null): void {
+    const renderer = this.renderer;
+    if (!renderer || !this.flat) return;
+    this.flat.setCage(model.cage);
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined);
+    renderer.setMesh(this.#geometryFor(surface)?.output ?? null);
+    renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
     this.cageLines?.vertices.destroy();
-    this.cageLines = uploadCageLines(device, model.cage);
-    this.renderer!.setCage(this.cageLines);
-    if (this.bounds) this.renderer!.setBounds(this.bounds);
+    this.cageLines = uploadCageLines(this.gpu.device, model.cage);
+    renderer.setCage(this.cageLines);
+    if (this.bounds) renderer.setBounds(this.bounds);
     this.invalidateGeometry();
   }
 
-  #initialCamera(bounds: Bounds, p?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): OrbitCamera {
+  #initialCamera(bounds: Bounds, p?: CameraParams): OrbitCamera {
     const cam = this.frameBounds(bounds);
     const deg = Math.PI / 180;
     return {
@@ -530,12 +498,12 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       );
     },
   };
-  const options = Object.fromEntries(demo.models.map((m) => [m.label, m.name]));
+  const options = Object.fromEntries(BUILTIN_MODELS.map((m) => [m.label, m.name]));
   const modelFolder = gui.addFolder('Model');
   const picker = modelFolder.add(state, 'model', options).name('cage').onChange((name: string) => {
     p.model = name;
     syncUrl(p);
-    void demo.showModel(() => loadModelFromUrl(modelUrl(name), name), name);
+    void demo.loadBuiltin(name);
   });
   modelFolder.add(p, 'up', { 'Z (project models)': 'z', Y: 'y' }).name('up axis').onChange(() => {
     syncUrl(p);
@@ -551,7 +519,7 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   tess.add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' }).name('surface').onChange(() => {
     syncUrl(p);
     showFlat();
-    void demo.showSurface();
+    void demo.controller.setSurface(p.surface);
   });
   const flat = tess.add(p, 'flat').name('flat baseline').onChange(changed);
   const showFlat = () => flat.show(p.surface === 'catmull-clark');
@@ -598,7 +566,7 @@ function openFile(demo: TessellationDemo): void {
   input.accept = '.obj,text/plain';
   input.addEventListener('change', () => {
     const file = input.files?.[0];
-    if (file) void demo.showModel(() => loadModelFromFile(file), file.name);
+    if (file) void demo.loadFile(file);
   });
   input.click();
 }
@@ -624,7 +592,7 @@ function enableDrop(demo: TessellationDemo): void {
     depth = 0;
     overlay.hidden = true;
     const file = e.dataTransfer?.files?.[0];
-    if (file) void demo.showModel(() => loadModelFromFile(file), file.name);
+    if (file) void demo.loadFile(file);
   });
 }
 
@@ -638,21 +606,17 @@ async function main(): Promise<void> {
     demo,
     loseDevice: () => demo.gpu.device.destroy(),
   };
-  const [started, models] = await Promise.all([demo.start(), fetchModelList()]);
-  if (!started) return;
-  demo.models = models;
+  if (!(await demo.start())) return;
 
   const name = params.model ?? DEFAULT_MODEL;
-  const panel = params.ui ? buildPanel(demo, isModelUrl(name) ? DEFAULT_MODEL : name) : null;
+  demo.panel = params.ui ? buildPanel(demo, isModelUrl(name) ? DEFAULT_MODEL : name) : null;
   enableDrop(demo);
 
   const camera = { yaw: params.yaw, pitch: params.pitch, dist: params.dist };
   if (isModelUrl(name)) {
-    await demo.showModel(() => loadModelFromUrl(name, name.split('/').pop() || name), name, camera);
-  } else {
-    const ok = await demo.showModel(() => loadModelFromUrl(modelUrl(name), name), name, camera);
-    if (!ok && name !== DEFAULT_MODEL) await demo.showModel(() => loadModelFromUrl(modelUrl(DEFAULT_MODEL), DEFAULT_MODEL), DEFAULT_MODEL, camera);
-    if (!ok) panel?.showPicked(demo.model?.title ?? DEFAULT_MODEL);
+    await demo.loadUrl(name, camera);
+  } else if (!(await demo.loadBuiltin(name, camera)) && name !== DEFAULT_MODEL && !demo.model) {
+    await demo.loadBuiltin(DEFAULT_MODEL, camera);
   }
 }
 
