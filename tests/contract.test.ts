@@ -8,8 +8,9 @@ import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
-  BARY_CORNER1, BARY_CORNER2, BARY_WORD, constantsWgsl, decodeBary, defineBits, GRID_X, PATTERN_FRAME_WORD, RENDER_BIND_GROUPS,
-  RENDER_PIPELINE_GROUPS, SCAN_WORKGROUP_SIZE, SCENE_UNIFORMS, SHARED_CONSTANTS, STAGE, WORKGROUP_SIZE, wgslPrefix, type BitWord,
+  BARY_CORNER1, BARY_CORNER2, BARY_WORD, constantsWgsl, decodeBary, defineArena, defineBindGroup, defineBits, GRID_X, PATTERN_FRAME_WORD,
+  RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS, SCAN_WORKGROUP_SIZE, SCENE_UNIFORMS, SHARED_CONSTANTS, STAGE, usedBindings, WORKGROUP_SIZE,
+  wgslPrefix, type BitWord,
 } from '../src/gpu/contract.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
 import { packFrame } from '../src/gpu/prepare.ts';
@@ -325,5 +326,95 @@ describe("the renderer's bindings", () => {
         expect(code, name).toMatch(/\bscene\.\w+/);
       }
     }
+  });
+});
+
+// ---- Tools the tessellator will use: bind groups from one spec, bindings used by an entry point, arenas.
+
+describe('defineBindGroup and usedBindings', () => {
+  const group = defineBindGroup(0, {
+    params: { binding: 0, space: 'uniform', type: 'Params' },
+    cage: { binding: 2, space: 'read', type: 'array<f32>', doc: 'xyz per vertex' },
+    work: { binding: 3, space: 'read_write', type: 'array<u32>' },
+    out: { binding: 5, space: 'read_write', type: 'array<f32>' },
+  });
+
+  it('the generated declarations parse back to the layout entries', () => {
+    const expected = group.layoutEntries().map((e) => ({ group: 0, binding: e.binding, kind: layoutKind(e) }));
+    expect(declaredBindings(group.wgsl())).toEqual(expected);
+    expect(declaredBindings(group.wgsl(['work', 'params']))).toEqual(expected.filter((e) => e.binding === 0 || e.binding === 3));
+    expect(group.layoutEntries(['out']).map((e) => [e.binding, e.visibility, e.buffer?.type])).toEqual([[5, STAGE.COMPUTE, 'storage']]);
+    expect(() => defineBindGroup(0, { a: { binding: 1, space: 'read', type: 'array<u32>' }, b: { binding: 1, space: 'read', type: 'array<u32>' } })).toThrow(
+      /share binding 1/,
+    );
+  });
+
+  it('usedBindings follows the calls of an entry point, and only its own', () => {
+    const code = `${group.wgsl()}
+fn cageAt(i: u32) -> f32 { return cage[i]; } // out is named in a comment only
+fn count(i: u32) -> u32 { return work[params.n + i] + u32(cageAt(i)); }
+@compute @workgroup_size(64) fn countMain(@builtin(global_invocation_id) id: vec3<u32>) {
+  work[id.x] = count(id.x);
+}
+@compute @workgroup_size(64) fn emitMain(@builtin(global_invocation_id) id: vec3<u32>) {
+  out[id.x] = 1.0; /* cage[0] in a block comment */
+}`;
+    const names = ['params', 'cage', 'work', 'out'] as const;
+    expect(usedBindings(code, 'countMain', names)).toEqual(['params', 'cage', 'work']);
+    expect(usedBindings(code, 'emitMain', names)).toEqual(['out']);
+    expect(() => usedBindings(code, 'missing', names)).toThrow(/no fn missing/);
+  });
+
+  it("on the renderer's shaders: every binding a pipeline's layout holds is used by one of its entry points", () => {
+    const entries: Record<keyof typeof RENDER_SHADERS, string[]> = {
+      shadow: ['shadowVertex'],
+      lit: ['litVertex', 'litFragment'],
+      ground: ['groundVertex', 'groundFragment'],
+      backdrop: ['backdropVertex', 'backdropFragment'],
+      wireframe: ['wireVertex', 'wireFragment'],
+      cage: ['cageVertex', 'cageFragment'],
+      wireArgs: ['wireArgsMain'],
+    };
+    for (const [name, sources] of Object.entries(RENDER_SHADERS) as [keyof typeof RENDER_SHADERS, readonly string[]][]) {
+      const code = sources.join('\n');
+      const declared = [...code.matchAll(/@group\(\d+\)\s*@binding\(\d+\)\s*var(?:<[^>]*>)?\s+(\w+)/g)].map((m) => m[1]);
+      const used = new Set(entries[name].flatMap((e) => usedBindings(code, e, declared)));
+      expect([...used].sort(), name).toEqual([...declared].sort());
+    }
+  });
+});
+
+describe('defineArena', () => {
+  const arena = defineArena<'edgeF' | 'edgeBase' | 'rows', { edges: number; tris: number }>([
+    ['edgeF', (s) => s.edges],
+    ['edgeBase', (s) => s.edges + 1],
+    ['rows', (s) => 2 * s.tris],
+  ]);
+
+  it('lays the arrays one after another without overlap, for any sizes', () => {
+    fc.assert(
+      fc.property(fc.nat(10_000), fc.nat(10_000), (edges, tris) => {
+        const l = arena.layout({ edges, tris });
+        let at = 0;
+        for (const k of arena.names) {
+          expect(l.offset[k]).toBe(at);
+          at += l.length[k];
+        }
+        expect(l.words).toBe(at);
+        expect(l.length).toEqual({ edgeF: edges, edgeBase: edges + 1, rows: 2 * tris });
+      }),
+    );
+    expect(() => arena.layout({ edges: -2, tris: 0 })).toThrow(/words/);
+  });
+
+  it('its offset fields fit a uniform struct, and the accessors read through them', () => {
+    const params = defineStruct('Params', [['nEdges', 'u32'], ...arena.offsetFields] as const);
+    const parsed = parseStruct(params.wgsl);
+    expect(parsed.fields.map((f) => f.name)).toEqual(['nEdges', 'offEdgeF', 'offEdgeBase', 'offRows']);
+    const l = arena.layout({ edges: 5, tris: 7 });
+    const view = new DataView(new ArrayBuffer(params.size));
+    params.write(view, arena.offsets(l));
+    expect([4, 8, 12].map((o) => view.getUint32(o, true))).toEqual([0, 5, 11]);
+    expect(arena.wgslAccessors('work', 'params')).toContain('fn edgeBase_at(i: u32) -> u32 { return work[params.offEdgeBase + i]; }');
   });
 });

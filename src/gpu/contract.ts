@@ -9,14 +9,20 @@
  *                 `word_pack(...)`, and the TypeScript pack/unpack of the same bits
  *   uniforms      uniform structs (defineStruct in layout.ts): the WGSL struct and its byte offsets
  *   bindings      the renderer's bind group layouts and which pipeline uses which, as the
- *                 descriptors the renderer creates (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS)
+ *                 descriptors the renderer creates (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS);
+ *                 for compute code, defineBindGroup (declarations generated from one spec) and
+ *                 usedBindings (what an entry point reads, for its explicit layout)
+ *   arenas        arrays carved out of one storage buffer (defineArena): offsets, the uniform
+ *                 fields that carry them, and WGSL accessors
  *
  * The compute tessellator's work layout, its Params and its passes' bindings still live in
- * tessellator.ts; they are meant to move here with the same tools (defineStruct for Params,
- * defineBits for the Catmull-Clark node word and the table header, bind-group declarations
- * like the renderer's for PASS_BINDINGS). tests/contract.test.ts parses the generated WGSL back
- * and checks it against the TypeScript views; tests/contract.gpu.test.ts runs it through a real
- * WGSL compiler.
+ * tessellator.ts; they are meant to move here with these tools: defineArena for WorkLayout and
+ * the `off*` fields of Params, defineBindGroup + usedBindings for its bindings and PASS_BINDINGS,
+ * defineBits for the Catmull-Clark node word and the table header, SHARED_CONSTANTS for the
+ * workgroup sizes and GRID_X typed in its dispatches and shaders.
+ *
+ * tests/contract.test.ts parses the generated WGSL back and checks it against the TypeScript
+ * views; tests/contract.gpu.test.ts runs it through a real WGSL compiler.
  */
 import { defineStruct } from './layout.ts';
 
@@ -29,6 +35,9 @@ export const WORKGROUP_SIZE = 64;
 export const SCAN_WORKGROUP_SIZE = 256;
 /** Widest dispatch in x (WebGPU's default maxComputeWorkgroupsPerDimension); wider ones fold into y. */
 export const GRID_X = 65535;
+
+/** GPUShaderStage's bits (fixed by the WebGPU specification; the global is absent outside a GPU runtime). */
+export const STAGE = { VERTEX: 1, FRAGMENT: 2, COMPUTE: 4 } as const;
 
 /** The numbers every shader may read, by their WGSL names (all u32). */
 export const SHARED_CONSTANTS = { WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE, GRID_X } as const;
@@ -170,6 +179,159 @@ export function decodeBary(word: number): [number, number, number] {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Storage arrays: bindings, and arrays carved out of one buffer
+
+/** One binding of a bind group: how the WGSL declares it. */
+export interface BindingSpec {
+  binding: number;
+  /** 'uniform', or a storage buffer's access mode. */
+  space: 'uniform' | 'read' | 'read_write';
+  /** The WGSL type: a struct name for a uniform, `array<u32>` and the like for storage. */
+  type: string;
+  doc?: string;
+}
+
+export interface BindGroupSpec<K extends string> {
+  readonly group: number;
+  readonly binding: Readonly<Record<K, number>>;
+  /** The WGSL declarations of `names` (all when omitted), in binding order. */
+  wgsl(names?: readonly K[]): string;
+  /** The layout entries of `names` (all when omitted), in binding order. */
+  layoutEntries(names?: readonly K[]): GPUBindGroupLayoutEntry[];
+}
+
+/**
+ * A bind group whose bindings each have one WGSL name, e.g. the tessellator's
+ * `{ params: { binding: 0, space: 'uniform', type: 'Params' }, work: { binding: 3, space:
+ * 'read_write', type: 'array<u32>' }, … }`: the declarations are generated (never typed in a
+ * .wgsl file), and a pass's explicit layout is `layoutEntries(usedBindings(code, entry, names))`,
+ * so a shared helper that starts reading one more buffer changes the layout with it.
+ */
+export function defineBindGroup<K extends string>(
+  group: number,
+  entries: Readonly<Record<K, BindingSpec>>,
+  visibility: number = STAGE.COMPUTE,
+): BindGroupSpec<K> {
+  const all = (Object.entries(entries) as [K, BindingSpec][]).sort((a, b) => a[1].binding - b[1].binding);
+  for (let i = 1; i < all.length; i++) {
+    if (all[i][1].binding === all[i - 1][1].binding) throw new Error(`${all[i - 1][0]} and ${all[i][0]} share binding ${all[i][1].binding}`);
+  }
+  const pick = (names?: readonly K[]) => (names ? all.filter(([k]) => names.includes(k)) : all);
+  const binding = Object.fromEntries(all.map(([k, e]) => [k, e.binding])) as Record<K, number>;
+  return {
+    group,
+    binding,
+    wgsl: (names) =>
+      pick(names)
+        .map(([k, e]) => {
+          const space = e.space === 'uniform' ? 'uniform' : `storage, ${e.space}`;
+          return `${e.doc ? `// ${e.doc}\n` : ''}@group(${group}) @binding(${e.binding}) var<${space}> ${k}: ${e.type};`;
+        })
+        .join('\n')
+        .concat('\n'),
+    layoutEntries: (names) =>
+      pick(names).map(([, e]) => ({
+        binding: e.binding,
+        visibility,
+        buffer: { type: e.space === 'uniform' ? 'uniform' : e.space === 'read' ? 'read-only-storage' : 'storage' },
+      })),
+  };
+}
+
+/**
+ * The subset of `names` (module-scope variables) that entry point `entry` of `code` reads or
+ * writes, directly or through the functions it calls: what its pipeline layout must bind.
+ * A lexical walk of WGSL's `fn name(…) … { … }` bodies (comments stripped), enough for code
+ * that does not shadow a binding's name with a local.
+ */
+export function usedBindings<K extends string>(code: string, entry: string, names: readonly K[]): K[] {
+  const src = code.replace(/\/\/[^\n]*/g, '').replace(/\/\*[\s\S]*?\*\//g, '');
+  const bodies = new Map<string, string>();
+  for (const m of src.matchAll(/\bfn\s+(\w+)\s*\(/g)) {
+    const open = src.indexOf('{', m.index);
+    let depth = 0;
+    let end = open;
+    for (; end < src.length; end++) {
+      if (src[end] === '{') depth++;
+      else if (src[end] === '}' && --depth === 0) break;
+    }
+    // The signature too: a parameter's type may name a struct, never a binding; the body is what counts.
+    bodies.set(m[1], src.slice(open, end + 1));
+  }
+  if (!bodies.has(entry)) throw new Error(`no fn ${entry} in the code`);
+  const seen = new Set<string>();
+  const used = new Set<K>();
+  const walk = (fn: string) => {
+    if (seen.has(fn)) return;
+    seen.add(fn);
+    const body = bodies.get(fn)!;
+    for (const m of body.matchAll(/\b(\w+)\b/g)) {
+      const id = m[1];
+      if ((names as readonly string[]).includes(id)) used.add(id as K);
+      if (bodies.has(id)) walk(id);
+    }
+  };
+  walk(entry);
+  return names.filter((n) => used.has(n));
+}
+
+/** Where each array of an arena lies, in words, for one set of sizes. */
+export interface ArenaLayout<K extends string> {
+  offset: Record<K, number>;
+  length: Record<K, number>;
+  /** Words in all: the buffer's size / 4. */
+  words: number;
+}
+
+export type OffsetField<K extends string> = `off${Capitalize<K>}`;
+
+export interface Arena<K extends string, S> {
+  readonly names: readonly K[];
+  /** The uniform fields that carry the offsets (`offEdgeF: u32` for `edgeF`): spread them into the
+   * Params struct's defineStruct. */
+  readonly offsetFields: readonly (readonly [OffsetField<K>, 'u32'])[];
+  layout(sizes: S): ArenaLayout<K>;
+  /** The offset fields' values for PARAMS.write. */
+  offsets(layout: ArenaLayout<K>): Record<OffsetField<K>, number>;
+  /** WGSL `fn name_at(i: u32) -> u32 { return buffer[params.offName + i]; }` for each array. */
+  wgslAccessors(buffer: string, params: string): string;
+}
+
+/**
+ * Several u32 arrays carved one after another out of one storage buffer (the tessellator's
+ * scratch `work`), each sized from `S` (e.g. the edge and triangle counts). Adding an array is one
+ * entry here; its offset reaches the shaders through `offsetFields` in the uniform struct.
+ */
+export function defineArena<K extends string, S>(arrays: readonly (readonly [K, (sizes: S) => number])[]): Arena<K, S> {
+  const names = arrays.map(([k]) => k);
+  if (new Set(names).size !== names.length) throw new Error('an arena array is named twice');
+  const field = (k: K) => `off${k[0].toUpperCase()}${k.slice(1)}` as OffsetField<K>;
+  return {
+    names,
+    offsetFields: names.map((k) => [field(k), 'u32'] as const),
+    layout(sizes) {
+      const offset = {} as Record<K, number>;
+      const length = {} as Record<K, number>;
+      let at = 0;
+      for (const [k, size] of arrays) {
+        const n = size(sizes);
+        if (!Number.isInteger(n) || n < 0) throw new Error(`arena array ${k}: ${n} words`);
+        offset[k] = at;
+        length[k] = n;
+        at += n;
+      }
+      return { offset, length, words: at };
+    },
+    offsets(layout) {
+      return Object.fromEntries(names.map((k) => [field(k), layout.offset[k]])) as Record<OffsetField<K>, number>;
+    },
+    wgslAccessors(buffer, params) {
+      return names.map((k) => `fn ${k}_at(i: u32) -> u32 { return ${buffer}[${params}.${field(k)} + i]; }`).join('\n').concat('\n');
+    },
+  };
+}
+
+// ---------------------------------------------------------------------------------------------
 // The renderer's uniforms and bindings
 
 /**
@@ -185,9 +347,6 @@ export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
   ['center', 'vec4<f32>', "xyz: the bounding sphere's centre; w: the ground's height."],
   ['viewport', 'vec4<f32>', 'x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.'],
 ] as const);
-
-/** GPUShaderStage's bits (fixed by the WebGPU specification; the global is absent outside a GPU runtime). */
-export const STAGE = { VERTEX: 1, FRAGMENT: 2, COMPUTE: 4 } as const;
 
 /** The renderer's bind group layouts, entry for entry. The WGSL declares each at its group index
  * in the pipelines of RENDER_PIPELINE_GROUPS (tests/contract.test.ts compares them). */
