@@ -5,7 +5,15 @@
  * Exact comparisons: nothing here is computed, only moved.
  */
 import { afterAll, describe, expect, it } from 'vitest';
-import { BARY_WORD, constantsWgsl, PATTERN_FRAME_WORD, SCENE_UNIFORMS, SHARED_CONSTANTS, wgslPrefix, type BitWord } from '../src/gpu/contract.ts';
+import {
+  BARY_WORD,
+  constantsWgsl,
+  PATTERN_FRAME_WORD,
+  SCENE_UNIFORMS,
+  SHARED_CONSTANTS,
+  wgslPrefix,
+  type BitWord,
+} from '../src/gpu/contract.ts';
 import { getDevice, releaseDevice } from './gpu-device.ts';
 
 afterAll(() => releaseDevice());
@@ -21,10 +29,22 @@ async function run(code: string, input: { uniform?: ArrayBuffer; storage?: Uint3
     usage: (input.uniform ? GPUBufferUsage.UNIFORM : GPUBufferUsage.STORAGE) | GPUBufferUsage.COPY_DST,
   });
   device.queue.writeBuffer(inBuf, 0, inBytes);
-  const out = device.createBuffer({ label: 'contract test output', size: 4 * outWords, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
-  const read = device.createBuffer({ label: 'contract test readback', size: 4 * outWords, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+  const out = device.createBuffer({
+    label: 'contract test output',
+    size: 4 * outWords,
+    usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC,
+  });
+  const read = device.createBuffer({
+    label: 'contract test readback',
+    size: 4 * outWords,
+    usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
+  });
   const module = device.createShaderModule({ label: 'contract test shader', code });
-  const pipeline = device.createComputePipeline({ label: 'contract test pipeline', layout: 'auto', compute: { module, entryPoint: 'main' } });
+  const pipeline = device.createComputePipeline({
+    label: 'contract test pipeline',
+    layout: 'auto',
+    compute: { module, entryPoint: 'main' },
+  });
   const bindGroup = device.createBindGroup({
     label: 'contract test bind group',
     layout: pipeline.getBindGroupLayout(0),
@@ -63,7 +83,8 @@ describe('generated WGSL on the GPU', () => {
       const n = SCENE_UNIFORMS.wgsl.includes(`${f}: mat4x4<f32>`) ? 16 : 4;
       sizes[f] = n;
       values[f] = Array.from({ length: n }, () => next++ + 0.25);
-      for (let i = 0; i < n; i++) copies.push(`  out[${at + i}u] = bitcast<u32>(scene.${f}${n === 16 ? `[${i >> 2}][${i & 3}]` : `[${i}]`});`);
+      for (let i = 0; i < n; i++)
+        copies.push(`  out[${at + i}u] = bitcast<u32>(scene.${f}${n === 16 ? `[${i >> 2}][${i & 3}]` : `[${i}]`});`);
       at += n;
     }
     const code = `${SCENE_UNIFORMS.wgsl}
@@ -88,7 +109,7 @@ ${copies.join('\n')}
         Object.fromEntries(
           names.map((f, k) => {
             const max = 2 ** word.fields[f][1] - 1;
-            return [f, s === 0 ? 0 : s === 1 ? max : Math.floor(((s * 2654435761 + k * 40503) % 4294967296) / 4294967296 * (max + 1))];
+            return [f, s === 0 ? 0 : s === 1 ? max : Math.floor((((s * 2654435761 + k * 40503) % 4294967296) / 4294967296) * (max + 1))];
           }),
         ),
       );

@@ -8,9 +8,26 @@ import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
-  BARY_CORNER1, BARY_CORNER2, BARY_WORD, constantsWgsl, decodeBary, defineArena, defineBindGroup, defineBits, GRID_X, PATTERN_FRAME_WORD,
-  RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS, SCAN_WORKGROUP_SIZE, SCENE_UNIFORMS, SHARED_CONSTANTS, STAGE, usedBindings, WORKGROUP_SIZE,
-  wgslPrefix, type BitWord,
+  BARY_CORNER1,
+  BARY_CORNER2,
+  BARY_WORD,
+  constantsWgsl,
+  decodeBary,
+  defineArena,
+  defineBindGroup,
+  defineBits,
+  GRID_X,
+  PATTERN_FRAME_WORD,
+  RENDER_BIND_GROUPS,
+  RENDER_PIPELINE_GROUPS,
+  SCAN_WORKGROUP_SIZE,
+  SCENE_UNIFORMS,
+  SHARED_CONSTANTS,
+  STAGE,
+  usedBindings,
+  WORKGROUP_SIZE,
+  wgslPrefix,
+  type BitWord,
 } from '../src/gpu/contract.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
 import { packFrame } from '../src/gpu/prepare.ts';
@@ -43,7 +60,10 @@ function parseStruct(wgsl: string): ParsedStruct {
   let at = 0;
   let align = 1;
   const fields: ParsedStruct['fields'] = [];
-  for (const decl of m[2].split(',').map((d) => d.trim()).filter(Boolean)) {
+  for (const decl of m[2]
+    .split(',')
+    .map((d) => d.trim())
+    .filter(Boolean)) {
     const [, name, type] = /^(\w+)\s*:\s*(.+)$/.exec(decl)!;
     const t = WGSL_TYPES[type.replace(/\s/g, '')];
     if (!t) throw new Error(`unknown type ${type}`);
@@ -52,7 +72,7 @@ function parseStruct(wgsl: string): ParsedStruct {
     at += t.size;
     align = Math.max(align, t.align);
   }
-  return { name: m[1], fields, size: Math.ceil(Math.ceil(at / align) * align / 16) * 16 };
+  return { name: m[1], fields, size: Math.ceil((Math.ceil(at / align) * align) / 16) * 16 };
 }
 
 describe('uniform structs', () => {
@@ -215,12 +235,28 @@ describe('packed words', () => {
       const reverse = [(r & 1) === 1, (r & 2) === 2, (r & 4) === 4] as const;
       const f = chooseFrame(reverse as unknown as Parameters<typeof chooseFrame>[0]);
       const byHand =
-        f.a | (f.b << 2) | (f.c << 4) | (f.bottomEdge << 6) | (f.leftEdge << 8) | (f.rightEdge << 10) |
-        (Number(f.flipBottom) << 12) | (Number(f.flipLeft) << 13) | (Number(f.flipRight) << 14) | (Number(f.mirrored) << 15);
+        f.a |
+        (f.b << 2) |
+        (f.c << 4) |
+        (f.bottomEdge << 6) |
+        (f.leftEdge << 8) |
+        (f.rightEdge << 10) |
+        (Number(f.flipBottom) << 12) |
+        (Number(f.flipLeft) << 13) |
+        (Number(f.flipRight) << 14) |
+        (Number(f.mirrored) << 15);
       expect(packFrame(reverse as unknown as Parameters<typeof packFrame>[0])).toBe(byHand);
       expect(PATTERN_FRAME_WORD.unpack(byHand)).toEqual({
-        a: f.a, b: f.b, c: f.c, bottomEdge: f.bottomEdge, leftEdge: f.leftEdge, rightEdge: f.rightEdge,
-        flipBottom: Number(f.flipBottom), flipLeft: Number(f.flipLeft), flipRight: Number(f.flipRight), mirrored: Number(f.mirrored),
+        a: f.a,
+        b: f.b,
+        c: f.c,
+        bottomEdge: f.bottomEdge,
+        leftEdge: f.leftEdge,
+        rightEdge: f.rightEdge,
+        flipBottom: Number(f.flipBottom),
+        flipLeft: Number(f.flipLeft),
+        flipRight: Number(f.flipRight),
+        mirrored: Number(f.mirrored),
       });
     }
   });
@@ -260,7 +296,10 @@ describe('shared constants', () => {
     expect(sizes('scan.wgsl').every((n) => n === SCAN_WORKGROUP_SIZE)).toBe(true);
     for (const f of ['tess-count.wgsl', 'tess-weld.wgsl', 'tess-plan.wgsl', 'tess-factors.wgsl', 'tess-emit.wgsl']) {
       expect(sizes(f).length, f).toBeGreaterThan(0);
-      expect(sizes(f).every((n) => n === WORKGROUP_SIZE), f).toBe(true);
+      expect(
+        sizes(f).every((n) => n === WORKGROUP_SIZE),
+        f,
+      ).toBe(true);
     }
   });
 });
@@ -301,7 +340,9 @@ describe("the renderer's bindings", () => {
     it(`${name}: the shader declares exactly the bindings of its pipeline layout`, () => {
       const code = RENDER_SHADERS[name as keyof typeof RENDER_SHADERS].join('\n');
       const expected = groups
-        .flatMap((g, group) => (RENDER_BIND_GROUPS[g] as readonly GPUBindGroupLayoutEntry[]).map((e) => ({ group, binding: e.binding, kind: layoutKind(e) })))
+        .flatMap((g, group) =>
+          (RENDER_BIND_GROUPS[g] as readonly GPUBindGroupLayoutEntry[]).map((e) => ({ group, binding: e.binding, kind: layoutKind(e) })),
+        )
         .sort((a, b) => a.group - b.group || a.binding - b.binding);
       expect(declaredBindings(code)).toEqual(expected);
     });
@@ -344,9 +385,9 @@ describe('defineBindGroup and usedBindings', () => {
     expect(declaredBindings(group.wgsl())).toEqual(expected);
     expect(declaredBindings(group.wgsl(['work', 'params']))).toEqual(expected.filter((e) => e.binding === 0 || e.binding === 3));
     expect(group.layoutEntries(['out']).map((e) => [e.binding, e.visibility, e.buffer?.type])).toEqual([[5, STAGE.COMPUTE, 'storage']]);
-    expect(() => defineBindGroup(0, { a: { binding: 1, space: 'read', type: 'array<u32>' }, b: { binding: 1, space: 'read', type: 'array<u32>' } })).toThrow(
-      /share binding 1/,
-    );
+    expect(() =>
+      defineBindGroup(0, { a: { binding: 1, space: 'read', type: 'array<u32>' }, b: { binding: 1, space: 'read', type: 'array<u32>' } }),
+    ).toThrow(/share binding 1/);
   });
 
   it('usedBindings follows the calls of an entry point, and only its own', () => {

@@ -214,7 +214,8 @@ export function defineBindGroup<K extends string>(
 ): BindGroupSpec<K> {
   const all = (Object.entries(entries) as [K, BindingSpec][]).sort((a, b) => a[1].binding - b[1].binding);
   for (let i = 1; i < all.length; i++) {
-    if (all[i][1].binding === all[i - 1][1].binding) throw new Error(`${all[i - 1][0]} and ${all[i][0]} share binding ${all[i][1].binding}`);
+    if (all[i][1].binding === all[i - 1][1].binding)
+      throw new Error(`${all[i - 1][0]} and ${all[i][0]} share binding ${all[i][1].binding}`);
   }
   const pick = (names?: readonly K[]) => (names ? all.filter(([k]) => names.includes(k)) : all);
   const binding = Object.fromEntries(all.map(([k, e]) => [k, e.binding])) as Record<K, number>;
@@ -326,7 +327,10 @@ export function defineArena<K extends string, S>(arrays: readonly (readonly [K, 
       return Object.fromEntries(names.map((k) => [field(k), layout.offset[k]])) as Record<OffsetField<K>, number>;
     },
     wgslAccessors(buffer, params) {
-      return names.map((k) => `fn ${k}_at(i: u32) -> u32 { return ${buffer}[${params}.${field(k)} + i]; }`).join('\n').concat('\n');
+      return names
+        .map((k) => `fn ${k}_at(i: u32) -> u32 { return ${buffer}[${params}.${field(k)} + i]; }`)
+        .join('\n')
+        .concat('\n');
     },
   };
 }
@@ -341,7 +345,7 @@ export function defineArena<K extends string, S>(arrays: readonly (readonly [K, 
 export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
   ['viewProj', 'mat4x4<f32>', 'World to clip space of the camera (WebGPU clip space, z in 0..1).'],
   ['lightViewProj', 'mat4x4<f32>', 'World to clip space of the light (the shadow map).'],
-  ['model', 'mat4x4<f32>', 'Model to world: a rotation only (the model\'s up axis to +Y), so it also turns normals.'],
+  ['model', 'mat4x4<f32>', "Model to world: a rotation only (the model's up axis to +Y), so it also turns normals."],
   ['eye', 'vec4<f32>', "xyz: the camera's position; w: the model's bounding radius."],
   ['toLight', 'vec4<f32>', 'xyz: unit vector towards the light; w: one shadow-map texel in uv units.'],
   ['center', 'vec4<f32>', "xyz: the bounding sphere's centre; w: the ground's height."],
