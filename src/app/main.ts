@@ -21,7 +21,9 @@ import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
 import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
-import { renderStats, type OtherModeCounts } from './stats.ts';
+import { OtherModeProbe } from './other-mode.ts';
+import { renderStats } from './stats.ts';
+import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 
 /** Turntable speed, radians per second. */
@@ -56,12 +58,13 @@ class TessellationDemo extends DemoBase {
   readonly ccTables = new CcTableCache();
 
   /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
-  otherCounts: OtherModeCounts | null = null;
+  readonly #otherMode = new OtherModeProbe({
+    now: () => performance.now(),
+    later: (ms, fn) => window.setTimeout(fn, ms),
+    redraw: () => this.requestFrame(),
+    changed: () => this.updateStats(true),
+  });
   #otherReader: CountsReader | null = null;
-  #probeKey = '';
-  #probeCameraMoved = false;
-  #lastProbeAt = 0;
-  #probeTimer = 0;
   /** The factors of this frame's camera, and of the build the output holds now. */
   #frameFactors: FactorParams | null = null;
   #builtFactors: FactorParams | null = null;
@@ -76,8 +79,12 @@ class TessellationDemo extends DemoBase {
   #countsOwed = false;
   #rebuiltThisFrame = false;
   #tessTimingInFlight = false;
-  #statsDue = 0;
-  #statsTimer = 0;
+  /** The stats panel is redrawn at most every 250 ms (see updateStats). */
+  readonly #statsThrottle = new TrailingThrottle(() => this.#renderStats(), 250, {
+    now: () => performance.now(),
+    setTimeout: (fn, ms) => window.setTimeout(fn, ms),
+    clearTimeout: (id) => window.clearTimeout(id),
+  });
   #firstFrameShown = false;
 
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
@@ -136,7 +143,7 @@ class TessellationDemo extends DemoBase {
     this.flat = new CageGeometry(device);
     this.counts = new CountsReader(device);
     this.#otherReader = new CountsReader(device);
-    this.#probeKey = '';
+    this.#otherMode.reset();
     // After a device loss: upload the current model to the new device.
     this.controller.reupload();
   }
@@ -203,7 +210,7 @@ class TessellationDemo extends DemoBase {
 
   protected override onCameraChanged(): void {
     if (this.geometry?.dependsOnCamera(this.params)) this.#geometryDirty = true;
-    this.#probeCameraMoved = true;
+    this.#otherMode.cameraMoved();
   }
 
   /** Factors or model changed: rebuild at the next frame. */
@@ -279,36 +286,21 @@ class TessellationDemo extends DemoBase {
     const frame = this.#frameFactors;
     const built = this.#builtFactors;
     if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
+    const output = geometry.output;
     const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
     const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
     const key = [this.controller.version, this.shownSurface, this.params.flat, other, setting].join('|');
-    if (key !== this.#probeKey) this.otherCounts = null;
-    else if (!(other === 'adaptive' && this.#probeCameraMoved)) return;
-    const wait = this.#lastProbeAt + 1000 - performance.now();
-    if (key === this.#probeKey && wait > 0) {
-      // The camera moved just after a count: count again a little later.
-      if (!this.#probeTimer) this.#probeTimer = window.setTimeout(() => {
-        this.#probeTimer = 0;
-        this.requestFrame();
-      }, wait);
-      return;
-    }
-    if (!reader.idle) return;
-    const device = this.gpu.device;
-    let encoder = device.createCommandEncoder({ label: `count ${other} output` });
-    geometry.encode(encoder, { ...frame, mode: other });
-    reader.copy(encoder, geometry.output.counts);
-    device.queue.submit([encoder.finish()]);
-    encoder = device.createCommandEncoder({ label: 'rebuild the drawn output' });
-    geometry.encode(encoder, built);
-    device.queue.submit([encoder.finish()]);
-    this.#probeKey = key;
-    this.#probeCameraMoved = false;
-    this.#lastProbeAt = performance.now();
-    void reader.read().then((counts) => {
-      if (!counts || this.#probeKey !== key) return;
-      this.otherCounts = { mode: other, setting, counts };
-      this.updateStats(true);
+    this.#otherMode.update({ key, other, setting }, () => {
+      if (!reader.idle) return null;
+      const device = this.gpu.device;
+      let encoder = device.createCommandEncoder({ label: `count ${other} output` });
+      geometry.encode(encoder, { ...frame, mode: other });
+      reader.copy(encoder, output.counts);
+      device.queue.submit([encoder.finish()]);
+      encoder = device.createCommandEncoder({ label: 'rebuild the drawn output' });
+      geometry.encode(encoder, built);
+      device.queue.submit([encoder.finish()]);
+      return reader.read();
     });
   }
 
@@ -355,19 +347,10 @@ class TessellationDemo extends DemoBase {
    * arrived in between (counts read back just after the last update would stay "…").
    */
   updateStats(force = false): void {
-    const now = performance.now();
-    if (!force && now < this.#statsDue) {
-      if (!this.#statsTimer) this.#statsTimer = window.setTimeout(() => {
-        this.#statsTimer = 0;
-        this.updateStats(true);
-      }, this.#statsDue - now);
-      return;
-    }
-    if (this.#statsTimer) {
-      window.clearTimeout(this.#statsTimer);
-      this.#statsTimer = 0;
-    }
-    this.#statsDue = now + 250;
+    this.#statsThrottle.call(force);
+  }
+
+  #renderStats(): void {
     const panel = document.getElementById('stats');
     if (!panel || !this.params.ui) return;
     panel.innerHTML = renderStats({
@@ -384,7 +367,7 @@ class TessellationDemo extends DemoBase {
         tablesMs: this.cc?.ms,
         tablesWhere: this.cc?.where,
       },
-      other: this.otherCounts,
+      other: this.#otherMode.counts,
       mode: this.params.mode,
       tessTimes: this.tessTimes,
       drawTimes: this.drawTimes,
