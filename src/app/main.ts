@@ -43,16 +43,16 @@ class TessellationDemo extends DemoBase {
   readonly controller: DemoController<LoadedModel, CcTables, Placement>;
   panel: Panel | null = null;
   /** The model's bounds in world space, and its model-to-world rotation (up axis to +Y). */
-  bounds: Bounds | null = null;
-  modelMatrix = upAxisMatrix('z') as Float32Array;
+  #bounds: Bounds | null = null;
+  #modelMatrix = upAxisMatrix('z') as Float32Array;
 
-  renderer: Renderer | null = null;
+  #renderer: Renderer | null = null;
   /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
    * the flat cage (for before/after). */
   #tess: Partial<Record<TessSurface, TessellatorGeometry>> = {};
-  flat: CageGeometry | null = null;
-  cageLines: CageLines | null = null;
-  counts: CountsReader | null = null;
+  #flat: CageGeometry | null = null;
+  #cageLines: CageLines | null = null;
+  #counts: CountsReader | null = null;
 
   /** Catmull-Clark tables per cage (built in a worker): the controller's surface data. */
   readonly ccTables = new CcTableCache();
@@ -69,11 +69,11 @@ class TessellationDemo extends DemoBase {
   #frameFactors: FactorParams | null = null;
   #builtFactors: FactorParams | null = null;
 
-  lastCounts: MeshCounts | null = null;
+  #lastCounts: MeshCounts | null = null;
   /** GPU milliseconds of the last rebuild's passes, and of the last frame's draw passes. */
-  tessTimes: Record<string, number> = {};
-  drawTimes: Record<string, number> = {};
-  rebuilds = 0;
+  #tessTimes: Record<string, number> = {};
+  #drawTimes: Record<string, number> = {};
+  #rebuilds = 0;
   #geometryDirty = true;
   /** A build's counts still to be copied for reading back. */
   #countsOwed = false;
@@ -117,8 +117,8 @@ class TessellationDemo extends DemoBase {
           this.placeModel(placement?.camera);
         }
         if (placement) this.panel?.showPicked(placement.pick);
-        this.lastCounts = null;
-        this.tessTimes = {};
+        this.#lastCounts = null;
+        this.#tessTimes = {};
         this.updateLegend();
         this.invalidateGeometry();
         // The first model's message stays until its first frame is on screen (onAfterSubmit).
@@ -139,9 +139,9 @@ class TessellationDemo extends DemoBase {
 
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
-    this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
-    this.flat = new CageGeometry(device);
-    this.counts = new CountsReader(device);
+    this.#renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
+    this.#flat = new CageGeometry(device);
+    this.#counts = new CountsReader(device);
     this.#otherReader = new CountsReader(device);
     this.#otherMode.reset();
     // After a device loss: upload the current model to the new device.
@@ -149,11 +149,11 @@ class TessellationDemo extends DemoBase {
   }
 
   protected override onDeviceLost(): void {
-    this.renderer = null;
+    this.#renderer = null;
     this.#tess = {};
-    this.flat = null;
-    this.cageLines = null;
-    this.counts = null;
+    this.#flat = null;
+    this.#cageLines = null;
+    this.#counts = null;
     this.#otherReader = null;
     this.#frameFactors = this.#builtFactors = null;
   }
@@ -170,7 +170,7 @@ class TessellationDemo extends DemoBase {
   }
 
   #geometryFor(surface: Shown): GeometrySource | null {
-    return surface === 'cage' ? this.flat : (this.#tess[surface] ?? null);
+    return surface === 'cage' ? this.#flat : (this.#tess[surface] ?? null);
   }
 
   /** The tessellator for `surface`, created on first use (the other one is freed). */
@@ -226,7 +226,7 @@ class TessellationDemo extends DemoBase {
   }
 
   protected override onFrame(encoder: GPUCommandEncoder, target: GPUTexture, time: number): void {
-    const renderer = this.renderer;
+    const renderer = this.#renderer;
     const geometry = this.geometry;
     if (!renderer || !geometry) return;
     const cam = this.viewCamera(time);
@@ -237,8 +237,8 @@ class TessellationDemo extends DemoBase {
     if (this.params.spin && geometry.dependsOnCamera(this.params)) this.#geometryDirty = true;
     this.#rebuiltThisFrame = false;
     // The tessellator works in the cage's own space: hand it the camera in model space.
-    const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.modelMatrix) as Float32Array;
-    const worldToModel = mat4.invert(mat4.create(), this.modelMatrix)!;
+    const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.#modelMatrix) as Float32Array;
+    const worldToModel = mat4.invert(mat4.create(), this.#modelMatrix)!;
     const factors: FactorParams = {
       mode: this.params.mode,
       fixedFactor: this.params.factor,
@@ -256,16 +256,16 @@ class TessellationDemo extends DemoBase {
       this.#countsOwed = true;
       this.#geometryDirty = false;
       this.#rebuiltThisFrame = true;
-      this.rebuilds++;
+      this.#rebuilds++;
     }
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
     // (and the demo draws on demand: there may be none).
-    if (this.#countsOwed && geometry.output && this.counts?.idle) {
-      this.counts.copy(encoder, geometry.output.counts);
+    if (this.#countsOwed && geometry.output && this.#counts?.idle) {
+      this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
-    renderer.render(encoder, target, { viewProj, model: this.modelMatrix, eye: m.eye }, {
+    renderer.render(encoder, target, { viewProj, model: this.#modelMatrix, eye: m.eye }, {
       wireframe: this.params.wire,
       cage: this.params.cage,
       patchColours: this.patchColours,
@@ -305,7 +305,7 @@ class TessellationDemo extends DemoBase {
   }
 
   protected override onAfterSubmit(): void {
-    const renderer = this.renderer;
+    const renderer = this.#renderer;
     const geometry = this.geometry;
     this.#countOtherMode();
     // One read of the build's timestamps at a time: while one is mapping, later builds (a
@@ -315,19 +315,19 @@ class TessellationDemo extends DemoBase {
     // Each read updates the stats on its own: the counts never wait on a timing read (on some
     // drivers a timestamp buffer's map settles late or not at all).
     const quietly = <T>(p: Promise<T> | undefined, fallback: T) => (p ?? Promise.resolve(fallback)).catch(() => fallback);
-    void quietly(this.counts?.read(), null).then((counts) => {
-      if (counts) this.lastCounts = counts;
+    void quietly(this.#counts?.read(), null).then((counts) => {
+      if (counts) this.#lastCounts = counts;
       this.updateStats();
       if (this.#countsOwed) this.requestFrame();
     });
     void quietly(renderer?.readTimings(), {}).then((draw) => {
-      this.drawTimes = draw;
+      this.#drawTimes = draw;
       this.updateStats();
     });
     if (readTess) {
       void quietly(geometry?.readTimings(), {}).then((tess) => {
         this.#tessTimingInFlight = false;
-        if (Object.keys(tess).length) this.tessTimes = tess;
+        if (Object.keys(tess).length) this.#tessTimes = tess;
         this.updateStats();
       });
     }
@@ -355,7 +355,7 @@ class TessellationDemo extends DemoBase {
     if (!panel || !this.params.ui) return;
     panel.innerHTML = renderStats({
       model: this.model,
-      counts: this.lastCounts,
+      counts: this.#lastCounts,
       vertexCapacity: this.geometry?.output?.vertexCapacity ?? 0,
       triangleCapacity: this.geometry?.output?.triangleCapacity ?? 0,
       source: this.geometry?.kind ?? 'cage',
@@ -369,12 +369,12 @@ class TessellationDemo extends DemoBase {
       },
       other: this.#otherMode.counts,
       mode: this.params.mode,
-      tessTimes: this.tessTimes,
-      drawTimes: this.drawTimes,
+      tessTimes: this.#tessTimes,
+      drawTimes: this.#drawTimes,
       timestamps: this.gpu.timestamps,
       frameMs: this.timing.frameMs,
       jsMs: this.timing.jsMs,
-      rebuilds: this.rebuilds,
+      rebuilds: this.#rebuilds,
       adapter: this.gpu.adapterName,
     });
   }
@@ -396,26 +396,26 @@ class TessellationDemo extends DemoBase {
   /** World bounds, light and camera for the current model and up axis. */
   placeModel(camera?: CameraParams): void {
     if (!this.model) return;
-    this.modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
-    this.bounds = transformBounds(boundsOf(this.model.cage.positions), this.modelMatrix);
-    this.renderer?.setBounds(this.bounds);
-    this.setCamera(this.#initialCamera(this.bounds, camera));
+    this.#modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
+    this.#bounds = transformBounds(boundsOf(this.model.cage.positions), this.#modelMatrix);
+    this.#renderer?.setBounds(this.#bounds);
+    this.setCamera(this.#initialCamera(this.#bounds, camera));
     this.invalidateGeometry();
   }
 
   /** The controller's upload: `model` on this device, drawn as `surface`. Without a device (it
    * was lost) there is nothing to do: onInit uploads what the controller shows to the new one. */
   #upload(model: LoadedModel, surface: Shown, data: CcTables | null): void {
-    const renderer = this.renderer;
-    if (!renderer || !this.flat) return;
-    this.flat.setCage(model.cage);
+    const renderer = this.#renderer;
+    if (!renderer || !this.#flat) return;
+    this.#flat.setCage(model.cage);
     if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined);
     renderer.setMesh(this.#geometryFor(surface)?.output ?? null);
     renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
-    this.cageLines?.vertices.destroy();
-    this.cageLines = uploadCageLines(this.gpu.device, model.cage);
-    renderer.setCage(this.cageLines);
-    if (this.bounds) renderer.setBounds(this.bounds);
+    this.#cageLines?.vertices.destroy();
+    this.#cageLines = uploadCageLines(this.gpu.device, model.cage);
+    renderer.setCage(this.#cageLines);
+    if (this.#bounds) renderer.setBounds(this.#bounds);
     this.invalidateGeometry();
   }
 
@@ -431,7 +431,7 @@ class TessellationDemo extends DemoBase {
   }
 
   resetCamera(): void {
-    if (this.bounds) this.setCamera(this.frameBounds(this.bounds));
+    if (this.#bounds) this.setCamera(this.frameBounds(this.#bounds));
   }
 
   /** The current view as URL parameters (camera included), for sharing. */
