@@ -23,7 +23,7 @@ export function errorMessage(e: unknown): string {
   return String(e);
 }
 
-/** The surfaces the tessellator draws (the flat cage needs no tessellator). */
+/** A surface as drawn (the same names as asked for: Catmull-Clark, Phong or the flat cage). */
 export type Shown = Surface;
 
 export interface DemoPorts<M extends { title: string }, D, P = void> {

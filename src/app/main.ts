@@ -55,7 +55,7 @@ class TessellationDemo extends DemoBase {
   #counts: CountsReader | null = null;
 
   /** Catmull-Clark tables per cage (built in a worker): the controller's surface data. */
-  readonly ccTables = new CcTableCache();
+  readonly #ccTables = new CcTableCache();
 
   /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
   readonly #otherMode = new OtherModeProbe({
@@ -96,8 +96,8 @@ class TessellationDemo extends DemoBase {
   /** The page's side of the controller. */
   #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
     return {
-      prepareSurface: (model) => this.ccTables.get(model.cage),
-      surfaceReady: (model) => this.ccTables.has(model.cage),
+      prepareSurface: (model) => this.#ccTables.get(model.cage),
+      surfaceReady: (model) => this.#ccTables.has(model.cage),
       upload: (model, surface, data) => this.#upload(model, surface, data),
       loading: (message) => setLoading(message),
       preparing: () => this.updateStats(true),
