@@ -28,6 +28,10 @@ import {
   WORKGROUP_SIZE,
   wgslPrefix,
   type BitWord,
+  GROUND_EXTENT,
+  PATCH_COLOURS,
+  sceneWgsl,
+  wgslF32,
 } from '../src/gpu/contract.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
 import { packFrame } from '../src/gpu/prepare.ts';
@@ -457,5 +461,29 @@ describe('defineArena', () => {
     params.write(view, arena.offsets(l));
     expect([4, 8, 12].map((o) => view.getUint32(o, true))).toEqual([0, 5, 11]);
     expect(arena.wgslAccessors('work', 'params')).toContain('fn edgeBase_at(i: u32) -> u32 { return work[params.offEdgeBase + i]; }');
+  });
+});
+
+describe('render constants', () => {
+  it('the prelude declares the ground extent and the patch palette with the TypeScript values', () => {
+    expect(Number(/const GROUND_EXTENT: f32 = ([\d.]+);/.exec(sceneWgsl)?.[1])).toBe(GROUND_EXTENT);
+    const palette = /const PATCH_SRGB = array<vec3f, (\d+)>\((.*)\);/.exec(sceneWgsl);
+    expect(Number(palette?.[1])).toBe(PATCH_COLOURS.length);
+    const colours = [...(palette?.[2] ?? '').matchAll(/vec3f\(([^)]*)\)/g)].map((m) => m[1].split(',').map(Number));
+    // Indexed by kind: the shader's PATCH_SRGB[k] is kind k's colour.
+    expect(colours).toEqual(PATCH_COLOURS.map((p) => [...p.srgb]));
+    expect(PATCH_COLOURS.map((p) => p.kind)).toEqual(PATCH_COLOURS.map((_, i) => i));
+    // Each f32 literal reads back as the same f32 as the TypeScript number.
+    for (const x of [4, 0.56, 0.8, 1e-7, 123.25]) expect(Math.fround(Number(wgslF32(x)))).toBe(Math.fround(x));
+    expect(wgslF32(4)).toBe('4.0');
+  });
+
+  it('no render shader types a colour of the palette or the ground extent again', () => {
+    const files = ['render-lit.wgsl', 'render-ground.wgsl', 'render-common.wgsl', 'render-shading.wgsl'];
+    for (const f of files) {
+      const text = readFileSync(new URL(`../wgsl/${f}`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      expect(text, f).not.toMatch(/const\s+(GROUND_EXTENT|PATCH_SRGB)\b/);
+      for (const p of PATCH_COLOURS) expect(text, `${f}: ${p.name}`).not.toContain(`vec3f(${p.srgb.join(', ')})`);
+    }
   });
 });

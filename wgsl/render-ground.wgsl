@@ -1,7 +1,8 @@
 // A ground plane under the model: a faint grid that catches the shadow and fades into the
 // backdrop (prepended: render-common.wgsl, render-shading.wgsl). Drawn as a 4-vertex strip.
 
-const GROUND_EXTENT = 4.0; // in bounding radii; camera.ts sizes the clip planes and light box to it
+// GROUND_EXTENT (in bounding radii) comes with the prelude: camera.ts fits the clip planes and
+// the light's box to the same number (src/gpu/contract.ts).
 
 struct VertexOut {
   @builtin(position) clip: vec4f,

@@ -17,10 +17,10 @@ struct VertexOut {
   @location(2) patchWeights: vec4f,
 }
 
-// Keep in step with PATCH_COLOURS in src/gpu/renderer.ts (the legend).
+// PATCH_SRGB (the prelude) holds the colours of the kinds, the legend's (src/gpu/contract.ts PATCH_COLOURS).
 fn patchColour(w: vec4f) -> vec3f {
-  let c = w.x * linearFromSrgb(vec3f(0.56, 0.80, 0.52)) + w.y * linearFromSrgb(vec3f(0.95, 0.47, 0.33))
-    + w.z * linearFromSrgb(vec3f(0.50, 0.60, 0.98)) + w.w * linearFromSrgb(vec3f(0.96, 0.82, 0.30));
+  let c = w.x * linearFromSrgb(PATCH_SRGB[0]) + w.y * linearFromSrgb(PATCH_SRGB[1])
+    + w.z * linearFromSrgb(PATCH_SRGB[2]) + w.w * linearFromSrgb(PATCH_SRGB[3]);
   return c / max(dot(w, vec4f(1.0)), 1e-6);
 }
 

@@ -390,5 +390,31 @@ export const RENDER_PIPELINE_GROUPS = {
 
 export type RenderPipelineName = keyof typeof RENDER_PIPELINE_GROUPS;
 
-/** The WGSL declaration of the per-frame uniforms: the struct and its binding (group 0 everywhere). */
-export const sceneWgsl = `${SCENE_UNIFORMS.wgsl}\n@group(0) @binding(0) var<uniform> scene: SceneUniforms;\n`;
+/** How far the ground plane reaches from the model's centre, in bounding radii: the ground shader
+ * draws it that far, camera.ts fits the clip planes and the light's box around it. */
+export const GROUND_EXTENT = 4;
+
+/** Patch kinds (src/gpu/cc/build.ts PatchKind) in patch-colour mode, sRGB, indexed by kind: the
+ * lit shader's palette (PATCH_SRGB) and the demo's legend. */
+export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
+  { kind: 0, name: 'regular', srgb: [0.56, 0.8, 0.52] },
+  { kind: 1, name: 'irregular quad', srgb: [0.95, 0.47, 0.33] },
+  { kind: 2, name: 'triangle / n-gon region', srgb: [0.5, 0.6, 0.98] },
+  { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.3] },
+];
+
+/** A WGSL f32 literal of `x` (an integer gets its `.0`; JavaScript's shortest round-trip digits). */
+export function wgslF32(x: number): string {
+  if (!Number.isFinite(x)) throw new Error(`${x} has no WGSL literal`);
+  return Number.isInteger(x) ? `${x}.0` : String(x);
+}
+
+/** What every render shader starts with: the per-frame uniforms (the struct and its binding,
+ * group 0 everywhere) and the constants the TypeScript shares with the render shaders. */
+export const sceneWgsl = [
+  SCENE_UNIFORMS.wgsl,
+  '@group(0) @binding(0) var<uniform> scene: SceneUniforms;',
+  `const GROUND_EXTENT: f32 = ${wgslF32(GROUND_EXTENT)};`,
+  `const PATCH_SRGB = array<vec3f, ${PATCH_COLOURS.length}>(${PATCH_COLOURS.map((p) => `vec3f(${p.srgb.map(wgslF32).join(', ')})`).join(', ')});`,
+  '',
+].join('\n');

@@ -77,13 +77,8 @@ const MESH_BUFFERS: GPUVertexBufferLayout[] = [
 ];
 const TIMED_PASSES = ['shadow', 'lit'] as const;
 
-/** Patch kinds (src/gpu/cc/build.ts PatchKind) in patch-colour mode, sRGB; the demo's legend uses the same. */
-export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
-  { kind: 0, name: 'regular', srgb: [0.56, 0.80, 0.52] },
-  { kind: 1, name: 'irregular quad', srgb: [0.95, 0.47, 0.33] },
-  { kind: 2, name: 'triangle / n-gon region', srgb: [0.50, 0.60, 0.98] },
-  { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.30] },
-];
+/** The patch colours (declared in contract.ts, where the lit shader's palette comes from too). */
+export { PATCH_COLOURS } from './contract.ts';
 
 export class Renderer {
   readonly device: GPUDevice;
