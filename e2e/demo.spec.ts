@@ -14,6 +14,11 @@ function collectErrors(page: Page): string[] {
   return errors;
 }
 
+/** What the panel's cage picker shows. */
+function picked(page: Page) {
+  return page.locator('.lil-gui.panel .lil-option').filter({ hasText: 'cage' }).first().locator('.lil-display');
+}
+
 async function ready(page: Page): Promise<void> {
   await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
 }
@@ -31,11 +36,18 @@ async function dropFile(page: Page, name: string, text: string): Promise<void> {
 
 test('loads a model without console errors and shows its stats', async ({ page }) => {
   const errors = collectErrors(page);
+  const requests: string[] = [];
+  page.on('request', (r) => requests.push(r.url()));
   await page.goto('/?model=torus&t=0');
   await ready(page);
+  // The counts and the draw timings follow the first frame within moments, not at the next rebuild.
+  await expect(page.getByTestId('stats-output')).toContainText('tris', { timeout: 3_000 });
+  await expect(page.getByTestId('stats-gpu')).not.toHaveText('…', { timeout: 3_000 });
   await expect(page.getByTestId('stats-cage')).toContainText('torus');
   await expect(page.getByTestId('stats-cage')).toContainText('128 verts');
-  await expect(page.getByTestId('stats-output')).toContainText('tris');
+  await expect(picked(page)).toHaveText('Torus');
+  // The model list is built in: no request for an index (the built site has none: a 404 in the console).
+  expect(requests.filter((u) => u.includes('index.json'))).toEqual([]);
   // Catmull-Clark by default, its tables built in the worker; the talk's numbers in the panel.
   await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark');
   await expect(page.getByTestId('stats-surface')).toContainText('256 regular');
@@ -217,6 +229,8 @@ test('a bad OBJ shows its error with line numbers and keeps the model', async ({
   // A good file replaces the model.
   await dropFile(page, 'quad.obj', 'v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n');
   await expect(page.getByTestId('stats-cage')).toContainText('quad.obj');
+  // The picker names the file, not the project model shown before it.
+  await expect(picked(page)).toHaveText('quad.obj');
 });
 
 test('a missing model falls back to the default with a message', async ({ page }) => {
@@ -224,12 +238,14 @@ test('a missing model falls back to the default with a message', async ({ page }
   await ready(page);
   await expect(page.getByTestId('toast-error')).toContainText('no-such-model');
   await expect(page.getByTestId('stats-cage')).toContainText('creature');
+  await expect(picked(page)).toHaveText('Creature');
 });
 
 test('?model= takes a URL', async ({ page }) => {
   await page.goto(`/?model=${encodeURIComponent('./models/gear.obj')}&t=0`);
   await ready(page);
   await expect(page.getByTestId('stats-cage')).toContainText('gear.obj');
+  await expect(picked(page)).toHaveText('gear.obj');
 });
 
 test('recovers from a lost device', async ({ page }) => {

@@ -35,7 +35,7 @@ export function main(argv: string[]): number {
   if (!model) usage('no model given');
   let text: string;
   try { text = readFileSync(model, 'utf8'); } catch (e) { process.stderr.write(`subdiv: cannot read ${model}: ${(e as Error).message}\n`); return 66; }
-  let loaded;
+  let loaded: ReturnType<typeof loadCage>;
   try { loaded = loadCage(text); } catch (e) {
     if (e instanceof CageError) { process.stderr.write(`subdiv: ${model}: refused:\n${e.message}\n`); return 2; }
     throw e;
@@ -84,7 +84,7 @@ export function main(argv: string[]): number {
     const creases: [number, number, number][] = [];
     for (let e = 0; e < L.he.nEdges; e++) if (L.edgeSharp[e] > 0 && L.he.edgeFaceCount[e] === 2) creases.push([L.he.edgeVerts[2 * e], L.he.edgeVerts[2 * e + 1], L.edgeSharp[e]]);
     const corners: [number, number][] = [];
-    for (let v = 0; v < L.he.nVerts; v++) if (L.vertSharp[v] > 0 && !(refineL === 0 ? false : false)) corners.push([v, L.vertSharp[v]]);
+    for (let v = 0; v < L.he.nVerts; v++) if (L.vertSharp[v] > 0) corners.push([v, L.vertSharp[v]]);
     const holes: number[] = [];
     for (let f = 0; f < L.he.nFaces; f++) if (L.hole[f]) holes.push(f);
     const out = makeCage(L.pos, faces, { creases, corners, holes });

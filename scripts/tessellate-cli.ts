@@ -107,7 +107,7 @@ function parse(argv: string[]) {
 
 export async function main(argv: string[]): Promise<number> {
   let args: ReturnType<typeof parse>;
-  let cage;
+  let cage: ReturnType<typeof loadCage>['cage'];
   try {
     args = parse(argv);
     if (!existsSync(args.model)) throw new UsageError(`no such file: ${args.model}`);

@@ -70,3 +70,14 @@ describe('URL parameters', () => {
     expect(formatParams(parseParams('?mode=fixed&factor=7.5'))).toBe('?mode=fixed&factor=7.5');
   });
 });
+
+describe('the model list', () => {
+  it("names exactly the project's models in public/models (the page asks the server for no index)", async () => {
+    const { readdirSync } = await import('node:fs');
+    const { BUILTIN_MODELS, DEFAULT_MODEL } = await import('../src/app/models.ts');
+    const files = readdirSync(new URL('../public/models/', import.meta.url)).filter((f) => f.endsWith('.obj')).map((f) => f.slice(0, -4));
+    expect(BUILTIN_MODELS.map((m) => m.name).sort()).toEqual(files.sort());
+    expect(BUILTIN_MODELS.map((m) => m.name)).toContain(DEFAULT_MODEL);
+    expect(new Set(BUILTIN_MODELS.map((m) => m.label)).size).toBe(BUILTIN_MODELS.length);
+  });
+});

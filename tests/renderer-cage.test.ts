@@ -101,8 +101,8 @@ describe('cage overlay', () => {
       expect(Array.from(f32.slice(i * 4, i * 4 + 3))).toEqual([cube.positions[3 * v], cube.positions[3 * v + 1], cube.positions[3 * v + 2]]);
       expect(colour(i)[3]).toBe(255);
     }
-    const smooth = sharpness.findIndex((s) => s === 0);
-    const crease = sharpness.findIndex((s) => s === 10);
+    const smooth = sharpness.indexOf(0);
+    const crease = sharpness.indexOf(10);
     expect(colour(2 * smooth)).not.toEqual(colour(2 * crease));
     expect(colour(2 * smooth)).toEqual(colour(2 * smooth + 1));
   });

@@ -20,7 +20,7 @@ fn backdropFragment(in: VertexOut) -> @location(0) vec4f {
   let top = linearFromSrgb(vec3f(0.21, 0.23, 0.28));
   let bottom = linearFromSrgb(vec3f(0.10, 0.11, 0.13));
   var colour = mix(top, bottom, smoothstep(0.0, 1.0, in.uv.y));
-  let aspect = frame.viewport.x / max(frame.viewport.y, 1.0);
+  let aspect = scene.viewport.x / max(scene.viewport.y, 1.0);
   let d = length((in.uv - 0.5) * vec2f(aspect, 1.0));
   colour *= 1.0 - 0.3 * smoothstep(0.45, 1.2, d);
   return vec4f(colour, 1.0);

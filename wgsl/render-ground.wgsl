@@ -1,7 +1,8 @@
 // A ground plane under the model: a faint grid that catches the shadow and fades into the
 // backdrop (prepended: render-common.wgsl, render-shading.wgsl). Drawn as a 4-vertex strip.
 
-const GROUND_EXTENT = 4.0; // in bounding radii; camera.ts sizes the clip planes and light box to it
+// GROUND_EXTENT (in bounding radii) comes with the prelude: camera.ts fits the clip planes and
+// the light's box to the same number (src/gpu/contract.ts).
 
 struct VertexOut {
   @builtin(position) clip: vec4f,
@@ -11,10 +12,10 @@ struct VertexOut {
 @vertex
 fn groundVertex(@builtin(vertex_index) i: u32) -> VertexOut {
   let corner = vec2f(f32(i & 1u), f32(i >> 1u)) * 2.0 - 1.0;
-  let r = frame.eye.w * GROUND_EXTENT;
-  let world = vec3f(frame.center.x + corner.x * r, frame.center.w, frame.center.z + corner.y * r);
+  let r = scene.eye.w * GROUND_EXTENT;
+  let world = vec3f(scene.center.x + corner.x * r, scene.center.w, scene.center.z + corner.y * r);
   var out: VertexOut;
-  out.clip = frame.viewProj * vec4f(world, 1.0);
+  out.clip = scene.viewProj * vec4f(world, 1.0);
   out.world = world;
   return out;
 }
@@ -31,10 +32,10 @@ fn gridLines(p: vec2f, spacing: f32) -> f32 {
 
 @fragment
 fn groundFragment(in: VertexOut) -> @location(0) vec4f {
-  let r = frame.eye.w;
+  let r = scene.eye.w;
   // Grid spacing: a power of ten near a quarter of the model's radius, with a minor grid.
   let major = pow(10.0, round(log2(r * 0.5) / log2(10.0)));
-  let rel = in.world.xz - frame.center.xz;
+  let rel = in.world.xz - scene.center.xz;
   let lines = max(gridLines(rel, major) * 0.5, gridLines(rel, major * 0.2) * 0.18);
 
   let up = vec3f(0.0, 1.0, 0.0);

@@ -17,10 +17,10 @@ struct VertexOut {
   @location(2) patchWeights: vec4f,
 }
 
-// Keep in step with PATCH_COLOURS in src/gpu/renderer.ts (the legend).
+// PATCH_SRGB (the prelude) holds the colours of the kinds, the legend's (src/gpu/contract.ts PATCH_COLOURS).
 fn patchColour(w: vec4f) -> vec3f {
-  let c = w.x * linearFromSrgb(vec3f(0.56, 0.80, 0.52)) + w.y * linearFromSrgb(vec3f(0.95, 0.47, 0.33))
-    + w.z * linearFromSrgb(vec3f(0.50, 0.60, 0.98)) + w.w * linearFromSrgb(vec3f(0.96, 0.82, 0.30));
+  let c = w.x * linearFromSrgb(PATCH_SRGB[0]) + w.y * linearFromSrgb(PATCH_SRGB[1])
+    + w.z * linearFromSrgb(PATCH_SRGB[2]) + w.w * linearFromSrgb(PATCH_SRGB[3]);
   return c / max(dot(w, vec4f(1.0)), 1e-6);
 }
 
@@ -28,11 +28,11 @@ fn patchColour(w: vec4f) -> vec3f {
 fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
   let world = modelToWorld(position);
   var out: VertexOut;
-  out.clip = frame.viewProj * vec4f(world, 1.0);
+  out.clip = scene.viewProj * vec4f(world, 1.0);
   out.world = world;
-  out.normal = (frame.model * vec4f(normal, 0.0)).xyz;
+  out.normal = (scene.model * vec4f(normal, 0.0)).xyz;
   out.patchWeights = vec4f(0.0);
-  if (frame.viewport.w > 0.5 && index < arrayLength(&srcTri)) {
+  if (scene.viewport.w > 0.5 && index < arrayLength(&srcTri)) {
     let t = srcTri[index];
     if (t < arrayLength(&patchKind)) {
       let k = patchKind[t];
@@ -44,7 +44,7 @@ fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @l
 
 @fragment
 fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) vec4f {
-  let toEye = normalize(frame.eye.xyz - in.world);
+  let toEye = normalize(scene.eye.xyz - in.world);
   // The facet's normal, for vertices whose normal is degenerate (a zero sum of faces).
   var faceNormal = normalize(cross(dpdx(in.world), dpdy(in.world)));
   faceNormal = select(-faceNormal, faceNormal, dot(faceNormal, toEye) >= 0.0);
@@ -60,7 +60,7 @@ fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0
   if (dot(in.patchWeights, vec4f(1.0)) > 0.01) {
     albedo = patchColour(in.patchWeights) * select(0.7, 1.0, front);
   }
-  let l = frame.toLight.xyz;
+  let l = scene.toLight.xyz;
   let ndl = max(dot(n, l), 0.0);
   let shadow = shadowFactor(in.world, n);
   let h = normalize(l + toEye);

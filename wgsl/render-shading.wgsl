@@ -14,12 +14,12 @@ fn ambient(n: vec3f) -> vec3f {
 
 // 0 in shadow, 1 lit. 4×4 taps of the hardware's bilinear comparison: a soft, stable edge.
 fn shadowFactor(world: vec3f, n: vec3f) -> f32 {
-  let texel = frame.toLight.w;
+  let texel = scene.toLight.w;
   // Normal offset: look the point up a little off the surface, further where the light grazes
   // it (that is where one shadow texel spans the most surface), to keep acne away.
-  let worldTexel = 2.0 * frame.eye.w * texel;
-  let grazing = 1.0 - clamp(dot(n, frame.toLight.xyz), 0.0, 1.0);
-  let p = frame.lightViewProj * vec4f(world + n * worldTexel * (0.6 + 1.6 * grazing), 1.0);
+  let worldTexel = 2.0 * scene.eye.w * texel;
+  let grazing = 1.0 - clamp(dot(n, scene.toLight.xyz), 0.0, 1.0);
+  let p = scene.lightViewProj * vec4f(world + n * worldTexel * (0.6 + 1.6 * grazing), 1.0);
   let uv = p.xy * vec2f(0.5, -0.5) + 0.5;
   var sum = 0.0;
   for (var y = 0; y < 4; y++) {

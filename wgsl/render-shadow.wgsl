@@ -2,5 +2,5 @@
 
 @vertex
 fn shadowVertex(@location(0) position: vec3f) -> @builtin(position) vec4f {
-  return frame.lightViewProj * vec4f(modelToWorld(position), 1.0);
+  return scene.lightViewProj * vec4f(modelToWorld(position), 1.0);
 }

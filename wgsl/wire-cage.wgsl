@@ -12,7 +12,7 @@ struct VertexOut {
 @vertex
 fn cageVertex(@location(0) position: vec3f, @location(1) colour: vec4f) -> VertexOut {
   var out: VertexOut;
-  out.clip = frame.viewProj * vec4f(pullTowardEye(modelToWorld(position), 2e-3), 1.0);
+  out.clip = scene.viewProj * vec4f(pullTowardEye(modelToWorld(position), 2e-3), 1.0);
   out.colour = colour;
   return out;
 }

@@ -13,7 +13,7 @@ struct VertexOut {
 fn cornerClip(triangle: u32, corner: u32) -> vec4f {
   let v = indices[triangle * 3u + corner];
   let p = vec3f(positions[3u * v], positions[3u * v + 1u], positions[3u * v + 2u]);
-  return frame.viewProj * vec4f(pullTowardEye(modelToWorld(p), 1e-3), 1.0);
+  return scene.viewProj * vec4f(pullTowardEye(modelToWorld(p), 1e-3), 1.0);
 }
 
 @vertex
@@ -26,10 +26,10 @@ fn wireVertex(@builtin(vertex_index) i: u32) -> VertexOut {
   let b = cornerClip(triangle, (edge + 1u) % 3u);
   // Edges only a few pixels long would paint the surface solid: fade them out, so a dense
   // tessellation reads as a texture of its density rather than a black blot.
-  let pixels = length((a.xy / max(a.w, 1e-6) - b.xy / max(b.w, 1e-6)) * frame.viewport.xy * 0.5);
+  let pixels = length((a.xy / max(a.w, 1e-6) - b.xy / max(b.w, 1e-6)) * scene.viewport.xy * 0.5);
   var out: VertexOut;
   out.clip = select(a, b, end == 1u);
-  out.alpha = frame.viewport.z * mix(0.15, 1.0, smoothstep(4.0, 16.0, pixels));
+  out.alpha = scene.viewport.z * mix(0.15, 1.0, smoothstep(4.0, 16.0, pixels));
   return out;
 }
 

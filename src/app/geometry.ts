@@ -113,11 +113,3 @@ export class TessellatorGeometry implements GeometrySource {
     this.#tessellator.destroy();
   }
 }
-
-/**
- * The page's geometry source: the compute tessellator for one surface, its output buffers sized
- * for `capacity` vertices and as many triangles (clamped to the device's limits).
- */
-export async function createGeometry(device: GPUDevice, capacity: number, surface: TessSurface = 'phong'): Promise<TessellatorGeometry> {
-  return new TessellatorGeometry(device, capacity, surface);
-}

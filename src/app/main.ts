@@ -4,112 +4,173 @@
  * The geometry is rebuilt only when the model, the factors or (in adaptive mode) the camera
  * change; every other frame draws the stored buffers again. The Catmull-Clark tables are built
  * on the CPU once per model, in a worker (cc-tables.ts).
+ *
+ * What is shown (model, surface, its data) and the flow that changes it live in controller.ts;
+ * this file is the page: the canvas, the GPU objects, the panel, the stats and the messages.
  */
 import GUI from 'lil-gui';
-import { CageError } from '../mesh/index.ts';
 import { mat4 } from 'gl-matrix';
 import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
 import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
 import { CcTableCache, type CcTables } from './cc-tables.ts';
+import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
-import {
-  BUILTIN_MODELS, DEFAULT_MODEL, fetchModelList, loadModelFromFile, loadModelFromUrl, modelUrl,
-  type LoadedModel, type ModelEntry,
-} from './models.ts';
-import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams, type Surface } from './params.ts';
-import { renderStats, type OtherModeCounts } from './stats.ts';
+import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
+import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { OtherModeProbe } from './other-mode.ts';
+import { renderStats } from './stats.ts';
+import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 
 /** Turntable speed, radians per second. */
 const SPIN_SPEED = 0.35;
 
+type CameraParams = Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>;
+
+/** What a model request carries to the page: the first view, and what the cage picker shows. */
+interface Placement {
+  camera?: CameraParams;
+  pick: string;
+}
+
 class TessellationDemo extends DemoBase {
   params: DemoParams;
-  models: ModelEntry[] = BUILTIN_MODELS;
-  model: LoadedModel | null = null;
+  /** The model, its surface data and the surface drawn, and the one flow that changes them. */
+  readonly controller: DemoController<LoadedModel, CcTables, Placement>;
+  panel: Panel | null = null;
   /** The model's bounds in world space, and its model-to-world rotation (up axis to +Y). */
-  bounds: Bounds | null = null;
-  modelMatrix = upAxisMatrix('z') as Float32Array;
+  #bounds: Bounds | null = null;
+  #modelMatrix = upAxisMatrix('z') as Float32Array;
 
-  renderer: Renderer | null = null;
+  #renderer: Renderer | null = null;
   /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
    * the flat cage (for before/after). */
   #tess: Partial<Record<TessSurface, TessellatorGeometry>> = {};
-  flat: CageGeometry | null = null;
-  cageLines: CageLines | null = null;
-  counts: CountsReader | null = null;
+  #flat: CageGeometry | null = null;
+  #cageLines: CageLines | null = null;
+  #counts: CountsReader | null = null;
 
-  /** Catmull-Clark tables per cage (built in a worker), the current model's, or why it has none. */
-  readonly ccTables = new CcTableCache();
-  cc: CcTables | null = null;
-  ccError: string | null = null;
-  buildingTables = false;
-  #loadSerial = 0;
+  /** Catmull-Clark tables per cage (built in a worker): the controller's surface data. */
+  readonly #ccTables = new CcTableCache();
 
   /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
-  otherCounts: OtherModeCounts | null = null;
+  readonly #otherMode = new OtherModeProbe({
+    now: () => performance.now(),
+    later: (ms, fn) => window.setTimeout(fn, ms),
+    redraw: () => this.requestFrame(),
+    changed: () => this.updateStats(true),
+  });
   #otherReader: CountsReader | null = null;
-  #probeKey = '';
-  #probeCameraMoved = false;
-  #lastProbeAt = 0;
-  #probeTimer = 0;
   /** The factors of this frame's camera, and of the build the output holds now. */
   #frameFactors: FactorParams | null = null;
   #builtFactors: FactorParams | null = null;
 
-  lastCounts: MeshCounts | null = null;
+  #lastCounts: MeshCounts | null = null;
   /** GPU milliseconds of the last rebuild's passes, and of the last frame's draw passes. */
-  tessTimes: Record<string, number> = {};
-  drawTimes: Record<string, number> = {};
-  rebuilds = 0;
+  #tessTimes: Record<string, number> = {};
+  #drawTimes: Record<string, number> = {};
+  #rebuilds = 0;
   #geometryDirty = true;
+  /** A build's counts still to be copied for reading back. */
+  #countsOwed = false;
   #rebuiltThisFrame = false;
   #tessTimingInFlight = false;
-  #statsDue = 0;
-  #statsTimer = 0;
+  /** The stats panel is redrawn at most every 250 ms (see updateStats). */
+  readonly #statsThrottle = new TrailingThrottle(() => this.#renderStats(), 250, {
+    now: () => performance.now(),
+    setTimeout: (fn, ms) => window.setTimeout(fn, ms),
+    clearTimeout: (id) => window.clearTimeout(id),
+  });
   #firstFrameShown = false;
 
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
     super(canvas, { frozenTime: params.t });
     this.params = params;
+    this.controller = new DemoController(this.#ports(), params.surface);
+  }
+
+  /** The page's side of the controller. */
+  #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
+    return {
+      prepareSurface: (model) => this.#ccTables.get(model.cage),
+      surfaceReady: (model) => this.#ccTables.has(model.cage),
+      upload: (model, surface, data) => this.#upload(model, surface, data),
+      loading: (message) => setLoading(message),
+      preparing: () => this.updateStats(true),
+      failed: (title, message, kept) => {
+        showToast(message, { kind: 'error', title });
+        if (!kept) setPageState('error');
+      },
+      fellBack: (model, reason) =>
+        showToast(`${reason}\n\nShowing the Phong surface instead.`, {
+          kind: 'info',
+          title: `No Catmull-Clark surface for ${model.title}`,
+          timeout: 10_000,
+        }),
+      shown: (model, previous, placement) => {
+        if (model !== previous) {
+          for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
+          this.placeModel(placement?.camera);
+        }
+        if (placement) this.panel?.showPicked(placement.pick);
+        this.#lastCounts = null;
+        this.#tessTimes = {};
+        this.updateLegend();
+        this.invalidateGeometry();
+        // The first model's message stays until its first frame is on screen (onAfterSubmit).
+        if (previous) setLoading(null);
+        this.updateStats(true);
+      },
+    };
+  }
+
+  get model(): LoadedModel | null {
+    return this.controller.model;
+  }
+
+  /** The shown model's Catmull-Clark tables (kept while another surface is drawn), or null. */
+  get cc(): CcTables | null {
+    return this.controller.data;
   }
 
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
-    this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
-    this.flat = new CageGeometry(device);
-    this.counts = new CountsReader(device);
+    this.#renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
+    this.#flat = new CageGeometry(device);
+    this.#counts = new CountsReader(device);
     this.#otherReader = new CountsReader(device);
-    this.#probeKey = '';
+    this.#otherMode.reset();
     // After a device loss: upload the current model to the new device.
-    if (this.model) this.#uploadModel(this.model);
+    this.controller.reupload();
   }
 
   protected override onDeviceLost(): void {
-    this.renderer = null;
+    this.#renderer = null;
     this.#tess = {};
-    this.flat = null;
-    this.cageLines = null;
-    this.counts = null;
+    this.#flat = null;
+    this.#cageLines = null;
+    this.#counts = null;
     this.#otherReader = null;
     this.#frameFactors = this.#builtFactors = null;
   }
 
   /** The surface drawn now: the one asked for, but Phong where the model has no Catmull-Clark
    * tables (refused, or still being built). */
-  get shownSurface(): Surface {
-    const s = this.params.surface;
-    return s === 'catmull-clark' && !this.cc ? 'phong' : s;
+  get shownSurface(): Shown {
+    return this.controller.shownSurface;
   }
 
   /** What is drawn now: the tessellated surface or the flat cage. */
   get geometry(): GeometrySource | null {
-    const s = this.shownSurface;
-    return s === 'cage' ? this.flat : this.#tess[s] ?? null;
+    return this.#geometryFor(this.shownSurface);
+  }
+
+  #geometryFor(surface: Shown): GeometrySource | null {
+    return surface === 'cage' ? this.#flat : (this.#tess[surface] ?? null);
   }
 
   /** The tessellator for `surface`, created on first use (the other one is freed). */
@@ -121,53 +182,6 @@ class TessellationDemo extends DemoBase {
       this.#tess = { [surface]: tess };
     }
     return tess;
-  }
-
-  /** Switch surfaces (Catmull-Clark, Phong, flat cage), building the Catmull-Clark tables first
-   * if the model has none yet; the old picture stays up meanwhile. */
-  async showSurface(): Promise<void> {
-    const model = this.model;
-    if (model && this.params.surface === 'catmull-clark' && !this.cc && !this.ccError) {
-      const tables = await this.#tablesFor(model);
-      if (this.model !== model) return; // another model came meanwhile, with its own tables
-      this.cc = tables.cc;
-      this.ccError = tables.error;
-      setLoading(null);
-      if (tables.error) this.#reportFallback(model.title);
-    }
-    if (this.model && this.renderer) {
-      try {
-        this.#uploadModel(this.model);
-      } catch (e) {
-        showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${this.model.title}` });
-      }
-    }
-    this.lastCounts = null;
-    this.tessTimes = {};
-    this.invalidateGeometry();
-    this.updateStats(true);
-  }
-
-  /** Build (or take from the cache) the Catmull-Clark tables of `model`, saying so meanwhile. */
-  async #tablesFor(model: LoadedModel): Promise<{ cc: CcTables | null; error: string | null }> {
-    if (!this.ccTables.has(model.cage)) setLoading('Building subdivision tables…');
-    this.buildingTables = true;
-    this.updateStats(true);
-    try {
-      return { cc: await this.ccTables.get(model.cage), error: null };
-    } catch (e) {
-      return { cc: null, error: (e as Error)?.message ?? String(e) };
-    } finally {
-      this.buildingTables = false;
-    }
-  }
-
-  #reportFallback(title: string): void {
-    showToast(`${this.ccError}\n\nShowing the Phong surface instead.`, {
-      kind: 'info',
-      title: `No Catmull-Clark surface for ${title}`,
-      timeout: 10_000,
-    });
   }
 
   /** Patch colours are on and there are patches to colour. */
@@ -196,7 +210,7 @@ class TessellationDemo extends DemoBase {
 
   protected override onCameraChanged(): void {
     if (this.geometry?.dependsOnCamera(this.params)) this.#geometryDirty = true;
-    this.#probeCameraMoved = true;
+    this.#otherMode.cameraMoved();
   }
 
   /** Factors or model changed: rebuild at the next frame. */
@@ -212,7 +226,7 @@ class TessellationDemo extends DemoBase {
   }
 
   protected override onFrame(encoder: GPUCommandEncoder, target: GPUTexture, time: number): void {
-    const renderer = this.renderer;
+    const renderer = this.#renderer;
     const geometry = this.geometry;
     if (!renderer || !geometry) return;
     const cam = this.viewCamera(time);
@@ -223,8 +237,8 @@ class TessellationDemo extends DemoBase {
     if (this.params.spin && geometry.dependsOnCamera(this.params)) this.#geometryDirty = true;
     this.#rebuiltThisFrame = false;
     // The tessellator works in the cage's own space: hand it the camera in model space.
-    const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.modelMatrix) as Float32Array;
-    const worldToModel = mat4.invert(mat4.create(), this.modelMatrix)!;
+    const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.#modelMatrix) as Float32Array;
+    const worldToModel = mat4.invert(mat4.create(), this.#modelMatrix)!;
     const factors: FactorParams = {
       mode: this.params.mode,
       fixedFactor: this.params.factor,
@@ -239,12 +253,19 @@ class TessellationDemo extends DemoBase {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
-      this.counts?.copy(encoder, geometry.output.counts);
+      this.#countsOwed = true;
       this.#geometryDirty = false;
       this.#rebuiltThisFrame = true;
-      this.rebuilds++;
+      this.#rebuilds++;
     }
-    renderer.render(encoder, target, { viewProj, model: this.modelMatrix, eye: m.eye }, {
+    // The counts of the latest build, copied once the reader is free: a copy skipped because a
+    // read was still in flight would leave the stats' output row at "…" until the next rebuild
+    // (and the demo draws on demand: there may be none).
+    if (this.#countsOwed && geometry.output && this.#counts?.idle) {
+      this.#counts.copy(encoder, geometry.output.counts);
+      this.#countsOwed = false;
+    }
+    renderer.render(encoder, target, { viewProj, model: this.#modelMatrix, eye: m.eye }, {
       wireframe: this.params.wire,
       cage: this.params.cage,
       patchColours: this.patchColours,
@@ -265,41 +286,26 @@ class TessellationDemo extends DemoBase {
     const frame = this.#frameFactors;
     const built = this.#builtFactors;
     if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
+    const output = geometry.output;
     const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
     const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
-    const key = [this.#loadSerial, this.shownSurface, this.params.flat, other, setting].join('|');
-    if (key !== this.#probeKey) this.otherCounts = null;
-    else if (!(other === 'adaptive' && this.#probeCameraMoved)) return;
-    const wait = this.#lastProbeAt + 1000 - performance.now();
-    if (key === this.#probeKey && wait > 0) {
-      // The camera moved just after a count: count again a little later.
-      if (!this.#probeTimer) this.#probeTimer = window.setTimeout(() => {
-        this.#probeTimer = 0;
-        this.requestFrame();
-      }, wait);
-      return;
-    }
-    if (!reader.idle) return;
-    const device = this.gpu.device;
-    let encoder = device.createCommandEncoder({ label: `count ${other} output` });
-    geometry.encode(encoder, { ...frame, mode: other });
-    reader.copy(encoder, geometry.output.counts);
-    device.queue.submit([encoder.finish()]);
-    encoder = device.createCommandEncoder({ label: 'rebuild the drawn output' });
-    geometry.encode(encoder, built);
-    device.queue.submit([encoder.finish()]);
-    this.#probeKey = key;
-    this.#probeCameraMoved = false;
-    this.#lastProbeAt = performance.now();
-    void reader.read().then((counts) => {
-      if (!counts || this.#probeKey !== key) return;
-      this.otherCounts = { mode: other, setting, counts };
-      this.updateStats(true);
+    const key = [this.controller.version, this.shownSurface, this.params.flat, other, setting].join('|');
+    this.#otherMode.update({ key, other, setting }, () => {
+      if (!reader.idle) return null;
+      const device = this.gpu.device;
+      let encoder = device.createCommandEncoder({ label: `count ${other} output` });
+      geometry.encode(encoder, { ...frame, mode: other });
+      reader.copy(encoder, output.counts);
+      device.queue.submit([encoder.finish()]);
+      encoder = device.createCommandEncoder({ label: 'rebuild the drawn output' });
+      geometry.encode(encoder, built);
+      device.queue.submit([encoder.finish()]);
+      return reader.read();
     });
   }
 
   protected override onAfterSubmit(): void {
-    const renderer = this.renderer;
+    const renderer = this.#renderer;
     const geometry = this.geometry;
     this.#countOtherMode();
     // One read of the build's timestamps at a time: while one is mapping, later builds (a
@@ -309,18 +315,19 @@ class TessellationDemo extends DemoBase {
     // Each read updates the stats on its own: the counts never wait on a timing read (on some
     // drivers a timestamp buffer's map settles late or not at all).
     const quietly = <T>(p: Promise<T> | undefined, fallback: T) => (p ?? Promise.resolve(fallback)).catch(() => fallback);
-    void quietly(this.counts?.read(), null).then((counts) => {
-      if (counts) this.lastCounts = counts;
+    void quietly(this.#counts?.read(), null).then((counts) => {
+      if (counts) this.#lastCounts = counts;
       this.updateStats();
+      if (this.#countsOwed) this.requestFrame();
     });
     void quietly(renderer?.readTimings(), {}).then((draw) => {
-      this.drawTimes = draw;
+      this.#drawTimes = draw;
       this.updateStats();
     });
     if (readTess) {
       void quietly(geometry?.readTimings(), {}).then((tess) => {
         this.#tessTimingInFlight = false;
-        if (Object.keys(tess).length) this.tessTimes = tess;
+        if (Object.keys(tess).length) this.#tessTimes = tess;
         this.updateStats();
       });
     }
@@ -340,135 +347,79 @@ class TessellationDemo extends DemoBase {
    * arrived in between (counts read back just after the last update would stay "…").
    */
   updateStats(force = false): void {
-    const now = performance.now();
-    if (!force && now < this.#statsDue) {
-      if (!this.#statsTimer) this.#statsTimer = window.setTimeout(() => {
-        this.#statsTimer = 0;
-        this.updateStats(true);
-      }, this.#statsDue - now);
-      return;
-    }
-    if (this.#statsTimer) {
-      window.clearTimeout(this.#statsTimer);
-      this.#statsTimer = 0;
-    }
-    this.#statsDue = now + 250;
+    this.#statsThrottle.call(force);
+  }
+
+  #renderStats(): void {
     const panel = document.getElementById('stats');
     if (!panel || !this.params.ui) return;
     panel.innerHTML = renderStats({
       model: this.model,
-      counts: this.lastCounts,
+      counts: this.#lastCounts,
       vertexCapacity: this.geometry?.output?.vertexCapacity ?? 0,
       triangleCapacity: this.geometry?.output?.triangleCapacity ?? 0,
       source: this.geometry?.kind ?? 'cage',
       surface: {
         shown: this.shownSurface,
-        fallback: this.params.surface === 'catmull-clark' ? this.ccError : null,
-        building: this.buildingTables,
+        fallback: this.controller.dataError,
+        building: this.controller.preparing,
         kinds: this.cc ? kindCounts(this.cc.data.triKind) : undefined,
         tablesMs: this.cc?.ms,
         tablesWhere: this.cc?.where,
       },
-      other: this.otherCounts,
+      other: this.#otherMode.counts,
       mode: this.params.mode,
-      tessTimes: this.tessTimes,
-      drawTimes: this.drawTimes,
+      tessTimes: this.#tessTimes,
+      drawTimes: this.#drawTimes,
       timestamps: this.gpu.timestamps,
       frameMs: this.timing.frameMs,
       jsMs: this.timing.jsMs,
-      rebuilds: this.rebuilds,
+      rebuilds: this.#rebuilds,
       adapter: this.gpu.adapterName,
     });
   }
 
-  /** Show a model; on failure keep the current one and say why. */
-  async showModel(load: () => Promise<LoadedModel>, what: string, camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): Promise<boolean> {
-    const serial = ++this.#loadSerial;
-    setLoading(`Loading ${what}…`);
-    let model: LoadedModel;
-    let tables: { cc: CcTables | null; error: string | null } = { cc: null, error: null };
-    try {
-      model = await load();
-      if (serial !== this.#loadSerial) return false; // a later request replaced this one
-      // The Catmull-Clark tables first (in a worker; the old model stays up meanwhile).
-      if (this.params.surface === 'catmull-clark') tables = await this.#tablesFor(model);
-      if (serial !== this.#loadSerial) return false;
-    } catch (e) {
-      setLoading(null);
-      const message = e instanceof CageError ? e.message : (e as Error)?.message ?? String(e);
-      const kept = this.model ? `\n\nStill showing ${this.model.title}.` : '';
-      showToast(message + kept, { kind: 'error', title: `Could not load ${what}` });
-      if (!this.model) setPageState('error');
-      return false;
-    }
-    const kept = { cc: this.cc, ccError: this.ccError };
-    this.cc = tables.cc;
-    this.ccError = tables.error;
-    try {
-      this.#uploadModel(model);
-    } catch (e) {
-      setLoading(null);
-      showToast(`${(e as Error)?.message ?? String(e)}`, { kind: 'error', title: `Could not tessellate ${what}` });
-      this.cc = kept.cc;
-      this.ccError = kept.ccError;
-      if (this.model) this.#uploadModel(this.model);
-      return false;
-    }
-    if (tables.error) this.#reportFallback(model.title);
-    for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
-    const previous = this.model;
-    this.model = model;
-    this.placeModel(camera);
-    this.lastCounts = null;
-    this.tessTimes = {};
-    this.invalidateGeometry();
-    if (previous) setLoading(null);
-    this.updateStats(true);
-    // The surface was switched to Catmull-Clark while this model loaded without tables.
-    if (this.params.surface === 'catmull-clark' && !this.cc && !this.ccError) void this.showSurface();
-    return true;
+  /** Load one of the project's models (by name), a URL, or a file; the picker shows which. */
+  loadBuiltin(name: string, camera?: CameraParams): Promise<boolean> {
+    return this.controller.loadModel(() => loadModelFromUrl(modelUrl(name), name), name, { camera, pick: name });
+  }
+
+  loadUrl(url: string, camera?: CameraParams): Promise<boolean> {
+    const title = url.split('/').pop() || url;
+    return this.controller.loadModel(() => loadModelFromUrl(url, title), url, { camera, pick: title });
+  }
+
+  loadFile(file: File): Promise<boolean> {
+    return this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
   }
 
   /** World bounds, light and camera for the current model and up axis. */
-  placeModel(camera?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): void {
+  placeModel(camera?: CameraParams): void {
     if (!this.model) return;
-    this.modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
-    this.bounds = transformBounds(boundsOf(this.model.cage.positions), this.modelMatrix);
-    this.renderer!.setBounds(this.bounds);
-    this.setCamera(this.#initialCamera(this.bounds, camera));
+    this.#modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
+    this.#bounds = transformBounds(boundsOf(this.model.cage.positions), this.#modelMatrix);
+    this.#renderer?.setBounds(this.#bounds);
+    this.setCamera(this.#initialCamera(this.#bounds, camera));
     this.invalidateGeometry();
   }
 
-  /** Upload `model` (whose tables, if any, are this.cc) for the surface shown; where the
-   * Catmull-Clark tessellator refuses it, fall back to Phong (this.ccError says why). */
-  #uploadModel(model: LoadedModel): void {
-    try {
-      this.#upload(model);
-    } catch (e) {
-      if (this.shownSurface !== 'catmull-clark') throw e;
-      this.cc = null;
-      this.ccError = (e as Error)?.message ?? String(e);
-      this.#upload(model);
-      this.#reportFallback(model.title);
-    }
-  }
-
-  #upload(model: LoadedModel): void {
-    const device = this.gpu.device;
-    const surface = this.shownSurface;
-    this.flat!.setCage(model.cage);
-    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? this.cc!.data : undefined);
-    this.renderer!.setMesh(this.geometry!.output);
-    this.renderer!.setPatchKinds(surface === 'catmull-clark' ? this.cc!.data.triKind : null);
-    this.updateLegend();
-    this.cageLines?.vertices.destroy();
-    this.cageLines = uploadCageLines(device, model.cage);
-    this.renderer!.setCage(this.cageLines);
-    if (this.bounds) this.renderer!.setBounds(this.bounds);
+  /** The controller's upload: `model` on this device, drawn as `surface`. Without a device (it
+   * was lost) there is nothing to do: onInit uploads what the controller shows to the new one. */
+  #upload(model: LoadedModel, surface: Shown, data: CcTables | null): void {
+    const renderer = this.#renderer;
+    if (!renderer || !this.#flat) return;
+    this.#flat.setCage(model.cage);
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined);
+    renderer.setMesh(this.#geometryFor(surface)?.output ?? null);
+    renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
+    this.#cageLines?.vertices.destroy();
+    this.#cageLines = uploadCageLines(this.gpu.device, model.cage);
+    renderer.setCage(this.#cageLines);
+    if (this.#bounds) renderer.setBounds(this.#bounds);
     this.invalidateGeometry();
   }
 
-  #initialCamera(bounds: Bounds, p?: Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>): OrbitCamera {
+  #initialCamera(bounds: Bounds, p?: CameraParams): OrbitCamera {
     const cam = this.frameBounds(bounds);
     const deg = Math.PI / 180;
     return {
@@ -480,7 +431,7 @@ class TessellationDemo extends DemoBase {
   }
 
   resetCamera(): void {
-    if (this.bounds) this.setCamera(this.frameBounds(this.bounds));
+    if (this.#bounds) this.setCamera(this.frameBounds(this.#bounds));
   }
 
   /** The current view as URL parameters (camera included), for sharing. */
@@ -530,12 +481,12 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       );
     },
   };
-  const options = Object.fromEntries(demo.models.map((m) => [m.label, m.name]));
+  const options = Object.fromEntries(BUILTIN_MODELS.map((m) => [m.label, m.name]));
   const modelFolder = gui.addFolder('Model');
   const picker = modelFolder.add(state, 'model', options).name('cage').onChange((name: string) => {
     p.model = name;
     syncUrl(p);
-    void demo.showModel(() => loadModelFromUrl(modelUrl(name), name), name);
+    void demo.loadBuiltin(name);
   });
   modelFolder.add(p, 'up', { 'Z (project models)': 'z', Y: 'y' }).name('up axis').onChange(() => {
     syncUrl(p);
@@ -551,7 +502,7 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   tess.add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' }).name('surface').onChange(() => {
     syncUrl(p);
     showFlat();
-    void demo.showSurface();
+    void demo.controller.setSurface(p.surface);
   });
   const flat = tess.add(p, 'flat').name('flat baseline').onChange(changed);
   const showFlat = () => flat.show(p.surface === 'catmull-clark');
@@ -598,7 +549,7 @@ function openFile(demo: TessellationDemo): void {
   input.accept = '.obj,text/plain';
   input.addEventListener('change', () => {
     const file = input.files?.[0];
-    if (file) void demo.showModel(() => loadModelFromFile(file), file.name);
+    if (file) void demo.loadFile(file);
   });
   input.click();
 }
@@ -624,7 +575,7 @@ function enableDrop(demo: TessellationDemo): void {
     depth = 0;
     overlay.hidden = true;
     const file = e.dataTransfer?.files?.[0];
-    if (file) void demo.showModel(() => loadModelFromFile(file), file.name);
+    if (file) void demo.loadFile(file);
   });
 }
 
@@ -638,21 +589,17 @@ async function main(): Promise<void> {
     demo,
     loseDevice: () => demo.gpu.device.destroy(),
   };
-  const [started, models] = await Promise.all([demo.start(), fetchModelList()]);
-  if (!started) return;
-  demo.models = models;
+  if (!(await demo.start())) return;
 
   const name = params.model ?? DEFAULT_MODEL;
-  const panel = params.ui ? buildPanel(demo, isModelUrl(name) ? DEFAULT_MODEL : name) : null;
+  demo.panel = params.ui ? buildPanel(demo, isModelUrl(name) ? DEFAULT_MODEL : name) : null;
   enableDrop(demo);
 
   const camera = { yaw: params.yaw, pitch: params.pitch, dist: params.dist };
   if (isModelUrl(name)) {
-    await demo.showModel(() => loadModelFromUrl(name, name.split('/').pop() || name), name, camera);
-  } else {
-    const ok = await demo.showModel(() => loadModelFromUrl(modelUrl(name), name), name, camera);
-    if (!ok && name !== DEFAULT_MODEL) await demo.showModel(() => loadModelFromUrl(modelUrl(DEFAULT_MODEL), DEFAULT_MODEL), DEFAULT_MODEL, camera);
-    if (!ok) panel?.showPicked(demo.model?.title ?? DEFAULT_MODEL);
+    await demo.loadUrl(name, camera);
+  } else if (!(await demo.loadBuiltin(name, camera)) && name !== DEFAULT_MODEL && !demo.model) {
+    await demo.loadBuiltin(DEFAULT_MODEL, camera);
   }
 }
 

@@ -4,6 +4,7 @@
  * cage or throws a CageError with line numbers.
  */
 import { loadCage, type LoadedCage } from '../mesh/index.ts';
+import { errorMessage } from './controller.ts';
 
 export interface ModelEntry {
   /** File name without `.obj`: what `?model=` takes. */
@@ -12,7 +13,9 @@ export interface ModelEntry {
   label: string;
 }
 
-/** The generated models (scripts/models.ts), in the order the picker shows them. */
+/** The project's models (public/models, written by scripts/models.ts), in the order the picker
+ * shows them. The list is fixed at build time, so the page asks the server for no index of them
+ * (a request for one that is not there logs an error in the console on every load). */
 export const BUILTIN_MODELS: ModelEntry[] = [
   { name: 'creature', label: 'Creature' },
   { name: 'pawn', label: 'Chess pawn' },
@@ -26,35 +29,6 @@ export const BUILTIN_MODELS: ModelEntry[] = [
 export const DEFAULT_MODEL = 'creature';
 
 const MODELS_DIR = 'models/';
-
-/**
- * The list in `models/index.json` when there is one (an array of names, or of {name, label}),
- * else the built-in list.
- */
-export async function fetchModelList(): Promise<ModelEntry[]> {
-  try {
-    const res = await fetch(`${MODELS_DIR}index.json`);
-    if (!res.ok || !(res.headers.get('content-type') ?? '').includes('json')) return BUILTIN_MODELS;
-    const json: unknown = await res.json();
-    const items = Array.isArray(json) ? json : (json as { models?: unknown[] })?.models;
-    if (!Array.isArray(items)) return BUILTIN_MODELS;
-    const list = items.flatMap((m): ModelEntry[] => {
-      if (typeof m === 'string') return [{ name: m, label: labelFor(m) }];
-      if (m && typeof m === 'object' && typeof (m as ModelEntry).name === 'string') {
-        const name = (m as ModelEntry).name.replace(/\.obj$/i, '');
-        return [{ name, label: typeof (m as ModelEntry).label === 'string' ? (m as ModelEntry).label : labelFor(name) }];
-      }
-      return [];
-    });
-    return list.length ? list : BUILTIN_MODELS;
-  } catch {
-    return BUILTIN_MODELS;
-  }
-}
-
-function labelFor(name: string): string {
-  return BUILTIN_MODELS.find((m) => m.name === name)?.label ?? name.replace(/[-_]/g, ' ').replace(/^./, (c) => c.toUpperCase());
-}
 
 export function modelUrl(name: string): string {
   return `${MODELS_DIR}${encodeURIComponent(name)}.obj`;
@@ -71,7 +45,7 @@ export async function loadModelFromUrl(url: string, title: string): Promise<Load
   try {
     res = await fetch(url);
   } catch (e) {
-    throw new Error(`could not fetch ${url}: ${(e as Error).message}`);
+    throw new Error(`could not fetch ${url}: ${errorMessage(e)}`);
   }
   if (!res.ok) throw new Error(`could not fetch ${url}: HTTP ${res.status} ${res.statusText}`);
   // Dev servers and SPA hosts answer unknown paths with the index page, not a 404.

@@ -159,7 +159,7 @@ export function computeTrace(mode: LineMode, lo: number, hi: number, log: boolea
   const xs: number[][] = [];
   for (let i = 0; i <= samples; i++) {
     const s = i / samples;
-    const f = log ? lo * Math.pow(hi / lo, s) : lo + (hi - lo) * s;
+    const f = log ? lo * (hi / lo) ** s : lo + (hi - lo) * s;
     fs.push(f);
     xs.push(linePattern(mode, f, maxFactor).x.map((v) => v / ONE));
   }

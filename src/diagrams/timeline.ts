@@ -56,7 +56,7 @@ export function trackValue(track: Track, s: number, ease: Ease): number {
   const b = track[i + 1];
   if (f === 0) return a;
   if (f === 1) return b;
-  if (ease === 'log' && a > 0 && b > 0) return a * Math.pow(b / a, f);
+  if (ease === 'log' && a > 0 && b > 0) return a * (b / a) ** f;
   return a + (b - a) * f;
 }
 

@@ -118,7 +118,7 @@ class Mapper {
   }
 }
 
-const flat = (pts: V2[]) => pts.flatMap((q) => q);
+const flat = (pts: V2[]) => pts.flat();
 
 // ---------------------------------------------------------------------------------------------
 // Which vertices move

@@ -111,5 +111,5 @@ export async function createGpu(options: DeviceOptions): Promise<GpuContext> {
 function describeAdapter(adapter: GPUAdapter): string {
   const info = adapter.info;
   if (!info) return 'unknown adapter';
-  return [info.vendor, info.architecture, info.description].filter((s) => s && s.length).join(' / ') || 'unknown adapter';
+  return [info.vendor, info.architecture, info.description].filter((s) => s?.length).join(' / ') || 'unknown adapter';
 }

@@ -16,7 +16,10 @@ export interface StructLayout<K extends string> {
 const SIZE: Record<FieldType, number> = { u32: 4, f32: 4, 'vec4<f32>': 16, 'mat4x4<f32>': 64 };
 const ALIGN: Record<FieldType, number> = { u32: 4, f32: 4, 'vec4<f32>': 16, 'mat4x4<f32>': 16 };
 
-export function defineStruct<K extends string>(name: string, fields: readonly (readonly [K, FieldType])[]): StructLayout<K> {
+/** A field: its name, its type, and optionally a comment that the generated WGSL carries. */
+export type FieldSpec<K extends string> = readonly [K, FieldType] | readonly [K, FieldType, string];
+
+export function defineStruct<K extends string>(name: string, fields: readonly FieldSpec<K>[]): StructLayout<K> {
   let at = 0;
   const offset = {} as Record<K, number>;
   const types = {} as Record<K, FieldType>;
@@ -27,7 +30,8 @@ export function defineStruct<K extends string>(name: string, fields: readonly (r
     at += SIZE[type];
   }
   const size = Math.ceil(at / 16) * 16;
-  const wgsl = `struct ${name} {\n${fields.map(([f, t]) => `  ${f}: ${t},`).join('\n')}\n}\n`;
+  const line = ([f, t, doc]: FieldSpec<K>) => `${doc ? `  // ${doc}\n` : ''}  ${f}: ${t},`;
+  const wgsl = `struct ${name} {\n${fields.map(line).join('\n')}\n}\n`;
   return {
     wgsl,
     size,

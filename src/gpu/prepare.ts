@@ -14,6 +14,7 @@
  */
 import type { Cage } from '../mesh/types.ts';
 import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
+import { PATTERN_FRAME_WORD } from './contract.ts';
 
 export interface PreparedMesh {
   vertexCount: number;
@@ -45,16 +46,10 @@ export interface PreparedMesh {
 
 export const NO_OWNER = 0xffffffff;
 
-/**
- * Frame bits: a | b << 2 | c << 4 (the corners playing A, B, C), bottom/left/right edge
- * indices at bits 6, 8, 10, flips at bits 12, 13, 14, mirrored at bit 15.
- */
+/** The pattern frame of a triangle with these reverse flags, as a PatternFrameWord (its bits are
+ * declared in contract.ts). */
 export function packFrame(reverse: Reverse): number {
-  const f = chooseFrame(reverse);
-  return (
-    f.a | (f.b << 2) | (f.c << 4) | (f.bottomEdge << 6) | (f.leftEdge << 8) | (f.rightEdge << 10) |
-    (Number(f.flipBottom) << 12) | (Number(f.flipLeft) << 13) | (Number(f.flipRight) << 14) | (Number(f.mirrored) << 15)
-  );
+  return PATTERN_FRAME_WORD.pack(chooseFrame(reverse));
 }
 
 export function prepareMesh(cage: Cage): PreparedMesh {

@@ -11,6 +11,10 @@
  * sample's "show irregular patches") read each vertex's source triangle (output.srcTri, from
  * storage by vertex index) and that triangle's kind (setPatchKinds). DOM-free: it takes a device,
  * a colour format, and a texture to draw into.
+ *
+ * The per-frame uniforms (SCENE_UNIFORMS) and the bind group layouts (RENDER_BIND_GROUPS,
+ * RENDER_PIPELINE_GROUPS) are declared in contract.ts; every render shader is the generated
+ * uniform declaration followed by its .wgsl files (RENDER_SHADERS).
  */
 import commonWGSL from '../../wgsl/render-common.wgsl?raw';
 import shadingWGSL from '../../wgsl/render-shading.wgsl?raw';
@@ -24,6 +28,20 @@ import wireCageWGSL from '../../wgsl/wire-cage.wgsl?raw';
 import type { TessellatedMesh } from './types.ts';
 import { CAGE_LINE_STRIDE, type CageLines } from './cage-mesh.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
+import {
+  RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS, SCENE_UNIFORMS, sceneWgsl, type RenderBindGroup, type RenderPipelineName,
+} from './contract.ts';
+
+/** The WGSL sources of each pipeline's shader module, in order (the two cage pipelines share one). */
+export const RENDER_SHADERS: Record<RenderPipelineName, readonly string[]> = {
+  shadow: [sceneWgsl, commonWGSL, shadowWGSL],
+  lit: [sceneWgsl, commonWGSL, shadingWGSL, litWGSL],
+  ground: [sceneWgsl, commonWGSL, shadingWGSL, groundWGSL],
+  backdrop: [sceneWgsl, commonWGSL, backdropWGSL],
+  wireframe: [sceneWgsl, commonWGSL, wireLinesWGSL],
+  cage: [sceneWgsl, commonWGSL, wireCageWGSL],
+  wireArgs: [wireArgsWGSL],
+};
 
 export interface RendererOptions {
   /** Format of the views render() draws into (an -srgb format gives correct blending). */
@@ -51,7 +69,6 @@ export interface DrawOptions {
   wireOpacity?: number;
 }
 
-const FRAME_BYTES = 256;
 const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
 /** Vertex buffers of the mesh: positions then normals, float32x3, tightly packed. */
 const MESH_BUFFERS: GPUVertexBufferLayout[] = [
@@ -60,13 +77,8 @@ const MESH_BUFFERS: GPUVertexBufferLayout[] = [
 ];
 const TIMED_PASSES = ['shadow', 'lit'] as const;
 
-/** Patch kinds (src/gpu/cc/build.ts PatchKind) in patch-colour mode, sRGB; the demo's legend uses the same. */
-export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
-  { kind: 0, name: 'regular', srgb: [0.56, 0.80, 0.52] },
-  { kind: 1, name: 'irregular quad', srgb: [0.95, 0.47, 0.33] },
-  { kind: 2, name: 'triangle / n-gon region', srgb: [0.50, 0.60, 0.98] },
-  { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.30] },
-];
+/** The patch colours (declared in contract.ts, where the lit shader's palette comes from too). */
+export { PATCH_COLOURS } from './contract.ts';
 
 export class Renderer {
   readonly device: GPUDevice;
@@ -74,9 +86,9 @@ export class Renderer {
   readonly sampleCount: number;
   readonly shadowMapSize: number;
 
-  #frameBuffer: GPUBuffer;
-  #frameData = new Float32Array(FRAME_BYTES / 4);
-  #frameBindGroup: GPUBindGroup;
+  #sceneBuffer: GPUBuffer;
+  #sceneData = new DataView(new ArrayBuffer(SCENE_UNIFORMS.size));
+  #sceneBindGroup: GPUBindGroup;
   #shadingBindGroup: GPUBindGroup;
   #shadowMap: GPUTexture;
 
@@ -126,9 +138,9 @@ export class Renderer {
     this.sampleCount = options.sampleCount ?? 4;
     this.shadowMapSize = options.shadowMapSize ?? 2048;
 
-    this.#frameBuffer = device.createBuffer({
-      label: 'frame uniforms',
-      size: FRAME_BYTES,
+    this.#sceneBuffer = device.createBuffer({
+      label: 'scene uniforms',
+      size: SCENE_UNIFORMS.size,
       usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
     this.#shadowMap = device.createTexture({
@@ -150,59 +162,41 @@ export class Renderer {
       usage: GPUBufferUsage.INDIRECT | GPUBufferUsage.STORAGE,
     });
 
-    const frameLayout = device.createBindGroupLayout({
-      label: 'frame bind group layout',
-      entries: [{ binding: 0, visibility: GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT, buffer: { type: 'uniform' } }],
-    });
-    const shadingLayout = device.createBindGroupLayout({
-      label: 'shading bind group layout',
-      entries: [
-        { binding: 0, visibility: GPUShaderStage.FRAGMENT, texture: { sampleType: 'depth' } },
-        { binding: 1, visibility: GPUShaderStage.FRAGMENT, sampler: { type: 'comparison' } },
-      ],
-    });
-    this.#vertexStorageLayout = device.createBindGroupLayout({
-      label: 'vertex-stage storage bind group layout',
-      entries: [
-        { binding: 0, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
-        { binding: 1, visibility: GPUShaderStage.VERTEX, buffer: { type: 'read-only-storage' } },
-      ],
-    });
-    this.#wireArgsLayout = device.createBindGroupLayout({
-      label: 'wireframe args bind group layout',
-      entries: [
-        { binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'read-only-storage' } },
-        { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } },
-      ],
-    });
+    const layouts = {} as Record<RenderBindGroup, GPUBindGroupLayout>;
+    for (const [name, entries] of Object.entries(RENDER_BIND_GROUPS) as [RenderBindGroup, readonly GPUBindGroupLayoutEntry[]][]) {
+      layouts[name] = device.createBindGroupLayout({ label: `${name} bind group layout`, entries: [...entries] });
+    }
+    this.#vertexStorageLayout = layouts.vertexStorage;
+    this.#wireArgsLayout = layouts.wireArgs;
     this.#patchKinds = device.createBuffer({ label: 'patch kinds (none)', size: 4, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
-    this.#frameBindGroup = device.createBindGroup({
-      label: 'frame bind group',
-      layout: frameLayout,
-      entries: [{ binding: 0, resource: { buffer: this.#frameBuffer } }],
+    this.#sceneBindGroup = device.createBindGroup({
+      label: 'scene bind group',
+      layout: layouts.scene,
+      entries: [{ binding: 0, resource: { buffer: this.#sceneBuffer } }],
     });
     this.#shadingBindGroup = device.createBindGroup({
       label: 'shading bind group',
-      layout: shadingLayout,
+      layout: layouts.shading,
       entries: [
         { binding: 0, resource: this.#shadowMap.createView({ label: 'shadow map view' }) },
         { binding: 1, resource: shadowSampler },
       ],
     });
 
-    const frameOnly = device.createPipelineLayout({ label: 'frame-only pipeline layout', bindGroupLayouts: [frameLayout] });
-    const shaded = device.createPipelineLayout({ label: 'shaded pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout] });
-    const litLayout = device.createPipelineLayout({ label: 'lit pipeline layout', bindGroupLayouts: [frameLayout, shadingLayout, this.#vertexStorageLayout] });
-    const wired = device.createPipelineLayout({ label: 'wireframe pipeline layout', bindGroupLayouts: [frameLayout, this.#vertexStorageLayout] });
-
-    const module = (label: string, ...sources: string[]) => device.createShaderModule({ label, code: sources.join('\n') });
-    const shadowModule = module('shadow shader', commonWGSL, shadowWGSL);
-    const litModule = module('lit shader', commonWGSL, shadingWGSL, litWGSL);
-    const groundModule = module('ground shader', commonWGSL, shadingWGSL, groundWGSL);
-    const backdropModule = module('backdrop shader', commonWGSL, backdropWGSL);
-    const wireModule = module('wireframe shader', commonWGSL, wireLinesWGSL);
-    const cageModule = module('cage overlay shader', commonWGSL, wireCageWGSL);
-    const wireArgsModule = module('wireframe args shader', wireArgsWGSL);
+    const pipelineLayout = (name: RenderPipelineName) =>
+      device.createPipelineLayout({
+        label: `${name} pipeline layout`,
+        bindGroupLayouts: RENDER_PIPELINE_GROUPS[name].map((g) => layouts[g]),
+      });
+    const module = (name: RenderPipelineName) =>
+      device.createShaderModule({ label: `${name} shader`, code: RENDER_SHADERS[name].join('\n') });
+    const shadowModule = module('shadow');
+    const litModule = module('lit');
+    const groundModule = module('ground');
+    const backdropModule = module('backdrop');
+    const wireModule = module('wireframe');
+    const cageModule = module('cage');
+    const wireArgsModule = module('wireArgs');
 
     const multisample = { count: this.sampleCount };
     const blend: GPUBlendState = {
@@ -220,7 +214,7 @@ export class Renderer {
 
     this.#shadowPipeline = device.createRenderPipeline({
       label: 'shadow pipeline',
-      layout: frameOnly,
+      layout: pipelineLayout('shadow'),
       vertex: { module: shadowModule, entryPoint: 'shadowVertex', buffers: [MESH_BUFFERS[0]] },
       // Both faces cast: open surfaces have no back to hide behind.
       primitive: { topology: 'triangle-list', cullMode: 'none' },
@@ -229,7 +223,7 @@ export class Renderer {
     });
     this.#litPipeline = device.createRenderPipeline({
       label: 'lit pipeline',
-      layout: litLayout,
+      layout: pipelineLayout('lit'),
       vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
       fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
       // No culling: open surfaces are lit from whichever side is seen.
@@ -239,7 +233,7 @@ export class Renderer {
     });
     this.#groundPipeline = device.createRenderPipeline({
       label: 'ground pipeline',
-      layout: shaded,
+      layout: pipelineLayout('ground'),
       vertex: { module: groundModule, entryPoint: 'groundVertex' },
       fragment: { module: groundModule, entryPoint: 'groundFragment', targets: blendedTarget },
       primitive: { topology: 'triangle-strip', cullMode: 'none' },
@@ -248,7 +242,7 @@ export class Renderer {
     });
     this.#backdropPipeline = device.createRenderPipeline({
       label: 'backdrop pipeline',
-      layout: frameOnly,
+      layout: pipelineLayout('backdrop'),
       vertex: { module: backdropModule, entryPoint: 'backdropVertex' },
       fragment: { module: backdropModule, entryPoint: 'backdropFragment', targets: opaqueTarget },
       primitive: { topology: 'triangle-list' },
@@ -257,17 +251,18 @@ export class Renderer {
     });
     this.#wirePipeline = device.createRenderPipeline({
       label: 'wireframe pipeline',
-      layout: wired,
+      layout: pipelineLayout('wireframe'),
       vertex: { module: wireModule, entryPoint: 'wireVertex' },
       fragment: { module: wireModule, entryPoint: 'wireFragment', targets: blendedTarget },
       primitive: { topology: 'line-list' },
       depthStencil: overlayDepth('less-equal'),
       multisample,
     });
+    const cageLayout = pipelineLayout('cage');
     const cagePipeline = (label: string, opacity: number, compare: GPUCompareFunction) =>
       device.createRenderPipeline({
         label,
-        layout: frameOnly,
+        layout: cageLayout,
         vertex: {
           module: cageModule,
           entryPoint: 'cageVertex',
@@ -289,7 +284,7 @@ export class Renderer {
     this.#cageVisiblePipeline = cagePipeline('cage overlay pipeline', 1.0, 'less-equal');
     this.#wireArgsPipeline = device.createComputePipeline({
       label: 'wireframe args pipeline',
-      layout: device.createPipelineLayout({ label: 'wireframe args pipeline layout', bindGroupLayouts: [this.#wireArgsLayout] }),
+      layout: pipelineLayout('wireArgs'),
       compute: { module: wireArgsModule, entryPoint: 'wireArgsMain' },
     });
 
@@ -380,7 +375,7 @@ export class Renderer {
   /** Encode the shadow and main passes, drawing into `target` (any size; attachments follow it). */
   render(encoder: GPUCommandEncoder, target: GPUTexture, view: View, options: DrawOptions): void {
     this.#ensureAttachments(target.width, target.height);
-    this.#writeFrame(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
+    this.#writeScene(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
     const mesh = this.#mesh;
     const timing = this.#timing;
 
@@ -406,7 +401,7 @@ export class Renderer {
     });
     if (mesh) {
       shadowPass.setPipeline(this.#shadowPipeline);
-      shadowPass.setBindGroup(0, this.#frameBindGroup);
+      shadowPass.setBindGroup(0, this.#sceneBindGroup);
       shadowPass.setVertexBuffer(0, mesh.positions);
       shadowPass.setIndexBuffer(mesh.indices, 'uint32');
       shadowPass.drawIndexedIndirect(mesh.drawArgs, 0);
@@ -433,7 +428,7 @@ export class Renderer {
       },
       timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 2, endOfPassWriteIndex: 3 } : undefined,
     });
-    pass.setBindGroup(0, this.#frameBindGroup);
+    pass.setBindGroup(0, this.#sceneBindGroup);
     pass.setBindGroup(1, this.#shadingBindGroup);
     pass.setPipeline(this.#backdropPipeline);
     pass.draw(3);
@@ -502,7 +497,7 @@ export class Renderer {
   }
 
   destroy(): void {
-    this.#frameBuffer.destroy();
+    this.#sceneBuffer.destroy();
     this.#shadowMap.destroy();
     this.#wireArgs.destroy();
     this.#patchKinds.destroy();
@@ -538,17 +533,18 @@ export class Renderer {
     });
   }
 
-  #writeFrame(view: View, width: number, height: number, wireOpacity: number, patchColours: boolean): void {
-    const f = this.#frameData;
+  #writeScene(view: View, width: number, height: number, wireOpacity: number, patchColours: boolean): void {
     const sphere = boundingSphere(this.#bounds);
-    f.set(view.viewProj, 0);
-    f.set(this.#lightViewProj, 16);
-    f.set(view.model, 32);
-    f.set([...view.eye, sphere.radius], 48);
-    f.set([...DEFAULT_LIGHT_DIR, 1 / this.shadowMapSize], 52);
-    // The ground sits at the cage's lowest point, a hair lower so it never z-fights the surface.
-    f.set([...sphere.center, this.#bounds.min[1] - sphere.radius * 1e-3], 56);
-    f.set([width, height, wireOpacity, patchColours ? 1 : 0], 60);
-    this.device.queue.writeBuffer(this.#frameBuffer, 0, f);
+    SCENE_UNIFORMS.write(this.#sceneData, {
+      viewProj: view.viewProj,
+      lightViewProj: this.#lightViewProj,
+      model: view.model,
+      eye: [...view.eye, sphere.radius],
+      toLight: [...DEFAULT_LIGHT_DIR, 1 / this.shadowMapSize],
+      // The ground sits at the cage's lowest point, a hair lower so it never z-fights the surface.
+      center: [...sphere.center, this.#bounds.min[1] - sphere.radius * 1e-3],
+      viewport: [width, height, wireOpacity, patchColours ? 1 : 0],
+    });
+    this.device.queue.writeBuffer(this.#sceneBuffer, 0, this.#sceneData.buffer);
   }
 }

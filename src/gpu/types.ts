@@ -5,7 +5,8 @@
  * The output is one big flat mesh, stored once and drawn by every pass:
  *   positions  array<f32>, 3 per vertex            usage VERTEX | STORAGE | COPY_SRC
  *   normals    array<f32>, 3 per vertex            usage VERTEX | STORAGE | COPY_SRC
- *   bary       array<u32>, 1 per vertex            (w1, w2) of the source triangle, 16 bits each;
+ *   bary       array<u32>, 1 per vertex            (w1, w2) of the source triangle, 16 bits each
+ *              (contract.ts BARY_WORD);
  *              a vertex at a corner of its source triangle stores 0 (corner 0), 0xFFFFFFFF
  *              (corner 1) or 0xFFFFFFFE (corner 2): those sums exceed 2^16, so they cannot be
  *              a real point (w1 + w2 ≤ 2^16, and no non-corner weight reaches 2^16).
@@ -45,5 +46,5 @@ export interface FactorParams {
   fovY: number;
 }
 
-export const BARY_CORNER1 = 0xffffffff;
-export const BARY_CORNER2 = 0xfffffffe;
+/** The bary word's corner sentinels (declared with BARY_WORD in contract.ts). */
+export { BARY_CORNER1, BARY_CORNER2 } from './contract.ts';

@@ -329,7 +329,7 @@ export function writeObj(c: Cage, header?: string): string {
   if (fo.boundary) out.push(`t interpolateboundary 1/0/0 ${{ none: 0, 'edge-and-corner': 1, 'edge-only': 2 }[fo.boundary]}`);
   if (fo.creasing) out.push(`t creasemethod 0/0/1 ${fo.creasing === 'chaikin' ? 'chaikin' : 'normal'}`);
   for (const t of c.rawTags) out.push(t.text);
-  for (const cr of c.creases) out.push(`t crease 2/1/0 ${cr.v0} ${cr.v1} ${fmt(cr.sharpness >= SHARPNESS_INFINITE ? SHARPNESS_INFINITE : cr.sharpness)}`);
+  for (const cr of c.creases) out.push(`t crease 2/1/0 ${cr.v0} ${cr.v1} ${fmt(Math.min(cr.sharpness, SHARPNESS_INFINITE))}`);
   for (const co of c.corners) out.push(`t corner 1/1/0 ${co.v} ${fmt(co.sharpness)}`);
   if (c.holes.length) out.push(`t hole ${c.holes.length}/0/0 ${c.holes.join(' ')}`);
   return out.join('\n') + '\n';

@@ -60,7 +60,7 @@ function childEdgeSharpAtVertex(parent: number[], chaikin: boolean, out: number[
     else {
       const avg = F(F(sum - p) / (count - 1));
       const c = F(F(F(0.75 * p) + F(0.25 * avg)) - 1);
-      out[i] = c > 0 ? c : 0;
+      out[i] = Math.max(c, 0);
     }
   }
 }

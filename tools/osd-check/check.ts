@@ -42,7 +42,7 @@ let failed = false;
 for (const file of files) {
   const name = basename(file);
   const text = readFileSync(file, 'utf8');
-  let loaded;
+  let loaded: ReturnType<typeof loadCage>;
   try { loaded = loadCage(text); } catch (e) {
     if (e instanceof CageError) { rows.push({ cage: name, status: 'refused', note: e.issues[0] ? `${e.issues[0].line ? `line ${e.issues[0].line}: ` : ''}${e.issues[0].message}` : e.message }); continue; }
     throw e;

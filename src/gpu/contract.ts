@@ -1,0 +1,420 @@
+/**
+ * What the TypeScript and the WGSL must agree on, declared once. Each declaration gives both
+ * sides: the WGSL text that is prepended to the shaders, and the TypeScript that writes or reads
+ * the same bytes. Nothing here is counted by hand twice.
+ *
+ *   constants     shared numbers (workgroup sizes, the dispatch grid's width, sentinels), exported
+ *                 as TypeScript values and as a WGSL `const` prelude (constantsWgsl)
+ *   packed words  bit-field specs (defineBits): WGSL getters `word_field(w)` and a packer
+ *                 `word_pack(...)`, and the TypeScript pack/unpack of the same bits
+ *   uniforms      uniform structs (defineStruct in layout.ts): the WGSL struct and its byte offsets
+ *   bindings      the renderer's bind group layouts and which pipeline uses which, as the
+ *                 descriptors the renderer creates (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS);
+ *                 for compute code, defineBindGroup (declarations generated from one spec) and
+ *                 usedBindings (what an entry point reads, for its explicit layout)
+ *   arenas        arrays carved out of one storage buffer (defineArena): offsets, the uniform
+ *                 fields that carry them, and WGSL accessors
+ *
+ * The compute tessellator's work layout, its Params and its passes' bindings still live in
+ * tessellator.ts; they are meant to move here with these tools: defineArena for WorkLayout and
+ * the `off*` fields of Params, defineBindGroup + usedBindings for its bindings and PASS_BINDINGS,
+ * defineBits for the Catmull-Clark node word and the table header, SHARED_CONSTANTS for the
+ * workgroup sizes and GRID_X typed in its dispatches and shaders.
+ *
+ * tests/contract.test.ts parses the generated WGSL back and checks it against the TypeScript
+ * views; tests/contract.gpu.test.ts runs it through a real WGSL compiler.
+ */
+import { defineStruct } from './layout.ts';
+
+// ---------------------------------------------------------------------------------------------
+// Constants
+
+/** Threads per workgroup of the tessellator's one-thread-per-item passes. */
+export const WORKGROUP_SIZE = 64;
+/** Threads per workgroup of the prefix-sum passes (wgsl/scan.wgsl). */
+export const SCAN_WORKGROUP_SIZE = 256;
+/** Widest dispatch in x (WebGPU's default maxComputeWorkgroupsPerDimension); wider ones fold into y. */
+export const GRID_X = 65535;
+
+/** GPUShaderStage's bits (fixed by the WebGPU specification; the global is absent outside a GPU runtime). */
+export const STAGE = { VERTEX: 1, FRAGMENT: 2, COMPUTE: 4 } as const;
+
+/** The numbers every shader may read, by their WGSL names (all u32). */
+export const SHARED_CONSTANTS = { WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE, GRID_X } as const;
+
+/** `const NAME: u32 = value;` for each entry (u32 only: the shared numbers are counts and sizes). */
+export function wgslConstants(constants: Readonly<Record<string, number>>): string {
+  return Object.entries(constants)
+    .map(([name, value]) => {
+      if (!Number.isInteger(value) || value < 0 || value > 0xffffffff) throw new Error(`${name} = ${value} is not a u32`);
+      return `const ${name}: u32 = ${value}u;`;
+    })
+    .join('\n')
+    .concat('\n');
+}
+
+/** The WGSL prelude of the shared constants. */
+export const constantsWgsl = wgslConstants(SHARED_CONSTANTS);
+
+// ---------------------------------------------------------------------------------------------
+// Packed words
+
+/** A bit field: its lowest bit and its width. */
+export type BitRange = readonly [at: number, bits: number];
+
+export interface BitWord<K extends string> {
+  readonly name: string;
+  readonly fields: Readonly<Record<K, BitRange>>;
+  /** WGSL: `fn name_field(w: u32) -> u32` for each field and `fn name_pack(field, …) -> u32`. */
+  readonly wgsl: string;
+  /** The word with these field values (every field named; booleans as 0/1). Throws on a value
+   * that does not fit its field: the WGSL packer would silently truncate it. */
+  pack(values: Readonly<Record<K, number | boolean>>): number;
+  unpack(word: number): Record<K, number>;
+  get(word: number, field: K): number;
+}
+
+/** The WGSL function prefix of a word: its name with a lower-case first letter (NodeWord → nodeWord). */
+export function wgslPrefix(name: string): string {
+  return name[0].toLowerCase() + name.slice(1);
+}
+
+/**
+ * A u32 split into named bit fields, declared once for both languages, e.g.
+ * `defineBits('NodeWord', { kind: [0, 2], child: [2, 30] })` gives the WGSL getters
+ * `nodeWord_kind(w)` and `nodeWord_child(w)`, the WGSL packer `nodeWord_pack(kind, child)`, and
+ * `.pack({ kind, child })` / `.unpack(w)` in TypeScript. Fields must fit in 32 bits and not overlap;
+ * the order of declaration is the packer's argument order.
+ */
+export function defineBits<K extends string>(name: string, fields: Readonly<Record<K, BitRange>>): BitWord<K> {
+  const entries = Object.entries(fields) as [K, BitRange][];
+  let used = 0;
+  for (const [field, [at, bits]] of entries) {
+    if (!Number.isInteger(at) || !Number.isInteger(bits) || bits < 1 || at < 0 || at + bits > 32) {
+      throw new Error(`${name}.${field}: bits [${at}, ${at + bits}) do not fit a u32`);
+    }
+    const mask = maskOf(at, bits);
+    if (used & mask) throw new Error(`${name}.${field} overlaps another field`);
+    used |= mask;
+  }
+  const prefix = wgslPrefix(name);
+  const getters = entries.map(([f, [at, bits]]) => `fn ${prefix}_${f}(w: u32) -> u32 { return extractBits(w, ${at}u, ${bits}u); }`);
+  const packer = [
+    `fn ${prefix}_pack(${entries.map(([f]) => `${f}: u32`).join(', ')}) -> u32 {`,
+    '  var w = 0u;',
+    ...entries.map(([f, [at, bits]]) => `  w = insertBits(w, ${f}, ${at}u, ${bits}u);`),
+    '  return w;',
+    '}',
+  ];
+  const wgsl = `// ${name}: ${entries.map(([f, [at, bits]]) => `${f} [${at}, ${at + bits})`).join(', ')}\n${getters.join('\n')}\n${packer.join('\n')}\n`;
+  return {
+    name,
+    fields,
+    wgsl,
+    pack(values) {
+      let w = 0;
+      for (const [f, [at, bits]] of entries) {
+        const raw: number | boolean = values[f];
+        const v = Number(raw);
+        if (!Number.isInteger(v) || v < 0 || v >= 2 ** bits) throw new Error(`${name}.${f} = ${raw} does not fit ${bits} bits`);
+        w += v * 2 ** at; // arithmetic, not <<: a field reaching bit 31 must stay positive
+      }
+      return w;
+    },
+    unpack(word) {
+      const out = {} as Record<K, number>;
+      for (const [f, [at, bits]] of entries) out[f] = extract(word, at, bits);
+      return out;
+    },
+    get(word, field) {
+      const [at, bits] = fields[field];
+      return extract(word, at, bits);
+    },
+  };
+}
+
+function maskOf(at: number, bits: number): number {
+  return bits === 32 ? -1 : ((2 ** bits - 1) * 2 ** at) | 0;
+}
+
+function extract(word: number, at: number, bits: number): number {
+  return Math.floor((word >>> 0) / 2 ** at) % 2 ** bits;
+}
+
+/**
+ * The pattern frame of a triangle (src/pattern/clamped.ts chooseFrame; packed per triangle by
+ * prepare.ts packFrame and read by wgsl/tess-pattern.wgsl): the corners playing A, B, C, the
+ * edges playing bottom, left, right, whether each of those runs against its edge's line, and
+ * whether the frame is mirrored.
+ */
+export const PATTERN_FRAME_WORD = defineBits('PatternFrameWord', {
+  a: [0, 2],
+  b: [2, 2],
+  c: [4, 2],
+  bottomEdge: [6, 2],
+  leftEdge: [8, 2],
+  rightEdge: [10, 2],
+  flipBottom: [12, 1],
+  flipLeft: [13, 1],
+  flipRight: [14, 1],
+  mirrored: [15, 1],
+});
+
+/**
+ * An output vertex's barycentric weights on its source triangle (TessellatedMesh.bary, types.ts):
+ * w1 and w2 in units of 2^-16. A vertex at corner 1 or 2 is stored as a sentinel instead
+ * (BARY_CORNER1, BARY_CORNER2): their fields would sum past 2^16, which no real point does
+ * (w1 + w2 ≤ 2^16, and a weight of exactly 2^16 is a corner).
+ */
+export const BARY_WORD = defineBits('BaryWord', { w1: [0, 16], w2: [16, 16] });
+export const BARY_CORNER1 = 0xffffffff;
+export const BARY_CORNER2 = 0xfffffffe;
+
+/** The three weights (w0, w1, w2) of a bary word, in units of 2^-16 (they sum to 2^16). */
+export function decodeBary(word: number): [number, number, number] {
+  if (word === BARY_CORNER1) return [0, 65536, 0];
+  if (word === BARY_CORNER2) return [0, 0, 65536];
+  const { w1, w2 } = BARY_WORD.unpack(word);
+  return [65536 - w1 - w2, w1, w2];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Storage arrays: bindings, and arrays carved out of one buffer
+
+/** One binding of a bind group: how the WGSL declares it. */
+export interface BindingSpec {
+  binding: number;
+  /** 'uniform', or a storage buffer's access mode. */
+  space: 'uniform' | 'read' | 'read_write';
+  /** The WGSL type: a struct name for a uniform, `array<u32>` and the like for storage. */
+  type: string;
+  doc?: string;
+}
+
+export interface BindGroupSpec<K extends string> {
+  readonly group: number;
+  readonly binding: Readonly<Record<K, number>>;
+  /** The WGSL declarations of `names` (all when omitted), in binding order. */
+  wgsl(names?: readonly K[]): string;
+  /** The layout entries of `names` (all when omitted), in binding order. */
+  layoutEntries(names?: readonly K[]): GPUBindGroupLayoutEntry[];
+}
+
+/**
+ * A bind group whose bindings each have one WGSL name, e.g. the tessellator's
+ * `{ params: { binding: 0, space: 'uniform', type: 'Params' }, work: { binding: 3, space:
+ * 'read_write', type: 'array<u32>' }, … }`: the declarations are generated (never typed in a
+ * .wgsl file), and a pass's explicit layout is `layoutEntries(usedBindings(code, entry, names))`,
+ * so a shared helper that starts reading one more buffer changes the layout with it.
+ */
+export function defineBindGroup<K extends string>(
+  group: number,
+  entries: Readonly<Record<K, BindingSpec>>,
+  visibility: number = STAGE.COMPUTE,
+): BindGroupSpec<K> {
+  const all = (Object.entries(entries) as [K, BindingSpec][]).sort((a, b) => a[1].binding - b[1].binding);
+  for (let i = 1; i < all.length; i++) {
+    if (all[i][1].binding === all[i - 1][1].binding)
+      throw new Error(`${all[i - 1][0]} and ${all[i][0]} share binding ${all[i][1].binding}`);
+  }
+  const pick = (names?: readonly K[]) => (names ? all.filter(([k]) => names.includes(k)) : all);
+  const binding = Object.fromEntries(all.map(([k, e]) => [k, e.binding])) as Record<K, number>;
+  return {
+    group,
+    binding,
+    wgsl: (names) =>
+      pick(names)
+        .map(([k, e]) => {
+          const space = e.space === 'uniform' ? 'uniform' : `storage, ${e.space}`;
+          return `${e.doc ? `// ${e.doc}\n` : ''}@group(${group}) @binding(${e.binding}) var<${space}> ${k}: ${e.type};`;
+        })
+        .join('\n')
+        .concat('\n'),
+    layoutEntries: (names) =>
+      pick(names).map(([, e]) => ({
+        binding: e.binding,
+        visibility,
+        buffer: { type: e.space === 'uniform' ? 'uniform' : e.space === 'read' ? 'read-only-storage' : 'storage' },
+      })),
+  };
+}
+
+/**
+ * The subset of `names` (module-scope variables) that entry point `entry` of `code` reads or
+ * writes, directly or through the functions it calls: what its pipeline layout must bind.
+ * A lexical walk of WGSL's `fn name(…) … { … }` bodies (comments stripped), enough for code
+ * that does not shadow a binding's name with a local.
+ */
+export function usedBindings<K extends string>(code: string, entry: string, names: readonly K[]): K[] {
+  const src = code.replace(/\/\/[^\n]*/g, '').replace(/\/\*[\s\S]*?\*\//g, '');
+  const bodies = new Map<string, string>();
+  for (const m of src.matchAll(/\bfn\s+(\w+)\s*\(/g)) {
+    const open = src.indexOf('{', m.index);
+    let depth = 0;
+    let end = open;
+    for (; end < src.length; end++) {
+      if (src[end] === '{') depth++;
+      else if (src[end] === '}' && --depth === 0) break;
+    }
+    // The signature too: a parameter's type may name a struct, never a binding; the body is what counts.
+    bodies.set(m[1], src.slice(open, end + 1));
+  }
+  if (!bodies.has(entry)) throw new Error(`no fn ${entry} in the code`);
+  const seen = new Set<string>();
+  const used = new Set<K>();
+  const walk = (fn: string) => {
+    if (seen.has(fn)) return;
+    seen.add(fn);
+    const body = bodies.get(fn)!;
+    for (const m of body.matchAll(/\b(\w+)\b/g)) {
+      const id = m[1];
+      if ((names as readonly string[]).includes(id)) used.add(id as K);
+      if (bodies.has(id)) walk(id);
+    }
+  };
+  walk(entry);
+  return names.filter((n) => used.has(n));
+}
+
+/** Where each array of an arena lies, in words, for one set of sizes. */
+export interface ArenaLayout<K extends string> {
+  offset: Record<K, number>;
+  length: Record<K, number>;
+  /** Words in all: the buffer's size / 4. */
+  words: number;
+}
+
+export type OffsetField<K extends string> = `off${Capitalize<K>}`;
+
+export interface Arena<K extends string, S> {
+  readonly names: readonly K[];
+  /** The uniform fields that carry the offsets (`offEdgeF: u32` for `edgeF`): spread them into the
+   * Params struct's defineStruct. */
+  readonly offsetFields: readonly (readonly [OffsetField<K>, 'u32'])[];
+  layout(sizes: S): ArenaLayout<K>;
+  /** The offset fields' values for PARAMS.write. */
+  offsets(layout: ArenaLayout<K>): Record<OffsetField<K>, number>;
+  /** WGSL `fn name_at(i: u32) -> u32 { return buffer[params.offName + i]; }` for each array. */
+  wgslAccessors(buffer: string, params: string): string;
+}
+
+/**
+ * Several u32 arrays carved one after another out of one storage buffer (the tessellator's
+ * scratch `work`), each sized from `S` (e.g. the edge and triangle counts). Adding an array is one
+ * entry here; its offset reaches the shaders through `offsetFields` in the uniform struct.
+ */
+export function defineArena<K extends string, S>(arrays: readonly (readonly [K, (sizes: S) => number])[]): Arena<K, S> {
+  const names = arrays.map(([k]) => k);
+  if (new Set(names).size !== names.length) throw new Error('an arena array is named twice');
+  const field = (k: K) => `off${k[0].toUpperCase()}${k.slice(1)}` as OffsetField<K>;
+  return {
+    names,
+    offsetFields: names.map((k) => [field(k), 'u32'] as const),
+    layout(sizes) {
+      const offset = {} as Record<K, number>;
+      const length = {} as Record<K, number>;
+      let at = 0;
+      for (const [k, size] of arrays) {
+        const n = size(sizes);
+        if (!Number.isInteger(n) || n < 0) throw new Error(`arena array ${k}: ${n} words`);
+        offset[k] = at;
+        length[k] = n;
+        at += n;
+      }
+      return { offset, length, words: at };
+    },
+    offsets(layout) {
+      return Object.fromEntries(names.map((k) => [field(k), layout.offset[k]])) as Record<OffsetField<K>, number>;
+    },
+    wgslAccessors(buffer, params) {
+      return names
+        .map((k) => `fn ${k}_at(i: u32) -> u32 { return ${buffer}[${params}.${field(k)} + i]; }`)
+        .join('\n')
+        .concat('\n');
+    },
+  };
+}
+
+// ---------------------------------------------------------------------------------------------
+// The renderer's uniforms and bindings
+
+/**
+ * The renderer's per-frame uniforms (wgsl/render-common.wgsl reads them as `scene`), written by
+ * Renderer every frame. The fields' comments travel into the generated WGSL.
+ */
+export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
+  ['viewProj', 'mat4x4<f32>', 'World to clip space of the camera (WebGPU clip space, z in 0..1).'],
+  ['lightViewProj', 'mat4x4<f32>', 'World to clip space of the light (the shadow map).'],
+  ['model', 'mat4x4<f32>', "Model to world: a rotation only (the model's up axis to +Y), so it also turns normals."],
+  ['eye', 'vec4<f32>', "xyz: the camera's position; w: the model's bounding radius."],
+  ['toLight', 'vec4<f32>', 'xyz: unit vector towards the light; w: one shadow-map texel in uv units.'],
+  ['center', 'vec4<f32>', "xyz: the bounding sphere's centre; w: the ground's height."],
+  ['viewport', 'vec4<f32>', 'x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.'],
+] as const);
+
+/** The renderer's bind group layouts, entry for entry. The WGSL declares each at its group index
+ * in the pipelines of RENDER_PIPELINE_GROUPS (tests/contract.test.ts compares them). */
+export const RENDER_BIND_GROUPS = {
+  /** The per-frame uniforms (SCENE_UNIFORMS). */
+  scene: [{ binding: 0, visibility: STAGE.VERTEX | STAGE.FRAGMENT, buffer: { type: 'uniform' } }],
+  /** The shadow map and its comparison sampler. */
+  shading: [
+    { binding: 0, visibility: STAGE.FRAGMENT, texture: { sampleType: 'depth' } },
+    { binding: 1, visibility: STAGE.FRAGMENT, sampler: { type: 'comparison' } },
+  ],
+  /** Two arrays read by vertex index: the wireframe's indices and positions, or the patch
+   * colours' source triangles and kinds. */
+  vertexStorage: [
+    { binding: 0, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
+    { binding: 1, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
+  ],
+  /** The mesh's drawIndexedIndirect args in, the wireframe's drawIndirect args out. */
+  wireArgs: [
+    { binding: 0, visibility: STAGE.COMPUTE, buffer: { type: 'read-only-storage' } },
+    { binding: 1, visibility: STAGE.COMPUTE, buffer: { type: 'storage' } },
+  ],
+} as const satisfies Record<string, readonly GPUBindGroupLayoutEntry[]>;
+
+export type RenderBindGroup = keyof typeof RENDER_BIND_GROUPS;
+
+/** Which bind group layout sits at each group index of each of the renderer's pipelines. */
+export const RENDER_PIPELINE_GROUPS = {
+  shadow: ['scene'],
+  lit: ['scene', 'shading', 'vertexStorage'],
+  ground: ['scene', 'shading'],
+  backdrop: ['scene'],
+  wireframe: ['scene', 'vertexStorage'],
+  cage: ['scene'],
+  wireArgs: ['wireArgs'],
+} as const satisfies Record<string, readonly RenderBindGroup[]>;
+
+export type RenderPipelineName = keyof typeof RENDER_PIPELINE_GROUPS;
+
+/** How far the ground plane reaches from the model's centre, in bounding radii: the ground shader
+ * draws it that far, camera.ts fits the clip planes and the light's box around it. */
+export const GROUND_EXTENT = 4;
+
+/** Patch kinds (src/gpu/cc/build.ts PatchKind) in patch-colour mode, sRGB, indexed by kind: the
+ * lit shader's palette (PATCH_SRGB) and the demo's legend. */
+export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
+  { kind: 0, name: 'regular', srgb: [0.56, 0.8, 0.52] },
+  { kind: 1, name: 'irregular quad', srgb: [0.95, 0.47, 0.33] },
+  { kind: 2, name: 'triangle / n-gon region', srgb: [0.5, 0.6, 0.98] },
+  { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.3] },
+];
+
+/** A WGSL f32 literal of `x` (an integer gets its `.0`; JavaScript's shortest round-trip digits). */
+export function wgslF32(x: number): string {
+  if (!Number.isFinite(x)) throw new Error(`${x} has no WGSL literal`);
+  return Number.isInteger(x) ? `${x}.0` : String(x);
+}
+
+/** What every render shader starts with: the per-frame uniforms (the struct and its binding,
+ * group 0 everywhere) and the constants the TypeScript shares with the render shaders. */
+export const sceneWgsl = [
+  SCENE_UNIFORMS.wgsl,
+  '@group(0) @binding(0) var<uniform> scene: SceneUniforms;',
+  `const GROUND_EXTENT: f32 = ${wgslF32(GROUND_EXTENT)};`,
+  `const PATCH_SRGB = array<vec3f, ${PATCH_COLOURS.length}>(${PATCH_COLOURS.map((p) => `vec3f(${p.srgb.map(wgslF32).join(', ')})`).join(', ')});`,
+  '',
+].join('\n');
