@@ -5,7 +5,7 @@
  */
 import { makeCage, type Cage, DEFAULT_OPTIONS } from '../src/mesh/index.ts';
 import { Surface, levelFromCage, refine } from '../src/subdiv/index.ts';
-import { AccSurface, type V3 } from '../src/subdiv/acc.ts';
+import type { AccSurface, V3 } from '../src/subdiv/acc.ts';
 import { faceParam } from '../src/gpu/face-params.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { angleBetween } from './tess-checks.ts';
