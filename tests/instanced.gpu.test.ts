@@ -14,7 +14,7 @@ import { prepareMesh } from '../src/gpu/prepare.ts';
 import { phongPoint } from '../src/gpu/phong.ts';
 import {
   InstancedTessellator, prepareInstanced, cpuLevels, patchTriangle, snapPatchVertex, patchDomain, patchEdgeIds, patchCanonical,
-  BUCKETS, type InstancedMesh, type HeadlessInstanced, type LevelParams,
+  cpuDynamicEdgeLevel, instancedVertexParams, BUCKETS, type InstancedMesh, type HeadlessInstanced, type LevelParams,
 } from '../src/gpu/instanced.ts';
 import { vertexEdges, POW2_LEVEL_COUNT } from '../src/pattern/pow2.ts';
 import creature from '../public/models/creature.obj?raw';
@@ -194,6 +194,19 @@ describe('instanced tessellator', () => {
       const out = await tess.headless({ mode: 'per-patch' });
       expect(Array.from(out.records)).toEqual(Array.from(cpuLevels(m, randomLevels(m.patchCount, max, name.length), tess.patterns).records));
       const r = checkHeadless(m, out, tess);
+      // Face parameters for the CLI's --params: on a quad face, exactly the patch's (u, v) (the
+      // quad's split maps back as src/gpu/face-params.ts inverts it, which the exact surfaces use).
+      const cage = loadCage(text).cage;
+      const fp = instancedVertexParams(m, cage, out);
+      let quadVerts = 0;
+      for (let v = 0; v < out.vertexCount; v++) {
+        const q = fp[v];
+        expect(q.face).toBe(m.patches[8 * out.patch[v] + 6]);
+        if (!('u' in q)) continue;
+        quadVerts++;
+        expect(Math.abs(q.u - out.uv[2 * v]) + Math.abs(q.v - out.uv[2 * v + 1])).toBeLessThan(1e-12);
+      }
+      expect(quadVerts > 0).toBe(m.quadCount > 0);
       console.log(`${name}: ${m.patchCount} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles; ` +
         `${r.edgesChecked} shared edges, largest gap ${r.gap.toExponential(2)} of the size, largest position error ${r.posError.toExponential(2)}`);
       expect(r.edgesChecked).toBeGreaterThan(0);
@@ -210,7 +223,19 @@ describe('instanced tessellator', () => {
     const total: number[] = [];
     for (const distance of [0.6, 3]) {
       const cam = camera(m, distance * m.prepared.size);
-      const out = await tess.headless({ mode: 'dynamic', viewProj: cam.viewProj, viewport: [1280, 720], level: 2 });
+      const lp: LevelParams = { mode: 'dynamic', viewProj: cam.viewProj, viewport: [1280, 720], level: 2 };
+      const out = await tess.headless(lp);
+      // Every edge's level is the CPU rule's, except where the continuous count lies within f32
+      // noise of a power of two (where rounding up may go either way).
+      let compared = 0;
+      for (let e = 0; e < m.edgeCount; e++) {
+        const cpu = cpuDynamicEdgeLevel(m, e, lp, (t, w) => phongPoint(m.prepared, t, w).pos);
+        const k = Math.round(Math.log2(cpu.n));
+        if (Number.isFinite(cpu.n) && Math.abs(cpu.n - 2 ** k) < 1e-4 * 2 ** k) continue;
+        expect(out.edgeLevels[e]).toBe(cpu.level);
+        compared++;
+      }
+      expect(compared).toBeGreaterThan(0.99 * m.edgeCount);
       for (let p = 0; p < m.patchCount; p++) expect(out.patchLevels[p]).toBe(Math.max(...patchEdgeIds(m, p).map((e) => out.edgeLevels[e])));
       const r = checkHeadless(m, out, tess);
       console.log(`creature, dynamic at ${distance} × size: ${out.triangleCount} triangles, levels ${[...new Set(out.edgeLevels)].sort((a, b) => a - b)}, largest gap ${r.gap.toExponential(2)}`);

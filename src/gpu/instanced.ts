@@ -27,12 +27,12 @@ import levelsWgsl from '../../wgsl/instanced-levels.wgsl?raw';
 import drawWgsl from '../../wgsl/instanced-draw.wgsl?raw';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
-import { grid2d } from './tessellator.ts';
 import { readBuffer } from './readback.ts';
+import { faceParam, type FaceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../mesh/types.ts';
 import {
-  packPatterns, snapVertex, POW2_LEVEL_COUNT, MAX_POW2_LEVEL, type PackedPatterns, type PatchDomain,
+  packPatterns, snapVertex, edgePoint, POW2_LEVEL_COUNT, MAX_POW2_LEVEL, type PackedPatterns, type PatchDomain,
 } from '../pattern/pow2.ts';
 
 export const INST_PARAMS = defineStruct('InstParams', [
@@ -63,6 +63,11 @@ export const BUCKETS = 2 * POW2_LEVEL_COUNT;
 const BUCKET_STRIDE = 256;
 export const PATCH_WORDS = 8;
 const MODE = { static: 0, 'per-patch': 1, dynamic: 2 } as const;
+
+/** Workgroups as a 2D grid (each dimension is capped at 65535); the shaders fold y back. */
+function grid2d(groups: number): [number, number] {
+  return groups <= 65535 ? [Math.max(groups, 1), 1] : [65535, Math.ceil(groups / 65535)];
+}
 
 // ---- CPU side: patches and edges ------------------------------------------------------------
 
@@ -184,6 +189,74 @@ export function patchTriangle(m: InstancedMesh, p: number, P: number, i: number,
 export function snapPatchVertex(m: InstancedMesh, p: number, P: number, i: number, j: number, edgeLevels: ArrayLike<number>): [number, number] {
   const levels = patchEdgeIds(m, p).map((e) => Math.min(edgeLevels[e], P));
   return snapVertex(patchDomain(m, p), P, i, j, levels, patchCanonical(m, p));
+}
+
+/** The defaults of LevelParams, shared by the GPU upload and the CPU twin. */
+const LEVEL_DEFAULTS = { level: 4, lodScale: 1, targetPixels: 12, pixelError: 0.5 };
+
+/**
+ * The dynamic rule for edge e on the CPU (wgsl/instanced-levels.wgsl edgeView), in double
+ * precision, with the surface given as a function of (cage triangle, float weights). Returns the
+ * level and the continuous segment count it was rounded from (a check skips edges whose count
+ * lies within f32 noise of a power of two).
+ */
+export function cpuDynamicEdgeLevel(
+  m: InstancedMesh, e: number, lp: LevelParams, surface: (t: number, w: [number, number, number]) => number[],
+): { level: number; n: number } {
+  const owner = m.edgeOwner[e], p = owner >> 2, k = owner & 3;
+  const dom = patchDomain(m, p);
+  const vp = lp.viewProj ?? new Float32Array(16);
+  const [W, H] = lp.viewport ?? [1, 1];
+  const s: number[][] = [];
+  let behind = false;
+  for (let q = 0; q < 3; q++) {
+    const [i, j] = edgePoint(dom, 2, k, q);
+    const { t, w } = patchTriangle(m, p, 2, i, j);
+    const x = surface(t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]);
+    const clip = [0, 1, 2, 3].map((r) => vp[r] * x[0] + vp[4 + r] * x[1] + vp[8 + r] * x[2] + vp[12 + r]);
+    behind ||= clip[3] <= 0;
+    s.push([(clip[0] / clip[3]) * 0.5 * W, (clip[1] / clip[3]) * 0.5 * H]);
+  }
+  if (behind) return { level: 1 << levelLog2(lp.level ?? LEVEL_DEFAULTS.level), n: NaN };
+  const chord = Math.hypot(s[2][0] - s[0][0], s[2][1] - s[0][1]);
+  const dev = Math.hypot(s[1][0] - 0.5 * (s[0][0] + s[2][0]), s[1][1] - 0.5 * (s[0][1] + s[2][1]));
+  const n = (lp.lodScale ?? LEVEL_DEFAULTS.lodScale) * Math.max(chord / (lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels), Math.sqrt(dev / (lp.pixelError ?? LEVEL_DEFAULTS.pixelError)));
+  const c = Math.ceil(Math.min(Math.max(n, 1), MAX_POW2_LEVEL));
+  return { level: c <= 1 ? 1 : 2 ** Math.ceil(Math.log2(c)), n };
+}
+
+/**
+ * Where each headless output vertex lies on its cage face, in the CPU reference's addressing
+ * (src/gpu/face-params.ts: `f u v` on quads, `f k s t` on sub-faces of other faces), for the
+ * CLI's --params.
+ */
+export function instancedVertexParams(m: InstancedMesh, cage: Cage, out: HeadlessInstanced): FaceParam[] {
+  const params: FaceParam[] = [];
+  for (let v = 0; v < out.vertexCount; v++) {
+    const p = out.patch[v], P = out.patchLevels[p];
+    const { t, w } = patchTriangle(m, p, P, Math.round(out.uv[2 * v] * P), Math.round(out.uv[2 * v + 1] * P));
+    params.push(faceParam(m.prepared, cage, t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]));
+  }
+  return params;
+}
+
+/** The headless output as OBJ: positions, normals, 1-based triangles; vertices are welded
+ * within each patch only, and the triangles the snap collapsed (zero area in (u, v)) are left out. */
+export function instancedToObj(out: HeadlessInstanced, header: string): string {
+  const lines: string[] = [`# ${header}`];
+  for (let v = 0; v < out.vertexCount; v++) lines.push(`v ${out.positions[3 * v]} ${out.positions[3 * v + 1]} ${out.positions[3 * v + 2]}`);
+  for (let v = 0; v < out.vertexCount; v++) lines.push(`vn ${out.normals[3 * v]} ${out.normals[3 * v + 1]} ${out.normals[3 * v + 2]}`);
+  let kept = 0;
+  for (let t = 0; t < out.triangleCount; t++) {
+    const [a, b, c] = [0, 1, 2].map((k) => out.indices[3 * t + k]);
+    const uv = (x: number, k: number) => out.uv[2 * x + k];
+    const area2 = (uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(b, 1) - uv(a, 1)) * (uv(c, 0) - uv(a, 0));
+    if (area2 === 0) continue;
+    lines.push(`f ${a + 1}//${a + 1} ${b + 1}//${b + 1} ${c + 1}//${c + 1}`);
+    kept++;
+  }
+  lines.splice(1, 0, `# ${out.vertexCount} vertices, ${kept} triangles (${out.triangleCount - kept} collapsed by the snap left out)`);
+  return lines.join('\n') + '\n';
 }
 
 // ---- the GPU tessellator --------------------------------------------------------------------
@@ -403,8 +476,8 @@ export class InstancedTessellator {
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
       viewport: [lp.viewport?.[0] ?? 1, lp.viewport?.[1] ?? 1, 0, 0],
-      mode: MODE[lp.mode], staticLevel: lp.level ?? 4, lodScale: lp.lodScale ?? 1,
-      targetPixels: lp.targetPixels ?? 12, pixelError: lp.pixelError ?? 0.5,
+      mode: MODE[lp.mode], staticLevel: lp.level ?? LEVEL_DEFAULTS.level, lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
+      targetPixels: lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels, pixelError: lp.pixelError ?? LEVEL_DEFAULTS.pixelError,
     });
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
     // Edge codes and bucket counts start at 0 (atomicMax / atomicAdd).
@@ -613,3 +686,24 @@ export class InstancedTessellator {
 }
 
 
+
+/**
+ * The CLI's entry point (`npm run tessellate -- --tessellator instanced --level L | --adaptive`):
+ * cage in, the headless output of the draw's own vertex function out. `--level L` is
+ * { mode: 'static', level: L }; `--adaptive` is { mode: 'dynamic', viewProj, viewport, lodScale }
+ * with the CLI's camera (src/gpu/headless.ts headlessCamera gives one). Pass `tess` to reuse
+ * compiled pipelines across calls.
+ */
+export async function tessellateInstanced(
+  device: GPUDevice, cage: Cage, prepared: PreparedMesh, lp: LevelParams, tess?: InstancedTessellator,
+): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
+  const own = !tess;
+  const t = tess ?? new InstancedTessellator(device);
+  try {
+    const mesh = prepareInstanced(cage, prepared);
+    t.setMesh(mesh);
+    return { mesh, out: await t.headless(lp) };
+  } finally {
+    if (own) t.destroy();
+  }
+}
