@@ -272,6 +272,8 @@ export interface InstancedOptions {
   colorFormat?: GPUTextureFormat;
   /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
   depthFormat?: GPUTextureFormat;
+  /** Samples per pixel of the lit pass (the demo's renderer draws with 4× MSAA; default 1). */
+  sampleCount?: number;
 }
 
 export interface LevelParams {
@@ -327,6 +329,7 @@ export class InstancedTessellator {
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
   private readonly depthFormat: GPUTextureFormat;
+  private readonly sampleCount: number;
   private litPipeline?: GPURenderPipeline;
   private shadowPipeline?: GPURenderPipeline;
   private readonly bucketGroup: GPUBindGroup;
@@ -339,6 +342,7 @@ export class InstancedTessellator {
   constructor(readonly device: GPUDevice, opts: InstancedOptions = {}) {
     this.colorFormat = opts.colorFormat ?? 'rgba8unorm';
     this.depthFormat = opts.depthFormat ?? 'depth32float';
+    this.sampleCount = opts.sampleCount ?? 1;
     const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
     const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
@@ -567,6 +571,7 @@ export class InstancedTessellator {
       fragment: { module: this.drawModule, entryPoint: 'litFragment', targets: [{ format: this.colorFormat }] },
       primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'ccw' },
       depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
+      multisample: { count: this.sampleCount },
     });
     return this.litPipeline;
   }
@@ -606,6 +611,10 @@ export class InstancedTessellator {
       nv += counts[b] * e.vertexCount;
       nt += (counts[b] * e.indexCount) / 3;
     });
+    const limit = device.limits.maxStorageBufferBindingSize;
+    if (12 * nv > limit || 12 * nt > limit) {
+      throw new Error(`the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`);
+    }
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC;
     const out = {
       positions: device.createBuffer({ label: 'instanced headless positions', size: Math.max(16, 12 * nv), usage: S }),
