@@ -1,0 +1,718 @@
+/**
+ * Instanced power-of-two tessellation (NVIDIA's 2009 "Instanced Tessellation" sample; notes
+ * acc-and-instanced.md §6): one precomputed pattern per level 1, 2, 4, … 64 and domain
+ * (src/pattern/pow2.ts), patches bucketed by level on the GPU, one indirect instanced draw per
+ * bucket, the surface evaluated in the vertex shader, T-junctions removed by the snap of boundary
+ * vertices to each edge's level. Unlike the compute tessellator (tessellator.ts), which builds
+ * the mesh once and draws the stored buffers in every pass, this re-evaluates the surface in
+ * every pass (lit and shadow). Takes a GPUDevice, never the DOM.
+ *
+ * Patches are cage faces: a quad face is one quad patch, any other face gives one triangle patch
+ * per fan triangle of src/gpu/prepare.ts (a triangle face: itself). The surface is any WGSL module
+ * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl; see
+ * wgsl/instanced-common.wgsl for how the exact surfaces plug in).
+ *
+ * Passes (encodeLevels, one compute pass, no readback):
+ *   clear      edge codes and bucket counts
+ *   patchEdges modes static / per-patch: each edge's level = min over its patches   one thread per patch
+ *   edgeView   mode dynamic: each edge's level from the view                        one thread per edge
+ *   bucket     each patch's level, a slot in its bucket's list                      one thread per patch
+ *   records    14 drawIndexedIndirect records (quad and triangle × 7 levels)        one workgroup
+ * Then encodeDraw (lit or shadow pass: 14 drawIndexedIndirect, the bucket's list base by dynamic
+ * offset), or encodeHeadless (the same vertex function in compute, for checks and the CLI).
+ * Buffer layouts: wgsl/instanced-common.wgsl, instanced-levels.wgsl, instanced-draw.wgsl.
+ */
+import commonWgsl from '../../wgsl/instanced-common.wgsl?raw';
+import levelsWgsl from '../../wgsl/instanced-levels.wgsl?raw';
+import drawWgsl from '../../wgsl/instanced-draw.wgsl?raw';
+import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
+import { defineStruct } from './layout.ts';
+import { readBuffer } from './readback.ts';
+import { faceParam, type FaceParam } from './face-params.ts';
+import type { PreparedMesh } from './prepare.ts';
+import type { Cage } from '../mesh/types.ts';
+import {
+  packPatterns, snapVertex, edgePoint, POW2_LEVEL_COUNT, MAX_POW2_LEVEL, type PackedPatterns, type PatchDomain,
+} from '../pattern/pow2.ts';
+
+export const INST_PARAMS = defineStruct('InstParams', [
+  ['viewProj', 'mat4x4<f32>'],
+  // x, y: viewport size in pixels (dynamic mode).
+  ['viewport', 'vec4<f32>'],
+  ['nPatches', 'u32'], ['nQuads', 'u32'], ['nTris', 'u32'], ['nEdges', 'u32'],
+  ['mode', 'u32'], ['staticLevel', 'u32'], ['lodScale', 'f32'], ['targetPixels', 'f32'], ['pixelError', 'f32'],
+  // staticBuf word offsets (wgsl/instanced-common.wgsl), cageBuf float offset of the normals.
+  ['offTriVerts', 'u32'], ['offPatches', 'u32'], ['offEdgeOwner', 'u32'], ['offPatternIJ', 'u32'], ['offPatternIdx', 'u32'],
+  ['offEntries', 'u32'], ['offNormals', 'u32'],
+  // work word offsets (wgsl/instanced-levels.wgsl).
+  ['offWanted', 'u32'], ['offEdgeCode', 'u32'], ['offPatchLevel', 'u32'], ['offCounts', 'u32'], ['offLists', 'u32'],
+] as const);
+
+export const INST_BUCKET = defineStruct('InstBucket', [
+  ['listBase', 'u32'], ['level', 'u32'], ['domain', 'u32'], ['baseVertex', 'u32'], ['firstIndex', 'u32'],
+  ['vertexCount', 'u32'], ['triangleCount', 'u32'], ['outVertexBase', 'u32'], ['outTriangleBase', 'u32'], ['instances', 'u32'],
+] as const);
+
+export const INST_FRAME = defineStruct('InstFrame', [
+  ['viewProj', 'mat4x4<f32>'], ['lightViewProj', 'mat4x4<f32>'], ['toLight', 'vec4<f32>'], ['eye', 'vec4<f32>'],
+] as const);
+
+/** Buckets: domain (0 quad, 1 triangle) · 7 + log2 level. */
+export const BUCKETS = 2 * POW2_LEVEL_COUNT;
+/** Bytes between two buckets' uniforms (minUniformBufferOffsetAlignment is at most 256). */
+const BUCKET_STRIDE = 256;
+export const PATCH_WORDS = 8;
+const MODE = { static: 0, 'per-patch': 1, dynamic: 2 } as const;
+
+/** Workgroups as a 2D grid (each dimension is capped at 65535); the shaders fold y back. */
+function grid2d(groups: number): [number, number] {
+  return groups <= 65535 ? [Math.max(groups, 1), 1] : [65535, Math.ceil(groups / 65535)];
+}
+
+// ---- CPU side: patches and edges ------------------------------------------------------------
+
+export interface InstancedMesh {
+  prepared: PreparedMesh;
+  quadCount: number;
+  triCount: number;
+  patchCount: number;
+  edgeCount: number;
+  /** PATCH_WORDS per patch: firstTri, flags, e0..e3, face, 0 (wgsl/instanced-common.wgsl). */
+  patches: Uint32Array;
+  /** Cage vertices of each patch's corners (4 per patch; a triangle's 4th is unused). */
+  corners: Uint32Array;
+  /** Two cage vertices per edge, lower first. */
+  edgeVerts: Uint32Array;
+  /** Per edge: patch · 4 + local edge of one patch that has it. */
+  edgeOwner: Uint32Array;
+}
+
+export function patchDomain(m: InstancedMesh, p: number): PatchDomain {
+  return m.patches[PATCH_WORDS * p + 1] & 1 ? 'tri' : 'quad';
+}
+export function patchEdgeIds(m: InstancedMesh, p: number): number[] {
+  const n = patchDomain(m, p) === 'tri' ? 3 : 4;
+  return Array.from({ length: n }, (_, k) => m.patches[PATCH_WORDS * p + 2 + k]);
+}
+export function patchCanonical(m: InstancedMesh, p: number): boolean[] {
+  const n = patchDomain(m, p) === 'tri' ? 3 : 4;
+  return Array.from({ length: n }, (_, k) => ((m.patches[PATCH_WORDS * p + 1] >> (1 + k)) & 1) === 1);
+}
+
+/** Patches and their edges from a cage and its prepared triangulation (prepare.ts). */
+export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedMesh {
+  const holes = new Set(cage.holes);
+  const quads: { tri: number; face: number; c: number[] }[] = [];
+  const tris: { tri: number; face: number; c: number[] }[] = [];
+  let t = 0;
+  for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
+    if (holes.has(f)) continue;
+    const s = cage.faceOffsets[f], n = cage.faceOffsets[f + 1] - s;
+    if (n < 3) continue;
+    if (n === 4) quads.push({ tri: t, face: f, c: Array.from(cage.faceIndices.subarray(s, s + 4)) });
+    else for (let k = 0; k < n - 2; k++) tris.push({ tri: t + k, face: f, c: Array.from(prepared.triVerts.subarray(3 * (t + k), 3 * (t + k) + 3)) });
+    t += n - 2;
+  }
+  if (t !== prepared.triangleCount) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
+  const all = [...quads, ...tris];
+  const patches = new Uint32Array(PATCH_WORDS * all.length);
+  const corners = new Uint32Array(4 * all.length);
+  const edgeIds = new Map<number, number>();
+  const edgeVerts: number[] = [];
+  const edgeOwner: number[] = [];
+  const nV = prepared.vertexCount;
+  all.forEach((q, p) => {
+    const n = q.c.length;
+    let flags = n === 3 ? 1 : 0;
+    const o = PATCH_WORDS * p;
+    patches[o] = q.tri;
+    for (let k = 0; k < n; k++) {
+      const a = q.c[k], b = q.c[(k + 1) % n];
+      if (a < b) flags |= 1 << (1 + k);
+      const key = Math.min(a, b) * nV + Math.max(a, b);
+      let e = edgeIds.get(key);
+      if (e === undefined) {
+        e = edgeVerts.length / 2;
+        edgeIds.set(key, e);
+        edgeVerts.push(Math.min(a, b), Math.max(a, b));
+        edgeOwner.push(4 * p + k);
+      }
+      patches[o + 2 + k] = e;
+      corners[4 * p + k] = a;
+    }
+    patches[o + 1] = flags;
+    patches[o + 6] = q.face;
+  });
+  return {
+    prepared, quadCount: quads.length, triCount: tris.length, patchCount: all.length, edgeCount: edgeVerts.length / 2,
+    patches, corners, edgeVerts: Uint32Array.from(edgeVerts), edgeOwner: Uint32Array.from(edgeOwner),
+  };
+}
+
+// ---- CPU reference of the GPU passes ---------------------------------------------------------
+
+/** log2 of a level rounded down to a power of two in [1, 64] (the GPU's levelLog2). */
+export function levelLog2(L: number): number {
+  return Math.min(Math.floor(Math.log2(Math.max(L, 1))), POW2_LEVEL_COUNT - 1);
+}
+
+export interface CpuLevels {
+  edgeLevels: Uint32Array;
+  patchLevels: Uint32Array;
+  counts: Uint32Array;
+  /** 5 words per bucket, as the GPU's records pass writes them. */
+  records: Uint32Array;
+}
+
+/** The static / per-patch level rule on the CPU: edge = min over its patches, patch = its own. */
+export function cpuLevels(m: InstancedMesh, wanted: ArrayLike<number>, patterns: PackedPatterns = packPatterns()): CpuLevels {
+  const patchLevels = Uint32Array.from({ length: m.patchCount }, (_, p) => 1 << levelLog2(wanted[p]));
+  const edgeLevels = new Uint32Array(m.edgeCount).fill(MAX_POW2_LEVEL);
+  for (let p = 0; p < m.patchCount; p++) for (const e of patchEdgeIds(m, p)) edgeLevels[e] = Math.min(edgeLevels[e], patchLevels[p]);
+  const counts = new Uint32Array(BUCKETS);
+  for (let p = 0; p < m.patchCount; p++) counts[(patchDomain(m, p) === 'tri' ? POW2_LEVEL_COUNT : 0) + levelLog2(patchLevels[p])]++;
+  const records = new Uint32Array(5 * BUCKETS);
+  patterns.entries.forEach((e, b) => records.set([e.indexCount, counts[b], e.firstIndex, e.baseVertex, 0], 5 * b));
+  return { edgeLevels, patchLevels, counts, records };
+}
+
+/** The cage triangle and 16.16 weights of pattern point (i, j) of patch p at level P
+ * (wgsl/instanced-common.wgsl patchTriangle). */
+export function patchTriangle(m: InstancedMesh, p: number, P: number, i: number, j: number): { t: number; w: [number, number, number] } {
+  const s = 65536 / P, t0 = m.patches[PATCH_WORDS * p];
+  if (patchDomain(m, p) === 'tri') return { t: t0, w: [(P - i - j) * s, i * s, j * s] };
+  if (i >= j) return { t: t0, w: [(P - i) * s, (i - j) * s, j * s] };
+  return { t: t0 + 1, w: [(P - j) * s, i * s, (j - i) * s] };
+}
+
+/** Snapped (i, j) of pattern vertex (i, j) of patch p at level P, given every edge's level. */
+export function snapPatchVertex(m: InstancedMesh, p: number, P: number, i: number, j: number, edgeLevels: ArrayLike<number>): [number, number] {
+  const levels = patchEdgeIds(m, p).map((e) => Math.min(edgeLevels[e], P));
+  return snapVertex(patchDomain(m, p), P, i, j, levels, patchCanonical(m, p));
+}
+
+/** The defaults of LevelParams, shared by the GPU upload and the CPU twin. */
+const LEVEL_DEFAULTS = { level: 4, lodScale: 1, targetPixels: 12, pixelError: 0.5 };
+
+/**
+ * The dynamic rule for edge e on the CPU (wgsl/instanced-levels.wgsl edgeView), in double
+ * precision, with the surface given as a function of (cage triangle, float weights). Returns the
+ * level and the continuous segment count it was rounded from (a check skips edges whose count
+ * lies within f32 noise of a power of two).
+ */
+export function cpuDynamicEdgeLevel(
+  m: InstancedMesh, e: number, lp: LevelParams, surface: (t: number, w: [number, number, number]) => number[],
+): { level: number; n: number } {
+  const owner = m.edgeOwner[e], p = owner >> 2, k = owner & 3;
+  const dom = patchDomain(m, p);
+  const vp = lp.viewProj ?? new Float32Array(16);
+  const [W, H] = lp.viewport ?? [1, 1];
+  const s: number[][] = [];
+  let behind = false;
+  for (let q = 0; q < 3; q++) {
+    const [i, j] = edgePoint(dom, 2, k, q);
+    const { t, w } = patchTriangle(m, p, 2, i, j);
+    const x = surface(t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]);
+    const clip = [0, 1, 2, 3].map((r) => vp[r] * x[0] + vp[4 + r] * x[1] + vp[8 + r] * x[2] + vp[12 + r]);
+    behind ||= clip[3] <= 0;
+    s.push([(clip[0] / clip[3]) * 0.5 * W, (clip[1] / clip[3]) * 0.5 * H]);
+  }
+  if (behind) return { level: 1 << levelLog2(lp.level ?? LEVEL_DEFAULTS.level), n: NaN };
+  const chord = Math.hypot(s[2][0] - s[0][0], s[2][1] - s[0][1]);
+  const dev = Math.hypot(s[1][0] - 0.5 * (s[0][0] + s[2][0]), s[1][1] - 0.5 * (s[0][1] + s[2][1]));
+  const n = (lp.lodScale ?? LEVEL_DEFAULTS.lodScale) * Math.max(chord / (lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels), Math.sqrt(dev / (lp.pixelError ?? LEVEL_DEFAULTS.pixelError)));
+  const c = Math.ceil(Math.min(Math.max(n, 1), MAX_POW2_LEVEL));
+  return { level: c <= 1 ? 1 : 2 ** Math.ceil(Math.log2(c)), n };
+}
+
+/**
+ * Where each headless output vertex lies on its cage face, in the CPU reference's addressing
+ * (src/gpu/face-params.ts: `f u v` on quads, `f k s t` on sub-faces of other faces), for the
+ * CLI's --params.
+ */
+export function instancedVertexParams(m: InstancedMesh, cage: Cage, out: HeadlessInstanced): FaceParam[] {
+  const params: FaceParam[] = [];
+  for (let v = 0; v < out.vertexCount; v++) {
+    const p = out.patch[v], P = out.patchLevels[p];
+    const { t, w } = patchTriangle(m, p, P, Math.round(out.uv[2 * v] * P), Math.round(out.uv[2 * v + 1] * P));
+    params.push(faceParam(m.prepared, cage, t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]));
+  }
+  return params;
+}
+
+/** The headless output as OBJ: positions, normals, 1-based triangles; vertices are welded
+ * within each patch only, and the triangles the snap collapsed (zero area in (u, v)) are left out. */
+export function instancedToObj(out: HeadlessInstanced, header: string): string {
+  const lines: string[] = [`# ${header}`];
+  for (let v = 0; v < out.vertexCount; v++) lines.push(`v ${out.positions[3 * v]} ${out.positions[3 * v + 1]} ${out.positions[3 * v + 2]}`);
+  for (let v = 0; v < out.vertexCount; v++) lines.push(`vn ${out.normals[3 * v]} ${out.normals[3 * v + 1]} ${out.normals[3 * v + 2]}`);
+  let kept = 0;
+  for (let t = 0; t < out.triangleCount; t++) {
+    const [a, b, c] = [0, 1, 2].map((k) => out.indices[3 * t + k]);
+    const uv = (x: number, k: number) => out.uv[2 * x + k];
+    const area2 = (uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(b, 1) - uv(a, 1)) * (uv(c, 0) - uv(a, 0));
+    if (area2 === 0) continue;
+    lines.push(`f ${a + 1}//${a + 1} ${b + 1}//${b + 1} ${c + 1}//${c + 1}`);
+    kept++;
+  }
+  lines.splice(1, 0, `# ${out.vertexCount} vertices, ${kept} triangles (${out.triangleCount - kept} collapsed by the snap left out)`);
+  return lines.join('\n') + '\n';
+}
+
+// ---- the GPU tessellator --------------------------------------------------------------------
+
+export interface InstancedOptions {
+  /** WGSL defining `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` (default: Phong,
+   * wgsl/surface-phong.wgsl). A surface needing more data than the cage and its normals (the
+   * exact Catmull-Clark or ACC surfaces) will declare its own bindings in a fourth bind group
+   * (group 3: control points, quadtree or patch tables) and this class will bind it in every
+   * pass: the exact-surface wiring adds that after the merge; today only the cage is bound. */
+  surfaceWgsl?: string;
+  /** Render target format of the lit pipeline (default 'rgba8unorm'). */
+  colorFormat?: GPUTextureFormat;
+  /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
+  depthFormat?: GPUTextureFormat;
+  /** Samples per pixel of the lit pass (the demo's renderer draws with 4× MSAA; default 1). */
+  sampleCount?: number;
+}
+
+export interface LevelParams {
+  /** static: every patch at `level`; per-patch: the levels given to setWanted; dynamic: per
+   * edge from the view (viewProj, viewport, lodScale, targetPixels, pixelError). */
+  mode: 'static' | 'per-patch' | 'dynamic';
+  /** The static level (also the dynamic mode's level for an edge behind the eye). Default 4. */
+  level?: number;
+  viewProj?: Float32Array;
+  viewport?: [number, number];
+  lodScale?: number;
+  /** Dynamic: pixels per segment along an edge's chord (default 12). */
+  targetPixels?: number;
+  /** Dynamic: allowed distance in pixels between the curve and its segments (default 0.5). */
+  pixelError?: number;
+}
+
+interface WorkLayout { wanted: number; edgeCode: number; patchLevel: number; counts: number; lists: number; words: number }
+
+export interface HeadlessInstanced {
+  vertexCount: number;
+  triangleCount: number;
+  positions: Float32Array;
+  normals: Float32Array;
+  /** Per vertex: its patch. */
+  patch: Uint32Array;
+  /** Per vertex: the snapped pattern point (u, v) on its patch. */
+  uv: Float32Array;
+  indices: Uint32Array;
+  /** Patches per bucket, as the GPU counted them. */
+  counts: Uint32Array;
+  /** The 14 indirect draw records the GPU wrote. */
+  records: Uint32Array;
+  /** Per edge: its level; per patch: its pattern level. */
+  edgeLevels: Uint32Array;
+  patchLevels: Uint32Array;
+}
+
+export class InstancedTessellator {
+  readonly patterns = packPatterns();
+  /** 14 drawIndexedIndirect records (5 u32 each), rewritten by every encodeLevels. */
+  readonly drawArgs: GPUBuffer;
+  /** The patterns' local indices (all levels), bound by encodeDraw. */
+  readonly indexBuffer: GPUBuffer;
+  private readonly params: GPUBuffer;
+  private readonly paramsBytes = new ArrayBuffer(INST_PARAMS.size);
+  private readonly bucketUniform: GPUBuffer;
+  private readonly frame: GPUBuffer;
+  private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'bucketPatches' | 'records', GPUComputePipeline>;
+  private readonly layouts: { mesh: GPUBindGroupLayout; bucket: GPUBindGroupLayout; frame: GPUBindGroupLayout; out: GPUBindGroupLayout };
+  private readonly headlessPipeline: GPUComputePipeline;
+  private readonly drawModule: GPUShaderModule;
+  private readonly renderLayout: GPUPipelineLayout;
+  private readonly colorFormat: GPUTextureFormat;
+  private readonly depthFormat: GPUTextureFormat;
+  private readonly sampleCount: number;
+  private litPipeline?: GPURenderPipeline;
+  private shadowPipeline?: GPURenderPipeline;
+  private readonly bucketGroup: GPUBindGroup;
+  private readonly frameGroup: GPUBindGroup;
+  private mesh?: {
+    m: InstancedMesh; staticBuf: GPUBuffer; cageBuf: GPUBuffer; work: GPUBuffer; layout: WorkLayout;
+    meshGroup: GPUBindGroup;
+  };
+
+  constructor(readonly device: GPUDevice, opts: InstancedOptions = {}) {
+    this.colorFormat = opts.colorFormat ?? 'rgba8unorm';
+    this.depthFormat = opts.depthFormat ?? 'depth32float';
+    this.sampleCount = opts.sampleCount ?? 1;
+    const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
+    const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
+    const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
+    const pipeline = (entryPoint: string) => device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
+    this.levelPipelines = { patchEdges: pipeline('patchEdges'), edgeView: pipeline('edgeView'), bucketPatches: pipeline('bucketPatches'), records: pipeline('records') };
+
+    // Explicit layouts: one bucket bind group with a dynamic offset, shared by the lit, shadow and
+    // headless pipelines.
+    const VC = GPUShaderStage.VERTEX | GPUShaderStage.COMPUTE;
+    const ro = { type: 'read-only-storage' } as const;
+    this.layouts = {
+      mesh: device.createBindGroupLayout({
+        label: 'instanced mesh',
+        entries: [
+          { binding: 0, visibility: VC, buffer: { type: 'uniform' } },
+          { binding: 1, visibility: VC, buffer: ro },
+          { binding: 2, visibility: VC, buffer: ro },
+          { binding: 3, visibility: VC, buffer: ro },
+        ],
+      }),
+      bucket: device.createBindGroupLayout({
+        label: 'instanced bucket',
+        entries: [{ binding: 0, visibility: VC, buffer: { type: 'uniform', hasDynamicOffset: true, minBindingSize: INST_BUCKET.size } }],
+      }),
+      frame: device.createBindGroupLayout({
+        label: 'instanced frame',
+        entries: [{ binding: 0, visibility: GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT, buffer: { type: 'uniform' } }],
+      }),
+      out: device.createBindGroupLayout({
+        label: 'instanced headless outputs',
+        entries: [1, 2, 3, 4, 5].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
+      }),
+    };
+    this.drawModule = device.createShaderModule({ label: 'instanced draw', code: code(drawWgsl) });
+    this.renderLayout = device.createPipelineLayout({ label: 'instanced render', bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.frame] });
+    this.headlessPipeline = device.createComputePipeline({
+      label: 'instanced headless',
+      layout: device.createPipelineLayout({ label: 'instanced headless', bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out] }),
+      compute: { module: this.drawModule, entryPoint: 'headless' },
+    });
+
+    this.params = device.createBuffer({ label: 'instanced params', size: INST_PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    this.drawArgs = device.createBuffer({ label: 'instanced draw records', size: 20 * BUCKETS, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT | GPUBufferUsage.COPY_SRC });
+    this.indexBuffer = device.createBuffer({ label: 'instanced pattern indices', size: this.patterns.indices.byteLength, usage: GPUBufferUsage.INDEX | GPUBufferUsage.COPY_DST });
+    device.queue.writeBuffer(this.indexBuffer, 0, this.patterns.indices);
+    this.bucketUniform = device.createBuffer({ label: 'instanced buckets', size: BUCKET_STRIDE * BUCKETS, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    this.bucketGroup = device.createBindGroup({
+      label: 'instanced bucket', layout: this.layouts.bucket,
+      entries: [{ binding: 0, resource: { buffer: this.bucketUniform, size: INST_BUCKET.size } }],
+    });
+    this.frame = device.createBuffer({ label: 'instanced frame', size: INST_FRAME.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    this.frameGroup = device.createBindGroup({ label: 'instanced frame', layout: this.layouts.frame, entries: [{ binding: 0, resource: { buffer: this.frame } }] });
+  }
+
+  get instancedMesh(): InstancedMesh | undefined {
+    return this.mesh?.m;
+  }
+
+  /** Upload a cage's patches (topology once; updateCage for new positions). */
+  setMesh(m: InstancedMesh): void {
+    const device = this.device;
+    this.releaseMesh();
+    const pr = m.prepared;
+    const entries = new Uint32Array(4 * BUCKETS);
+    this.patterns.entries.forEach((e, b) => entries.set([e.baseVertex, e.firstIndex, e.indexCount, e.vertexCount], 4 * b));
+    const parts = [pr.triVerts, m.patches, m.edgeOwner, this.patterns.ij, this.patterns.indices, entries];
+    const offsets: number[] = [];
+    let at = 0;
+    for (const p of parts) {
+      offsets.push(at);
+      at += p.length;
+    }
+    const words = new Uint32Array(at);
+    parts.forEach((p, i) => words.set(p, offsets[i]));
+    const staticBuf = device.createBuffer({ label: 'instanced topology + patterns', size: words.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    device.queue.writeBuffer(staticBuf, 0, words);
+    const cage = new Float32Array(6 * pr.vertexCount);
+    cage.set(pr.positions, 0);
+    cage.set(pr.normals, 3 * pr.vertexCount);
+    const cageBuf = device.createBuffer({ label: 'instanced cage', size: Math.max(16, cage.byteLength), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    device.queue.writeBuffer(cageBuf, 0, cage);
+
+    let w = 0;
+    const take = (n: number) => ((w += n), w - n);
+    const layout: WorkLayout = {
+      wanted: take(m.patchCount), edgeCode: take(m.edgeCount), patchLevel: take(m.patchCount), counts: take(BUCKETS),
+      lists: take(POW2_LEVEL_COUNT * m.patchCount), words: 0,
+    };
+    layout.words = w;
+    const work = device.createBuffer({ label: 'instanced work', size: 4 * layout.words, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC });
+
+    INST_PARAMS.write(new DataView(this.paramsBytes), {
+      nPatches: m.patchCount, nQuads: m.quadCount, nTris: m.triCount, nEdges: m.edgeCount,
+      offTriVerts: offsets[0], offPatches: offsets[1], offEdgeOwner: offsets[2], offPatternIJ: offsets[3], offPatternIdx: offsets[4],
+      offEntries: offsets[5], offNormals: 3 * pr.vertexCount,
+      offWanted: layout.wanted, offEdgeCode: layout.edgeCode, offPatchLevel: layout.patchLevel, offCounts: layout.counts, offLists: layout.lists,
+    });
+
+    // Each bucket's uniform: where its list starts and its pattern.
+
+    const meshGroup = device.createBindGroup({
+      label: 'instanced mesh',
+      layout: this.layouts.mesh,
+      entries: [this.params, staticBuf, cageBuf, work].map((buffer, binding) => ({ binding, resource: { buffer } })),
+    });
+    this.mesh = { m, staticBuf, cageBuf, work, layout, meshGroup };
+    const buckets = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
+    const lists = this.listBases();
+    this.patterns.entries.forEach((e, b) => {
+      INST_BUCKET.write(new DataView(buckets, BUCKET_STRIDE * b), {
+        listBase: lists[b], level: e.level, domain: e.domain === 'tri' ? 1 : 0, baseVertex: e.baseVertex, firstIndex: e.firstIndex,
+        vertexCount: e.vertexCount, triangleCount: e.indexCount / 3,
+      });
+    });
+    device.queue.writeBuffer(this.bucketUniform, 0, buckets);
+  }
+
+  /** New cage positions and vertex normals for the same topology. */
+  updateCage(positions: Float32Array, normals: Float32Array): void {
+    const m = this.requireMesh();
+    this.device.queue.writeBuffer(m.cageBuf, 0, positions);
+    this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+  }
+
+  /** The levels of per-patch mode (one per patch, rounded down to a power of two in [1, 64]). */
+  setWanted(levels: Uint32Array): void {
+    const m = this.requireMesh();
+    if (levels.length !== m.m.patchCount) throw new Error(`setWanted: ${levels.length} levels for ${m.m.patchCount} patches`);
+    this.device.queue.writeBuffer(m.work, 4 * m.layout.wanted, levels);
+  }
+
+  /** Record the level, bucket and record passes. */
+  encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams): void {
+    const m = this.requireMesh();
+    INST_PARAMS.write(new DataView(this.paramsBytes), {
+      viewProj: lp.viewProj ?? new Float32Array(16),
+      viewport: [lp.viewport?.[0] ?? 1, lp.viewport?.[1] ?? 1, 0, 0],
+      mode: MODE[lp.mode], staticLevel: lp.level ?? LEVEL_DEFAULTS.level, lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
+      targetPixels: lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels, pixelError: lp.pixelError ?? LEVEL_DEFAULTS.pixelError,
+    });
+    this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
+    // Edge codes and bucket counts start at 0 (atomicMax / atomicAdd).
+    encoder.clearBuffer(m.work, 4 * m.layout.edgeCode, 4 * m.m.edgeCount);
+    encoder.clearBuffer(m.work, 4 * m.layout.counts, 4 * BUCKETS);
+    const cp = encoder.beginComputePass({ label: 'instanced levels' });
+    const run = (name: keyof InstancedTessellator['levelPipelines'], groups: number, group: GPUBindGroup) => {
+      cp.setPipeline(this.levelPipelines[name]);
+      cp.setBindGroup(0, group);
+      cp.dispatchWorkgroups(...grid2d(groups));
+    };
+    const nP = m.m.patchCount;
+    if (lp.mode === 'dynamic') run('edgeView', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeView'));
+    else run('patchEdges', Math.ceil(nP / 64), this.levelGroupFor('patchEdges'));
+    run('bucketPatches', Math.ceil(nP / 64), this.levelGroupFor('bucketPatches'));
+    run('records', 1, this.levelGroupFor('records'));
+    cp.end();
+  }
+
+  // Auto layouts differ per entry point (each holds only the bindings it uses), so each level
+  // pass gets its own bind group, made once per mesh.
+  private levelGroups = new Map<string, GPUBindGroup>();
+  private levelGroupFor(name: keyof InstancedTessellator['levelPipelines']): GPUBindGroup {
+    const m = this.requireMesh();
+    let g = this.levelGroups.get(name);
+    if (!g) {
+      const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
+      const used: Record<string, number[]> = { patchEdges: [0, 1, 3], edgeView: [0, 1, 2, 3], bucketPatches: [0, 1, 3], records: [0, 1, 3, 4] };
+      g = this.device.createBindGroup({
+        label: `instanced ${name}`,
+        layout: this.levelPipelines[name].getBindGroupLayout(0),
+        entries: used[name].map((binding) => ({ binding, resource: { buffer: all[binding] } })),
+      });
+      this.levelGroups.set(name, g);
+    }
+    return g;
+  }
+
+  /** What the last encodeLevels left on the GPU (checks): records, per-edge and per-patch
+   * levels, each bucket's list of patches. */
+  async readLevels(): Promise<{ records: Uint32Array; counts: Uint32Array; edgeLevels: Uint32Array; patchLevels: Uint32Array; lists: Uint32Array[] }> {
+    const m = this.requireMesh();
+    const records = new Uint32Array(await readBuffer(this.device, this.drawArgs, 20 * BUCKETS));
+    const w = new Uint32Array(await readBuffer(this.device, m.work, 4 * m.layout.words));
+    const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => w[m.layout.counts + b]);
+    return {
+      records, counts,
+      edgeLevels: Uint32Array.from(w.subarray(m.layout.edgeCode, m.layout.edgeCode + m.m.edgeCount), (c) => 1 << (POW2_LEVEL_COUNT - c)),
+      patchLevels: Uint32Array.from(w.subarray(m.layout.patchLevel, m.layout.patchLevel + m.m.patchCount), (lg) => 1 << lg),
+      lists: this.listBases().map((base, b) => w.slice(base, base + counts[b])),
+    };
+  }
+
+  /** The per-frame uniform of the lit and shadow passes. */
+  writeFrame(f: { viewProj: Float32Array; lightViewProj?: Float32Array; toLight?: [number, number, number]; eye: [number, number, number] }): void {
+    const bytes = new ArrayBuffer(INST_FRAME.size);
+    const l = f.toLight ?? [0.4, 0.8, 0.45];
+    const n = Math.hypot(...l);
+    INST_FRAME.write(new DataView(bytes), {
+      viewProj: f.viewProj, lightViewProj: f.lightViewProj ?? f.viewProj,
+      toLight: [l[0] / n, l[1] / n, l[2] / n, 0], eye: [...f.eye, 1],
+    });
+    this.device.queue.writeBuffer(this.frame, 0, bytes);
+  }
+
+  /** Draw every bucket into an open render pass: 'lit' (colour + depth, colorFormat/depthFormat)
+   * or 'shadow' (depth only, from the frame's lightViewProj). Needs encodeLevels before, in an
+   * earlier pass. */
+  encodeDraw(pass: GPURenderPassEncoder, kind: 'lit' | 'shadow'): void {
+    const m = this.requireMesh();
+    pass.setPipeline(kind === 'lit' ? this.lit() : this.shadow());
+    pass.setBindGroup(0, m.meshGroup);
+    pass.setBindGroup(2, this.frameGroup);
+    pass.setIndexBuffer(this.indexBuffer, 'uint32');
+    for (let b = 0; b < BUCKETS; b++) {
+      pass.setBindGroup(1, this.bucketGroup, [BUCKET_STRIDE * b]);
+      pass.drawIndexedIndirect(this.drawArgs, 20 * b);
+    }
+  }
+
+  private lit(): GPURenderPipeline {
+    // The existing renderer's lit state: triangle list, no culling (open surfaces), depth less.
+    this.litPipeline ??= this.device.createRenderPipeline({
+      label: 'instanced lit',
+      layout: this.renderLayout,
+      vertex: { module: this.drawModule, entryPoint: 'litVertex' },
+      fragment: { module: this.drawModule, entryPoint: 'litFragment', targets: [{ format: this.colorFormat }] },
+      primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'ccw' },
+      depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
+      multisample: { count: this.sampleCount },
+    });
+    return this.litPipeline;
+  }
+
+  private shadow(): GPURenderPipeline {
+    // The renderer's shadow state: depth only, slope-scaled bias against acne.
+    this.shadowPipeline ??= this.device.createRenderPipeline({
+      label: 'instanced shadow',
+      layout: this.renderLayout,
+      vertex: { module: this.drawModule, entryPoint: 'shadowVertex' },
+      primitive: { topology: 'triangle-list', cullMode: 'none' },
+      depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
+    });
+    return this.shadowPipeline;
+  }
+
+  /**
+   * Run the vertex function over every instance of every bucket in compute and read the result
+   * back (checks, `npm run tessellate -- --tessellator instanced`). Encodes the level passes
+   * itself; reads the 14 bucket counts back first to size the outputs (a tool may read back; the
+   * draw path never does).
+   */
+  async headless(lp: LevelParams): Promise<HeadlessInstanced> {
+    const device = this.device;
+    const m = this.requireMesh();
+    device.pushErrorScope('validation');
+    let enc = device.createCommandEncoder({ label: 'instanced headless levels' });
+    this.encodeLevels(enc, lp);
+    device.queue.submit([enc.finish()]);
+    const records = new Uint32Array(await readBuffer(device, this.drawArgs, 20 * BUCKETS));
+    const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => records[5 * b + 1]);
+
+    const bases: { v: number; t: number }[] = [];
+    let nv = 0, nt = 0;
+    this.patterns.entries.forEach((e, b) => {
+      bases.push({ v: nv, t: nt });
+      nv += counts[b] * e.vertexCount;
+      nt += (counts[b] * e.indexCount) / 3;
+    });
+    const limit = device.limits.maxStorageBufferBindingSize;
+    if (12 * nv > limit || 12 * nt > limit) {
+      throw new Error(`the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`);
+    }
+    const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC;
+    const out = {
+      positions: device.createBuffer({ label: 'instanced headless positions', size: Math.max(16, 12 * nv), usage: S }),
+      normals: device.createBuffer({ label: 'instanced headless normals', size: Math.max(16, 12 * nv), usage: S }),
+      patch: device.createBuffer({ label: 'instanced headless patches', size: Math.max(16, 4 * nv), usage: S }),
+      uv: device.createBuffer({ label: 'instanced headless uv', size: Math.max(16, 8 * nv), usage: S }),
+      indices: device.createBuffer({ label: 'instanced headless indices', size: Math.max(16, 12 * nt), usage: S }),
+    };
+    const outGroup = device.createBindGroup({
+      label: 'instanced headless outputs', layout: this.layouts.out,
+      entries: [out.positions, out.normals, out.patch, out.uv, out.indices].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
+    });
+    // This run's bucket uniforms: the draw's, plus where each bucket's output goes.
+    const bytes = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
+    const uniform = device.createBuffer({ label: 'instanced headless buckets', size: bytes.byteLength, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    const group = device.createBindGroup({ label: 'instanced headless bucket', layout: this.layouts.bucket, entries: [{ binding: 0, resource: { buffer: uniform, size: INST_BUCKET.size } }] });
+    const lists = this.listBases();
+    this.patterns.entries.forEach((e, b) => {
+      INST_BUCKET.write(new DataView(bytes, BUCKET_STRIDE * b), {
+        listBase: lists[b], level: e.level, domain: e.domain === 'tri' ? 1 : 0, baseVertex: e.baseVertex, firstIndex: e.firstIndex,
+        vertexCount: e.vertexCount, triangleCount: e.indexCount / 3, outVertexBase: bases[b].v, outTriangleBase: bases[b].t, instances: counts[b],
+      });
+    });
+    device.queue.writeBuffer(uniform, 0, bytes);
+    enc = device.createCommandEncoder({ label: 'instanced headless' });
+    const cp = enc.beginComputePass({ label: 'instanced headless' });
+    cp.setPipeline(this.headlessPipeline);
+    cp.setBindGroup(0, m.meshGroup);
+    cp.setBindGroup(2, outGroup);
+    this.patterns.entries.forEach((e, b) => {
+      const threads = counts[b] * Math.max(e.vertexCount, e.indexCount / 3);
+      if (!threads) return;
+      cp.setBindGroup(1, group, [BUCKET_STRIDE * b]);
+      cp.dispatchWorkgroups(...grid2d(Math.ceil(threads / 64)));
+    });
+    cp.end();
+    device.queue.submit([enc.finish()]);
+    const error = await device.popErrorScope();
+    if (error) throw new Error(`WebGPU validation error: ${error.message}`);
+    const [positions, normals, patch, uv, indices] = await Promise.all([
+      readBuffer(device, out.positions, 12 * nv), readBuffer(device, out.normals, 12 * nv), readBuffer(device, out.patch, 4 * nv),
+      readBuffer(device, out.uv, 8 * nv), readBuffer(device, out.indices, 12 * nt),
+    ]);
+    const levels = await this.readLevels();
+    for (const b of [...Object.values(out), uniform]) b.destroy();
+    return {
+      vertexCount: nv, triangleCount: nt,
+      positions: new Float32Array(positions), normals: new Float32Array(normals), patch: new Uint32Array(patch),
+      uv: new Float32Array(uv), indices: new Uint32Array(indices), counts, records,
+      edgeLevels: levels.edgeLevels, patchLevels: levels.patchLevels,
+    };
+  }
+
+  private listBases(): number[] {
+    const m = this.requireMesh();
+    return Array.from({ length: BUCKETS }, (_, b) => {
+      const lg = b % POW2_LEVEL_COUNT;
+      return m.layout.lists + (b >= POW2_LEVEL_COUNT ? POW2_LEVEL_COUNT * m.m.quadCount + lg * m.m.triCount : lg * m.m.quadCount);
+    });
+  }
+
+  private requireMesh() {
+    if (!this.mesh) throw new Error('InstancedTessellator.setMesh must be called first');
+    return this.mesh;
+  }
+
+  private releaseMesh(): void {
+    if (!this.mesh) return;
+    for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
+    this.levelGroups.clear();
+    this.mesh = undefined;
+  }
+
+  destroy(): void {
+    this.releaseMesh();
+    for (const b of [this.params, this.drawArgs, this.indexBuffer, this.bucketUniform, this.frame]) b.destroy();
+  }
+}
+
+
+
+/**
+ * The CLI's entry point (`npm run tessellate -- --tessellator instanced --level L | --adaptive`):
+ * cage in, the headless output of the draw's own vertex function out. `--level L` is
+ * { mode: 'static', level: L }; `--adaptive` is { mode: 'dynamic', viewProj, viewport, lodScale }
+ * with the CLI's camera (src/gpu/headless.ts headlessCamera gives one). Pass `tess` to reuse
+ * compiled pipelines across calls.
+ */
+export async function tessellateInstanced(
+  device: GPUDevice, cage: Cage, prepared: PreparedMesh, lp: LevelParams, tess?: InstancedTessellator,
+): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
+  const own = !tess;
+  const t = tess ?? new InstancedTessellator(device);
+  try {
+    const mesh = prepareInstanced(cage, prepared);
+    t.setMesh(mesh);
+    return { mesh, out: await t.headless(lp) };
+  } finally {
+    if (own) t.destroy();
+  }
+}
