@@ -426,7 +426,11 @@ export class InstancedTessellator {
     device.queue.writeBuffer(cageBuf, 0, cage);
 
     let w = 0;
-    const take = (n: number) => ((w += n), w - n);
+    const take = (n: number) => {
+      const at = w;
+      w += n;
+      return at;
+    };
     const layout: WorkLayout = {
       wanted: take(m.patchCount), edgeCode: take(m.edgeCount), patchLevel: take(m.patchCount), counts: take(BUCKETS),
       lists: take(POW2_LEVEL_COUNT * m.patchCount), words: 0,
