@@ -1,0 +1,127 @@
+// Face-varying texture coordinates on a cage (OBJ `vt`, `f v/vt/vn`) and their interpolation
+// over the limit surface.
+//
+// Data layout (in the Cage, types.ts): `uvs` holds (u, v) pairs; `faceUvIndices[h]` is the uv
+// index of face corner h (the same index space as `faceIndices`, i.e. half-edge h of
+// topology.ts), or -1. UVs are face-varying: two faces meeting at a cage vertex may give it
+// different uvs, which is a UV seam. The mesh layer never merges or splits them.
+//
+// Interpolation rule: OpenSubdiv's face-varying "linear all" (Sdc::Options::FVAR_LINEAR_ALL):
+// the uvs are bilinear over each face's own parameter domain, with no smoothing across faces.
+//  - quad (corners 0..3 at (u,v) = (0,0), (1,0), (1,1), (0,1)):
+//        uv(u,v) = (1−u)(1−v)·uv0 + u(1−v)·uv1 + u·v·uv2 + (1−u)v·uv3;
+//  - face with n ≠ 4 corners, sub-face k at (s,t) in the exact reference's parameterisation
+//    (src/subdiv/evaluate.ts, notes/catmull-clark.md §5.3): bilinear over the sub-quad whose
+//    corners are uv_k, (uv_k + uv_k+1)/2, the mean of all n corner uvs, (uv_k−1 + uv_k)/2.
+//    This is exactly what bilinear subdivision of the uv channel converges to (one bilinear
+//    step splits the n-gon into these quads, and bilinear refinement of a quad reproduces it).
+// Along a cage edge both forms are linear between the edge's two corner uvs of that face, so a
+// point on an edge has the same uv whichever parameterisation (quad or sub-face) reaches it.
+import { CageError } from './errors.ts';
+import type { Topology } from './topology.ts';
+import type { Cage } from './types.ts';
+
+/** uv and its derivatives with respect to the face parameters (u,v) (quads) or (s,t) (sub-faces). */
+export interface UvPoint {
+  uv: [number, number];
+  /** ∂uv/∂u (or ∂uv/∂s) and ∂uv/∂v (or ∂uv/∂t). */
+  dUvdu: [number, number];
+  dUvdv: [number, number];
+}
+
+/** 'none': no corner has a uv; 'complete': every corner of every face has one; 'partial': some do. */
+export function uvCoverage(cage: Cage): 'none' | 'complete' | 'partial' {
+  let some = false, all = true;
+  for (let h = 0; h < cage.faceUvIndices.length; h++) {
+    if (cage.faceUvIndices[h] >= 0) some = true;
+    else all = false;
+  }
+  if (cage.faceUvIndices.length === 0) return 'none';
+  return all ? 'complete' : some ? 'partial' : 'none';
+}
+
+/**
+ * Throws a CageError unless every face corner has a uv, naming the first face (and its line)
+ * without one: interpolation needs all four (or n) corner uvs of a face.
+ */
+export function requireUvs(cage: Cage): void {
+  const nf = cage.faceOffsets.length - 1;
+  for (let f = 0; f < nf; f++) {
+    for (let h = cage.faceOffsets[f]; h < cage.faceOffsets[f + 1]; h++) {
+      if (!(cage.faceUvIndices[h] >= 0)) {
+        const line = cage.faceLines[f] ?? 0;
+        throw new CageError([{ line, message: `face ${f + 1}${line ? ` (line ${line})` : ''} has no texture coordinate on corner ${h - cage.faceOffsets[f] + 1}: UVs (f v/vt) are needed on every face corner for displacement` }]);
+      }
+    }
+  }
+}
+
+/** The uv of corner j (0-based, within the face) of face f. */
+export function cornerUv(cage: Cage, f: number, j: number): [number, number] {
+  const t = cage.faceUvIndices[cage.faceOffsets[f] + j];
+  if (!(t >= 0)) throw new RangeError(`face ${f} corner ${j} has no uv`);
+  return [cage.uvs[2 * t], cage.uvs[2 * t + 1]];
+}
+
+function bilinear(a: number[], b: number[], c: number[], d: number[], s: number, t: number): UvPoint {
+  const uv: [number, number] = [0, 0], du: [number, number] = [0, 0], dv: [number, number] = [0, 0];
+  for (let i = 0; i < 2; i++) {
+    uv[i] = (1 - s) * (1 - t) * a[i] + s * (1 - t) * b[i] + s * t * c[i] + (1 - s) * t * d[i];
+    du[i] = (1 - t) * (b[i] - a[i]) + t * (c[i] - d[i]);
+    dv[i] = (1 - s) * (d[i] - a[i]) + s * (c[i] - b[i]);
+  }
+  return { uv, dUvdu: du, dUvdv: dv };
+}
+
+function checkParam(s: number, t: number): void {
+  if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1)) throw new RangeError(`parameter (${s}, ${t}) outside [0,1]^2`);
+}
+
+/** uv on quad face f at (u,v), corners 0..3 at (0,0), (1,0), (1,1), (0,1). */
+export function uvAt(cage: Cage, f: number, u: number, v: number): UvPoint {
+  const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+  if (n !== 4) throw new RangeError(`face ${f} has ${n} corners: use uvAtSubFace(cage, face, k, s, t)`);
+  checkParam(u, v);
+  return bilinear(cornerUv(cage, f, 0), cornerUv(cage, f, 1), cornerUv(cage, f, 2), cornerUv(cage, f, 3), u, v);
+}
+
+/** uv on sub-face k of face f at (s,t); for a quad, k = 0 and (s,t) = (u,v). */
+export function uvAtSubFace(cage: Cage, f: number, k: number, s: number, t: number): UvPoint {
+  const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+  if (n === 4) {
+    if (k !== 0) throw new RangeError(`sub-face ${k} does not exist on a quad`);
+    return uvAt(cage, f, s, t);
+  }
+  if (!(Number.isInteger(k) && k >= 0 && k < n)) throw new RangeError(`sub-face ${k} does not exist on a face with ${n} corners`);
+  checkParam(s, t);
+  const c = (j: number): [number, number] => cornerUv(cage, f, ((j % n) + n) % n);
+  const centre = [0, 0];
+  for (let j = 0; j < n; j++) { const q = c(j); centre[0] += q[0] / n; centre[1] += q[1] / n; }
+  const a = c(k), next = c(k + 1), prev = c(k - 1);
+  return bilinear(a, [(a[0] + next[0]) / 2, (a[1] + next[1]) / 2], centre, [(prev[0] + a[0]) / 2, (prev[1] + a[1]) / 2], s, t);
+}
+
+/**
+ * UV seams: edge e is a seam when its two faces give either of its end vertices different uvs
+ * (compared by value, so two `vt` lines with equal numbers are not a seam); a vertex is a seam
+ * vertex when the faces around it do not all agree on its uv. Boundary edges are not seams.
+ */
+export function uvSeams(cage: Cage, topo: Topology): { edge: Uint8Array; vertex: Uint8Array } {
+  const edge = new Uint8Array(topo.nEdges);
+  const vertex = new Uint8Array(topo.nVerts);
+  const uvOf = (h: number): string => {
+    const t = cage.faceUvIndices[h];
+    return t >= 0 ? `${cage.uvs[2 * t]},${cage.uvs[2 * t + 1]}` : 'none';
+  };
+  for (let h = 0; h < topo.faceIndices.length; h++) {
+    const tw = topo.heTwin[h];
+    if (tw < 0) continue;
+    // h runs a→b in its face; its twin runs b→a: compare a with the twin's next corner, b with the twin's own corner.
+    if (uvOf(h) !== uvOf(topo.heNext[tw]) || uvOf(topo.heNext[h]) !== uvOf(tw)) edge[topo.heEdge[h]] = 1;
+  }
+  for (let v = 0; v < topo.nVerts; v++) {
+    const a = topo.vertHeOffsets[v], b = topo.vertHeOffsets[v + 1];
+    for (let k = a + 1; k < b; k++) if (uvOf(topo.vertHe[k]) !== uvOf(topo.vertHe[a])) { vertex[v] = 1; break; }
+  }
+  return { edge, vertex };
+}
