@@ -264,3 +264,58 @@ describe('UV seams: one owner per weld vertex', () => {
     }
   });
 });
+
+describe('the project\'s displaced models (public/models/displaced.json)', () => {
+  const list = JSON.parse(readFileSync(new URL('../public/models/displaced.json', import.meta.url), 'utf8')) as
+    { model: string; heightMap: string; bits: 8 | 16; scale: number; midLevel: number; wrap: 'repeat' | 'clamp' }[];
+
+  it('lists at least two models, each with complete UVs, real seams and a decodable map', async () => {
+    const { decodeHeightPng } = await import('../src/mesh/heightmap-png.ts');
+    const { uvCoverage, uvSeams } = await import('../src/mesh/index.ts');
+    expect(list.length).toBeGreaterThanOrEqual(2);
+    for (const m of list) {
+      const { cage, topology } = loadCage(readFileSync(new URL(`../public/models/${m.model}`, import.meta.url), 'utf8'));
+      expect(uvCoverage(cage)).toBe('complete');
+      expect(uvSeams(cage, topology).edge.some((x) => x === 1)).toBe(true);
+      const bytes = readFileSync(new URL(`../public/models/${m.heightMap}`, import.meta.url));
+      expect(bytes.length).toBeLessThan(300_000);
+      const map = decodeHeightPng(new Uint8Array(bytes));
+      expect(map.bits).toBe(m.bits);
+      // The map is not flat: it has detail to displace.
+      let lo = Infinity, hi = -Infinity;
+      for (const x of map.data) { lo = Math.min(lo, x); hi = Math.max(hi, x); }
+      expect((hi - lo) / ((1 << map.bits) - 1)).toBeGreaterThan(0.4);
+    }
+  });
+
+  it('displace without NaN, within their height range, and identically from both sides of every cage edge', async () => {
+    const { decodeHeightPng } = await import('../src/mesh/heightmap-png.ts');
+    for (const m of list) {
+      const { cage, topology: T } = loadCage(readFileSync(new URL(`../public/models/${m.model}`, import.meta.url), 'utf8'));
+      const map = decodeHeightPng(new Uint8Array(readFileSync(new URL(`../public/models/${m.heightMap}`, import.meta.url))));
+      const ds = new DisplacedSurface(new Surface(cage, T), map, m);
+      const hmax = m.scale * Math.max(m.midLevel, 1 - m.midLevel);
+      let moved = 0;
+      for (let f = 0; f < T.nFaces; f += 3) {
+        if (T.faceOffsets[f + 1] - T.faceOffsets[f] !== 4) continue;
+        for (const [u, v] of [[0.3, 0.6], [0.5, 0.5], [0.8, 0.1]]) {
+          const p = ds.at({ face: f, u, v });
+          for (const c of [...p.P, ...p.N]) expect(Number.isFinite(c)).toBe(true);
+          expect(Math.abs(p.h)).toBeLessThanOrEqual(hmax + 1e-12);
+          if (Math.abs(p.h) > 0.1 * hmax) moved++;
+        }
+      }
+      expect(moved).toBeGreaterThan(10);
+      for (let h = 0; h < T.faceIndices.length; h += 5) {
+        const tw = T.heTwin[h];
+        if (tw < 0) continue;
+        const lo = Math.min(T.faceIndices[h], T.faceIndices[tw]);
+        const [pa, pb] = [h, tw].map((hh) => {
+          const f = T.heFace[hh];
+          return ds.at(faceEdgeParam(cage, f, hh - T.faceOffsets[f], T.faceIndices[hh] === lo ? 0.375 : 0.625));
+        });
+        expect(pa.P).toEqual(pb.P);
+      }
+    }
+  });
+});
