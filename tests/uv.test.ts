@@ -2,7 +2,7 @@
 // and "linear all" interpolation over quads and n-gon sub-faces (src/mesh/uv.ts).
 import { describe, expect, it } from 'vitest';
 import {
-  CageError, buildTopology, loadCage, parseObj, uvAt, uvAtSubFace, uvCoverage, uvSeams, writeObj, requireUvs,
+  CageError, buildTopology, loadCage, makeCage, uvTexelCoverage, parseObj, uvAt, uvAtSubFace, uvCoverage, uvSeams, writeObj, requireUvs,
 } from '../src/mesh/index.ts';
 
 // Three quads on a sheet: quads A (0) and B (1) are separate uv islands (edge 2-5, 1-based, is a
@@ -122,5 +122,32 @@ describe('face-varying UVs in the mesh layer', () => {
     // Distinct vt lines with equal values are not a seam.
     const dup = loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 1 1\nf 1/1 2/2 3/3\nf 1/1 3/5 4/4\n');
     expect(Array.from(uvSeams(dup.cage, buildTopology(dup.cage)).edge).every((x) => x === 0)).toBe(true);
+  });
+
+  it('counts the texels whose centres the uv polygons cover, folding or dropping the outside', () => {
+    const quad = (u0: number, u1: number, v0: number, v1: number) => ({
+      ...makeCage([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], [[0, 1, 2, 3]]),
+      uvs: Float64Array.from([u0, v0, u1, v0, u1, v1, u0, v1]), faceUvIndices: Int32Array.from([0, 1, 2, 3]),
+    });
+    // A quarter of an 8 x 8 map: 4 x 4 texel centres, in the bottom-left (image rows 4..7, columns 0..3).
+    const a = uvTexelCoverage(quad(0, 0.5, 0, 0.5), 8, 8);
+    expect(a.covered).toBe(16);
+    expect(a.mask[7 * 8 + 0]).toBe(1);
+    expect(a.mask[3 * 8 + 0]).toBe(0);
+    expect(a.mask[7 * 8 + 4]).toBe(0);
+    // Straddling u = 1: repeat folds the outside half back to columns 0..1, clamp drops it.
+    const r = uvTexelCoverage(quad(0.75, 1.25, 0, 0.5), 8, 8, 'repeat');
+    expect(r.covered).toBe(16);
+    expect(r.mask[7 * 8 + 1]).toBe(1);
+    expect(uvTexelCoverage(quad(0.75, 1.25, 0, 0.5), 8, 8, 'clamp').covered).toBe(8);
+    // Two faces on the same uvs count each texel once.
+    const twin = {
+      ...makeCage([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0, 2, 1, 0], [[0, 1, 2, 3], [1, 4, 5, 2]]),
+      uvs: Float64Array.from([0, 0, 0.5, 0, 0.5, 0.5, 0, 0.5]), faceUvIndices: Int32Array.from([0, 1, 2, 3, 0, 1, 2, 3]),
+    };
+    expect(uvTexelCoverage(twin, 8, 8).covered).toBe(16);
+    // A triangle: the centres below its diagonal, and (crossing rule) those on it.
+    const t = loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nf 1/1 2/2 3/3\n').cage;
+    expect(uvTexelCoverage(t, 16, 16).covered).toBe(120 + 16);
   });
 });

@@ -125,3 +125,41 @@ export function uvSeams(cage: Cage, topo: Topology): { edge: Uint8Array; vertex:
   }
   return { edge, vertex };
 }
+
+/**
+ * Texels of a width x height map whose centres lie inside some face's uv polygon (the face's
+ * uv region under linear-all interpolation: its edges are straight in uv). 'repeat' folds uvs
+ * outside [0, 1] back into the map; 'clamp' ignores texels outside it. Returns a mask
+ * (row-major from the top row, as heightmap.ts) and the covered count.
+ */
+export function uvTexelCoverage(cage: Cage, width: number, height: number, wrap: 'repeat' | 'clamp' = 'repeat'): { mask: Uint8Array; covered: number } {
+  requireUvs(cage);
+  const mask = new Uint8Array(width * height);
+  let covered = 0;
+  const nf = cage.faceOffsets.length - 1;
+  for (let f = 0; f < nf; f++) {
+    const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+    // Polygon in continuous texel coordinates (x = u·W − ½, y = (1 − v)·H − ½): centres are integers.
+    const px: number[] = [], py: number[] = [];
+    for (let j = 0; j < n; j++) {
+      const [u, v] = cornerUv(cage, f, j);
+      px.push(u * width - 0.5);
+      py.push((1 - v) * height - 0.5);
+    }
+    const x0 = Math.ceil(Math.min(...px)), x1 = Math.floor(Math.max(...px));
+    const y0 = Math.ceil(Math.min(...py)), y1 = Math.floor(Math.max(...py));
+    for (let y = y0; y <= y1; y++) for (let x = x0; x <= x1; x++) {
+      // Even-odd crossing test (the polygons are simple; orientation does not matter).
+      let inside = false;
+      for (let a = 0, b = n - 1; a < n; b = a++) {
+        if ((py[a] > y) !== (py[b] > y) && x < px[b] + ((y - py[b]) * (px[a] - px[b])) / (py[a] - py[b])) inside = !inside;
+      }
+      if (!inside) continue;
+      let i = x, j = y;
+      if (wrap === 'repeat') { i = ((i % width) + width) % width; j = ((j % height) + height) % height; }
+      else if (i < 0 || i >= width || j < 0 || j >= height) continue;
+      if (!mask[j * width + i]) { mask[j * width + i] = 1; covered++; }
+    }
+  }
+  return { mask, covered };
+}
