@@ -319,3 +319,54 @@ describe('the project\'s displaced models (public/models/displaced.json)', () =>
     }
   });
 });
+
+describe('per-face data for the GPU and the factor rule', () => {
+  it('faceSampleRange contains every sample in the face and is tight on a gradient map', async () => {
+    const { faceSampleRange } = await import('../src/mesh/index.ts');
+    const { decodeHeightPng } = await import('../src/mesh/heightmap-png.ts');
+    const list = JSON.parse(readFileSync(new URL('../public/models/displaced.json', import.meta.url), 'utf8')) as
+      { model: string; heightMap: string; scale: number; midLevel: number; wrap: 'repeat' | 'clamp' }[];
+    for (const m of list) {
+      const { cage, topology: T } = loadCage(readFileSync(new URL(`../public/models/${m.model}`, import.meta.url), 'utf8'));
+      const map = decodeHeightPng(new Uint8Array(readFileSync(new URL(`../public/models/${m.heightMap}`, import.meta.url))));
+      const ds = new DisplacedSurface(new Surface(cage, T), map, m);
+      const range = faceSampleRange(cage, map, m.wrap);
+      for (let f = 0; f < T.nFaces; f += 7) {
+        const n = T.faceOffsets[f + 1] - T.faceOffsets[f];
+        for (const [s, t] of [[0, 0], [0.5, 0.5], [0.9, 0.2], [1, 1], [0.33, 0.77]]) {
+          const p = ds.evaluateLocal(n === 4 ? { face: f, u: s, v: t } : { face: f, k: 1, s, t });
+          const sample = p.h / m.scale + m.midLevel;
+          expect(sample).toBeGreaterThanOrEqual(range[2 * f] - 1e-12);
+          expect(sample).toBeLessThanOrEqual(range[2 * f + 1] + 1e-12);
+        }
+      }
+    }
+    // A ramp in u over a 4 x 4 grid: each column of faces sees only its quarter of the ramp (plus one texel).
+    const grid = flatGrid(4);
+    const ramp = heightMapFromFunction(64, 8, 16, (u) => u);
+    const r = faceSampleRange(grid, ramp, 'clamp');
+    for (let f = 0; f < 16; f++) {
+      const col = f % 4;
+      // Texel centres sit at (i + ½)/64 (16-bit quantised): the range reaches half a texel past the face on each side.
+      expect(r[2 * f]).toBeLessThanOrEqual(col / 4 + 0.5 / 64 + 1 / 65535);
+      expect(r[2 * f + 1]).toBeGreaterThanOrEqual((col + 1) / 4 - 0.5 / 64 - 1 / 65535);
+      expect(r[2 * f + 1] - r[2 * f]).toBeLessThanOrEqual(0.25 + 2 / 64 + 2 / 65535);
+    }
+  });
+
+  it('faceCornerUvs packs each corner\'s uv at its face-corner offset', async () => {
+    const { faceCornerUvs, uvAtSubFace } = await import('../src/mesh/index.ts');
+    const { cage } = prism();
+    const packed = faceCornerUvs(cage);
+    expect(packed.length).toBe(2 * cage.faceIndices.length);
+    for (let f = 0; f < 7; f++) {
+      const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+      for (let j = 0; j < n; j++) {
+        const uv = n === 4 ? uvAtSubFace(cage, f, 0, [0, 1, 1, 0][j], [0, 0, 1, 1][j]).uv : uvAtSubFace(cage, f, j, 0, 0).uv;
+        expect(packed[2 * (cage.faceOffsets[f] + j)]).toBe(Math.fround(uv[0]));
+        expect(packed[2 * (cage.faceOffsets[f] + j) + 1]).toBe(Math.fround(uv[1]));
+      }
+    }
+    expect(() => faceCornerUvs(makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]))).toThrow(/texture coordinate/);
+  });
+});

@@ -20,6 +20,7 @@
 import { CageError } from './errors.ts';
 import type { Topology } from './topology.ts';
 import type { Cage } from './types.ts';
+import type { HeightMap, HeightWrap } from './heightmap.ts';
 
 /** uv and its derivatives with respect to the face parameters (u,v) (quads) or (s,t) (sub-faces). */
 export interface UvPoint {
@@ -162,4 +163,60 @@ export function uvTexelCoverage(cage: Cage, width: number, height: number, wrap:
     }
   }
   return { mask, covered };
+}
+
+/**
+ * The uvs packed for upload (f32): two floats per face corner, at 2·(faceOffsets[f] + j) for
+ * corner j of face f, so a shader that knows a face's corner offset reads its corner uvs
+ * directly (no vt indirection). Throws (naming the face line) unless every corner has a uv.
+ */
+export function faceCornerUvs(cage: Cage): Float32Array {
+  requireUvs(cage);
+  const out = new Float32Array(2 * cage.faceUvIndices.length);
+  for (let h = 0; h < cage.faceUvIndices.length; h++) {
+    const t = cage.faceUvIndices[h];
+    out[2 * h] = cage.uvs[2 * t];
+    out[2 * h + 1] = cage.uvs[2 * t + 1];
+  }
+  return out;
+}
+
+/**
+ * A conservative range of the height SAMPLE (in [0, 1]) over each face: the min and max of
+ * every texel that a bilinear lookup anywhere in the face's uv bounding box can touch (the
+ * interpolated value never leaves the range of its four texels). For the displacement-aware
+ * factor rule and bounds: h = (sample − midLevel)·scale then lies in the mapped range.
+ * Layout: [min, max] per face, at 2f and 2f + 1.
+ */
+export function faceSampleRange(cage: Cage, map: HeightMap, wrap: HeightWrap = 'repeat'): Float64Array {
+  requireUvs(cage);
+  const nf = cage.faceOffsets.length - 1;
+  const out = new Float64Array(2 * nf);
+  const inv = 1 / ((1 << map.bits) - 1);
+  const W = map.width, H = map.height;
+  for (let f = 0; f < nf; f++) {
+    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    for (let j = 0; j < cage.faceOffsets[f + 1] - cage.faceOffsets[f]; j++) {
+      const [u, v] = cornerUv(cage, f, j);
+      const x = u * W - 0.5, y = (1 - v) * H - 0.5;
+      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+    }
+    // Texels floor(x) and floor(x) + 1 for every x in [x0, x1]; a repeat range wider than the map is all of it.
+    let i0 = Math.floor(x0), i1 = Math.floor(x1) + 1, j0 = Math.floor(y0), j1 = Math.floor(y1) + 1;
+    if (wrap === 'clamp') { i0 = Math.max(0, Math.min(W - 1, i0)); i1 = Math.max(0, Math.min(W - 1, i1)); j0 = Math.max(0, Math.min(H - 1, j0)); j1 = Math.max(0, Math.min(H - 1, j1)); }
+    if (i1 - i0 >= W) { i0 = 0; i1 = W - 1; }
+    if (j1 - j0 >= H) { j0 = 0; j1 = H - 1; }
+    let lo = Infinity, hi = -Infinity;
+    for (let j = j0; j <= j1; j++) {
+      const jj = ((j % H) + H) % H;
+      for (let i = i0; i <= i1; i++) {
+        const x = map.data[jj * W + (((i % W) + W) % W)];
+        if (x < lo) lo = x;
+        if (x > hi) hi = x;
+      }
+    }
+    out[2 * f] = lo * inv;
+    out[2 * f + 1] = hi * inv;
+  }
+  return out;
 }

@@ -31,6 +31,14 @@
 // tagged holes; faces made holes by boundary mode 'none' are skipped here too, and never own a
 // weld vertex that has a surface.) tests/displacement.test.ts checks the owners against
 // prepareMesh.
+//
+// Precision budget for a GPU comparison (the GPU reads the SAME integer texels, so 8-bit
+// quantisation is not an error between the two, only a property of the map): an f32 uv error
+// δuv moves the sample by at most δuv·(texels per uv unit)·(largest texel step), and h by that
+// times scale. For an 8-bit map the largest step is 1 (0 to 255 between neighbours), so
+// |δh| ≤ scale·W·δuv; with δuv ≈ 1e-7 (a few f32 ulps of uv in [0, 1]), W = 512 and
+// scale = 0.06 that is 3e-6, below 1e-5 of any model diagonal here. Sharp maps with large
+// W·scale/diagonal need a looser bound or uv kept in f32 away from texel lines.
 import type { Cage } from '../mesh/types.ts';
 import { type HeightMap, type HeightWrap, sampleHeight } from '../mesh/heightmap.ts';
 import { requireUvs, uvAtSubFace } from '../mesh/uv.ts';
