@@ -2,7 +2,7 @@
 // PNG decoding and encoding in Node (src/mesh/heightmap-png.ts).
 import { describe, expect, it } from 'vitest';
 import { PNG } from 'pngjs';
-import { heightMapFromFunction, makeHeightMap, sampleHeight } from '../src/mesh/heightmap.ts';
+import { heightMapFromFunction, heightMapFromRgba, makeHeightMap, sampleHeight } from '../src/mesh/heightmap.ts';
 import { HeightMapError, decodeHeightPng, encodeHeightPng } from '../src/mesh/heightmap-png.ts';
 
 // 4 x 3, raw 8-bit values chosen so no two neighbours are equal.
@@ -89,5 +89,15 @@ describe('height map PNG (Node)', () => {
       expect(() => decodeHeightPng(bytes)).toThrow(HeightMapError);
       expect(() => decodeHeightPng(bytes)).toThrow(re);
     }
+  });
+
+  it('RGBA pixels (the browser path) read like the Node decoder: the red channel', () => {
+    const png = new PNG({ width: 3, height: 2 });
+    png.data = Buffer.from([9, 1, 2, 255, 40, 50, 60, 255, 255, 0, 0, 255, 0, 255, 255, 255, 128, 128, 128, 255, 77, 0, 0, 10]);
+    const node = decodeHeightPng(new Uint8Array(PNG.sync.write(png, { colorType: 6 })));
+    const rgba = heightMapFromRgba(3, 2, png.data);
+    expect(Array.from(rgba.data)).toEqual(Array.from(node.data));
+    expect(Array.from(rgba.data)).toEqual([9, 40, 255, 0, 128, 77]);
+    expect(() => heightMapFromRgba(3, 2, new Uint8Array(23))).toThrow(/24 RGBA bytes/);
   });
 });

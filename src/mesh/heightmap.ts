@@ -79,3 +79,17 @@ export function sampleHeight(map: HeightMap, u: number, v: number, wrap: HeightW
   // ∂x/∂u = W, ∂y/∂v = −H.
   return { value, dU: gx * W, dV: -gy * H };
 }
+
+/**
+ * A height map from 8-bit RGBA pixels (row-major from the top, as canvas ImageData and
+ * ImageDecoder frames give them): the first (red) channel, the same rule as the Node PNG
+ * decoder (heightmap-png.ts), so the browser's createImageBitmap → getImageData path and Node
+ * read a greyscale or RGB PNG identically. (The browser's 2D canvas is 8-bit: a 16-bit PNG
+ * arrives cut to 8 bits on that path.)
+ */
+export function heightMapFromRgba(width: number, height: number, rgba: ArrayLike<number>): HeightMap {
+  if (rgba.length !== 4 * width * height) throw new RangeError(`expected ${4 * width * height} RGBA bytes for ${width}x${height}, got ${rgba.length}`);
+  const data = new Uint16Array(width * height);
+  for (let p = 0; p < data.length; p++) data[p] = rgba[4 * p];
+  return makeHeightMap(width, height, data, 8);
+}

@@ -3,6 +3,8 @@ export * from './errors.ts';
 export * from './obj.ts';
 export * from './topology.ts';
 export * from './uv.ts';
+// Runtime-agnostic height maps; the Node PNG decoder (heightmap-png.ts, pngjs) is NOT re-exported, so the browser build never pulls it.
+export * from './heightmap.ts';
 import { CageError, type CageIssue } from './errors.ts';
 import { parseObj } from './obj.ts';
 import { buildTopology, type Topology } from './topology.ts';
