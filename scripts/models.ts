@@ -1,7 +1,9 @@
 // Generates tessellab's own subdivision cages into public/models/ (npm run models).
 // Every model is built here from scratch; see public/models/README.md.
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { loadCage, makeCage, writeObj } from '../src/mesh/index.ts';
+import { type Cage, loadCage, makeCage, uvCoverage, uvSeams, writeObj } from '../src/mesh/index.ts';
+import { type HeightMap, type HeightWrap, heightMapFromFunction } from '../src/mesh/heightmap.ts';
+import { encodeHeightPng } from '../src/mesh/heightmap-png.ts';
 
 type V3 = [number, number, number];
 const r6 = (x: number): number => Math.round(x * 1e6) / 1e6 + 0; // short, exact-in-file coordinates
@@ -290,6 +292,144 @@ function creature(): Builder {
   return b;
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// Displaced models: a cage with face-varying UVs plus a height map generated here (written as a
+// PNG by pngjs). Heights are h = (sample − midLevel)·scale along the limit normal (src/subdiv/displace.ts).
+
+/** Attach per-corner uvs (one [u, v] per face corner, in face order); equal values share one vt line. */
+function withCornerUvs(cage: Cage, uvOf: (face: number, corner: number) => [number, number]): Cage {
+  const ids = new Map<string, number>();
+  const uvs: number[] = [];
+  const idx = new Int32Array(cage.faceIndices.length);
+  for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
+    for (let h = cage.faceOffsets[f]; h < cage.faceOffsets[f + 1]; h++) {
+      const [u, v] = uvOf(f, h - cage.faceOffsets[f]).map(r6);
+      const key = `${u},${v}`;
+      let id = ids.get(key);
+      if (id === undefined) { id = uvs.length / 2; ids.set(key, id); uvs.push(u, v); }
+      idx[h] = id;
+    }
+  }
+  return { ...cage, uvs: Float64Array.from(uvs), faceUvIndices: idx };
+}
+
+const smoothstep = (a: number, b: number, x: number): number => { const t = Math.min(1, Math.max(0, (x - a) / (b - a))); return t * t * (3 - 2 * t); };
+/** Integer hash to [0, 1) (deterministic, no Math.random). */
+function hash01(...k: number[]): number {
+  let h = 0x811c9dc5;
+  for (const x of k) { h = Math.imul(h ^ (x | 0), 0x01000193); h ^= h >>> 15; h = Math.imul(h, 0x2c1b3c6d); h ^= h >>> 12; }
+  return (h >>> 0) / 4294967296;
+}
+
+interface DisplacedModel {
+  name: string;
+  desc: string;
+  cage: Cage;
+  map: HeightMap;
+  scale: number;
+  midLevel: number;
+  wrap: HeightWrap;
+}
+
+/**
+ * Brick box: the creased box (same cage, same tags) with a box unwrap (each of the 6 sides its
+ * own uv island in a 3 x 2 atlas at one texel density, so every box edge is a UV seam) and an
+ * 8-bit 512 x 256 brick map: courses run round the four sides at the same heights, paving on
+ * top and bottom; mortar sunk, bricks bevelled, each brick's height varied a little.
+ * Island borders are padded by edge extension so bilinear lookups do not bleed across islands.
+ */
+function brickBox(): DisplacedModel {
+  const b = creasedBox();
+  const W = 512, H = 256, pad = 0.1;
+  // Side → (a, b) local coordinates (a × b = outward normal, so no island is mirrored) and its atlas cell.
+  type Side = { n: V3; ab: (p: V3) => [number, number]; min: [number, number]; size: [number, number]; at: [number, number] };
+  const sides: Side[] = [
+    { n: [0, 0, 1], ab: (p) => [p[0], p[1]], min: [-1, -0.75], size: [2, 1.5], at: [pad, 2 * pad + 1] },
+    { n: [0, 0, -1], ab: (p) => [p[0], -p[1]], min: [-1, -0.75], size: [2, 1.5], at: [2 * pad + 2, 2 * pad + 1] },
+    { n: [1, 0, 0], ab: (p) => [p[1], p[2]], min: [-0.75, -0.5], size: [1.5, 1], at: [3 * pad + 4, 2 * pad + 1] },
+    { n: [0, 1, 0], ab: (p) => [-p[0], p[2]], min: [-1, -0.5], size: [2, 1], at: [pad, pad] },
+    { n: [0, -1, 0], ab: (p) => [p[0], p[2]], min: [-1, -0.5], size: [2, 1], at: [2 * pad + 2, pad] },
+    { n: [-1, 0, 0], ab: (p) => [-p[1], p[2]], min: [-0.75, -0.5], size: [1.5, 1], at: [3 * pad + 4, pad] },
+  ];
+  const rho = Math.min(W / (5.5 + 4 * pad), H / (2.5 + 3 * pad)); // texels per world unit
+  const cage0 = b.cage();
+  const sideOf = (f: number): Side => {
+    const n = b.normal(f);
+    return sides.reduce((best, s) => (s.n[0] * n[0] + s.n[1] * n[1] + s.n[2] * n[2] > best.n[0] * n[0] + best.n[1] * n[1] + best.n[2] * n[2] ? s : best));
+  };
+  const cage = withCornerUvs(cage0, (f, j) => {
+    const s = sideOf(f);
+    const [a, c] = s.ab(b.v[b.f[f][j]]);
+    return [(s.at[0] + a - s.min[0]) * rho / W, (s.at[1] + c - s.min[1]) * rho / H];
+  });
+  const course = 0.125, brick = 0.25, mortar = 0.02;
+  const bricks = (a: number, c: number, paving: boolean): number => {
+    const row = Math.floor(c / course);
+    const x = a + (row % 2 === 0 ? 0 : brick / 2);
+    const col = Math.floor(x / (paving ? course * 2 : brick));
+    const fx = x - col * (paving ? course * 2 : brick), fy = c - row * course;
+    const d = Math.min(fx, (paving ? course * 2 : brick) - fx, fy, course - fy);
+    const top = 0.78 + 0.14 * (hash01(row, col, paving ? 1 : 0) - 0.5);
+    return 0.15 + (top - 0.15) * smoothstep(mortar / 2, mortar / 2 + 0.025, d);
+  };
+  const map = heightMapFromFunction(W, H, 8, (u, v) => {
+    const X = u * W / rho, Y = v * H / rho;
+    // Nearest island (distance to its rectangle), then clamp into it: edge-extended padding.
+    let best = sides[0], bd = Infinity;
+    for (const s of sides) {
+      const dx = Math.max(s.at[0] - X, 0, X - (s.at[0] + s.size[0])), dy = Math.max(s.at[1] - Y, 0, Y - (s.at[1] + s.size[1]));
+      const d = Math.hypot(dx, dy);
+      if (d < bd) { bd = d; best = s; }
+    }
+    const a = Math.min(best.size[0], Math.max(0, X - best.at[0])) + best.min[0];
+    const c = Math.min(best.size[1], Math.max(0, Y - best.at[1])) + best.min[1];
+    // Sides measure courses from the bottom rim (z = −0.5) so they meet round the corners.
+    return best.n[2] === 0 ? bricks(a + 4, c + 0.5, false) : bricks(a + 4, c + 4, true);
+  });
+  return {
+    name: 'brick-box', cage, map, scale: 0.06, midLevel: 0.5, wrap: 'clamp',
+    desc: 'brick box: the creased box with a box unwrap (6 uv islands, every box edge a UV seam) and an 8-bit 512x256 brick height map',
+  };
+}
+
+/**
+ * Wrinkled creature: the creature cage with a cylindrical projection round the body's long
+ * (x) axis, u along x, v the angle; faces that straddle the angle's wrap get v + 1 on their
+ * low corners (a UV seam whose two sides address the same texels under repeat wrapping),
+ * and a 16-bit 256 x 256 periodic fractal value-noise map (tiles in u and v).
+ */
+function creatureNoise(): DisplacedModel {
+  const b = creature();
+  const cage0 = b.cage();
+  let xmin = Infinity, xmax = -Infinity;
+  for (const p of b.v) { xmin = Math.min(xmin, p[0]); xmax = Math.max(xmax, p[0]); }
+  const zc = 1.2;
+  const ang = (p: V3): number => Math.atan2(p[2] - zc, p[1]) / (2 * Math.PI) + 0.5;
+  const cage = withCornerUvs(cage0, (f, j) => {
+    const vs = b.f[f].map((i) => ang(b.v[i]));
+    const wraps = Math.max(...vs) - Math.min(...vs) > 0.5;
+    const p = b.v[b.f[f][j]];
+    const v = vs[j] + (wraps && vs[j] < 0.5 ? 1 : 0);
+    return [(p[0] - xmin) / (xmax - xmin), v];
+  });
+  const lattice = (u: number, v: number, n: number, m: number, oct: number): number => {
+    const x = u * n, y = v * m, i = Math.floor(x), j = Math.floor(y);
+    const fx = smoothstep(0, 1, x - i), fy = smoothstep(0, 1, y - j);
+    const g = (a: number, c: number): number => hash01(((a % n) + n) % n, ((c % m) + m) % m, oct);
+    return (1 - fy) * ((1 - fx) * g(i, j) + fx * g(i + 1, j)) + fy * ((1 - fx) * g(i, j + 1) + fx * g(i + 1, j + 1));
+  };
+  const map = heightMapFromFunction(256, 256, 16, (u, v) => {
+    let s = 0, amp = 0.5, total = 0;
+    for (let o = 0; o < 4; o++) { s += amp * lattice(u, v, 12 << o, 8 << o, o); total += amp; amp *= 0.5; }
+    return s / total;
+  });
+  return {
+    name: 'creature-wrinkles', cage, map, scale: 0.12, midLevel: 0.5, wrap: 'repeat',
+    desc: 'the creature with a cylindrical uv projection (a seam where the angle wraps) and a 16-bit 256x256 tiling fractal-noise height map',
+  };
+}
+
 const MODELS: [string, () => Builder, string][] = [
   ['creased-box', creasedBox, 'creased box: semi-sharp (2.5) top rim, infinitely sharp bottom rim, a 1.5 vertical edge, a sharp corner'],
   ['torus', torus, 'torus 16x8: every vertex valence 4, all patches regular'],
@@ -313,3 +453,19 @@ for (const [name, make, desc] of MODELS) {
   writeFileSync(`${outDir}/${name}.obj`, text);
   console.log(`${name}.obj: ${T.nVerts} v, ${T.nFaces} f, sizes ${[...sizes].sort().map(([k, c]) => `${k}:${c}`).join(' ')}, valences ${[...val].sort((a, z) => a - z).join(',')}, creases ${cage.creases.length}, corners ${cage.corners.length}`);
 }
+
+// Displaced models: OBJ with vt, the height map PNG, and their displacement parameters in
+// displaced.json (read by the demo and the CLI; h = (sample − midLevel)·scale, wrap as heightmap.ts).
+const displacedList: object[] = [];
+for (const m of [brickBox(), creatureNoise()]) {
+  const text = writeObj(m.cage, `tessellab model "${m.name}": ${m.desc}\nHeight map ${m.name}-height.png: h = (sample - ${m.midLevel}) * ${m.scale} along the limit normal, ${m.wrap} wrap.\nGenerated by scripts/models.ts (npm run models). Licence: MIT, as the repository.`);
+  const { cage, topology: T } = loadCage(text); // validates, and the uvs must survive the round trip
+  if (uvCoverage(cage) !== 'complete') throw new Error(`${m.name}: uvs lost`);
+  const seams = uvSeams(cage, T).edge.reduce((a, x) => a + x, 0);
+  const png = encodeHeightPng(m.map);
+  writeFileSync(`${outDir}/${m.name}.obj`, text);
+  writeFileSync(`${outDir}/${m.name}-height.png`, png);
+  displacedList.push({ model: `${m.name}.obj`, heightMap: `${m.name}-height.png`, bits: m.map.bits, scale: m.scale, midLevel: m.midLevel, wrap: m.wrap });
+  console.log(`${m.name}.obj: ${T.nVerts} v, ${T.nFaces} f, ${cage.uvs.length / 2} vt, ${seams} seam edges; ${m.name}-height.png: ${m.map.width}x${m.map.height} ${m.map.bits}-bit, ${png.length} B`);
+}
+writeFileSync(`${outDir}/displaced.json`, JSON.stringify(displacedList, null, 2) + '\n');

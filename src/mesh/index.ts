@@ -2,10 +2,14 @@ export * from './types.ts';
 export * from './errors.ts';
 export * from './obj.ts';
 export * from './topology.ts';
+export * from './uv.ts';
+// Runtime-agnostic height maps; the Node PNG decoder (heightmap-png.ts, pngjs) is NOT re-exported, so the browser build never pulls it.
+export * from './heightmap.ts';
 import { CageError, type CageIssue } from './errors.ts';
 import { parseObj } from './obj.ts';
 import { buildTopology, type Topology } from './topology.ts';
 import type { Cage } from './types.ts';
+import { uvCoverage } from './uv.ts';
 
 export interface LoadedCage {
   cage: Cage;
@@ -24,6 +28,16 @@ export function loadCage(text: string): LoadedCage {
     let unused = 0;
     for (let v = 0; v < topology.nVerts; v++) if (topology.vertHeOffsets[v + 1] === topology.vertHeOffsets[v]) unused++;
     if (unused) warnings.push({ line: 0, message: `${unused} vertices are not used by any face (ignored)` });
+    // Face-varying UVs are all-or-nothing for interpolation (uv.ts): say where they stop.
+    if (uvCoverage(cage) === 'partial') {
+      let f = 0;
+      for (; f < topology.nFaces; f++) {
+        let miss = false;
+        for (let h = cage.faceOffsets[f]; h < cage.faceOffsets[f + 1]; h++) if (cage.faceUvIndices[h] < 0) miss = true;
+        if (miss) break;
+      }
+      warnings.push({ line: cage.faceLines[f] ?? 0, message: `face ${f + 1} (and maybe others) lacks texture coordinates on some corners: the UVs are kept but cannot be used for displacement` });
+    }
     return { cage, topology, warnings };
   } catch (e) {
     if (e instanceof CageError) throw e;

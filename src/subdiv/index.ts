@@ -3,3 +3,4 @@ export * from './bspline.ts';
 export * from './limit.ts';
 export * from './evaluate.ts';
 export * from './uniform.ts';
+export * from './displace.ts';
