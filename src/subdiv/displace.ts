@@ -43,7 +43,7 @@ import type { Cage } from '../mesh/types.ts';
 import { type HeightMap, type HeightWrap, sampleHeight } from '../mesh/heightmap.ts';
 import { requireUvs, uvAtSubFace } from '../mesh/uv.ts';
 import { type Topology, findEdge } from '../mesh/topology.ts';
-import { type Surface, type SurfacePoint } from './evaluate.ts';
+import type { Surface, SurfacePoint } from './evaluate.ts';
 import { cross } from './limit.ts';
 
 type V3 = [number, number, number];
