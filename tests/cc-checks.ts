@@ -1,14 +1,14 @@
 /**
  * Catmull-Clark checks shared by the GPU tests: GPU points (tessellation output or samples)
  * against the exact CPU reference (src/subdiv Surface), split into the exact region and the
- * small blended region round irregular vertices (found by the CPU twin of the evaluation).
+ * small blended region round irregular vertices (found by the CPU side of the evaluator's region
+ * lookup, src/gpu/cc/build.ts regionOf).
  */
 import { Surface } from '../src/subdiv/index.ts';
 import { DEFAULT_OPTIONS, type Cage } from '../src/mesh/index.ts';
 import { faceParam } from '../src/gpu/face-params.ts';
 import type { PreparedMesh } from '../src/gpu/prepare.ts';
-import type { CatmullClarkData } from '../src/gpu/cc/build.ts';
-import { controlPoints, evalRoot } from '../src/gpu/cc/evaluate.ts';
+import { regionOf, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { angleBetween } from './tess-checks.ts';
 
 export interface ErrorStats {
@@ -25,10 +25,8 @@ const empty = (): ErrorStats & { sp: number; sn: number; nn: number } => ({ coun
 
 export class CCReference {
   readonly S: Surface;
-  readonly ctrl: Float64Array;
   constructor(readonly cage: Cage, readonly mesh: PreparedMesh, readonly cc: CatmullClarkData) {
     this.S = new Surface(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
-    this.ctrl = controlPoints(cc, cage.positions);
   }
 
   /** Exact limit at triangle t, weights w (floats summing to 1); and whether the GPU blends there. */
@@ -37,8 +35,7 @@ export class CCReference {
     const k = 'k' in fp ? fp.k : 0;
     const x = 'k' in fp ? fp.s : fp.u, y = 'k' in fp ? fp.t : fp.v;
     const ref = 'k' in fp ? this.S.evaluateSubFace(fp.face, fp.k, fp.s, fp.t) : this.S.evaluate(fp.face, fp.u, fp.v);
-    const twin = evalRoot(this.cc, this.ctrl, this.cc.triRoot[3 * t] + k, x, y);
-    return { ref, blended: twin.blended, face: fp.face };
+    return { ref, blended: regionOf(this.cc, t, k, x, y).blended, face: fp.face };
   }
 
   /** Compare GPU points (positions, normals) at (t, w) items. */
