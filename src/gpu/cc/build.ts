@@ -99,6 +99,8 @@ export const WORKGROUP = 64;
  * produce (max tess factor 64), so no output vertex but the EV itself lands inside it.
  */
 export const TOTAL_DEPTH = 7;
+/** Extra fan depth round creases, corners, darts and boundary vertices (see the packing). */
+const EXTRA_DEPTH_SHARP = 3;
 /** Deepest uniform level tried before a face is declared unsupported. */
 const MAX_LEVEL = 6;
 
@@ -126,6 +128,8 @@ export interface CatmullClarkData {
   triKind: Uint8Array;
   /** Per cage face: region depth (quads) or depth inside its sub-faces + 1 (n-gons); -1 holes. */
   faceDepth: Int8Array;
+  /** Per cage face: its first region (-1 holes); the face has 4^d regions (n·4^(d−1) for n-gons). */
+  faceRegion: Int32Array;
   /** Host copies for the CPU side of the checks (which points are in a blended square). */
   regions: Uint32Array;
   fans: Uint32Array;
@@ -324,6 +328,50 @@ function eligible(L: Level, x: number): boolean {
     for (let k = m.vertHeOffsets[z]; k < m.vertHeOffsets[z + 1]; k++) if (!quad(m.vertHe[k])) return false;
   }
   return true;
+}
+
+const exponentCache = new Map<string, number>();
+
+/**
+ * Radial blend exponent α = −log2 λ of a fan that is not a smooth interior vertex (creases,
+ * corners, darts, boundaries): λ is the largest eigenvalue but 1 of one subdivision step of the
+ * fan's 1-ring (c, e_i, d_i), found by power iteration on the ring modulo the constant vector
+ * (a topological quantity: the same slice rules as wgsl/cc-build.wgsl, on scalars). A cone
+ * apex (corner with smooth edges) has λ ≈ 0.65, not ½: the radial blend needs it.
+ */
+function ringExponent(n: number, boundary: boolean, rule: number, ia: number, ib: number, inf: number[]): number {
+  const key = `${n} ${boundary ? 1 : 0} ${rule} ${ia} ${ib} ${inf.join('')}`;
+  const hit = exponentCache.get(key);
+  if (hit !== undefined) return hit;
+  const ns = inf.length;
+  let c = 0;
+  let e = Array.from({ length: ns }, (_, i) => Math.sin(1.7 * i + 0.3) + 0.5);
+  let d = Array.from({ length: n }, (_, i) => Math.cos(2.3 * i + 0.1) - 0.2);
+  let lambda = 0.5;
+  for (let it = 0; it < 200; it++) {
+    const nx = (i: number) => (boundary ? i + 1 : (i + 1) % n);
+    const F = d.map((di, i) => 0.25 * (c + e[i] + di + e[nx(i)]));
+    const e1 = e.map((ei, i) => {
+      if (inf[i]) return 0.5 * (c + ei);
+      const fp = boundary ? F[i - 1] : F[(i + n - 1) % n];
+      return 0.25 * (c + ei + F[i] + fp);
+    });
+    let c1 = c;
+    if (rule === VRULE_CREASE) c1 = 0.75 * c + 0.125 * (e[ia] + e[ib]);
+    else if (rule === VRULE_SMOOTH) c1 = ((n - 2) / n) * c + (e.slice(0, n).reduce((a, b) => a + b, 0) + F.reduce((a, b) => a + b, 0)) / (n * n);
+    // Modulo the constant vector: shift the centre to 0.
+    const e2 = e1.map((x) => x - c1), d2 = F.map((x) => x - c1);
+    const norm = Math.hypot(...e2, ...d2);
+    const prev = Math.hypot(...e.map((x) => x - c), ...d.map((x) => x - c));
+    if (!(norm > 0) || !(prev > 0)) break;
+    lambda = norm / prev;
+    e = e2.map((x) => x / norm);
+    d = d2.map((x) => x / norm);
+    c = 0;
+  }
+  const alpha = lambda > 0 && lambda < 1 ? -Math.log2(lambda) : 1;
+  exponentCache.set(key, alpha);
+  return alpha;
 }
 
 /** Subdominant eigenvalue of the smooth Catmull-Clark rule at interior valence n. */
@@ -563,9 +611,10 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const vs = L.vertSharp[x];
     const rule = vertexRuleOf(nInf, vs);
     const smoothInterior = !ring.boundary && nInf === 0 && vs === 0 && n >= 3;
+    const inf = sectors.map((q) => q[0]);
     return {
       level: l, x, n, boundary: ring.boundary, D: 0, rule, ia, ib, cageVertex: -1, sectors,
-      alpha: smoothInterior ? -Math.log2(subdominantEigenvalue(n)) : 1,
+      alpha: smoothInterior ? -Math.log2(subdominantEigenvalue(n)) : ringExponent(n, ring.boundary, rule, ia, ib, inf),
     };
   }
 
@@ -577,6 +626,9 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   let maxDepth = 0;
   const sliceFans: number[] = [];
   fans.forEach((F, id) => {
+    // Creases, corners, darts, boundaries: the radial blend's one exponent is a rougher model
+    // there (two rates, along and across), so their last square is made 2^-3 smaller.
+    if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) F.D = Math.min(15, F.D + EXTRA_DEPTH_SHARP);
     const ns = F.sectors.length;
     const sliceBase = nextPoint;
     nextPoint += F.D * (12 * ns + 1);
@@ -660,7 +712,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     words, offTri: offs[0], offPoly: offs[1], offRegions: offs[2], offPatchIdx: offs[3], offFans: offs[4], offSectors: offs[5],
     offThreads: offs[6], offCos: offs[7], offRules: offs[8], offInputs: offs[9], offVertexFan: offs[10],
     pointCount, levelRanges, fanCount: fans.length, sliceWorkgroups: threadWords.n / WORKGROUP, maxDepth,
-    regionCount: regionWords.n / 2, patchCount, sectorRegionCount, levels: levels.length - 1, triKind, faceDepth,
+    regionCount: regionWords.n / 2, patchCount, sectorRegionCount, levels: levels.length - 1, triKind, faceDepth, faceRegion,
     regions: regionWords.view.slice(), fans: fanWords.view.slice(), triRegion, vertexCount: nV0,
     gpuBytes: 4 * total + 12 * pointCount,
   };
