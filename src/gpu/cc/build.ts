@@ -66,7 +66,7 @@
  *   vfan     per cage vertex: its fan (limit position and normal for the factor rule), or ~0
  */
 import {
-  type Cage, type HalfEdges, type SubdivOptions, DEFAULT_OPTIONS, FaceKind, SHARPNESS_INFINITE, buildHalfEdges, buildTopology,
+  type Cage, type HalfEdges, type SubdivOptions, DEFAULT_OPTIONS, FaceKind, SHARPNESS_INFINITE, buildTopology,
   classify, computeSharpness, isRegularVertex, vertexRing,
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../prepare.ts';
@@ -94,11 +94,13 @@ export const NONE = 0xffffffff;
 export const WORKGROUP = 64;
 
 /**
- * Depth of the fans, counted from the root face: the blended square round an EV is 2^-7 of the
- * face (of the sub-face for n-gons), half the finest parameter spacing the tessellator can
- * produce (max tess factor 64), so no output vertex but the EV itself lands inside it.
+ * Depth of the fans: a fan starting at level s has TOTAL_DEPTH − s steps, so the blended square
+ * round an EV is 2^-6 of a quad's (u, v) and 2^-5 of an n-gon sub-face's (s, t): the finest
+ * parameter spacing the tessellator can produce (max tess factor 64: 1/64 along a quad's
+ * edge; 1/32 of (s, t) = 2·barycentric), so no output vertex but the EV itself lies strictly
+ * inside it.
  */
-export const TOTAL_DEPTH = 7;
+export const TOTAL_DEPTH = 6;
 /** Extra fan depth round creases, corners, darts and boundary vertices (see the packing). */
 const EXTRA_DEPTH_SHARP = 3;
 /** Deepest uniform level tried before a face is declared unsupported. */
@@ -258,7 +260,7 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
     hole[h] = L.hole[m.heFace[h]];
   }
   const nV1 = nV + nE + nF;
-  const he = buildHalfEdges(nV1, faceOffsets, faceIndices).he;
+  const he = refinedHalfEdges(m, nV1, faceOffsets, faceIndices);
   const edgeSharp = new Float64Array(he.nEdges);
   for (let e = 0; e < he.nEdges; e++) {
     const a = he.edgeVerts[2 * e], b = he.edgeVerts[2 * e + 1];
@@ -268,6 +270,65 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   const vertSharp = new Float64Array(nV1);
   for (let v = 0; v < nV; v++) vertSharp[v] = dec(L.vertSharp[v]);
   return makeLevel(he, edgeSharp, vertSharp, hole, base1);
+}
+
+/**
+ * Half-edges of a refined level without a hash map: child face h (parent half-edge h) is
+ * [V, E_h, F, E_prev(h)] and its 4 half-edges 4h..4h+3 pair with known neighbours: (V→E_h) with
+ * the last half-edge of the child of next(twin h); (E_h→F) with (F→E_h) of next(h)'s child;
+ * (F→E_p) with (E_p→F) of prev(h)'s child; (E_p→V) with the first of twin(prev h)'s child.
+ */
+function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array, faceIndices: Int32Array): HalfEdges {
+  const nHp = m.faceIndices.length;
+  const nHe = 4 * nHp;
+  const heFace = new Int32Array(nHe), heNext = new Int32Array(nHe), hePrev = new Int32Array(nHe), heTwin = new Int32Array(nHe);
+  for (let h = 0; h < nHp; h++) {
+    const b = 4 * h;
+    for (let j = 0; j < 4; j++) {
+      heFace[b + j] = h;
+      heNext[b + j] = b + ((j + 1) & 3);
+      hePrev[b + j] = b + ((j + 3) & 3);
+    }
+    const t = m.heTwin[h], tp = m.heTwin[m.hePrev[h]];
+    heTwin[b] = t >= 0 ? 4 * m.heNext[t] + 3 : -1;
+    heTwin[b + 1] = 4 * m.heNext[h] + 2;
+    heTwin[b + 2] = 4 * m.hePrev[h] + 1;
+    heTwin[b + 3] = tp >= 0 ? 4 * tp : -1;
+  }
+  const heEdge = new Int32Array(nHe);
+  let nEdges = 0;
+  for (let h = 0; h < nHe; h++) if (heTwin[h] < 0 || h < heTwin[h]) nEdges++;
+  const edgeVerts = new Int32Array(2 * nEdges), edgeFaceCount = new Int32Array(nEdges), edgeHe = new Int32Array(nEdges);
+  let e = 0;
+  for (let h = 0; h < nHe; h++) {
+    const t = heTwin[h];
+    if (t >= 0 && t < h) { heEdge[h] = heEdge[t]; continue; }
+    heEdge[h] = e;
+    edgeVerts[2 * e] = faceIndices[h];
+    edgeVerts[2 * e + 1] = faceIndices[heNext[h]];
+    edgeFaceCount[e] = t >= 0 ? 2 : 1;
+    edgeHe[e] = h;
+    e++;
+  }
+  const vertHeOffsets = new Int32Array(nVerts + 1);
+  for (let h = 0; h < nHe; h++) vertHeOffsets[faceIndices[h] + 1]++;
+  for (let v = 0; v < nVerts; v++) vertHeOffsets[v + 1] += vertHeOffsets[v];
+  const vertHe = new Int32Array(nHe);
+  const fill = vertHeOffsets.slice(0, nVerts);
+  for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
+  const vertEdgeOffsets = new Int32Array(nVerts + 1);
+  for (let k = 0; k < nEdges; k++) { vertEdgeOffsets[edgeVerts[2 * k] + 1]++; vertEdgeOffsets[edgeVerts[2 * k + 1] + 1]++; }
+  for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
+  const vertEdges = new Int32Array(2 * nEdges);
+  const fill2 = vertEdgeOffsets.slice(0, nVerts);
+  for (let k = 0; k < nEdges; k++) {
+    vertEdges[fill2[edgeVerts[2 * k]]++] = k;
+    vertEdges[fill2[edgeVerts[2 * k + 1]]++] = k;
+  }
+  return {
+    nVerts, nFaces: nHp, nEdges, faceOffsets, faceIndices, heFace, heNext, hePrev, heTwin, heEdge, edgeVerts, edgeFaceCount, edgeHe,
+    vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges,
+  };
 }
 
 function isRegular(L: Level, v: number): boolean {
@@ -545,7 +606,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
           let sector = -1;
           for (let i = 0; i < ring.he.length; i++) if (hs.heFace[ring.he[i]] === g) sector = i;
           if (sector < 0) continue;
-          const fan = getFan(s, x, Math.max(1, TOTAL_DEPTH - s + (N === 4 ? 0 : 1)));
+          const fan = getFan(s, x, Math.max(1, TOTAL_DEPTH - s));
           regs.push({ w0: REGION_SECTOR | (((q.r + c) & 3) << 2) | ((d - s) << 8) | (sector << 12) | (kind << 24), w1: fan });
           found = true;
         }
