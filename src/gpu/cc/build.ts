@@ -562,7 +562,18 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
       : fk === FaceKind.QuadIrregular ? ((cls.faceFlags[f] & 3) !== 0 ? PatchKind.Crease : PatchKind.IrregularQuad)
         : PatchKind.Triangle;
     faceKindOf[f] = kind;
-    for (let d = N === 4 ? 0 : 1; ; d++) {
+    // First depth worth trying: 0 for a quad (regular, or a sector of a fan eligible on the
+    // cage); an n-gon's sub-faces are regions at level 1 only when its corners are smooth
+    // interior valence-4 vertices (else the face point's fan is not eligible at level 1: its
+    // diagonals are those corners).
+    let d0 = N === 4 ? 0 : 1;
+    if (N !== 4) {
+      for (let h = topo.faceOffsets[f]; h < topo.faceOffsets[f + 1]; h++) {
+        const v = topo.faceIndices[h];
+        if (topo.valence[v] !== 4 || topo.vertBoundary[v]) d0 = 2;
+      }
+    }
+    for (let d = d0; ; d++) {
       // Descendants at level d with their place in the root square (or sub-face k).
       let desc: Desc[] = N === 4 ? [{ g: f, k: 0, i: 0, j: 0, r: 0 }] : [];
       if (N !== 4) for (let k = 0; k < N; k++) desc.push({ g: topo.faceOffsets[f] + k, k, i: 0, j: 0, r: 0 });
