@@ -216,12 +216,18 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       P[6u * lid + 3u] = o[5];
       P[6u * lid + 4u] = o[2];
       P[6u * lid + 5u] = o[6];
-      let stride = 12u * ns + 1u;
-      let b = sliceBase + (k - 1u) * stride;
-      for (var j = 0u; j < 12u; j++) { setPt(b + 12u * sec + j, o[j]); }
+      // Step k's slice: the 6 points carried on and the centre (the evaluator redoes the
+      // one local step for the other 6 of the 12, wgsl/surface-cc.wgsl ccStep).
+      let b = sliceBase + (k - 1u) * (6u * ns + 1u);
+      setPt(b + 6u * sec, o[0]);
+      setPt(b + 6u * sec + 1u, o[4]);
+      setPt(b + 6u * sec + 2u, o[1]);
+      setPt(b + 6u * sec + 3u, o[5]);
+      setPt(b + 6u * sec + 4u, o[2]);
+      setPt(b + 6u * sec + 5u, o[6]);
       if (sec == 0u) {
         C[lid] = cNew;
-        setPt(b + 12u * ns, cNew);
+        setPt(b + 6u * ns, cNew);
       }
     }
     workgroupBarrier();
@@ -230,7 +236,8 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 
 // ---------------------------------------------------------------------------------------------
 // Limit position and tangents of each fan's centre (notes §2.1–2.3) from its last level: the
-// start-level ring when the fan has no slices, else its step-D slice (offsets from the anchor).
+// start-level ring when the fan has no slices, else its step-D slice (offsets from the anchor:
+// (1,0) and (1,1) of each sector are its slots 0 and 2, the centre follows the sectors).
 // Written at the fan's limit base: P (absolute), T1, T2 (normal = T1 × T2).
 
 fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> vec3<f32> {
@@ -238,7 +245,7 @@ fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> v
   if (D == 0u) {
     return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
   }
-  return pt(fanWord(fan, 2u) + (D - 1u) * (12u * ns + 1u) + 12u * i + which);
+  return pt(fanWord(fan, 2u) + (D - 1u) * (6u * ns + 1u) + 6u * i + 2u * which);
 }
 
 @compute @workgroup_size(64)
@@ -253,7 +260,7 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let D = (w0 >> 20u) & 15u;
   let anchor = pt(fanWord(fan, 1u));
   var c = vec3<f32>(0.0);
-  if (D > 0u) { c = pt(fanWord(fan, 2u) + (D - 1u) * (12u * ns + 1u) + 12u * ns); }
+  if (D > 0u) { c = pt(fanWord(fan, 2u) + (D - 1u) * (6u * ns + 1u) + 6u * ns); }
   let pair = fanWord(fan, 6u);
   let ia = pair & 255u;
   let ib = pair >> 8u;

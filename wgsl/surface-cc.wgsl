@@ -80,53 +80,117 @@ fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
   return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
 }
 
-// A fan's slice point (a, b), a, b ∈ −1..3, of sector i after step k (offsets from the
-// anchor): own points a ≥ 1; (0, b ≥ 1) = sector i+1's (b, 0); (a, −1) = sector i−1's (1, a);
-// (−1, b) = sector i+1's (b, 1); (0, 0) the centre. Sector indices wrap round an interior fan
-// and clamp on a boundary fan (those points are then discarded by the phantom rule).
-struct CCFan { ns: u32, n: u32, boundary: bool, base: u32 }
-
-fn ccSlice(f: CCFan, i: u32, a: i32, b: i32) -> vec3<f32> {
-  var s = i;
-  var aa = a;
-  var bb = b;
-  if (a == 0 && b == 0) { return ccP(f.base + 12u * f.ns); }
-  if (a == -1 && b == 0) {
-    // The diagonal across (0, 1) from C: sector i+2's (1, 0) (round a valence-4 vertex).
-    s = select((i + 2u) % f.n, min(i + 2u, f.n), f.boundary);
-    aa = 1;
-    bb = 0;
-  } else if (a <= 0 && b >= 0) {
-    s = select((i + 1u) % f.n, i + 1u, f.boundary);
-    aa = b;
-    bb = -a;
-  } else if (b < 0) {
-    s = select((i + f.n - 1u) % f.n, max(i, 1u) - 1u, f.boundary);
-    aa = 1;
-    bb = a;
-  }
-  if (aa < 1 || bb < 0 || aa > 3 || bb > 3) { return vec3<f32>(0.0); }
-  return ccP(f.base + 12u * s + 4u * u32(aa - 1) + u32(bb));
-}
+// The fans' slices (src/gpu/cc/build.ts, wgsl/cc-build.wgsl) hold per step k = 1..D only the
+// 6 points each sector carries into the next step, (a, b) ∈ {1,2} × {0,1,2}, and the centre,
+// as offsets from the fan's anchor; step 0 is the start level, read through the sector table.
+// The evaluator redoes the one local step from step L−1 to get the 12 points of each sector
+// it needs at step L (ccStep: the slice kernel's own masks), and from them the 16 points of
+// the regular sub-patch A, B or C holding the point (notes §6.2).
+struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32> }
 
 fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
 
-// Sub-patch A (0), B (1) or C (2) of sector i at step k, at local (x, y); offsets from the anchor.
-fn ccSubPatch(f: CCFan, fan: u32, i: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+// Sector j + d: wrapping round an interior fan; on a boundary fan clamped to 0..n (n: the
+// pseudo-sector of the last axis), where the points read are discarded by the phantom rule.
+fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
+  let m = i32(j) + d;
+  if (f.boundary) { return u32(clamp(m, 0, i32(f.n))); }
+  let n = i32(f.n);
+  return u32(((m % n) + n) % n);
+}
+
+fn ccCore(f: CCFan, j: u32, k: u32, p: u32) -> vec3<f32> {
+  if (k == 0u) { return ccP(staticBuf[f.sectors + 7u * j + 1u + p]) - f.anchor; }
+  return ccP(f.base + (k - 1u) * (6u * f.ns + 1u) + 6u * j + p);
+}
+fn ccCentre(f: CCFan, k: u32) -> vec3<f32> {
+  if (k == 0u) { return vec3<f32>(0.0); }
+  return ccP(f.base + (k - 1u) * (6u * f.ns + 1u) + 6u * f.ns);
+}
+
+// The 12 points (a, b), a ∈ 1..3, b ∈ 0..3 (index 4(a−1) + b) of sector j after step L: the
+// slice kernel's masks, on step L−1's points of sectors j−1, j, j+1.
+fn ccStep(f: CCFan, j: u32, L: u32) -> array<vec3<f32>, 12> {
+  let k = L - 1u;
+  let c = ccCentre(f, k);
+  let pseudo = f.boundary && j == f.n;
+  var nx = ccNb(f, j, 1);
+  var pv = ccNb(f, j, -1);
+  if (pseudo) { nx = j; }
+  let p10 = ccCore(f, j, k, 0u);
+  let p20 = ccCore(f, j, k, 1u);
+  let p11 = ccCore(f, j, k, 2u);
+  let p21 = ccCore(f, j, k, 3u);
+  let p12 = ccCore(f, j, k, 4u);
+  let p22 = ccCore(f, j, k, 5u);
+  let n10 = ccCore(f, nx, k, 0u);
+  let n20 = ccCore(f, nx, k, 1u);
+  let q10 = ccCore(f, pv, k, 0u);
+  let q11 = ccCore(f, pv, k, 2u);
+  let q12 = ccCore(f, pv, k, 4u);
+  let inf = staticBuf[f.sectors + 7u * j] == 1u;
+  let f00 = 0.25 * (c + p10 + p11 + n10);
+  let f10 = 0.25 * (p10 + p20 + p21 + p11);
+  let f01 = 0.25 * (n10 + p11 + p12 + n20);
+  let f11 = 0.25 * (p11 + p21 + p22 + p12);
+  let g00 = 0.25 * (c + q10 + q11 + p10);
+  let g01 = 0.25 * (p10 + q11 + q12 + p20);
+  var o: array<vec3<f32>, 12>;
+  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
+  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
+  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+  if (!pseudo) {
+    o[1] = f00;
+    o[9] = f10;
+    o[3] = f01;
+    o[11] = f11;
+    o[5] = 0.25 * (p10 + p11 + f00 + f10);
+    o[2] = 0.25 * (n10 + p11 + f00 + f01);
+    o[10] = 0.25 * (p11 + p21 + f10 + f11);
+    o[7] = 0.25 * (p11 + p12 + f01 + f11);
+    o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11);
+  }
+  return o;
+}
+
+// Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step L,
+// at local (x, y); offsets from the anchor. Grid point (a, b), a, b ∈ −1..3: own a ≥ 1;
+// (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
+// (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
+fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+  let own = ccStep(f, i, L);
+  let nxt = ccStep(f, ccNb(f, i, 1), L);
+  var prv: array<vec3<f32>, 12>;
+  if (which == 0u) { prv = ccStep(f, ccNb(f, i, -1), L); }
+  var n2 = vec3<f32>(0.0);
+  if (which == 2u) { n2 = ccStep(f, ccNb(f, i, 2), L)[0]; }
+  let cL = ccCentre(f, L);
   var cp: array<vec3<f32>, 16>;
   let da = select(0, -1, which == 2u);
   let db = select(0, -1, which == 0u);
   for (var r = 0; r < 4; r++) {
-    for (var c = 0; c < 4; c++) { cp[4 * r + c] = ccSlice(f, i, c + da, r + db); }
+    for (var c = 0; c < 4; c++) {
+      let a = c + da;
+      let b = r + db;
+      var q: vec3<f32>;
+      if (a == 0 && b == 0) {
+        q = cL;
+      } else if (a == -1 && b == 0) {
+        q = n2;
+      } else if (b < 0) {
+        q = prv[u32(a)];
+      } else if (a <= 0) {
+        q = nxt[4u * u32(b - 1) + u32(-a)];
+      } else {
+        q = own[4u * u32(a - 1) + u32(b)];
+      }
+      cp[4 * r + c] = q;
+    }
   }
   // Phantoms: A's bottom on axis i, C's left on axis i+1, when infinitely sharp.
-  let sb = params.ccSectors + ccFanWord(fan, 3u);
   var mask = 0u;
-  if (which == 0u && staticBuf[sb + 7u * i] == 1u) { mask = 1u; }
-  if (which == 2u) {
-    let nx = select((i + 1u) % f.n, i + 1u, f.boundary);
-    if (staticBuf[sb + 7u * nx] == 1u) { mask = 8u; }
-  }
+  if (which == 0u && staticBuf[f.sectors + 7u * i] == 1u) { mask = 1u; }
+  if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, i, 1)] == 1u) { mask = 8u; }
   // Anchor the sum at the patch's corner (0,0) too.
   let o = cp[5];
   for (var j = 0u; j < 16u; j++) { cp[j] -= o; }
@@ -140,9 +204,9 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
   let off = (w0 >> 8u) & 15u;
   let ab = ccRot((w0 >> 2u) & 3u, x, y) * exp2(-f32(off));
   let fw = ccFanWord(fan, 0u);
-  let f = CCFan(fw & 255u, (fw >> 8u) & 255u, ((fw >> 16u) & 1u) == 1u, 0u);
-  let D = (fw >> 20u) & 15u;
   let anchor = ccP(ccFanWord(fan, 1u));
+  let f = CCFan(fw & 255u, (fw >> 8u) & 255u, ((fw >> 16u) & 1u) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor);
+  let D = (fw >> 20u) & 15u;
   let lb = ccFanWord(fan, 5u);
   let m = max(ab.x, ab.y);
   // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).
@@ -160,14 +224,13 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
     blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
     if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
   }
-  let fk = CCFan(f.ns, f.n, f.boundary, ccFanWord(fan, 2u) + (L - 1u) * (12u * f.ns + 1u));
   var e: array<vec3<f32>, 3>;
   if (a >= 1.0 && b < 1.0) {
-    e = ccSubPatch(fk, fan, sec, 0u, a - 1.0, b);
+    e = ccSubPatch(f, sec, L, 0u, a - 1.0, b);
   } else if (a >= 1.0) {
-    e = ccSubPatch(fk, fan, sec, 1u, a - 1.0, b - 1.0);
+    e = ccSubPatch(f, sec, L, 1u, a - 1.0, b - 1.0);
   } else {
-    e = ccSubPatch(fk, fan, sec, 2u, a, b - 1.0);
+    e = ccSubPatch(f, sec, L, 2u, a, b - 1.0);
   }
   let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
   if (blend >= 1.0) { return q; }

@@ -41,9 +41,11 @@
  * offPoints + 3(p − nVerts)):
  *   [cage | level 1 | … | level G | fan slices | fan limits]
  *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary): for step k = 1..D,
- *     12 points per sector i: (a,b), a ∈ 1..3, b ∈ 0..3 at slot 12i + 4(a−1) + b, then the
- *     centre (slot 12·ns); all as OFFSETS from the fan's anchor (its centre at level s: f32
- *     precision of deep levels, notes §6.7); limits: P (absolute), T1, T2.
+ *     the 6 points each sector carries into the next step, (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+ *     at slot 6i + 0..5, then the centre (slot 6·ns); all as OFFSETS from the fan's anchor (its
+ *     centre at level s: f32 precision of deep levels, notes §6.7). The other 6 of a step's 12
+ *     (a = 3 or b = 3) are redone by the evaluator from the previous step (one local step, as
+ *     the slice kernel does it): half the memory. Then the limits: P (absolute), T1, T2.
  *
  * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
  *   tri      3 per prepared triangle: first region of the face, n | fan k << 8 | depth << 28
@@ -95,12 +97,14 @@ export const WORKGROUP = 64;
 
 /**
  * Depth of the fans: a fan starting at level s has TOTAL_DEPTH − s steps, so the blended square
- * round an EV is 2^-6 of a quad's (u, v) and 2^-5 of an n-gon sub-face's (s, t): the finest
- * parameter spacing the tessellator can produce (max tess factor 64: 1/64 along a quad's
- * edge; 1/32 of (s, t) = 2·barycentric), so no output vertex but the EV itself lies strictly
- * inside it.
+ * round an EV is 2^-8 of a quad's (u, v) and 2^-7 of an n-gon sub-face's (s, t). The finest
+ * spacing of an integer tess factor (64) is 1/64 of a quad's edge (1/32 of (s, t) =
+ * 2·barycentric), but fractional factors make thinner slivers next to a corner, and the checks
+ * hold every output vertex, blended or not, to 1e-5 of the diagonal: at 2^-6 the radial blend
+ * missed that by ×1.3 (icosphere, creature), at 2^-8 it is under 2e-6. (Each step costs
+ * 6 points per sector: 72 B.)
  */
-export const TOTAL_DEPTH = 6;
+export const TOTAL_DEPTH = 8;
 /** Extra fan depth round creases, corners, darts and boundary vertices (see the packing). */
 const EXTRA_DEPTH_SHARP = 3;
 /** Deepest uniform level tried before a face is declared unsupported. */
@@ -703,7 +707,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) F.D = Math.min(15, F.D + EXTRA_DEPTH_SHARP);
     const ns = F.sectors.length;
     const sliceBase = nextPoint;
-    nextPoint += F.D * (12 * ns + 1);
+    nextPoint += F.D * (6 * ns + 1);
     const limitBase = nextPoint;
     nextPoint += 3;
     maxDepth = Math.max(maxDepth, F.D);
