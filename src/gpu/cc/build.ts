@@ -189,27 +189,26 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   const m = L.he;
   const nV = m.nVerts, nE = m.nEdges, nF = m.nFaces;
   const base1 = L.base + nV;
-  const Fpt = (f: number) => base1 + nV + nE + f;
-  const G = (v: number) => L.base + v;
+  const fBase = base1 + nV + nE, vBase = L.base;
   // Vertex points.
   for (let v = 0; v < nV; v++) {
     const e0 = m.vertEdgeOffsets[v], e1 = m.vertEdgeOffsets[v + 1];
     const h0 = m.vertHeOffsets[v], h1 = m.vertHeOffsets[v + 1];
     const first = inputs.n;
-    inputs.push(G(v));
+    inputs.push(vBase + v);
     let nSharp = 0, nSharpChild = 0, ia = 0, ib = 0, ca = 0, cb = 0;
     let tSum = 0, tCount = 0;
     const vs = L.vertSharp[v];
     if (vs > 0 && dec(vs) === 0) { tSum = Math.fround(vs); tCount = 1; }
     for (let k = e0; k < e1; k++) {
       const e = m.vertEdges[k];
-      inputs.push(G(m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v));
+      inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
       const s = L.edgeSharp[e];
       if (s > 0) { if (nSharp === 0) ia = k - e0; else if (nSharp === 1) ib = k - e0; nSharp++; }
       if (dec(s) > 0) { if (nSharpChild === 0) ca = k - e0; else if (nSharpChild === 1) cb = k - e0; nSharpChild++; }
       if (s > 0 && dec(s) === 0) { tSum = Math.fround(tSum + s); tCount++; }
     }
-    for (let k = h0; k < h1; k++) inputs.push(Fpt(m.heFace[m.vertHe[k]]));
+    for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
     const pr = vertexRuleOf(nSharp, vs);
     let cr = vertexRuleOf(nSharpChild, dec(vs));
     let W = 1;
@@ -227,13 +226,13 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   // Edge points.
   for (let e = 0; e < nE; e++) {
     const first = inputs.n;
-    inputs.push(G(m.edgeVerts[2 * e]));
-    inputs.push(G(m.edgeVerts[2 * e + 1]));
+    inputs.push(vBase + m.edgeVerts[2 * e]);
+    inputs.push(vBase + m.edgeVerts[2 * e + 1]);
     let n = 2;
     if (m.edgeFaceCount[e] === 2) {
       const h = m.edgeHe[e];
-      inputs.push(Fpt(m.heFace[h]));
-      inputs.push(Fpt(m.heFace[m.heTwin[h]]));
+      inputs.push(fBase + m.heFace[h]);
+      inputs.push(fBase + m.heFace[m.heTwin[h]]);
       n = 4;
     }
     rules.push(RULE_EDGE | (n << 8));
@@ -248,7 +247,7 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
     rules.push(inputs.n);
     rules.push(0);
     rules.push(0);
-    for (let h = a; h < b; h++) inputs.push(G(m.faceIndices[h]));
+    for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
   }
   // Level L+1 topology.
   const nHe = m.faceIndices.length;
@@ -501,6 +500,8 @@ interface FanRec {
   cageVertex: number;
   /** Per thread: axis-infinite flag and 6 global point indices. */
   sectors: number[][];
+  /** The level-s face of each sector. */
+  ringFaces: number[];
 }
 
 /** Build the topology-only Catmull-Clark data of a cage (its prepared triangulation gives the triangle order). */
@@ -612,16 +613,13 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
           const x = m.faceIndices[a0 + c];
           const s = fanStart(x, d);
           if (s < 0) continue;
-          const ring = vertexRing(levels[s].he, x)!;
           // Sector index: this face's ancestor at level s in x's ring. The face at level d
           // descends from the level-s face whose corner x it shares: walk up by child index.
           let g = q.g;
           for (let l = d; l > s; l--) g = levels[l - 1].he.heFace[g];
-          const hs = levels[s].he;
-          let sector = -1;
-          for (let i = 0; i < ring.he.length; i++) if (hs.heFace[ring.he[i]] === g) sector = i;
-          if (sector < 0) continue;
           const fan = getFan(s, x, Math.max(1, TOTAL_DEPTH - s));
+          const sector = fans[fan].ringFaces.indexOf(g);
+          if (sector < 0) throw new Error(`Catmull-Clark: face ${f} is not in the fan of its corner`);
           regs.push({ w0: REGION_SECTOR | (((q.r + c) & 3) << 2) | ((d - s) << 8) | (sector << 12) | (kind << 24), w1: fan });
           found = true;
         }
@@ -689,7 +687,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const smoothInterior = !ring.boundary && nInf === 0 && vs === 0 && n >= 3;
     const inf = sectors.map((q) => q[0]);
     return {
-      level: l, x, n, boundary: ring.boundary, D: 0, rule, ia, ib, cageVertex: -1, sectors,
+      level: l, x, n, boundary: ring.boundary, D: 0, rule, ia, ib, cageVertex: -1, sectors, ringFaces: ring.he.map((h) => m.heFace[h]),
       alpha: smoothInterior ? -Math.log2(subdominantEigenvalue(n)) : ringExponent(n, ring.boundary, rule, ia, ib, inf),
     };
   }
