@@ -17,8 +17,9 @@
  * so every output element costs the same whatever the factors (wgsl/tess-pattern.wgsl holds the
  * pattern reading shared by count, plan and emit).
  * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
- *   subdivision  control points from the cage positions (stencils), then the cage vertices'
- *                limit positions and normals for the factor rule           wgsl/cc-build.wgsl
+ *   subdivision  refined points level by level (rule per point), the slices round
+ *                extraordinary vertices (workgroup memory), their limits, and the cage
+ *                vertices' limit positions and normals for the factor rule  wgsl/cc-build.wgsl
  * Attempts after the accepted one are no-ops on the GPU (they test a flag), so no readback is
  * ever needed.
  */
