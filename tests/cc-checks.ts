@@ -15,13 +15,14 @@ export interface ErrorStats {
   count: number;
   maxP: number; // / bbox diagonal
   rmsP: number;
+  p99P: number;
   maxN: number; // degrees
   rmsN: number;
   worst: string;
   worstN: string;
 }
 
-const empty = (): ErrorStats & { sp: number; sn: number; nn: number } => ({ count: 0, maxP: 0, rmsP: 0, maxN: 0, rmsN: 0, worst: '', worstN: '', sp: 0, sn: 0, nn: 0 });
+const empty = (): ErrorStats & { sp: number; sn: number; nn: number; all: number[] } => ({ count: 0, maxP: 0, rmsP: 0, p99P: 0, maxN: 0, rmsN: 0, worst: '', worstN: '', sp: 0, sn: 0, nn: 0, all: [] });
 
 export class CCReference {
   readonly S: Surface;
@@ -50,6 +51,7 @@ export class CCReference {
       const dp = Math.hypot(p[0] - ref.P[0], p[1] - ref.P[1], p[2] - ref.P[2]) / this.mesh.size;
       st.count++;
       st.sp += dp * dp;
+      st.all.push(dp);
       if (dp > st.maxP) { st.maxP = dp; st.worst = `tri ${t} face ${face} w ${w.map((x) => x.toFixed(5))}: ${p} vs ${ref.P}`; }
       if (ref.normalDefined) {
         const dn = (angleBetween(n, ref.N) * 180) / Math.PI;
@@ -58,8 +60,9 @@ export class CCReference {
         if (dn > st.maxN) { st.maxN = dn; st.worstN = `tri ${t} face ${face} w ${w.map((x) => x.toFixed(5))}: ${n} vs ${ref.N}`; }
       }
     });
+    const p99 = (a: number[]) => (a.length ? a.sort((x, y) => x - y)[Math.floor(0.99 * (a.length - 1))] : 0);
     const fin = (s: ReturnType<typeof empty>): ErrorStats => ({
-      count: s.count, maxP: s.maxP, rmsP: Math.sqrt(s.sp / Math.max(1, s.count)), maxN: s.maxN, rmsN: Math.sqrt(s.sn / Math.max(1, s.nn)), worst: s.worst, worstN: s.worstN,
+      count: s.count, maxP: s.maxP, rmsP: Math.sqrt(s.sp / Math.max(1, s.count)), p99P: p99(s.all), maxN: s.maxN, rmsN: Math.sqrt(s.sn / Math.max(1, s.nn)), worst: s.worst, worstN: s.worstN,
     });
     return { exact: fin(exact), blended: fin(blended), nan };
   }

@@ -37,6 +37,14 @@
  *    quads at an EV (4), 2 where triangles are involved (16 per quad, 12 per triangle), as in
  *    the talk's table, and deeper only under semi-sharp creases.
  *
+ * Limits (honest): semi-sharp sharpness decays by UNIFORM levels of the whole cage, ceil(σ) of
+ * them (sharpness ≥ 7 needs more than MAX_LEVEL = 6 and is refused with a message, as are
+ * vertices of valence > 64, more than a workgroup, and Chaikin creasing). On the project's and
+ * the talk's models that is at most 3 levels; OpenSubdiv's regression cages with long σ ≈ 5
+ * crease loops (catmark_bishop, _car, _pawn) cost hundreds of KB per face. The fix is the
+ * issue's design proper: semi-sharp axes decaying inside the slice kernel and single-crease
+ * regions through the change of basis.
+ *
  * GPU point space (f32 xyz in cageBuf; index p < nVerts: the cage positions; p ≥ nVerts at
  * offPoints + 3(p − nVerts)):
  *   [cage | level 1 | … | level G | fan slices | fan limits]
