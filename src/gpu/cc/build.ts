@@ -357,39 +357,44 @@ function isEligible(L: Level, x: number): boolean {
   return r;
 }
 
+function isQuadHe(m: HalfEdges, h: number): boolean {
+  return m.faceOffsets[m.heFace[h] + 1] - m.faceOffsets[m.heFace[h]] === 4;
+}
+
+/** Is y a valid axis neighbour (1,0) of a fan centre along an axis of sharpness axisSharp? */
+function axisOk(L: Level, y: number, axisSharp: number): boolean {
+  const m = L.he;
+  if (L.vertSharp[y] !== 0) return false;
+  const nf = m.vertHeOffsets[y + 1] - m.vertHeOffsets[y], ne = m.vertEdgeOffsets[y + 1] - m.vertEdgeOffsets[y];
+  for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
+  let nInf = 0;
+  for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
+    const s = L.edgeSharp[m.vertEdges[k]];
+    if (s >= INF) nInf++;
+    else if (s !== 0) return false;
+  }
+  if (L.boundary[y]) return axisSharp >= INF && nf === 2 && ne === 3 && nInf === 2 && isRegular(L, y);
+  if (nf !== 4 || ne !== 4) return false;
+  if (axisSharp >= INF) return nInf === 2 && isRegular(L, y); // the two halves of the axis, opposite
+  return nInf === 0;
+}
+
 function eligible(L: Level, x: number): boolean {
   const m = L.he;
   if (!sharp0orInf(L.vertSharp[x])) return false;
+  for (let k = m.vertEdgeOffsets[x]; k < m.vertEdgeOffsets[x + 1]; k++) if (!sharp0orInf(L.edgeSharp[m.vertEdges[k]])) return false;
+  for (let k = m.vertHeOffsets[x]; k < m.vertHeOffsets[x + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
   const ring = vertexRing(m, x);
   if (!ring || ring.he.length === 0) return false;
   const n = ring.he.length;
   if (n + (ring.boundary ? 1 : 0) > WORKGROUP) return false;
-  const quad = (h: number) => m.faceOffsets[m.heFace[h] + 1] - m.faceOffsets[m.heFace[h]] === 4;
-  for (let k = m.vertEdgeOffsets[x]; k < m.vertEdgeOffsets[x + 1]; k++) if (!sharp0orInf(L.edgeSharp[m.vertEdges[k]])) return false;
   // Axis neighbours: the edges x→e_i (and the trailing boundary edge).
-  const axisHe: number[] = ring.he.slice();
-  for (const h of ring.he) if (!quad(h)) return false;
-  const axisOk = (y: number, axisSharp: number): boolean => {
-    if (L.vertSharp[y] !== 0) return false;
-    const nf = m.vertHeOffsets[y + 1] - m.vertHeOffsets[y], ne = m.vertEdgeOffsets[y + 1] - m.vertEdgeOffsets[y];
-    for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) if (!quad(m.vertHe[k])) return false;
-    let nInf = 0;
-    for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
-      const s = L.edgeSharp[m.vertEdges[k]];
-      if (s >= INF) nInf++;
-      else if (s !== 0) return false;
-    }
-    if (L.boundary[y]) return axisSharp >= INF && nf === 2 && ne === 3 && nInf === 2 && isRegular(L, y);
-    if (nf !== 4 || ne !== 4) return false;
-    if (axisSharp >= INF) return nInf === 2 && isRegular(L, y); // the two halves of the axis, opposite
-    return nInf === 0;
-  };
-  for (const h of axisHe) {
-    if (!axisOk(m.faceIndices[m.heNext[h]], L.edgeSharp[m.heEdge[h]])) return false;
+  for (const h of ring.he) {
+    if (!axisOk(L, m.faceIndices[m.heNext[h]], L.edgeSharp[m.heEdge[h]])) return false;
   }
   if (ring.boundary) {
     const hl = m.hePrev[ring.he[n - 1]];
-    if (!axisOk(m.faceIndices[hl], L.edgeSharp[m.heEdge[hl]])) return false;
+    if (!axisOk(L, m.faceIndices[hl], L.edgeSharp[m.heEdge[hl]])) return false;
   }
   // Diagonals: smooth interior valence-4 vertices.
   for (const h of ring.he) {
@@ -397,7 +402,7 @@ function eligible(L: Level, x: number): boolean {
     if (L.boundary[z] || L.vertSharp[z] !== 0) return false;
     if (m.vertHeOffsets[z + 1] - m.vertHeOffsets[z] !== 4 || m.vertEdgeOffsets[z + 1] - m.vertEdgeOffsets[z] !== 4) return false;
     for (let k = m.vertEdgeOffsets[z]; k < m.vertEdgeOffsets[z + 1]; k++) if (L.edgeSharp[m.vertEdges[k]] !== 0) return false;
-    for (let k = m.vertHeOffsets[z]; k < m.vertHeOffsets[z + 1]; k++) if (!quad(m.vertHe[k])) return false;
+    for (let k = m.vertHeOffsets[z]; k < m.vertHeOffsets[z + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
   }
   return true;
 }
@@ -457,32 +462,34 @@ const QUAD_OF_ROT: [number, number][] = [[0, 0], [1, 0], [1, 1], [0, 1]];
 const GRID_POS: [number, number][] = [[1, 1], [2, 1], [2, 2], [1, 2]];
 const AXES: [number, number, number, number][] = [[1, 0, 0, 1], [0, 1, -1, 0], [-1, 0, 0, -1], [0, -1, 1, 0]];
 
+function setGrid(grid: number[], c: number, r: number, v: number): void {
+  if (c >= 0 && c < 4 && r >= 0 && r < 4) grid[4 * r + c] = v;
+}
+
 /** The 16 point indices (global) of a regular level face g, its own frame, and its phantom mask; null if a slot stays empty. */
 function gatherPatch(L: Level, g: number): { idx: number[]; mask: number } | null {
   const m = L.he;
   const a0 = m.faceOffsets[g];
   const grid = new Array<number>(16).fill(-1);
   let mask = 0;
-  const set = (c: number, r: number, v: number) => {
-    if (c >= 0 && c < 4 && r >= 0 && r < 4) grid[4 * r + c] = v;
-  };
+
   for (let j = 0; j < 4; j++) {
     const h = a0 + j;
     if (L.edgeSharp[m.heEdge[h]] >= INF) mask |= 1 << j;
     const [gc, gr] = GRID_POS[j];
     const [ax, ay, bx, by] = AXES[j];
-    set(gc, gr, m.faceIndices[h]);
+    setGrid(grid, gc, gr, m.faceIndices[h]);
     const t1 = m.heTwin[m.hePrev[h]];
     if (t1 < 0) continue;
-    set(gc + bx - ax, gr + by - ay, m.faceIndices[m.heNext[m.heNext[t1]]]);
-    set(gc - ax, gr - ay, m.faceIndices[m.hePrev[t1]]);
+    setGrid(grid, gc + bx - ax, gr + by - ay, m.faceIndices[m.heNext[m.heNext[t1]]]);
+    setGrid(grid, gc - ax, gr - ay, m.faceIndices[m.hePrev[t1]]);
     const t2 = m.heTwin[m.hePrev[t1]];
     if (t2 < 0) continue;
-    set(gc - ax - bx, gr - ay - by, m.faceIndices[m.heNext[m.heNext[t2]]]);
-    set(gc - bx, gr - by, m.faceIndices[m.hePrev[t2]]);
+    setGrid(grid, gc - ax - bx, gr - ay - by, m.faceIndices[m.heNext[m.heNext[t2]]]);
+    setGrid(grid, gc - bx, gr - by, m.faceIndices[m.hePrev[t2]]);
     const t3 = m.heTwin[m.hePrev[t2]];
     if (t3 < 0) continue;
-    set(gc + ax - bx, gr + ay - by, m.faceIndices[m.heNext[m.heNext[t3]]]);
+    setGrid(grid, gc + ax - bx, gr + ay - by, m.faceIndices[m.heNext[m.heNext[t3]]]);
   }
   for (let r = 0; r < 4; r++) {
     for (let c = 0; c < 4; c++) {
