@@ -110,7 +110,8 @@ fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan 
 @compute @workgroup_size(64)
 fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let wg = wid.y * GRID_X + wid.x;
-  let th = staticBuf[params.ccThreads + wg * WG + lid];
+  // (Workgroups past the last one exist when the dispatch is folded into 2D.)
+  let th = select(NONE, staticBuf[params.ccThreads + wg * WG + lid], wg < params.ccSliceGroups);
   let valid = th != NONE;
   var fan = 0u;
   var sec = 0u;

@@ -62,7 +62,7 @@ export const PARAMS = defineStruct('Params', [
   // offset of the refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts)).
   ['ccTri', 'u32'], ['ccPoly', 'u32'], ['ccRegions', 'u32'], ['ccPatchIdx', 'u32'], ['ccFans', 'u32'],
   ['ccSectors', 'u32'], ['ccThreads', 'u32'], ['ccCos', 'u32'], ['ccRules', 'u32'], ['ccInputs', 'u32'],
-  ['ccVertexFan', 'u32'], ['nFans', 'u32'], ['ccMaxDepth', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
+  ['ccVertexFan', 'u32'], ['nFans', 'u32'], ['ccSliceGroups', 'u32'], ['ccMaxDepth', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
 ] as const);
 
 const SCAN_PARAMS = defineStruct('ScanParams', [['inOff', 'u32'], ['outOff', 'u32'], ['n', 'u32'], ['sumsOff', 'u32'], ['skipOff', 'u32']] as const);
@@ -314,7 +314,7 @@ export class Tessellator {
       ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0), ccFans: ccBase + (cc?.offFans ?? 0), ccSectors: ccBase + (cc?.offSectors ?? 0),
       ccThreads: ccBase + (cc?.offThreads ?? 0), ccCos: ccBase + (cc?.offCos ?? 0), ccRules: ccBase + (cc?.offRules ?? 0),
       ccInputs: ccBase + (cc?.offInputs ?? 0), ccVertexFan: ccBase + (cc?.offVertexFan ?? 0), nFans: cc?.fanCount ?? 0,
-      ccMaxDepth: cc?.maxDepth ?? 0, offCtrl,
+      ccSliceGroups: cc?.sliceWorkgroups ?? 0, ccMaxDepth: cc?.maxDepth ?? 0, offCtrl,
     });
 
     const resources: Record<number, GPUBindingResource> = {
