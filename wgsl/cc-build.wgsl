@@ -1,52 +1,333 @@
-// Catmull-Clark patch build ("subdivision"), run whenever the cage moves. `struct Params` is
-// generated from src/gpu/tessellator.ts and prepended. The control points of every patch, of
-// every blended leaf's limit point and of every cage vertex's limit are weighted sums of the
-// cage positions (stencils, src/gpu/cc/build.ts); they are written after the cage positions
-// and normals in cageBuf, where the emit passes (wgsl/surface-cc.wgsl) read them.
+// Catmull-Clark patch build ("subdivision"), run whenever the cage moves: every point the
+// evaluator reads, made from the current cage positions by the topology-only data of
+// src/gpu/cc/build.ts (its header has the layouts). `struct Params` is generated from
+// src/gpu/tessellator.ts and prepended. Points are f32 xyz: the cage positions (index < nVerts)
+// then, from params.offCtrl in cageBuf, the refined levels, the fans' slices and limits.
+//   points   one thread per point of one level's range (face points, then in a second dispatch
+//            edge and vertex points, which read the new face points), its rule from its word
+//   slices   the EV slice kernel: one thread per sector, several fans per workgroup, the fan's
+//            2-ring ping-ponged in workgroup memory, one Catmull-Clark step per iteration
+//   limits   one thread per fan: limit position and tangents of its centre (notes §2)
+//   vlimits  one thread per cage vertex: its fan's limit where the factor rule reads it
 
 @group(0) @binding(0) var<uniform> params: Params;
 @group(0) @binding(1) var<storage, read> staticBuf: array<u32>;
 @group(0) @binding(2) var<storage, read_write> cageBuf: array<f32>;
 
-const GRID_X: u32 = 65535u;
+struct Range { first: u32, count: u32, pad0: u32, pad1: u32 }
+@group(0) @binding(3) var<uniform> range: Range;
 
-fn cagePosRW(v: u32) -> vec3<f32> { return vec3<f32>(cageBuf[3u * v], cageBuf[3u * v + 1u], cageBuf[3u * v + 2u]); }
-fn ctrlRW(i: u32) -> vec3<f32> {
-  let o = params.offCtrl + 3u * i;
+const GRID_X: u32 = 65535u;
+const NONE: u32 = 0xffffffffu;
+const WG: u32 = 64u;
+
+fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.nVerts), 3u * p, p < params.nVerts); }
+fn pt(p: u32) -> vec3<f32> {
+  let o = ptAt(p);
   return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
 }
+fn setPt(p: u32, v: vec3<f32>) {
+  let o = ptAt(p);
+  cageBuf[o] = v.x;
+  cageBuf[o + 1u] = v.y;
+  cageBuf[o + 2u] = v.z;
+}
+fn inp(i: u32) -> vec3<f32> { return pt(staticBuf[params.ccInputs + i]); }
 
-// One thread per control point: its stencil applied to the current cage positions.
+// Vertex masks (notes §1.3) over the inputs [v, e_0..e_{m-1}, F_0..F_{k-1}].
+fn vertexMask(rule: u32, first: u32, m: u32, k: u32, ia: u32, ib: u32) -> vec3<f32> {
+  let v = inp(first);
+  if (rule == 2u) { return v; }
+  if (rule == 1u) { return 0.75 * v + 0.125 * (inp(first + 1u + ia) + inp(first + 1u + ib)); }
+  var s = vec3<f32>(0.0);
+  for (var i = 0u; i < m + k; i++) { s += inp(first + 1u + i); }
+  let n = f32(m);
+  return ((n - 2.0) / n) * v + s / (n * n);
+}
+
 @compute @workgroup_size(64)
 fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let i = (wid.y * GRID_X + wid.x) * 64u + lid;
-  if (i >= params.nCtrl) { return; }
-  let e0 = staticBuf[params.ccRows + i];
-  let e1 = staticBuf[params.ccRows + i + 1u];
-  var p = vec3<f32>(0.0);
-  for (var e = e0; e < e1; e++) {
-    let v = staticBuf[params.ccEntries + 2u * e];
-    let w = bitcast<f32>(staticBuf[params.ccEntries + 2u * e + 1u]);
-    p += w * cagePosRW(v);
+  if (i >= range.count) { return; }
+  let p = range.first + i;
+  let r = params.ccRules + 4u * (p - params.nVerts);
+  let w0 = staticBuf[r];
+  let first = staticBuf[r + 1u];
+  let kind = w0 & 3u;
+  var out: vec3<f32>;
+  if (kind == 0u) {
+    // Face point: the centroid.
+    let n = (w0 >> 8u) & 0xfffu;
+    var s = vec3<f32>(0.0);
+    for (var j = 0u; j < n; j++) { s += inp(first + j); }
+    out = s / f32(n);
+  } else if (kind == 1u) {
+    // Edge point: crease (s ≥ 1, boundary), smooth, or their blend for 0 < s < 1.
+    let n = (w0 >> 8u) & 0xfffu;
+    let sh = bitcast<f32>(staticBuf[r + 3u]);
+    let mid = 0.5 * (inp(first) + inp(first + 1u));
+    if (n == 2u || sh >= 1.0) {
+      out = mid;
+    } else {
+      let sm = 0.25 * (inp(first) + inp(first + 1u) + inp(first + 2u) + inp(first + 3u));
+      out = select(sm, sh * mid + (1.0 - sh) * sm, sh > 0.0);
+    }
+  } else {
+    // Vertex point: parent rule, child rule and OpenSubdiv's transitional weight W.
+    let pr = (w0 >> 2u) & 3u;
+    let cr = (w0 >> 4u) & 3u;
+    let m = (w0 >> 8u) & 0xfffu;
+    let k = (w0 >> 20u) & 0xfffu;
+    let pair = staticBuf[r + 2u];
+    let ia = pair & 0xffffu;
+    let ib = pair >> 16u;
+    let W = bitcast<f32>(staticBuf[r + 3u]);
+    out = vertexMask(pr, first, m, k, ia, ib);
+    if (cr != pr) { out = W * out + (1.0 - W) * vertexMask(cr, first, m, k, ia, ib); }
   }
-  let o = params.offCtrl + 3u * i;
-  cageBuf[o] = p.x;
-  cageBuf[o + 1u] = p.y;
-  cageBuf[o + 2u] = p.z;
+  setPt(p, out);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The EV slice kernel (notes §6.2). Sector i of a fan owns the points (a, b), a ∈ {1,2},
+// b ∈ {0,1,2} of its frame (a along axis i, b along axis i+1); (0, b) belongs to sector i+1,
+// (a, −1) to sector i−1, (0, 0) is the centre. Per step: face points → barrier → edge and
+// vertex points (they read only old points and the new face points, so one stage) and the
+// centre (the fan's first thread sums over the fan) → barrier → the new 6 points and centre
+// replace the old → barrier. All points are offsets from the fan's anchor (its centre at the
+// start level): subdivision is affine, and deep levels keep f32's relative precision.
+// Inside the slices every point but the centre and the axis points is a smooth valence-4
+// vertex, an edge point of an edge made inside a face, or a face point (the eligibility test
+// of build.ts), so the regular masks below are exact; the axis points use the crease rules
+// when the axis is infinitely sharp (boundaries, creases into the EV, darts).
+
+var<workgroup> P: array<vec3<f32>, 384>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+var<workgroup> F: array<vec3<f32>, 256>;   // 4 new face points per thread: cells 00, 10, 01, 11
+var<workgroup> C: array<vec3<f32>, 64>;    // the centre, at the fan's first thread
+
+fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
+
+@compute @workgroup_size(64)
+fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let wg = wid.y * GRID_X + wid.x;
+  // (Workgroups past the last one exist when the dispatch is folded into 2D.)
+  let th = select(NONE, staticBuf[params.ccThreads + wg * WG + lid], wg < params.ccSliceGroups);
+  let valid = th != NONE;
+  var fan = 0u;
+  var sec = 0u;
+  var ns = 1u;
+  var n = 1u;
+  var boundary = false;
+  var rule = 0u;
+  var D = 0u;
+  var anchor = vec3<f32>(0.0);
+  var sliceBase = 0u;
+  var inf = false;
+  var pseudo = false;
+  var ia = 0u;
+  var ib = 0u;
+  if (valid) {
+    fan = th & 0xffffffu;
+    sec = th >> 24u;
+    let w0 = fanWord(fan, 0u);
+    ns = w0 & 255u;
+    n = (w0 >> 8u) & 255u;
+    boundary = ((w0 >> 16u) & 1u) == 1u;
+    rule = (w0 >> 17u) & 3u;
+    D = (w0 >> 20u) & 15u;
+    anchor = pt(fanWord(fan, 1u));
+    sliceBase = fanWord(fan, 2u);
+    let sb = fanWord(fan, 3u) + 7u * sec;
+    inf = staticBuf[params.ccSectors + sb] == 1u;
+    pseudo = boundary && sec == n;
+    let pair = fanWord(fan, 6u);
+    ia = pair & 255u;
+    ib = pair >> 8u;
+    for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = pt(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
+    if (sec == 0u) { C[lid] = vec3<f32>(0.0); }
+  }
+  // Neighbour threads (fans are contiguous; a boundary fan's sector 0 has no previous sector,
+  // and reads itself where the crease rules of its infinitely sharp axis need nothing).
+  let first = lid - sec;
+  var prev = select(lid - 1u, first + n - 1u, sec == 0u);
+  if (boundary && sec == 0u) { prev = lid; }
+  var next = select(lid + 1u, first, !boundary && sec == n - 1u);
+  if (pseudo) { next = lid; }
+  workgroupBarrier();
+  for (var k = 1u; k <= params.ccMaxDepth; k++) {
+    let live = valid && k <= D;
+    let p10 = P[6u * lid];
+    let p20 = P[6u * lid + 1u];
+    let p11 = P[6u * lid + 2u];
+    let p21 = P[6u * lid + 3u];
+    let p12 = P[6u * lid + 4u];
+    let p22 = P[6u * lid + 5u];
+    let c = C[first];
+    let n10 = P[6u * next];
+    let n20 = P[6u * next + 1u];
+    let q11 = P[6u * prev + 2u];
+    if (live && !pseudo) {
+      F[4u * lid] = 0.25 * (c + p10 + p11 + n10);
+      F[4u * lid + 1u] = 0.25 * (p10 + p20 + p21 + p11);
+      F[4u * lid + 2u] = 0.25 * (n10 + p11 + p12 + n20);
+      F[4u * lid + 3u] = 0.25 * (p11 + p21 + p22 + p12);
+    }
+    workgroupBarrier();
+    var o: array<vec3<f32>, 12>;
+    var cNew = c;
+    if (live) {
+      let f00 = F[4u * lid];
+      let f10 = F[4u * lid + 1u];
+      let f01 = F[4u * lid + 2u];
+      let f11 = F[4u * lid + 3u];
+      let g00 = F[4u * prev];       // the cell [0,1]×[−1,0]
+      let g01 = F[4u * prev + 2u];  // the cell [1,2]×[−1,0]
+      // Axis i: crease rules when infinitely sharp.
+      o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
+      o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
+      o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+      if (!pseudo) {
+        o[1] = f00;
+        o[9] = f10;
+        o[3] = f01;
+        o[11] = f11;
+        o[5] = 0.25 * (p10 + p11 + f00 + f10);   // (2,1)
+        o[2] = 0.25 * (n10 + p11 + f00 + f01);   // (1,2)
+        o[10] = 0.25 * (p11 + p21 + f10 + f11);  // (3,2)
+        o[7] = 0.25 * (p11 + p12 + f01 + f11);   // (2,3)
+        o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11); // (2,2)
+      }
+      if (sec == 0u) {
+        // The centre: smooth (and dart), crease along axes ia, ib, or corner.
+        if (rule == 1u) {
+          cNew = 0.75 * c + 0.125 * (P[6u * (first + ia)] + P[6u * (first + ib)]);
+        } else if (rule == 0u) {
+          var s = vec3<f32>(0.0);
+          for (var j = 0u; j < n; j++) { s += P[6u * (first + j)] + F[4u * (first + j)]; }
+          let nf = f32(n);
+          cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
+        }
+      }
+    }
+    workgroupBarrier();
+    if (live) {
+      P[6u * lid] = o[0];
+      P[6u * lid + 1u] = o[4];
+      P[6u * lid + 2u] = o[1];
+      P[6u * lid + 3u] = o[5];
+      P[6u * lid + 4u] = o[2];
+      P[6u * lid + 5u] = o[6];
+      // Step k's slice: the 6 points carried on and the centre (the evaluator redoes the
+      // one local step for the other 6 of the 12, wgsl/surface-cc.wgsl ccStep).
+      let b = sliceBase + (k - 1u) * (6u * ns + 1u);
+      setPt(b + 6u * sec, o[0]);
+      setPt(b + 6u * sec + 1u, o[4]);
+      setPt(b + 6u * sec + 2u, o[1]);
+      setPt(b + 6u * sec + 3u, o[5]);
+      setPt(b + 6u * sec + 4u, o[2]);
+      setPt(b + 6u * sec + 5u, o[6]);
+      if (sec == 0u) {
+        C[lid] = cNew;
+        setPt(b + 6u * ns, cNew);
+      }
+    }
+    workgroupBarrier();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Limit position and tangents of each fan's centre (notes §2.1–2.3) from its last level: the
+// start-level ring when the fan has no slices, else its step-D slice (offsets from the anchor:
+// (1,0) and (1,1) of each sector are its slots 0 and 2, the centre follows the sectors).
+// Written at the fan's limit base: P (absolute), T1, T2 (normal = T1 × T2).
+
+fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> vec3<f32> {
+  // which: 0 → (1,0) of sector i, 1 → (1,1)
+  if (D == 0u) {
+    return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
+  }
+  return pt(fanWord(fan, 2u) + (D - 1u) * (6u * ns + 1u) + 6u * i + 2u * which);
+}
+
+@compute @workgroup_size(64)
+fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let fan = (wid.y * GRID_X + wid.x) * 64u + lid;
+  if (fan >= params.nFans) { return; }
+  let w0 = fanWord(fan, 0u);
+  let ns = w0 & 255u;
+  let n = (w0 >> 8u) & 255u;
+  let boundary = ((w0 >> 16u) & 1u) == 1u;
+  let rule = (w0 >> 17u) & 3u;
+  let D = (w0 >> 20u) & 15u;
+  let anchor = pt(fanWord(fan, 1u));
+  var c = vec3<f32>(0.0);
+  if (D > 0u) { c = pt(fanWord(fan, 2u) + (D - 1u) * (6u * ns + 1u) + 6u * ns); }
+  let pair = fanWord(fan, 6u);
+  let ia = pair & 255u;
+  let ib = pair >> 8u;
+  var P0 = c;
+  var T1 = vec3<f32>(0.0);
+  var T2 = vec3<f32>(0.0);
+  if (rule == 0u && !boundary) {
+    // Smooth (and dart): P = (n²c + 4Σe + Σd)/(n(n+5)); tangents with cos(iθ) from the CPU.
+    let cb = params.ccCos + fanWord(fan, 7u);
+    let inv = bitcast<f32>(staticBuf[cb + n]);
+    var se = vec3<f32>(0.0);
+    for (var i = 0u; i < n; i++) {
+      let e = ringPt(fan, D, ns, anchor, i, 0u);
+      let d = ringPt(fan, D, ns, anchor, i, 1u);
+      se += 4.0 * e + d;
+      let ci = bitcast<f32>(staticBuf[cb + i]);
+      let ci1 = bitcast<f32>(staticBuf[cb + (i + 1u) % n]);
+      let cim = bitcast<f32>(staticBuf[cb + (i + n - 1u) % n]);
+      T1 += 4.0 * ci * e + (ci + ci1) * inv * d;
+      T2 += 4.0 * cim * e + (cim + ci) * inv * d;
+    }
+    let nf = f32(n);
+    P0 = (nf * nf * c + se) / (nf * (nf + 5.0));
+  } else if (rule == 1u) {
+    // Crease: P = ⅔c + ⅙(e_a + e_b), T1 along the crease; T2 into the span ia..ib of faces
+    // (the exact mask for a span of 2 faces, a mean otherwise: only the blended square and the
+    // factor rule read it).
+    let ea = ringPt(fan, D, ns, anchor, ia, 0u);
+    let eb = ringPt(fan, D, ns, anchor, ib, 0u);
+    P0 = (2.0 / 3.0) * c + (1.0 / 6.0) * (ea + eb);
+    T1 = 0.5 * (ea - eb);
+    var s = vec3<f32>(0.0);
+    var w = 0.0;
+    for (var i = ia; i < ib; i++) {
+      s += ringPt(fan, D, ns, anchor, i, 1u);
+      w += 1.0;
+      if (i > ia) { s += 4.0 * ringPt(fan, D, ns, anchor, i, 0u); w += 4.0; }
+    }
+    T2 = s / max(w, 1.0) - P0;
+  } else {
+    // Corner (and a crease whose span wraps: treated as its face 0, rare): P = c.
+    T1 = ringPt(fan, D, ns, anchor, 0u, 0u) - c;
+    T2 = ringPt(fan, D, ns, anchor, select(1u, 0u, n == 1u), select(0u, 1u, n == 1u)) - c;
+    if (n > 1u || boundary) { T2 = ringPt(fan, D, ns, anchor, 1u, 0u) - c; }
+  }
+  let lb = fanWord(fan, 5u);
+  setPt(lb, anchor + P0);
+  setPt(lb + 1u, T1);
+  setPt(lb + 2u, T2);
 }
 
 // One thread per cage vertex: its limit position and normal, where the factor rule and the
 // flat baseline read them.
 @compute @workgroup_size(64)
-fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let v = (wid.y * GRID_X + wid.x) * 64u + lid;
   if (v >= params.nVerts) { return; }
-  let b = params.ccVertexLimits + 3u * v;
-  let p = ctrlRW(b);
-  let n = cross(ctrlRW(b + 1u), ctrlRW(b + 2u));
-  let l = length(n);
+  let fan = staticBuf[params.ccVertexFan + v];
+  var p = pt(v);
   var nn = vec3<f32>(cageBuf[params.offNormals + 3u * v], cageBuf[params.offNormals + 3u * v + 1u], cageBuf[params.offNormals + 3u * v + 2u]);
-  if (l > 0.0) { nn = n / l; }
+  if (fan != NONE) {
+    let lb = fanWord(fan, 5u);
+    p = pt(lb);
+    let nc = cross(pt(lb + 1u), pt(lb + 2u));
+    if (length(nc) > 0.0) { nn = normalize(nc); }
+  }
   let op = params.offFactorPos + 3u * v;
   let on = params.offFactorNormal + 3u * v;
   cageBuf[op] = p.x;

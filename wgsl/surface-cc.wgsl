@@ -1,19 +1,22 @@
 // The Catmull-Clark limit surface for the emit passes: evalSurface(t, wFixed) maps the cage
 // triangle's barycentric point to its face (quads: (u,v) of the 0–2 split; triangles and
 // n-gons: the kite sub-face k of the regular n-gon and its (s,t), as src/gpu/face-params.ts),
-// walks the face's quadtree (src/gpu/cc/build.ts) to a regular bicubic patch and evaluates
-// position and analytic normal. In the tiny region left round an irregular vertex it blends
-// radially from the vertex's limit to the nearest regular patch. src/gpu/cc/evaluate.ts is the
-// CPU twin. Optionally (params.ccFlat) blends from the flat triangle of the corners' limit
-// positions to the surface as the tess factor rises from 1 to 4.
+// then to its region (src/gpu/cc/build.ts: region (i, j) of the face's 2^d × 2^d split):
+//   PATCH  a regular bicubic B-spline patch over 16 refined points, phantom rows/columns for
+//          boundaries and infinitely sharp edges (notes §3.3), position and analytic normal;
+//   SECTOR a sector of an extraordinary vertex's fan: after L = ceil(log2(1/max(a,b))) steps
+//          the point lies on one of the regular sub-patches A, B, C of the fan's slice at step
+//          L (notes §6.2); inside the last square (2^-7 of the face) a radial blend from the
+//          vertex's limit to the exact ring round it (notes §6.3).
+// Optionally (params.ccFlat) blends from the flat triangle of the corners' limit positions to
+// the surface as the tess factor rises from 1 to 4.
 
-const CC_NO_NODE: u32 = 0xffffffffu;
+const CC_NONE: u32 = 0xffffffffu;
 
-fn ccCtrl(i: u32) -> vec3<f32> {
-  let o = params.offCtrl + 3u * i;
+fn ccP(p: u32) -> vec3<f32> {
+  let o = select(params.offCtrl + 3u * (p - params.nVerts), 3u * p, p < params.nVerts);
   return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
 }
-fn ccNode(n: u32, i: u32) -> u32 { return staticBuf[params.ccNodes + 4u * n + i]; }
 
 fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
   let s = 1.0 - t;
@@ -24,10 +27,14 @@ fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
   return array<vec4<f32>, 2>(b, d);
 }
 
-// Bicubic B-spline patch (16 points row-major from `base`, row ~ y): separable, rows in x
-// first, then one cubic in y. Point 5 is absolute, the others are offsets from it (f32
-// precision of small deep patches, src/gpu/cc/build.ts ANCHOR).
-fn ccPatch(base: u32, x: f32, y: f32) -> SurfacePoint {
+// Bicubic B-spline patch of 16 points (row-major, row ~ y), all relative to point 5 (the
+// corner (0,0): f32 precision of small patches), phantom mask bit j = side j (0: row 0, 1:
+// column 3, 2: row 3, 3: column 0) reflected (notes §3.3: rows first, then columns).
+fn ccBicubic(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+  if ((mask & 1u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[c] = 2.0 * (*cp)[4u + c] - (*cp)[8u + c]; } }
+  if ((mask & 4u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[12u + c] = 2.0 * (*cp)[8u + c] - (*cp)[4u + c]; } }
+  if ((mask & 8u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r] = 2.0 * (*cp)[4u * r + 1u] - (*cp)[4u * r + 2u]; } }
+  if ((mask & 2u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r + 3u] = 2.0 * (*cp)[4u * r + 2u] - (*cp)[4u * r + 1u]; } }
   let bx = ccBasis(x);
   let by = ccBasis(y);
   var p = vec3<f32>(0.0);
@@ -37,8 +44,7 @@ fn ccPatch(base: u32, x: f32, y: f32) -> SurfacePoint {
     var row = vec3<f32>(0.0);
     var rowd = vec3<f32>(0.0);
     for (var c = 0u; c < 4u; c++) {
-      let i = 4u * r + c;
-      let q = select(ccCtrl(base + i), vec3<f32>(0.0), i == 5u);
+      let q = (*cp)[4u * r + c];
       row += bx[0][c] * q;
       rowd += bx[1][c] * q;
     }
@@ -46,63 +52,208 @@ fn ccPatch(base: u32, x: f32, y: f32) -> SurfacePoint {
     pu += by[0][r] * rowd;
     pv += by[1][r] * row;
   }
+  return array<vec3<f32>, 3>(p, pu, pv);
+}
+
+fn ccNormal(pu: vec3<f32>, pv: vec3<f32>) -> vec3<f32> {
   let n = cross(pu, pv);
   let l = length(n);
-  return SurfacePoint(ccCtrl(base + 5u) + p, select(vec3<f32>(0.0, 0.0, 1.0), n / l, l > 0.0));
+  return select(vec3<f32>(0.0, 0.0, 1.0), n / l, l > 0.0);
 }
 
-struct CCLeaf { node: u32, x: f32, y: f32 }
-
-fn ccDescend(root: u32, x0: f32, y0: f32) -> CCLeaf {
-  var n = root;
-  var x = x0;
-  var y = y0;
-  for (var guard = 0u; guard < 40u; guard++) {
-    if ((ccNode(n, 0u) & 3u) != 0u) { break; }
-    let i = select(0u, 1u, x >= 0.5);
-    let j = select(0u, 1u, y >= 0.5);
-    x = 2.0 * x - f32(i);
-    y = 2.0 * y - f32(j);
-    n = ccNode(n, 1u) + i + 2u * j;
+// rot_r of the unit square (build.ts rot): rot_1(x, y) = (y, 1 − x).
+fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
+  switch (r) {
+    case 1u: { return vec2<f32>(y, 1.0 - x); }
+    case 2u: { return vec2<f32>(1.0 - x, 1.0 - y); }
+    case 3u: { return vec2<f32>(1.0 - y, x); }
+    default: { return vec2<f32>(x, y); }
   }
-  return CCLeaf(n, x, y);
 }
 
-fn ccEvalRoot(root: u32, x0: f32, y0: f32) -> SurfacePoint {
-  let leaf = ccDescend(root, x0, y0);
-  let w0 = ccNode(leaf.node, 0u);
-  if ((w0 & 3u) == 1u) { return ccPatch(ccNode(leaf.node, 1u), leaf.x, leaf.y); }
-  // Blended leaf round an irregular vertex.
-  let lim = ccNode(leaf.node, 1u);
-  let p0 = ccCtrl(lim);
-  let nc = cross(ccCtrl(lim + 1u), ccCtrl(lim + 2u));
-  let n0 = select(vec3<f32>(0.0, 0.0, 1.0), normalize(nc), length(nc) > 0.0);
-  let rc = (w0 >> 2u) & 3u;
-  let alpha = f32(w0 >> 8u) / 4096.0;
-  let cx = select(0.0, 1.0, rc == 1u || rc == 2u);
-  let cy = select(0.0, 1.0, rc >= 2u);
-  let a = abs(leaf.x - cx);
-  let b = abs(leaf.y - cy);
+fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
+  var cp: array<vec3<f32>, 16>;
+  let b = params.ccPatchIdx + 16u * base;
+  let anchor = ccP(staticBuf[b + 5u]);
+  for (var i = 0u; i < 16u; i++) { cp[i] = ccP(staticBuf[b + i]) - anchor; }
+  let e = ccBicubic(&cp, (w0 >> 4u) & 15u, x, y);
+  return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
+}
+
+// The fans' slices (src/gpu/cc/build.ts, wgsl/cc-build.wgsl) hold per step k = 1..D only the
+// 6 points each sector carries into the next step, (a, b) ∈ {1,2} × {0,1,2}, and the centre,
+// as offsets from the fan's anchor; step 0 is the start level, read through the sector table.
+// The evaluator redoes the one local step from step L−1 to get the 12 points of each sector
+// it needs at step L (ccStep: the slice kernel's own masks), and from them the 16 points of
+// the regular sub-patch A, B or C holding the point (notes §6.2).
+struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32> }
+
+fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
+
+// Sector j + d: wrapping round an interior fan; on a boundary fan clamped to 0..n (n: the
+// pseudo-sector of the last axis), where the points read are discarded by the phantom rule.
+fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
+  let m = i32(j) + d;
+  if (f.boundary) { return u32(clamp(m, 0, i32(f.n))); }
+  let n = i32(f.n);
+  return u32(((m % n) + n) % n);
+}
+
+fn ccCore(f: CCFan, j: u32, k: u32, p: u32) -> vec3<f32> {
+  if (k == 0u) { return ccP(staticBuf[f.sectors + 7u * j + 1u + p]) - f.anchor; }
+  return ccP(f.base + (k - 1u) * (6u * f.ns + 1u) + 6u * j + p);
+}
+fn ccCentre(f: CCFan, k: u32) -> vec3<f32> {
+  if (k == 0u) { return vec3<f32>(0.0); }
+  return ccP(f.base + (k - 1u) * (6u * f.ns + 1u) + 6u * f.ns);
+}
+
+// The 12 points (a, b), a ∈ 1..3, b ∈ 0..3 (index 4(a−1) + b) of sector j after step L: the
+// slice kernel's masks, on step L−1's points of sectors j−1, j, j+1.
+fn ccStep(f: CCFan, j: u32, L: u32) -> array<vec3<f32>, 12> {
+  let k = L - 1u;
+  let c = ccCentre(f, k);
+  let pseudo = f.boundary && j == f.n;
+  var nx = ccNb(f, j, 1);
+  var pv = ccNb(f, j, -1);
+  if (pseudo) { nx = j; }
+  let p10 = ccCore(f, j, k, 0u);
+  let p20 = ccCore(f, j, k, 1u);
+  let p11 = ccCore(f, j, k, 2u);
+  let p21 = ccCore(f, j, k, 3u);
+  let p12 = ccCore(f, j, k, 4u);
+  let p22 = ccCore(f, j, k, 5u);
+  let n10 = ccCore(f, nx, k, 0u);
+  let n20 = ccCore(f, nx, k, 1u);
+  let q10 = ccCore(f, pv, k, 0u);
+  let q11 = ccCore(f, pv, k, 2u);
+  let q12 = ccCore(f, pv, k, 4u);
+  let inf = staticBuf[f.sectors + 7u * j] == 1u;
+  let f00 = 0.25 * (c + p10 + p11 + n10);
+  let f10 = 0.25 * (p10 + p20 + p21 + p11);
+  let f01 = 0.25 * (n10 + p11 + p12 + n20);
+  let f11 = 0.25 * (p11 + p21 + p22 + p12);
+  let g00 = 0.25 * (c + q10 + q11 + p10);
+  let g01 = 0.25 * (p10 + q11 + q12 + p20);
+  var o: array<vec3<f32>, 12>;
+  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
+  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
+  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+  if (!pseudo) {
+    o[1] = f00;
+    o[9] = f10;
+    o[3] = f01;
+    o[11] = f11;
+    o[5] = 0.25 * (p10 + p11 + f00 + f10);
+    o[2] = 0.25 * (n10 + p11 + f00 + f01);
+    o[10] = 0.25 * (p11 + p21 + f10 + f11);
+    o[7] = 0.25 * (p11 + p12 + f01 + f11);
+    o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11);
+  }
+  return o;
+}
+
+// Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step L,
+// at local (x, y); offsets from the anchor. Grid point (a, b), a, b ∈ −1..3: own a ≥ 1;
+// (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
+// (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
+fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+  let own = ccStep(f, i, L);
+  let nxt = ccStep(f, ccNb(f, i, 1), L);
+  var prv: array<vec3<f32>, 12>;
+  if (which == 0u) { prv = ccStep(f, ccNb(f, i, -1), L); }
+  var n2 = vec3<f32>(0.0);
+  if (which == 2u) { n2 = ccStep(f, ccNb(f, i, 2), L)[0]; }
+  let cL = ccCentre(f, L);
+  var cp: array<vec3<f32>, 16>;
+  let da = select(0, -1, which == 2u);
+  let db = select(0, -1, which == 0u);
+  for (var r = 0; r < 4; r++) {
+    for (var c = 0; c < 4; c++) {
+      let a = c + da;
+      let b = r + db;
+      var q: vec3<f32>;
+      if (a == 0 && b == 0) {
+        q = cL;
+      } else if (a == -1 && b == 0) {
+        q = n2;
+      } else if (b < 0) {
+        q = prv[u32(a)];
+      } else if (a <= 0) {
+        q = nxt[4u * u32(b - 1) + u32(-a)];
+      } else {
+        q = own[4u * u32(a - 1) + u32(b)];
+      }
+      cp[4 * r + c] = q;
+    }
+  }
+  // Phantoms: A's bottom on axis i, C's left on axis i+1, when infinitely sharp.
+  var mask = 0u;
+  if (which == 0u && staticBuf[f.sectors + 7u * i] == 1u) { mask = 1u; }
+  if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, i, 1)] == 1u) { mask = 8u; }
+  // Anchor the sum at the patch's corner (0,0) too.
+  let o = cp[5];
+  for (var j = 0u; j < 16u; j++) { cp[j] -= o; }
+  var e = ccBicubic(&cp, mask, x, y);
+  e[0] += o;
+  return e;
+}
+
+fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
+  let sec = (w0 >> 12u) & 63u;
+  let off = (w0 >> 8u) & 15u;
+  let ab = ccRot((w0 >> 2u) & 3u, x, y) * exp2(-f32(off));
+  let fw = ccFanWord(fan, 0u);
+  let anchor = ccP(ccFanWord(fan, 1u));
+  let f = CCFan(fw & 255u, (fw >> 8u) & 255u, ((fw >> 16u) & 1u) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor);
+  let D = (fw >> 20u) & 15u;
+  let lb = ccFanWord(fan, 5u);
+  let m = max(ab.x, ab.y);
+  // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).
+  var L = 1u;
+  while (L < D && m * exp2(f32(L)) < 1.0) { L++; }
+  var a = ab.x * exp2(f32(L));
+  var b = ab.y * exp2(f32(L));
   let t = max(a, b);
-  if (t <= 0.0) { return SurfacePoint(p0, n0); }
-  var sib: u32;
-  var sx: f32;
-  var sy: f32;
-  if (a >= b) {
-    sib = ccNode(leaf.node, 2u);
-    sx = cx;
-    sy = select(1.0 - b / t, b / t, cy == 0.0);
-  } else {
-    sib = ccNode(leaf.node, 3u);
-    sy = cy;
-    sx = select(1.0 - a / t, a / t, cx == 0.0);
+  var blend = 1.0;
+  if (t < 1.0) {
+    // Inside the last square: the exact ring point on the ray, then the radial blend.
+    if (t <= 0.0) {
+      return SurfacePoint(ccP(lb), ccNormal(ccP(lb + 1u), ccP(lb + 2u)));
+    }
+    blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
+    if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
   }
-  if (sib == CC_NO_NODE) { return SurfacePoint(p0, n0); }
-  let s = ccDescend(sib, sx, sy);
-  if ((ccNode(s.node, 0u) & 3u) != 1u) { return SurfacePoint(p0, n0); }
-  let q = ccPatch(ccNode(s.node, 1u), s.x, s.y);
-  let f = pow(t, alpha);
-  return SurfacePoint(p0 + f * (q.pos - p0), normalize(mix(n0, q.normal, f)));
+  var e: array<vec3<f32>, 3>;
+  if (a >= 1.0 && b < 1.0) {
+    e = ccSubPatch(f, sec, L, 0u, a - 1.0, b);
+  } else if (a >= 1.0) {
+    e = ccSubPatch(f, sec, L, 1u, a - 1.0, b - 1.0);
+  } else {
+    e = ccSubPatch(f, sec, L, 2u, a, b - 1.0);
+  }
+  let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
+  if (blend >= 1.0) { return q; }
+  let p0 = ccP(lb);
+  let n0 = ccNormal(ccP(lb + 1u), ccP(lb + 2u));
+  return SurfacePoint(p0 + blend * (q.pos - p0), normalize(mix(n0, q.normal, blend)));
+}
+
+fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
+  let side = 1u << dd;
+  let fs = f32(side);
+  let i = min(u32(floor(x0 * fs)), side - 1u);
+  let j = min(u32(floor(y0 * fs)), side - 1u);
+  let reg = first + k * side * side + j * side + i;
+  let w0 = staticBuf[params.ccRegions + 2u * reg];
+  let w1 = staticBuf[params.ccRegions + 2u * reg + 1u];
+  let x = x0 * fs - f32(i);
+  let y = y0 * fs - f32(j);
+  if ((w0 & 3u) == 1u) {
+    let l = ccRot((w0 >> 2u) & 3u, x, y);
+    return ccRegularPatch(w0, w1, l.x, l.y);
+  }
+  return ccSector(w0, w1, x, y);
 }
 
 // Corner k of the regular n-gon whose table starts at `poly` (computed on the CPU in f64).
@@ -141,25 +292,23 @@ fn ccNgonParam(poly: u32, n: u32, fan: u32, w: vec3<f32>) -> vec3<f32> {
   return vec3<f32>(f32(k), clamp(s, 0.0, 1.0), clamp(t, 0.0, 1.0));
 }
 
-// The cage vertices' limit positions and normals (cc-build.wgsl writes them where the factor
-// rule reads: factorPos / factorNormal).
-
 fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
-  let root = staticBuf[params.ccTri + 3u * t];
+  let first = staticBuf[params.ccTri + 3u * t];
   let info = staticBuf[params.ccTri + 3u * t + 1u];
   let n = info & 255u;
-  let fan = info >> 8u;
+  let fan = (info >> 8u) & 0xfffffu;
+  let dd = info >> 28u;
   var sp: SurfacePoint;
   if (n == 4u) {
     if (fan == 1u) {
-      sp = ccEvalRoot(root, w.y + w.z, w.z);
+      sp = ccEvalRegion(first, dd, 0u, w.y + w.z, w.z);
     } else {
-      sp = ccEvalRoot(root, w.y, w.y + w.z);
+      sp = ccEvalRegion(first, dd, 0u, w.y, w.y + w.z);
     }
   } else {
     let kst = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, w);
-    sp = ccEvalRoot(root + u32(kst.x), kst.y, kst.z);
+    sp = ccEvalRegion(first, dd, u32(kst.x), kst.y, kst.z);
   }
   if (params.ccFlat == 0u) { return sp; }
   // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a

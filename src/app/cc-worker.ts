@@ -1,6 +1,8 @@
 /**
- * A Web Worker that builds the Catmull-Clark tables of a cage (src/gpu/cc/build.ts: seconds on
- * some models) off the page's thread, and hands the typed arrays back without copying them.
+ * A Web Worker that builds the Catmull-Clark data of a cage (src/gpu/cc/build.ts: topology only
+ * now, tens of ms on most models, ~0.5 s on an 9k-triangle cage) off the page's thread, and hands
+ * the typed arrays back without copying them. (Cheap enough for the page's thread now; whether
+ * to keep the worker is the demo's call.)
  *
  *   in:  { id, cage }                       (a Cage: plain data, structured-cloned)
  *   out: { id, ok: true, data, ms } | { id, ok: false, message }

@@ -17,8 +17,9 @@
  * so every output element costs the same whatever the factors (wgsl/tess-pattern.wgsl holds the
  * pattern reading shared by count, plan and emit).
  * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
- *   subdivision  control points from the cage positions (stencils), then the cage vertices'
- *                limit positions and normals for the factor rule           wgsl/cc-build.wgsl
+ *   subdivision  refined points level by level (rule per point), the slices round
+ *                extraordinary vertices (workgroup memory), their limits, and the cage
+ *                vertices' limit positions and normals for the factor rule  wgsl/cc-build.wgsl
  * Attempts after the accepted one are no-ops on the GPU (they test a flag), so no readback is
  * ever needed.
  */
@@ -57,9 +58,11 @@ export const PARAMS = defineStruct('Params', [
   ['eye', 'vec4<f32>'],
   // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
   ['offFactorPos', 'u32'], ['offFactorNormal', 'u32'],
-  // Catmull-Clark tables (src/gpu/cc/build.ts): staticBuf word offsets, control points in cageBuf.
-  ['ccTri', 'u32'], ['ccPoly', 'u32'], ['ccNodes', 'u32'], ['ccRows', 'u32'], ['ccEntries', 'u32'],
-  ['nCtrl', 'u32'], ['ccVertexLimits', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
+  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables; offCtrl: cageBuf
+  // offset of the refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts)).
+  ['ccTri', 'u32'], ['ccPoly', 'u32'], ['ccRegions', 'u32'], ['ccPatchIdx', 'u32'], ['ccFans', 'u32'],
+  ['ccSectors', 'u32'], ['ccThreads', 'u32'], ['ccCos', 'u32'], ['ccRules', 'u32'], ['ccInputs', 'u32'],
+  ['ccVertexFan', 'u32'], ['nFans', 'u32'], ['ccSliceGroups', 'u32'], ['ccMaxDepth', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
 ] as const);
 
 const SCAN_PARAMS = defineStruct('ScanParams', [['inOff', 'u32'], ['outOff', 'u32'], ['n', 'u32'], ['sumsOff', 'u32'], ['skipOff', 'u32']] as const);
@@ -103,7 +106,7 @@ function workLayout(nE: number, nT: number, maxFactor: number): WorkLayout {
   };
 }
 
-type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'plan' | 'emitVertices' | 'emitTriangles' | 'ccPoints' | 'ccLimits';
+type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'plan' | 'emitVertices' | 'emitTriangles' | 'ccPoints' | 'ccSlices' | 'ccLimits' | 'ccVertexLimits';
 /** Bindings each pass uses (its pipeline layout is derived from the WGSL: 'auto'). */
 const PASS_BINDINGS: Record<PassName, number[]> = {
   factors: [0, 1, 2, 3],
@@ -114,8 +117,11 @@ const PASS_BINDINGS: Record<PassName, number[]> = {
   plan: [0, 1, 3],
   emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
   emitTriangles: [0, 1, 3, 8],
-  ccPoints: [0, 1, 2],
-  ccLimits: [0, 2],
+  // ccPoints: its binding 3 is a per-dispatch range (one bind group per level range, setMesh).
+  ccPoints: [],
+  ccSlices: [0, 1, 2],
+  ccLimits: [0, 1, 2],
+  ccVertexLimits: [0, 1, 2],
 };
 
 export interface TessellatorOptions {
@@ -157,6 +163,7 @@ export class Tessellator {
     groups: Record<PassName, GPUBindGroup>;
     scans: { group: GPUBindGroup; n: number }[];
     cc?: CatmullClarkData;
+    ccRanges: { group: GPUBindGroup; count: number }[];
   };
   private readonly timing?: {
     set: GPUQuerySet; resolve: GPUBuffer; read: GPUBuffer; pending: boolean; stages: string[];
@@ -212,8 +219,10 @@ export class Tessellator {
     this.pipelines.emitTriangles = pipeline('tess emit triangles', emit, 'triangles');
     if (cc) {
       const build = device.createShaderModule({ label: 'cc patch build', code: [PARAMS.wgsl, ccBuildWgsl].join('\n') });
-      this.pipelines.ccPoints = pipeline('cc control points', build, 'points');
-      this.pipelines.ccLimits = pipeline('cc vertex limits', build, 'limits');
+      this.pipelines.ccPoints = pipeline('cc level points', build, 'points');
+      this.pipelines.ccSlices = pipeline('cc ev slices', build, 'slices');
+      this.pipelines.ccLimits = pipeline('cc fan limits', build, 'limits');
+      this.pipelines.ccVertexLimits = pipeline('cc vertex limits', build, 'vlimits');
     }
     // The three scan steps share one bind group, so they share an explicit layout.
     this.scanLayout = device.createBindGroupLayout({
@@ -275,9 +284,10 @@ export class Tessellator {
     device.queue.writeBuffer(staticBuf, 0, staticWords);
 
     const nV = prepared.vertexCount;
-    // Catmull-Clark: control points, then limit positions and normals of the cage vertices.
+    // Catmull-Clark: refined points (levels, slices, fan limits), then limit positions and
+    // normals of the cage vertices.
     const offCtrl = 6 * nV;
-    const offLimits = offCtrl + 3 * (cc?.ctrlCount ?? 0);
+    const offLimits = offCtrl + 3 * (cc?.pointCount ?? 0);
     const cageWords = new Float32Array(cc ? offLimits + 6 * nV : 6 * nV);
     cageWords.set(prepared.positions, 0);
     cageWords.set(prepared.normals, 3 * prepared.vertexCount);
@@ -300,8 +310,11 @@ export class Tessellator {
       offTriRowCount: layout.triRowCount, offTriRowBase: layout.triRowBase, offRows: layout.rows,
       offBudget: layout.budget, vertexCapacity: this.output.vertexCapacity, triangleCapacity: this.output.triangleCapacity,
       offFactorPos: cc ? offLimits : 0, offFactorNormal: cc ? offLimits + 3 * nV : 3 * nV,
-      ccTri: ccBase + (cc?.offTri ?? 0), ccPoly: ccBase + (cc?.offPoly ?? 0), ccNodes: ccBase + (cc?.offNodes ?? 0), ccRows: ccBase + (cc?.offRows ?? 0),
-      ccEntries: ccBase + (cc?.offEntries ?? 0), nCtrl: cc?.ctrlCount ?? 0, ccVertexLimits: cc?.vertexLimitBase ?? 0, offCtrl,
+      ccTri: ccBase + (cc?.offTri ?? 0), ccPoly: ccBase + (cc?.offPoly ?? 0), ccRegions: ccBase + (cc?.offRegions ?? 0),
+      ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0), ccFans: ccBase + (cc?.offFans ?? 0), ccSectors: ccBase + (cc?.offSectors ?? 0),
+      ccThreads: ccBase + (cc?.offThreads ?? 0), ccCos: ccBase + (cc?.offCos ?? 0), ccRules: ccBase + (cc?.offRules ?? 0),
+      ccInputs: ccBase + (cc?.offInputs ?? 0), ccVertexFan: ccBase + (cc?.offVertexFan ?? 0), nFans: cc?.fanCount ?? 0,
+      ccSliceGroups: cc?.sliceWorkgroups ?? 0, ccMaxDepth: cc?.maxDepth ?? 0, offCtrl,
     });
 
     const resources: Record<number, GPUBindingResource> = {
@@ -320,7 +333,7 @@ export class Tessellator {
     };
     const groups = {} as Record<PassName, GPUBindGroup>;
     for (const name of Object.keys(PASS_BINDINGS) as PassName[]) {
-      if (!this.pipelines[name]) continue;
+      if (!this.pipelines[name] || !PASS_BINDINGS[name].length) continue;
       groups[name] = device.createBindGroup({
         label: `tess ${name}`,
         layout: this.pipelines[name].getBindGroupLayout(0),
@@ -347,8 +360,27 @@ export class Tessellator {
       });
       return { group, n: s.n, uniform };
     });
-    this.mesh = { prepared, staticBuf, cageBuf, work, layout, groups, scans: scans.map(({ group, n }) => ({ group, n })), cc };
-    this.scanUniforms = scans.map((s) => s.uniform);
+    // Catmull-Clark level dispatches: per level, its face points, then its edge and vertex
+    // points (which read the new face points); each with its range in a small uniform.
+    const ccRanges: { group: GPUBindGroup; count: number }[] = [];
+    const rangeUniforms: GPUBuffer[] = [];
+    for (const [ff, fc, vf, vc] of cc?.levelRanges ?? []) {
+      for (const [first, count] of [[ff, fc], [vf, vc]]) {
+        const u = device.createBuffer({ label: 'cc level range', size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+        device.queue.writeBuffer(u, 0, Uint32Array.of(first, count, 0, 0));
+        rangeUniforms.push(u);
+        ccRanges.push({
+          count,
+          group: device.createBindGroup({
+            label: 'cc level points',
+            layout: this.pipelines.ccPoints.getBindGroupLayout(0),
+            entries: [resources[0], resources[1], resources[2]].map((resource, binding) => ({ binding, resource })).concat([{ binding: 3, resource: { buffer: u } }]),
+          }),
+        });
+      }
+    }
+    this.mesh = { prepared, staticBuf, cageBuf, work, layout, groups, scans: scans.map(({ group, n }) => ({ group, n })), cc, ccRanges };
+    this.scanUniforms = [...scans.map((s) => s.uniform), ...rangeUniforms];
   }
 
   private scanUniforms: GPUBuffer[] = [];
@@ -483,11 +515,24 @@ export class Tessellator {
 
   private recordPatchBuild(cp: GPUComputePassEncoder, m: NonNullable<Tessellator['mesh']>): void {
     const cc = m.cc!;
-    cp.setBindGroup(0, m.groups.ccPoints);
     cp.setPipeline(this.pipelines.ccPoints);
-    cp.dispatchWorkgroups(...grid2d(Math.ceil(cc.ctrlCount / 64)));
-    cp.setBindGroup(0, m.groups.ccLimits);
-    cp.setPipeline(this.pipelines.ccLimits);
+    for (const r of m.ccRanges) {
+      if (!r.count) continue;
+      cp.setBindGroup(0, r.group);
+      cp.dispatchWorkgroups(...grid2d(Math.ceil(r.count / 64)));
+    }
+    if (cc.sliceWorkgroups) {
+      cp.setBindGroup(0, m.groups.ccSlices);
+      cp.setPipeline(this.pipelines.ccSlices);
+      cp.dispatchWorkgroups(...grid2d(cc.sliceWorkgroups));
+    }
+    if (cc.fanCount) {
+      cp.setBindGroup(0, m.groups.ccLimits);
+      cp.setPipeline(this.pipelines.ccLimits);
+      cp.dispatchWorkgroups(...grid2d(Math.ceil(cc.fanCount / 64)));
+    }
+    cp.setBindGroup(0, m.groups.ccVertexLimits);
+    cp.setPipeline(this.pipelines.ccVertexLimits);
     cp.dispatchWorkgroups(...grid2d(Math.ceil(m.prepared.vertexCount / 64)));
   }
 

@@ -1,58 +1,85 @@
 /**
- * Catmull-Clark for the compute tessellator: the CPU half, done once per topology.
+ * Catmull-Clark for the compute tessellator: the CPU half, TOPOLOGY ONLY (Hable's Part 3). No
+ * positions, no weights, no per-face matrices: what is prepared here is which points exist, by
+ * which rule each is made, and which points each piece of surface reads. Linear in the cage.
+ * The GPU (wgsl/cc-build.wgsl) makes every point from the current cage every frame; the emit
+ * passes evaluate (wgsl/surface-cc.wgsl).
  *
- * Every cage face (every sub-face k of a face with n ≠ 4 corners) is the root of a small
- * feature-adaptive quadtree, built by the exact CPU reference's local refinement (src/subdiv):
- *   - a node whose face is a regular B-spline patch (src/subdiv/bspline.ts isRegularFace, with
- *     phantom rows/columns for boundaries and infinitely sharp creases) is a PATCH leaf: 16
- *     control points;
- *   - otherwise the node's 1-ring is refined once and it gets 4 children (semi-sharp creases
- *     decay this way, extraordinary vertices shrink to one corner: 3 regular children per level,
- *     the talk's "slices");
- *   - at depth MAX_DEPTH a node still touching an irregular vertex is an UNRESOLVED leaf: the
- *     vertex's exact limit position and tangents (limit masks), blended radially with the
- *     neighbouring regular patches (notes §6.3).
- * Regular quads are 1 region; quads at an extraordinary vertex 4 regions at level 1 and then
- * one irregular corner per level; triangles and n-gons start at their sub-faces (level 1).
+ * 1. Levels. Uniform refinement topology of the whole cage, levels 1..G, G as small as the
+ *    cage allows (0 for an all-regular quad cage, 1 with extraordinary vertices, 2 with
+ *    triangles or n-gons, more only where semi-sharp creases need to decay: see below). Level
+ *    L+1 numbers its points [vertex points | edge points | face points] of level L (a vertex
+ *    keeps its index at every deeper level); child face j of face f is half-edge
+ *    faceOffsets[f]+j, [V(c_j), E(c_j c_j+1), F, E(c_j-1 c_j)]. Sharpness decays by notes §1.4.
+ *    Each new point carries a RULE (4 words) and its inputs (point indices): face point (N
+ *    corners), edge point (ends + the two new face points; sharpness s: smooth, crease, blend),
+ *    vertex point (v, far ends of its edges, its new face points; parent rule, child rule,
+ *    transitional weight W in f32 as OpenSubdiv computes it, and the two crease edges).
+ * 2. Fans. A vertex x of level s is a fan centre ("eligible") when every point of its 2-ring
+ *    other than x obeys the regular valence-4 masks: its faces are quads, its incident edges
+ *    and its own sharpness are 0 or infinite, each neighbour (1,0) is a valence-4 vertex
+ *    whose only sharp edges are the two halves of the axis (or a valence-3 boundary vertex on
+ *    a boundary axis) and each diagonal (1,1) is a smooth interior valence-4 vertex. Then
+ *    (notes §6.2) one refinement step of the fan reads only the axis sharpness and the
+ *    centre's rule: every other point touched is a face point, an edge point of an edge made
+ *    inside a face (sharpness 0), or the vertex point of (1,0) / (1,1) above; and after one
+ *    step the new (1,0), (1,1) are again of that kind. So the slice kernel is exact at every
+ *    depth for boundaries, infinitely sharp creases into the EV, darts and corners alike.
+ *    Semi-sharp values never reach a fan: a vertex is eligible only once they have decayed,
+ *    which the uniform levels do (exactly, with OpenSubdiv's transitions). [The issue's single-
+ *    crease change of basis (notes §3.4) would let semi-sharp faces stop at level 0/1; it was
+ *    being written in parallel and is not used yet: creased faces refine until their
+ *    sharpness has decayed, ceil(σ) levels.]
+ * 3. Regions. Face f is split to the smallest depth d at which each of its level-d descendants
+ *    is a regular patch (isRegularVertex at its 4 corners: smooth, boundary, infinitely sharp
+ *    phantoms) or has an eligible fan centre at a corner (an EV SECTOR region; its fan may
+ *    start at a coarser level s ≤ d: offset d − s). d = 0 for regular quads (1 region), 1 for
+ *    quads at an EV (4), 2 where triangles are involved (16 per quad, 12 per triangle), as in
+ *    the talk's table, and deeper only under semi-sharp creases.
  *
- * Control points are not stored as positions but as STENCILS over the cage vertices (weights
- * found by running the reference's own refinement on unit coordinate vectors: subdivision is
- * linear), so the GPU patch-build pass recomputes every control point from the current cage
- * positions every frame (animated cages) with one weighted sum per point. Every patch is
- * re-oriented into its root face's (u,v) frame, so the GPU descent is a plain quadtree walk.
+ * Limits (honest): semi-sharp sharpness decays by UNIFORM levels of the whole cage, ceil(σ) of
+ * them (sharpness ≥ 7 needs more than MAX_LEVEL = 6 and is refused with a message, as are
+ * vertices of valence > 64, more than a workgroup, and Chaikin creasing). On the project's and
+ * the talk's models that is at most 3 levels; OpenSubdiv's regression cages with long σ ≈ 5
+ * crease loops (catmark_bishop, _car, _pawn) cost hundreds of KB per face. The fix is the
+ * issue's design proper: semi-sharp axes decaying inside the slice kernel and single-crease
+ * regions through the change of basis.
  *
- * Data for the GPU (u32 words, appended to the tessellator's static buffer):
- *   tri      3 words per prepared triangle: root node of the face (of sub-face 0 for n ≠ 4),
- *            n | fan index k << 8 (the triangle is (c0, c_k, c_{k+1}) of its face), and for
- *            n ≠ 4 the first corner of the regular n-gon in `poly`
- *   poly     corners (cos, sin as f32 bits) of the regular n-gons, computed here in f64 (WGSL's
- *            sin, cos and atan2 are far too coarse on some GPUs: 2^-11 absolute in Vulkan)
- *   nodes    4 words each:
- *            INTERNAL  [0, first child (4 consecutive, quadrant i + 2j), 0, 0]
- *            PATCH     [1 | kind << 4, first control point (16, row-major, row ~ v), 0, 0]
- *            UNRESOLVED[2 | corner << 2 | kind << 4 | round(α·4096) << 8, limit point (P, lead,
- *                       trail), sibling across x, sibling across y]
- *   rows     nCtrl + 1 offsets into entries
- *   entries  (cage vertex, f32 weight bits) pairs
- * Control points: patches, then unresolved limits, then (P, lead, trail) of every cage vertex
- * (the limit position and normal the factor rule and the flat baseline use).
+ * GPU point space (f32 xyz in cageBuf; index p < nVerts: the cage positions; p ≥ nVerts at
+ * offPoints + 3(p − nVerts)):
+ *   [cage | level 1 | … | level G | fan slices | fan limits]
+ *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary): for step k = 1..D,
+ *     the 6 points each sector carries into the next step, (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+ *     at slot 6i + 0..5, then the centre (slot 6·ns); all as OFFSETS from the fan's anchor (its
+ *     centre at level s: f32 precision of deep levels, notes §6.7). The other 6 of a step's 12
+ *     (a = 3 or b = 3) are redone by the evaluator from the previous step (one local step, as
+ *     the slice kernel does it): half the memory. Then the limits: P (absolute), T1, T2.
+ *
+ * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
+ *   tri      3 per prepared triangle: first region of the face, n | fan k << 8 | depth << 28
+ *            (depth counted inside the quad or inside the sub-face), first corner in `poly`
+ *   poly     regular n-gon corners (cos, sin as f32 bits, f64 on the CPU)
+ *   regions  2 per region, region (i, j) of sub-face k at base + k·4^dd + j·2^dd + i:
+ *            w0 = kind (1 patch, 2 sector) | rot << 2 | phantom mask << 4 | offset << 8 |
+ *                 sector << 12 | patch kind << 24;  w1 = first of 16 indices in `patchIdx`
+ *                 (patch, row-major, row ~ y of the region's own frame) or fan id (sector).
+ *            rot r: the region's frame is rot_r of the root square, rot_1(x,y) = (y, 1−x).
+ *   patchIdx 16 point indices per patch
+ *   fans     8 per fan: ns | n << 8 | boundary << 16 | rule << 17 | D << 20; anchor;
+ *            slice base; sector base; alpha (f32); limit base; ia | ib << 8; cos base
+ *   sectors  7 per sector (ns per fan): axis-infinite flag, (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+ *            at level s; the boundary pseudo-sector (axis n) has only (1,0), (2,0)
+ *   threads  64 per slice workgroup: fan | sector << 24, or ~0 (idle)
+ *   cos      per valence n used by a smooth fan: cos(2πi/n), i < n, then 1/(4λ−1)
+ *   rules    4 per point of levels ≥ 1: kind | …, first input, crease pair, f32 parameter
+ *   inputs   point indices read by the rules
+ *   vfan     per cage vertex: its fan (limit position and normal for the factor rule), or ~0
  */
 import {
-  type Cage, type SubdivOptions, DEFAULT_OPTIONS, FaceKind, SHARPNESS_INFINITE, buildTopology, classify, computeSharpness,
-  isRegularVertex,
+  type Cage, type HalfEdges, type SubdivOptions, DEFAULT_OPTIONS, FaceKind, SHARPNESS_INFINITE, buildTopology,
+  classify, computeSharpness, isRegularVertex, vertexRing,
 } from '../../mesh/index.ts';
-import {
-  type Level, extractFaces, faceNeighbourhood, gatherPatch, isBoundaryVertex, isRegularFace, levelFromCage, refine,
-  vertexFaces, vertexLimit,
-} from '../../subdiv/index.ts';
 import type { PreparedMesh } from '../prepare.ts';
-
-export const NODE_INTERNAL = 0;
-export const NODE_PATCH = 1;
-export const NODE_UNRESOLVED = 2;
-export const NO_NODE = 0xffffffff;
-/** The control point of a patch stored absolute; the others are offsets from it. */
-export const ANCHOR = 5;
 
 /** Patch colours for the demo ("show irregular patches"). */
 export const enum PatchKind {
@@ -65,125 +92,363 @@ export const enum PatchKind {
   Crease = 3,
 }
 
-/** Default depth of the quadtrees (levels below the root face or sub-face). */
-export const DEFAULT_MAX_DEPTH = 10;
+export const REGION_PATCH = 1;
+export const REGION_SECTOR = 2;
+export const RULE_FACE = 0;
+export const RULE_EDGE = 1;
+export const RULE_VERTEX = 2;
+export const VRULE_SMOOTH = 0;
+export const VRULE_CREASE = 1;
+export const VRULE_CORNER = 2;
+export const NONE = 0xffffffff;
+export const WORKGROUP = 64;
+
+/**
+ * Depth of the fans: a fan starting at level s has TOTAL_DEPTH − s steps, so the blended square
+ * round an EV is 2^-8 of a quad's (u, v) and 2^-7 of an n-gon sub-face's (s, t). The finest
+ * spacing of an integer tess factor (64) is 1/64 of a quad's edge (1/32 of (s, t) =
+ * 2·barycentric), but fractional factors make thinner slivers next to a corner, and the checks
+ * hold every output vertex, blended or not, to 1e-5 of the diagonal: at 2^-6 the radial blend
+ * missed that by ×1.3 (icosphere, creature), at 2^-8 it is under 2e-6. (Each step costs
+ * 6 points per sector: 72 B.)
+ */
+export const TOTAL_DEPTH = 8;
+/** Extra fan depth round creases, corners, darts and boundary vertices (see the packing). */
+const EXTRA_DEPTH_SHARP = 3;
+/** Deepest uniform level tried before a face is declared unsupported. */
+const MAX_LEVEL = 6;
 
 export interface CatmullClarkOptions {
-  /** Depth at which a node still touching an irregular vertex becomes a blended leaf. */
-  maxDepth?: number;
   /** Subdivision options (default: the cage file's, over OpenSubdiv's defaults). */
   subdiv?: SubdivOptions;
 }
 
 export interface CatmullClarkData {
-  /** Static words (layout above), relative offsets of each table. */
   words: Uint32Array;
-  offTri: number;
-  offPoly: number;
-  offNodes: number;
-  offRows: number;
-  offEntries: number;
-  nodeCount: number;
-  ctrlCount: number;
-  /** First control point of the cage vertex limits (3 per cage vertex). */
-  vertexLimitBase: number;
-  patchCount: number;
-  unresolvedCount: number;
+  offTri: number; offPoly: number; offRegions: number; offPatchIdx: number; offFans: number; offSectors: number;
+  offThreads: number; offCos: number; offRules: number; offInputs: number; offVertexFan: number;
+  /** Points of the levels ≥ 1, fan slices and limits (the cage's vertices come first in the point space). */
+  pointCount: number;
+  /** Global point index ranges for the level dispatches: per level [faceFirst, faceCount, veFirst, veCount]. */
+  levelRanges: [number, number, number, number][];
+  fanCount: number;
+  sliceWorkgroups: number;
   maxDepth: number;
+  regionCount: number;
+  patchCount: number;
+  sectorRegionCount: number;
+  levels: number;
   /** Per prepared triangle: the face's patch kind (for colours). */
   triKind: Uint8Array;
-  /** Host copies for CPU evaluation of the same structure (tests). */
-  nodes: Uint32Array;
-  alpha: Float32Array;
-  rows: Uint32Array;
-  entryVertex: Uint32Array;
-  entryWeight: Float32Array;
-  triRoot: Uint32Array;
+  /** Per cage face: region depth (quads) or depth inside its sub-faces + 1 (n-gons); -1 holes. */
+  faceDepth: Int8Array;
+  /** Per cage face: its first region (-1 holes); the face has 4^d regions (n·4^(d−1) for n-gons). */
+  faceRegion: Int32Array;
+  /** Host copies for the CPU side of the checks (which points are in a blended square). */
+  regions: Uint32Array;
+  fans: Uint32Array;
+  triRegion: Uint32Array;
   vertexCount: number;
+  /** Bytes of GPU subdivision data: static words + points (12 B each). */
+  gpuBytes: number;
 }
 
-/** A level with the stencil of each of its vertices over a support of cage vertices. */
-interface SLevel {
-  lvl: Level;
-  /** Row-major: vertex i's weight on support[j] at W[i·S + j]. */
-  W: Float64Array;
+interface Level {
+  he: HalfEdges;
+  edgeSharp: Float64Array;
+  vertSharp: Float64Array;
+  hole: Uint8Array;
+  boundary: Uint8Array;
+  /** Global point index of this level's vertex 0. */
+  base: number;
+  regular: Int8Array; // -1 unknown
+  eligible: Int8Array; // -1 unknown
 }
 
-/** Run a linear function of a level's positions on the stencil columns, 3 at a time. */
-function onStencils(s: SLevel, S: number, k: number, f: (l: Level) => ArrayLike<number>): Float64Array {
-  const m = s.lvl.he.nVerts;
-  const out = new Float64Array(k * S);
-  for (let b = 0; b < S; b += 3) {
-    const pos = new Float64Array(3 * m);
-    for (let i = 0; i < m; i++) for (let c = 0; c < 3 && b + c < S; c++) pos[3 * i + c] = s.W[i * S + b + c];
-    const r = f({ ...s.lvl, pos });
-    for (let j = 0; j < k; j++) for (let c = 0; c < 3 && b + c < S; c++) out[j * S + b + c] = r[3 * j + c];
+const dec = (s: number): number => (s <= 1 ? 0 : s >= SHARPNESS_INFINITE ? SHARPNESS_INFINITE : Math.fround(s - 1));
+const INF = SHARPNESS_INFINITE;
+
+function makeLevel(he: HalfEdges, edgeSharp: Float64Array, vertSharp: Float64Array, hole: Uint8Array, base: number): Level {
+  const boundary = new Uint8Array(he.nVerts);
+  for (let e = 0; e < he.nEdges; e++) if (he.edgeFaceCount[e] === 1) { boundary[he.edgeVerts[2 * e]] = 1; boundary[he.edgeVerts[2 * e + 1]] = 1; }
+  return { he, edgeSharp, vertSharp, hole, boundary, base, regular: new Int8Array(he.nVerts).fill(-1), eligible: new Int8Array(he.nVerts).fill(-1) };
+}
+
+function vertexRuleOf(nSharp: number, vs: number): number {
+  if (vs > 0 || nSharp >= 3) return VRULE_CORNER;
+  return nSharp === 2 ? VRULE_CREASE : VRULE_SMOOTH; // 0: smooth, 1: dart (smooth mask)
+}
+
+/** Growable u32 list. */
+class U32 {
+  a = new Uint32Array(1024);
+  n = 0;
+  push(x: number): void {
+    if (this.n === this.a.length) { const b = new Uint32Array(2 * this.a.length); b.set(this.a); this.a = b; }
+    this.a[this.n++] = x >>> 0;
   }
-  return out;
+  get view(): Uint32Array { return this.a.subarray(0, this.n); }
 }
 
-function selectRows(W: Float64Array, S: number, vmap: Int32Array): Float64Array {
-  const out = new Float64Array(vmap.length * S);
-  for (let i = 0; i < vmap.length; i++) out.set(W.subarray(vmap[i] * S, vmap[i] * S + S), i * S);
-  return out;
-}
+const f32bits = (x: number): number => new Uint32Array(Float32Array.of(x).buffer)[0];
 
-function refineS(s: SLevel, S: number): SLevel {
-  const lvl = refine(s.lvl);
-  const W = onStencils(s, S, lvl.he.nVerts, (l) => refine(l).pos);
-  return { lvl, W };
-}
-
-function extractS(s: SLevel, S: number, faces: number[]): SLevel {
-  const { level, vmap } = extractFaces(s.lvl, faces);
-  return { lvl: level, W: selectRows(s.W, S, vmap) };
-}
-
-/** Affine map of the unit square, (X,Y) → (a·X + b·Y + c, d·X + e·Y + f): a node's local frame. */
-type Frame = [number, number, number, number, number, number];
-const IDENTITY: Frame = [1, 0, 0, 0, 1, 0];
-
-function applyFrame(F: Frame, X: number, Y: number): [number, number] {
-  return [F[0] * X + F[1] * Y + F[2], F[3] * X + F[4] * Y + F[5]];
-}
-
-/** Quadrant (I,J) of the root-oriented square of a node with frame F: child corner c and child frame. */
-function childFrame(F: Frame, I: number, J: number): { c: number; frame: Frame } {
-  // Parent-local coordinates as an affine function of the child's root-oriented (X',Y'):
-  // X = (I + X')/2, Y = (J + Y')/2.
-  const p: Frame = [F[0] / 2, F[1] / 2, F[0] * I / 2 + F[1] * J / 2 + F[2], F[3] / 2, F[4] / 2, F[3] * I / 2 + F[4] * J / 2 + F[5]];
-  const [cx, cy] = applyFrame(p, 0.5, 0.5);
-  const i = cx >= 0.5 ? 1 : 0, j = cy >= 0.5 ? 1 : 0;
-  const c = i === 0 ? (j === 0 ? 0 : 3) : j === 0 ? 1 : 2;
-  // The reference's child frames (src/subdiv/evaluate.ts): local (nx, ny) from parent (x, y).
-  const X = [p[0], p[1], p[2]], Y = [p[3], p[4], p[5]];
-  const lin = (ka: number, A: number[], kb: number, B: number[], k0: number): number[] => [0, 1, 2].map((q) => ka * A[q] + kb * B[q] + (q === 2 ? k0 : 0));
-  let nx: number[], ny: number[];
-  switch (c) {
-    case 0: nx = lin(2, X, 0, Y, 0); ny = lin(0, X, 2, Y, 0); break;
-    case 1: nx = lin(0, X, 2, Y, 0); ny = lin(-2, X, 0, Y, 2); break;
-    case 2: nx = lin(-2, X, 0, Y, 2); ny = lin(0, X, -2, Y, 2); break;
-    default: nx = lin(0, X, -2, Y, 2); ny = lin(2, X, 0, Y, 0); break;
+/** Refine level L's topology once: the rules of level L+1's points, and level L+1. */
+function refineLevel(L: Level, rules: U32, inputs: U32): Level {
+  const m = L.he;
+  const nV = m.nVerts, nE = m.nEdges, nF = m.nFaces;
+  const base1 = L.base + nV;
+  const fBase = base1 + nV + nE, vBase = L.base;
+  // Vertex points.
+  for (let v = 0; v < nV; v++) {
+    const e0 = m.vertEdgeOffsets[v], e1 = m.vertEdgeOffsets[v + 1];
+    const h0 = m.vertHeOffsets[v], h1 = m.vertHeOffsets[v + 1];
+    const first = inputs.n;
+    inputs.push(vBase + v);
+    let nSharp = 0, nSharpChild = 0, ia = 0, ib = 0, ca = 0, cb = 0;
+    let tSum = 0, tCount = 0;
+    const vs = L.vertSharp[v];
+    if (vs > 0 && dec(vs) === 0) { tSum = Math.fround(vs); tCount = 1; }
+    for (let k = e0; k < e1; k++) {
+      const e = m.vertEdges[k];
+      inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
+      const s = L.edgeSharp[e];
+      if (s > 0) { if (nSharp === 0) ia = k - e0; else if (nSharp === 1) ib = k - e0; nSharp++; }
+      if (dec(s) > 0) { if (nSharpChild === 0) ca = k - e0; else if (nSharpChild === 1) cb = k - e0; nSharpChild++; }
+      if (s > 0 && dec(s) === 0) { tSum = Math.fround(tSum + s); tCount++; }
+    }
+    for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
+    const pr = vertexRuleOf(nSharp, vs);
+    let cr = vertexRuleOf(nSharpChild, dec(vs));
+    let W = 1;
+    if ((pr === VRULE_CREASE || pr === VRULE_CORNER) && cr !== pr) {
+      W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
+    } else cr = pr;
+    // The crease pair: the parent's if it is a crease, else the child's.
+    if (pr !== VRULE_CREASE) { ia = ca; ib = cb; }
+    if (e1 - e0 >= 1 << 12 || h1 - h0 >= 1 << 12) throw new Error(`vertex of valence ${e1 - e0} is not supported`);
+    rules.push(RULE_VERTEX | (pr << 2) | (cr << 4) | ((e1 - e0) << 8) | ((h1 - h0) << 20));
+    rules.push(first);
+    rules.push(ia | (ib << 16));
+    rules.push(f32bits(W));
   }
-  return { c, frame: [nx[0], nx[1], nx[2], ny[0], ny[1], ny[2]] };
-}
-
-/** Grid index (0..3) along local axis given by frame row (a, b, c) for root grid column C and row R. */
-function localIndex(a: number, b: number, C: number, R: number): number {
-  if (a === 1) return C;
-  if (a === -1) return 3 - C;
-  if (b === 1) return R;
-  return 3 - R;
-}
-
-/** Corner (0..3 as (0,0),(1,0),(1,1),(0,1)) of the root-oriented square that local corner `lc` is. */
-function rootCorner(F: Frame, lc: number): number {
-  const L = [[0, 0], [1, 0], [1, 1], [0, 1]];
-  for (let rc = 0; rc < 4; rc++) {
-    const [x, y] = applyFrame(F, L[rc][0], L[rc][1]);
-    if (Math.abs(x - L[lc][0]) < 1e-9 && Math.abs(y - L[lc][1]) < 1e-9) return rc;
+  // Edge points.
+  for (let e = 0; e < nE; e++) {
+    const first = inputs.n;
+    inputs.push(vBase + m.edgeVerts[2 * e]);
+    inputs.push(vBase + m.edgeVerts[2 * e + 1]);
+    let n = 2;
+    if (m.edgeFaceCount[e] === 2) {
+      const h = m.edgeHe[e];
+      inputs.push(fBase + m.heFace[h]);
+      inputs.push(fBase + m.heFace[m.heTwin[h]]);
+      n = 4;
+    }
+    rules.push(RULE_EDGE | (n << 8));
+    rules.push(first);
+    rules.push(0);
+    rules.push(f32bits(n === 2 ? INF : L.edgeSharp[e]));
   }
-  throw new Error('frame is not a rotation of the square');
+  // Face points.
+  for (let f = 0; f < nF; f++) {
+    const a = m.faceOffsets[f], b = m.faceOffsets[f + 1];
+    rules.push(RULE_FACE | ((b - a) << 8));
+    rules.push(inputs.n);
+    rules.push(0);
+    rules.push(0);
+    for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
+  }
+  // Level L+1 topology.
+  const nHe = m.faceIndices.length;
+  const faceOffsets = new Int32Array(nHe + 1);
+  const faceIndices = new Int32Array(4 * nHe);
+  const hole = new Uint8Array(nHe);
+  for (let h = 0; h < nHe; h++) {
+    faceOffsets[h + 1] = 4 * (h + 1);
+    faceIndices[4 * h] = m.faceIndices[h];
+    faceIndices[4 * h + 1] = nV + m.heEdge[h];
+    faceIndices[4 * h + 2] = nV + nE + m.heFace[h];
+    faceIndices[4 * h + 3] = nV + m.heEdge[m.hePrev[h]];
+    hole[h] = L.hole[m.heFace[h]];
+  }
+  const nV1 = nV + nE + nF;
+  const he = refinedHalfEdges(m, nV1, faceOffsets, faceIndices);
+  const edgeSharp = new Float64Array(he.nEdges);
+  for (let e = 0; e < he.nEdges; e++) {
+    const a = he.edgeVerts[2 * e], b = he.edgeVerts[2 * e + 1];
+    const lo = Math.min(a, b), hi = Math.max(a, b);
+    if (lo < nV && hi >= nV && hi < nV + nE) edgeSharp[e] = dec(L.edgeSharp[hi - nV]);
+  }
+  const vertSharp = new Float64Array(nV1);
+  for (let v = 0; v < nV; v++) vertSharp[v] = dec(L.vertSharp[v]);
+  return makeLevel(he, edgeSharp, vertSharp, hole, base1);
+}
+
+/**
+ * Half-edges of a refined level without a hash map: child face h (parent half-edge h) is
+ * [V, E_h, F, E_prev(h)] and its 4 half-edges 4h..4h+3 pair with known neighbours: (V→E_h) with
+ * the last half-edge of the child of next(twin h); (E_h→F) with (F→E_h) of next(h)'s child;
+ * (F→E_p) with (E_p→F) of prev(h)'s child; (E_p→V) with the first of twin(prev h)'s child.
+ */
+function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array, faceIndices: Int32Array): HalfEdges {
+  const nHp = m.faceIndices.length;
+  const nHe = 4 * nHp;
+  const heFace = new Int32Array(nHe), heNext = new Int32Array(nHe), hePrev = new Int32Array(nHe), heTwin = new Int32Array(nHe);
+  for (let h = 0; h < nHp; h++) {
+    const b = 4 * h;
+    for (let j = 0; j < 4; j++) {
+      heFace[b + j] = h;
+      heNext[b + j] = b + ((j + 1) & 3);
+      hePrev[b + j] = b + ((j + 3) & 3);
+    }
+    const t = m.heTwin[h], tp = m.heTwin[m.hePrev[h]];
+    heTwin[b] = t >= 0 ? 4 * m.heNext[t] + 3 : -1;
+    heTwin[b + 1] = 4 * m.heNext[h] + 2;
+    heTwin[b + 2] = 4 * m.hePrev[h] + 1;
+    heTwin[b + 3] = tp >= 0 ? 4 * tp : -1;
+  }
+  const heEdge = new Int32Array(nHe);
+  let nEdges = 0;
+  for (let h = 0; h < nHe; h++) if (heTwin[h] < 0 || h < heTwin[h]) nEdges++;
+  const edgeVerts = new Int32Array(2 * nEdges), edgeFaceCount = new Int32Array(nEdges), edgeHe = new Int32Array(nEdges);
+  let e = 0;
+  for (let h = 0; h < nHe; h++) {
+    const t = heTwin[h];
+    if (t >= 0 && t < h) { heEdge[h] = heEdge[t]; continue; }
+    heEdge[h] = e;
+    edgeVerts[2 * e] = faceIndices[h];
+    edgeVerts[2 * e + 1] = faceIndices[heNext[h]];
+    edgeFaceCount[e] = t >= 0 ? 2 : 1;
+    edgeHe[e] = h;
+    e++;
+  }
+  const vertHeOffsets = new Int32Array(nVerts + 1);
+  for (let h = 0; h < nHe; h++) vertHeOffsets[faceIndices[h] + 1]++;
+  for (let v = 0; v < nVerts; v++) vertHeOffsets[v + 1] += vertHeOffsets[v];
+  const vertHe = new Int32Array(nHe);
+  const fill = vertHeOffsets.slice(0, nVerts);
+  for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
+  const vertEdgeOffsets = new Int32Array(nVerts + 1);
+  for (let k = 0; k < nEdges; k++) { vertEdgeOffsets[edgeVerts[2 * k] + 1]++; vertEdgeOffsets[edgeVerts[2 * k + 1] + 1]++; }
+  for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
+  const vertEdges = new Int32Array(2 * nEdges);
+  const fill2 = vertEdgeOffsets.slice(0, nVerts);
+  for (let k = 0; k < nEdges; k++) {
+    vertEdges[fill2[edgeVerts[2 * k]]++] = k;
+    vertEdges[fill2[edgeVerts[2 * k + 1]]++] = k;
+  }
+  return {
+    nVerts, nFaces: nHp, nEdges, faceOffsets, faceIndices, heFace, heNext, hePrev, heTwin, heEdge, edgeVerts, edgeFaceCount, edgeHe,
+    vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges,
+  };
+}
+
+function isRegular(L: Level, v: number): boolean {
+  if (L.regular[v] < 0) L.regular[v] = isRegularVertex(L.he, v, L.edgeSharp, L.vertSharp, !!L.boundary[v]) ? 1 : 0;
+  return L.regular[v] === 1;
+}
+
+const sharp0orInf = (s: number) => s === 0 || s >= INF;
+
+/** Is x a fan centre at this level (see the header: the slice kernel is exact round it)? */
+function isEligible(L: Level, x: number): boolean {
+  if (L.eligible[x] >= 0) return L.eligible[x] === 1;
+  const r = eligible(L, x);
+  L.eligible[x] = r ? 1 : 0;
+  return r;
+}
+
+function isQuadHe(m: HalfEdges, h: number): boolean {
+  return m.faceOffsets[m.heFace[h] + 1] - m.faceOffsets[m.heFace[h]] === 4;
+}
+
+/** Is y a valid axis neighbour (1,0) of a fan centre along an axis of sharpness axisSharp? */
+function axisOk(L: Level, y: number, axisSharp: number): boolean {
+  const m = L.he;
+  if (L.vertSharp[y] !== 0) return false;
+  const nf = m.vertHeOffsets[y + 1] - m.vertHeOffsets[y], ne = m.vertEdgeOffsets[y + 1] - m.vertEdgeOffsets[y];
+  for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
+  let nInf = 0;
+  for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
+    const s = L.edgeSharp[m.vertEdges[k]];
+    if (s >= INF) nInf++;
+    else if (s !== 0) return false;
+  }
+  if (L.boundary[y]) return axisSharp >= INF && nf === 2 && ne === 3 && nInf === 2 && isRegular(L, y);
+  if (nf !== 4 || ne !== 4) return false;
+  if (axisSharp >= INF) return nInf === 2 && isRegular(L, y); // the two halves of the axis, opposite
+  return nInf === 0;
+}
+
+function eligible(L: Level, x: number): boolean {
+  const m = L.he;
+  if (!sharp0orInf(L.vertSharp[x])) return false;
+  for (let k = m.vertEdgeOffsets[x]; k < m.vertEdgeOffsets[x + 1]; k++) if (!sharp0orInf(L.edgeSharp[m.vertEdges[k]])) return false;
+  for (let k = m.vertHeOffsets[x]; k < m.vertHeOffsets[x + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
+  const ring = vertexRing(m, x);
+  if (!ring || ring.he.length === 0) return false;
+  const n = ring.he.length;
+  if (n + (ring.boundary ? 1 : 0) > WORKGROUP) return false;
+  // Axis neighbours: the edges x→e_i (and the trailing boundary edge).
+  for (const h of ring.he) {
+    if (!axisOk(L, m.faceIndices[m.heNext[h]], L.edgeSharp[m.heEdge[h]])) return false;
+  }
+  if (ring.boundary) {
+    const hl = m.hePrev[ring.he[n - 1]];
+    if (!axisOk(L, m.faceIndices[hl], L.edgeSharp[m.heEdge[hl]])) return false;
+  }
+  // Diagonals: smooth interior valence-4 vertices.
+  for (const h of ring.he) {
+    const z = m.faceIndices[m.heNext[m.heNext[h]]];
+    if (L.boundary[z] || L.vertSharp[z] !== 0) return false;
+    if (m.vertHeOffsets[z + 1] - m.vertHeOffsets[z] !== 4 || m.vertEdgeOffsets[z + 1] - m.vertEdgeOffsets[z] !== 4) return false;
+    for (let k = m.vertEdgeOffsets[z]; k < m.vertEdgeOffsets[z + 1]; k++) if (L.edgeSharp[m.vertEdges[k]] !== 0) return false;
+    for (let k = m.vertHeOffsets[z]; k < m.vertHeOffsets[z + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
+  }
+  return true;
+}
+
+const exponentCache = new Map<string, number>();
+
+/**
+ * Radial blend exponent α = −log2 λ of a fan that is not a smooth interior vertex (creases,
+ * corners, darts, boundaries): λ is the largest eigenvalue but 1 of one subdivision step of the
+ * fan's 1-ring (c, e_i, d_i), found by power iteration on the ring modulo the constant vector
+ * (a topological quantity: the same slice rules as wgsl/cc-build.wgsl, on scalars). A cone
+ * apex (corner with smooth edges) has λ ≈ 0.65, not ½: the radial blend needs it.
+ */
+function ringExponent(n: number, boundary: boolean, rule: number, ia: number, ib: number, inf: number[]): number {
+  const key = `${n} ${boundary ? 1 : 0} ${rule} ${ia} ${ib} ${inf.join('')}`;
+  const hit = exponentCache.get(key);
+  if (hit !== undefined) return hit;
+  const ns = inf.length;
+  let c = 0;
+  let e = Array.from({ length: ns }, (_, i) => Math.sin(1.7 * i + 0.3) + 0.5);
+  let d = Array.from({ length: n }, (_, i) => Math.cos(2.3 * i + 0.1) - 0.2);
+  let lambda = 0.5;
+  for (let it = 0; it < 200; it++) {
+    const nx = (i: number) => (boundary ? i + 1 : (i + 1) % n);
+    const F = d.map((di, i) => 0.25 * (c + e[i] + di + e[nx(i)]));
+    const e1 = e.map((ei, i) => {
+      if (inf[i]) return 0.5 * (c + ei);
+      const fp = boundary ? F[i - 1] : F[(i + n - 1) % n];
+      return 0.25 * (c + ei + F[i] + fp);
+    });
+    let c1 = c;
+    if (rule === VRULE_CREASE) c1 = 0.75 * c + 0.125 * (e[ia] + e[ib]);
+    else if (rule === VRULE_SMOOTH) c1 = ((n - 2) / n) * c + (e.slice(0, n).reduce((a, b) => a + b, 0) + F.reduce((a, b) => a + b, 0)) / (n * n);
+    // Modulo the constant vector: shift the centre to 0.
+    const e2 = e1.map((x) => x - c1), d2 = F.map((x) => x - c1);
+    const norm = Math.hypot(...e2, ...d2);
+    const prev = Math.hypot(...e.map((x) => x - c), ...d.map((x) => x - c));
+    if (!(norm > 0) || !(prev > 0)) break;
+    lambda = norm / prev;
+    e = e2.map((x) => x / norm);
+    d = d2.map((x) => x / norm);
+    c = 0;
+  }
+  const alpha = lambda > 0 && lambda < 1 ? -Math.log2(lambda) : 1;
+  exponentCache.set(key, alpha);
+  return alpha;
 }
 
 /** Subdominant eigenvalue of the smooth Catmull-Clark rule at interior valence n. */
@@ -192,225 +457,312 @@ export function subdominantEigenvalue(n: number): number {
   return (5 + Math.cos(th) + Math.cos(th / 2) * Math.sqrt(2 * (9 + Math.cos(th)))) / 16;
 }
 
-const dist = (a: number[], b: number[]): number => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+// Sector coordinates of corner j of a quad in its own frame: (a, b) = rot_j(x, y).
+const QUAD_OF_ROT: [number, number][] = [[0, 0], [1, 0], [1, 1], [0, 1]];
+const GRID_POS: [number, number][] = [[1, 1], [2, 1], [2, 2], [1, 2]];
+const AXES: [number, number, number, number][] = [[1, 0, 0, 1], [0, 1, -1, 0], [-1, 0, 0, -1], [0, -1, 1, 0]];
 
-/**
- * Radial blend exponent where no closed form applies (creases, corners, darts, boundaries): how
- * fast the surface closes in on the vertex per level, measured on the current geometry from the
- * limit of the face's far corner at this level and at the next.
- */
-function measuredExponent(L: Level, v: number, lc: number): number | null {
-  try {
-    const m = L.he;
-    const a0 = m.faceOffsets[0];
-    const far0 = m.faceIndices[a0 + ((lc + 2) % 4)];
-    const P = vertexLimit(L, v, 0).P;
-    const d0 = dist(vertexLimit(L, far0, 0).P, P);
-    const R = refine(L);
-    // Child of corner lc of face 0 is child face a0 + lc: [V(v), E, F, E'], its far corner F.
-    const child = a0 + lc;
-    const far1 = R.he.faceIndices[R.he.faceOffsets[child] + 2];
-    const sub = extractFaces(R, faceNeighbourhood(R.he, child));
-    let lf = 0;
-    while (sub.vmap[lf] !== far1) lf++;
-    const d1 = dist(vertexLimit(sub.level, lf, 0).P, P);
-    if (!(d0 > 0 && d1 > 0)) return null;
-    const a = Math.log2(d0 / d1);
-    return a > 0.05 && a < 8 ? a : null;
-  } catch {
-    return null;
-  }
+function setGrid(grid: number[], c: number, r: number, v: number): void {
+  if (c >= 0 && c < 4 && r >= 0 && r < 4) grid[4 * r + c] = v;
 }
 
-class Builder {
-  nodes: number[] = [];
-  alpha: number[] = [];
-  /** Control point stencils: per point, a list of (cage vertex, weight). */
-  ctrl: { v: number[]; w: number[] }[] = [];
-  patchCount = 0;
-  unresolvedCount = 0;
-  pendingLimits: { node: number; stencil: Float64Array; support: Int32Array }[] = [];
+/** The 16 point indices (global) of a regular level face g, its own frame, and its phantom mask; null if a slot stays empty. */
+function gatherPatch(L: Level, g: number): { idx: number[]; mask: number } | null {
+  const m = L.he;
+  const a0 = m.faceOffsets[g];
+  const grid = new Array<number>(16).fill(-1);
+  let mask = 0;
 
-  constructor(readonly maxDepth: number) {}
-
-  allocNodes(n: number): number {
-    const at = this.nodes.length / 4;
-    for (let i = 0; i < 4 * n; i++) this.nodes.push(0);
-    for (let i = 0; i < n; i++) this.alpha.push(0);
-    return at;
+  for (let j = 0; j < 4; j++) {
+    const h = a0 + j;
+    if (L.edgeSharp[m.heEdge[h]] >= INF) mask |= 1 << j;
+    const [gc, gr] = GRID_POS[j];
+    const [ax, ay, bx, by] = AXES[j];
+    setGrid(grid, gc, gr, m.faceIndices[h]);
+    const t1 = m.heTwin[m.hePrev[h]];
+    if (t1 < 0) continue;
+    setGrid(grid, gc + bx - ax, gr + by - ay, m.faceIndices[m.heNext[m.heNext[t1]]]);
+    setGrid(grid, gc - ax, gr - ay, m.faceIndices[m.hePrev[t1]]);
+    const t2 = m.heTwin[m.hePrev[t1]];
+    if (t2 < 0) continue;
+    setGrid(grid, gc - ax - bx, gr - ay - by, m.faceIndices[m.heNext[m.heNext[t2]]]);
+    setGrid(grid, gc - bx, gr - by, m.faceIndices[m.hePrev[t2]]);
+    const t3 = m.heTwin[m.hePrev[t2]];
+    if (t3 < 0) continue;
+    setGrid(grid, gc + ax - bx, gr + ay - by, m.faceIndices[m.heNext[m.heNext[t3]]]);
   }
-
-  addPoints(stencil: Float64Array, S: number, support: Int32Array, count: number): number {
-    const base = this.ctrl.length;
-    for (let p = 0; p < count; p++) {
-      const v: number[] = [], w: number[] = [];
-      for (let j = 0; j < S; j++) {
-        const x = stencil[p * S + j];
-        if (x !== 0) { v.push(support[j]); w.push(x); }
-      }
-      this.ctrl.push({ v, w });
-    }
-    return base;
-  }
-
-  /** Fill node `at` for level s (face 0) in frame F. */
-  build(at: number, s: SLevel, S: number, support: Int32Array, F: Frame, depth: number, kind: number): void {
-    const L = s.lvl;
-    const regular = isRegularFace(L, 0) && !L.hole[0] && gatherPatch(L, 0) !== null;
-    if (regular) {
-      const local = onStencils(s, S, 16, (l) => gatherPatch(l, 0)!);
-      const oriented = new Float64Array(16 * S);
-      for (let R = 0; R < 4; R++) {
-        for (let C = 0; C < 4; C++) {
-          const col = localIndex(F[0], F[1], C, R), row = localIndex(F[3], F[4], C, R);
-          oriented.set(local.subarray((4 * row + col) * S, (4 * row + col + 1) * S), (4 * R + C) * S);
-        }
-      }
-      // f32 precision: point 5 (the patch's corner (0,0)) is stored absolute, the other 15 as
-      // offsets from it (difference stencils, formed in f64), so small deep patches keep their
-      // shape to f32's relative precision instead of its absolute one.
-      for (let i = 0; i < 16; i++) {
-        if (i === ANCHOR) continue;
-        for (let j = 0; j < S; j++) oriented[i * S + j] -= oriented[ANCHOR * S + j];
-      }
-      const base = this.addPoints(oriented, S, support, 16);
-      this.nodes[4 * at] = NODE_PATCH | (kind << 4);
-      this.nodes[4 * at + 1] = base;
-      this.patchCount++;
-      return;
-    }
-    // Which corners are irregular (and is a crease involved)?
-    const m = L.he;
-    const a0 = m.faceOffsets[0];
-    let creased = false;
-    const irregular: number[] = [];
-    for (let j = 0; j < 4; j++) {
-      const v = m.faceIndices[a0 + j];
-      if (!isRegularVertex(m, v, L.edgeSharp, L.vertSharp, isBoundaryVertex(m, v))) irregular.push(j);
-      if (L.vertSharp[v] > 0) creased = true;
-      for (let k = m.vertEdgeOffsets[v]; k < m.vertEdgeOffsets[v + 1]; k++) {
-        const e = m.vertEdges[k];
-        if (L.edgeSharp[e] > 0 && m.edgeFaceCount[e] === 2) creased = true;
-      }
-    }
-    const childKind = kind === PatchKind.Regular || kind === PatchKind.IrregularQuad ? (creased ? PatchKind.Crease : PatchKind.IrregularQuad) : kind;
-    if (depth >= this.maxDepth || irregular.length === 0 /* hole or a face the reference cannot gather */) {
-      const lc = irregular.length ? irregular[0] : 0;
-      const v = m.faceIndices[a0 + lc];
-      const lim = onStencils(s, S, 3, (l) => {
-        const r = vertexLimit(l, v, 0);
-        return [...r.P, ...r.lead, ...r.trail];
-      });
-      const base = this.addPoints(lim, S, support, 3);
-      // Radial blend exponent: α = −log2 λ at smooth interior vertices, 1 elsewhere.
-      let alpha = 1;
-      let smoothEV = 0;
-      const nE = m.vertEdgeOffsets[v + 1] - m.vertEdgeOffsets[v];
-      const nF = m.vertHeOffsets[v + 1] - m.vertHeOffsets[v];
-      let sharp = L.vertSharp[v] > 0;
-      for (let k = m.vertEdgeOffsets[v]; k < m.vertEdgeOffsets[v + 1]; k++) if (L.edgeSharp[m.vertEdges[k]] > 0) sharp = true;
-      if (!sharp && nE === nF && nE >= 3) alpha = -Math.log2(subdominantEigenvalue(nE));
-      else alpha = measuredExponent(L, v, lc) ?? 1;
-      if (!sharp && nE === nF && nE >= 3) smoothEV = 1;
-      const rc = rootCorner(F, lc);
-      this.nodes[4 * at] = NODE_UNRESOLVED | (rc << 2) | (childKind << 4) | (smoothEV << 7) | (Math.min(Math.round(alpha * 4096), 0xffff) << 8);
-      this.nodes[4 * at + 1] = base;
-      this.nodes[4 * at + 2] = NO_NODE;
-      this.nodes[4 * at + 3] = NO_NODE;
-      this.alpha[at] = Math.round(alpha * 4096) / 4096;
-      this.unresolvedCount++;
-      return;
-    }
-    const refined = refineS(s, S);
-    const first = this.allocNodes(4);
-    this.nodes[4 * at] = NODE_INTERNAL;
-    this.nodes[4 * at + 1] = first;
-    for (let J = 0; J < 2; J++) {
-      for (let I = 0; I < 2; I++) {
-        const { c, frame } = childFrame(F, I, J);
-        const child = extractS(refined, S, faceNeighbourhood(refined.lvl.he, c));
-        this.build(first + I + 2 * J, child, S, support, frame, depth + 1, childKind);
-      }
-    }
-    // Siblings of unresolved children: the quadrant across the edge opposite the irregular corner.
-    for (let J = 0; J < 2; J++) {
-      for (let I = 0; I < 2; I++) {
-        const n = first + I + 2 * J;
-        if ((this.nodes[4 * n] & 3) !== NODE_UNRESOLVED) continue;
-        const rc = (this.nodes[4 * n] >> 2) & 3;
-        const cx = rc === 1 || rc === 2 ? 1 : 0, cy = rc >= 2 ? 1 : 0;
-        if (cx === I) this.nodes[4 * n + 2] = first + (1 - I) + 2 * J;
-        if (cy === J) this.nodes[4 * n + 3] = first + I + 2 * (1 - J);
-      }
+  for (let r = 0; r < 4; r++) {
+    for (let c = 0; c < 4; c++) {
+      if (grid[4 * r + c] >= 0) continue;
+      const covered = (r === 0 && mask & 1) || (c === 3 && mask & 2) || (r === 3 && mask & 4) || (c === 0 && mask & 8);
+      if (!covered) return null;
+      grid[4 * r + c] = m.faceIndices[a0]; // discarded by the phantom reflection
     }
   }
+  return { idx: grid.map((v) => L.base + v), mask };
 }
 
-/** Build the quadtrees and stencils of a cage (its prepared triangulation gives the triangle order). */
+interface FanRec {
+  level: number;
+  x: number;
+  n: number;
+  boundary: boolean;
+  D: number;
+  rule: number;
+  ia: number;
+  ib: number;
+  alpha: number;
+  cageVertex: number;
+  /** Per thread: axis-infinite flag and 6 global point indices. */
+  sectors: number[][];
+  /** The level-s face of each sector. */
+  ringFaces: number[];
+}
+
+/** Build the topology-only Catmull-Clark data of a cage (its prepared triangulation gives the triangle order). */
 export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: CatmullClarkOptions = {}): CatmullClarkData {
   const options: SubdivOptions = opts.subdiv ?? { ...DEFAULT_OPTIONS, ...cage.fileOptions };
-  const maxDepth = opts.maxDepth ?? DEFAULT_MAX_DEPTH;
+  if (options.creasing === 'chaikin') throw new Error('Chaikin creasing is not supported by the GPU path');
   const topo = buildTopology(cage);
-  const level0 = levelFromCage(cage, topo, options);
-  const cls = classify(topo, computeSharpness(cage, topo, options));
-  const B = new Builder(maxDepth);
-  const nF = topo.nFaces;
-  const faceRoot = new Int32Array(nF).fill(-1);
-  const faceKindOf = new Uint8Array(nF);
+  const sharp = computeSharpness(cage, topo, options);
+  const cls = classify(topo, sharp);
+  const nV0 = topo.nVerts;
+  const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0)];
+  const rules = new U32(), inputs = new U32();
+  const levelRanges: [number, number, number, number][] = [];
+  const level = (l: number): Level => {
+    if (l > MAX_LEVEL) throw new Error(`Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (unsupported configuration)`);
+    while (levels.length <= l) {
+      const L = levels[levels.length - 1];
+      const N = refineLevel(L, rules, inputs);
+      const nV = L.he.nVerts, nE = L.he.nEdges, nF = L.he.nFaces;
+      levelRanges.push([N.base + nV + nE, nF, N.base, nV + nE]);
+      levels.push(N);
+    }
+    return levels[l];
+  };
 
-  for (let f = 0; f < nF; f++) {
-    if (level0.hole[f]) continue;
-    const n = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
+  // Fans, keyed by (start level, vertex).
+  const fans: FanRec[] = [];
+  const fanAt = new Map<number, number>();
+  const fanStart = (x: number, upTo: number): number => {
+    for (let l = 0; l <= upTo; l++) {
+      const L = level(l);
+      if (x < L.he.nVerts && L.he.vertHeOffsets[x + 1] > L.he.vertHeOffsets[x] && isEligible(L, x)) return l;
+    }
+    return -1;
+  };
+  const getFan = (l: number, x: number, D: number, cageVertex = -1): number => {
+    const key = l * 0x4000000 + x;
+    let id = fanAt.get(key);
+    if (id === undefined) {
+      id = fans.length;
+      fanAt.set(key, id);
+      fans.push(makeFan(level(l), l, x));
+    }
+    const F = fans[id];
+    F.D = Math.max(F.D, D);
+    if (cageVertex >= 0) F.cageVertex = cageVertex;
+    return id;
+  };
+
+  // Regions.
+  const regionWords = new U32();
+  const patchIdx = new U32();
+  const faceRegion = new Int32Array(topo.nFaces).fill(-1);
+  const faceDepth = new Int8Array(topo.nFaces).fill(-1);
+  const faceKindOf = new Uint8Array(topo.nFaces);
+  let patchCount = 0, sectorRegionCount = 0;
+  type Desc = { g: number; k: number; i: number; j: number; r: number };
+  for (let f = 0; f < topo.nFaces; f++) {
+    if (sharp.hole[f]) continue;
+    const N = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
     const fk = cls.faceKind[f];
     const kind = fk === FaceKind.Regular ? PatchKind.Regular
       : fk === FaceKind.QuadIrregular ? ((cls.faceFlags[f] & 3) !== 0 ? PatchKind.Crease : PatchKind.IrregularQuad)
         : PatchKind.Triangle;
     faceKindOf[f] = kind;
-    const { level, vmap } = extractFaces(level0, faceNeighbourhood(level0.he, f));
-    const S = vmap.length;
-    const W = new Float64Array(S * S);
-    for (let i = 0; i < S; i++) W[i * S + i] = 1;
-    const base: SLevel = { lvl: level, W };
-    if (n === 4) {
-      const at = B.allocNodes(1);
-      faceRoot[f] = at;
-      B.build(at, base, S, vmap, IDENTITY, 0, kind);
-    } else {
-      const refined = refineS(base, S);
-      const first = B.allocNodes(n);
-      faceRoot[f] = first;
-      for (let k = 0; k < n; k++) {
-        const sub = extractS(refined, S, faceNeighbourhood(refined.lvl.he, k));
-        B.build(first + k, sub, S, vmap, IDENTITY, 0, kind);
+    // First depth worth trying: 0 for a quad (regular, or a sector of a fan eligible on the
+    // cage); an n-gon's sub-faces are regions at level 1 only when its corners are smooth
+    // interior valence-4 vertices (else the face point's fan is not eligible at level 1: its
+    // diagonals are those corners).
+    let d0 = N === 4 ? 0 : 1;
+    if (N !== 4) {
+      for (let h = topo.faceOffsets[f]; h < topo.faceOffsets[f + 1]; h++) {
+        const v = topo.faceIndices[h];
+        if (topo.valence[v] !== 4 || topo.vertBoundary[v]) d0 = 2;
       }
     }
-  }
-  const nodeCount = B.nodes.length / 4;
-
-  // Cage vertex limits (P, lead, trail) for the factor rule and the flat baseline.
-  const vertexLimitBase = B.ctrl.length;
-  const nV = topo.nVerts;
-  for (let v = 0; v < nV; v++) {
-    if (topo.vertHeOffsets[v + 1] === topo.vertHeOffsets[v]) {
-      B.ctrl.push({ v: [v], w: [1] }, { v: [], w: [] }, { v: [], w: [] });
-      continue;
+    for (let d = d0; ; d++) {
+      // Descendants at level d with their place in the root square (or sub-face k).
+      let desc: Desc[] = N === 4 ? [{ g: f, k: 0, i: 0, j: 0, r: 0 }] : [];
+      if (N !== 4) for (let k = 0; k < N; k++) desc.push({ g: topo.faceOffsets[f] + k, k, i: 0, j: 0, r: 0 });
+      for (let l = N === 4 ? 0 : 1; l < d; l++) {
+        const L = level(l);
+        const next: Desc[] = [];
+        for (const q of desc) {
+          for (let c = 0; c < 4; c++) {
+            const r = (q.r + c) & 3;
+            next.push({ g: L.he.faceOffsets[q.g] + c, k: q.k, i: 2 * q.i + QUAD_OF_ROT[r][0], j: 2 * q.j + QUAD_OF_ROT[r][1], r });
+          }
+        }
+        desc = next;
+      }
+      const L = level(d);
+      const m = L.he;
+      type Reg = { w0: number; w1: number; patch?: number[] };
+      const regs: Reg[] = [];
+      let ok = true;
+      for (const q of desc) {
+        const a0 = m.faceOffsets[q.g];
+        let irregular = -1, nIrr = 0;
+        for (let c = 0; c < 4; c++) if (!isRegular(L, m.faceIndices[a0 + c])) { irregular = c; nIrr++; }
+        if (nIrr === 0) {
+          const p = gatherPatch(L, q.g);
+          if (p) { regs.push({ w0: REGION_PATCH | (q.r << 2) | (p.mask << 4) | (kind << 24), w1: 0, patch: p.idx }); continue; }
+        }
+        // An EV sector: a corner that is (or descends from) an eligible fan centre.
+        let found = false;
+        for (let c = 0; c < 4 && !found; c++) {
+          if (nIrr > 0 && c !== irregular) continue;
+          const x = m.faceIndices[a0 + c];
+          const s = fanStart(x, d);
+          if (s < 0) continue;
+          // Sector index: this face's ancestor at level s in x's ring. The face at level d
+          // descends from the level-s face whose corner x it shares: walk up by child index.
+          let g = q.g;
+          for (let l = d; l > s; l--) g = levels[l - 1].he.heFace[g];
+          const fan = getFan(s, x, Math.max(1, TOTAL_DEPTH - s));
+          const sector = fans[fan].ringFaces.indexOf(g);
+          if (sector < 0) throw new Error(`Catmull-Clark: face ${f} is not in the fan of its corner`);
+          regs.push({ w0: REGION_SECTOR | (((q.r + c) & 3) << 2) | ((d - s) << 8) | (sector << 12) | (kind << 24), w1: fan });
+          found = true;
+        }
+        if (!found) { ok = false; break; }
+      }
+      if (!ok) continue;
+      const dd = N === 4 ? d : d - 1;
+      const side = 1 << dd;
+      const base = regionWords.n / 2;
+      const order = new Array<Reg>(regs.length);
+      desc.forEach((q, n) => { order[q.k * side * side + q.j * side + q.i] = regs[n]; });
+      for (const rg of order) {
+        if (rg.patch) {
+          regionWords.push(rg.w0);
+          regionWords.push(patchIdx.n / 16);
+          for (const v of rg.patch) patchIdx.push(v);
+          patchCount++;
+        } else {
+          regionWords.push(rg.w0);
+          regionWords.push(rg.w1);
+          sectorRegionCount++;
+        }
+      }
+      faceRegion[f] = base;
+      faceDepth[f] = d;
+      break;
     }
-    const { level, vmap } = extractFaces(level0, vertexFaces(level0.he, v));
-    const S = vmap.length;
-    const W = new Float64Array(S * S);
-    for (let i = 0; i < S; i++) W[i * S + i] = 1;
-    let lv = 0;
-    while (vmap[lv] !== v) lv++;
-    const lim = onStencils({ lvl: level, W }, S, 3, (l) => {
-      const r = vertexLimit(l, lv, 0);
-      return [...r.P, ...r.lead, ...r.trail];
-    });
-    B.addPoints(lim, S, vmap, 3);
   }
 
-  // Triangles → roots.
+  // Every cage vertex's limit (the factor rule, the flat baseline) comes from its fan.
+  const vertexFan = new Uint32Array(nV0).fill(NONE);
+  for (let v = 0; v < nV0; v++) {
+    if (topo.vertHeOffsets[v + 1] === topo.vertHeOffsets[v]) continue;
+    let s = -1;
+    for (let l = 0; l <= MAX_LEVEL && s < 0; l++) if (isEligible(level(l), v)) s = l;
+    if (s < 0) throw new Error(`Catmull-Clark: no limit rule for vertex ${v}`);
+    vertexFan[v] = getFan(s, v, 0, v);
+  }
+
+  function makeFan(L: Level, l: number, x: number): FanRec {
+    const m = L.he;
+    const ring = vertexRing(m, x)!;
+    const n = ring.he.length;
+    const G = (v: number) => L.base + v;
+    const fi = m.faceIndices, nx = m.heNext;
+    const sectors: number[][] = [];
+    let nInf = 0, ia = 0, ib = 0;
+    for (let i = 0; i < n; i++) {
+      const h = ring.he[i];
+      const inf = L.edgeSharp[m.heEdge[h]] >= INF ? 1 : 0;
+      if (inf) { if (nInf === 0) ia = i; else ib = i; nInf++; }
+      const t = m.heTwin[nx[h]];
+      const u = m.heTwin[nx[nx[nx[t]]]];
+      sectors.push([inf, G(fi[nx[h]]), G(fi[nx[nx[t]]]), G(fi[nx[nx[h]]]), G(fi[nx[nx[nx[t]]]]), G(fi[nx[nx[nx[u]]]]), G(fi[nx[nx[u]]])]);
+    }
+    if (ring.boundary) {
+      const hl = ring.he[n - 1];
+      const w = m.heTwin[nx[nx[hl]]];
+      sectors.push([1, G(fi[m.hePrev[hl]]), G(fi[m.hePrev[w]]), G(x), G(x), G(x), G(x)]);
+      ib = n;
+      nInf++;
+    }
+    const vs = L.vertSharp[x];
+    const rule = vertexRuleOf(nInf, vs);
+    const smoothInterior = !ring.boundary && nInf === 0 && vs === 0 && n >= 3;
+    const inf = sectors.map((q) => q[0]);
+    return {
+      level: l, x, n, boundary: ring.boundary, D: 0, rule, ia, ib, cageVertex: -1, sectors, ringFaces: ring.he.map((h) => m.heFace[h]),
+      alpha: smoothInterior ? -Math.log2(subdominantEigenvalue(n)) : ringExponent(n, ring.boundary, rule, ia, ib, inf),
+    };
+  }
+
+  // Points: the levels, then per fan its slices and limits.
+  const lastLevel = levels[levels.length - 1];
+  let nextPoint = lastLevel.base + lastLevel.he.nVerts;
+  const fanWords = new U32(), sectorWords = new U32(), cosWords = new U32();
+  const cosAt = new Map<number, number>();
+  let maxDepth = 0;
+  const sliceFans: number[] = [];
+  fans.forEach((F, id) => {
+    // Creases, corners, darts, boundaries: the radial blend's one exponent is a rougher model
+    // there (two rates, along and across), so their last square is made 2^-3 smaller.
+    if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) F.D = Math.min(15, F.D + EXTRA_DEPTH_SHARP);
+    const ns = F.sectors.length;
+    const sliceBase = nextPoint;
+    nextPoint += F.D * (6 * ns + 1);
+    const limitBase = nextPoint;
+    nextPoint += 3;
+    maxDepth = Math.max(maxDepth, F.D);
+    let cosBase = 0;
+    if (F.rule === VRULE_SMOOTH && !F.boundary) {
+      let at = cosAt.get(F.n);
+      if (at === undefined) {
+        cosAt.set(F.n, (at = cosWords.n));
+        for (let i = 0; i < F.n; i++) cosWords.push(f32bits(Math.cos((2 * Math.PI * i) / F.n)));
+        cosWords.push(f32bits(1 / (4 * subdominantEigenvalue(F.n) - 1)));
+      }
+      cosBase = at;
+    }
+    if (F.D > 15) throw new Error('fan depth > 15');
+    fanWords.push(ns | (F.n << 8) | ((F.boundary ? 1 : 0) << 16) | (F.rule << 17) | (F.D << 20));
+    fanWords.push(levels[F.level].base + F.x);
+    fanWords.push(sliceBase);
+    fanWords.push(sectorWords.n);
+    fanWords.push(f32bits(F.alpha));
+    fanWords.push(limitBase);
+    fanWords.push(F.ia | (F.ib << 8));
+    fanWords.push(cosBase);
+    for (const s of F.sectors) for (const w of s) sectorWords.push(w);
+    if (F.D > 0) sliceFans.push(id);
+  });
+  // Pack the sliced fans into workgroups of 64 threads (a fan never straddles two).
+  const threadWords = new U32();
+  let used = WORKGROUP;
+  for (const id of sliceFans) {
+    const ns = fans[id].sectors.length;
+    if (used + ns > WORKGROUP) {
+      while (threadWords.n % WORKGROUP) threadWords.push(NONE);
+      used = 0;
+    }
+    for (let i = 0; i < ns; i++) threadWords.push(id | (i << 24));
+    used += ns;
+  }
+  while (threadWords.n % WORKGROUP) threadWords.push(NONE);
+
+  // Triangles → regions.
   const nT = prepared.triangleCount;
-  const triRoot = new Uint32Array(3 * nT);
+  const triRegion = new Uint32Array(3 * nT);
   const polyAt = new Map<number, number>();
   const poly: number[] = [];
   const triKind = new Uint8Array(nT);
@@ -421,54 +773,66 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     let k = -1;
     for (let j = 1; j < n - 1; j++) if (cage.faceIndices[start + j] === prepared.triVerts[3 * t + 1]) k = j;
     if (k < 0 || cage.faceIndices[start] !== prepared.triVerts[3 * t]) throw new Error(`triangle ${t} is not a fan triangle of face ${f}`);
-    triRoot[3 * t] = faceRoot[f];
-    triRoot[3 * t + 1] = n | (k << 8);
+    const dd = n === 4 ? faceDepth[f] : faceDepth[f] - 1;
+    triRegion[3 * t] = faceRegion[f] >= 0 ? faceRegion[f] : NONE;
+    triRegion[3 * t + 1] = n | (k << 8) | (Math.max(0, dd) << 28);
     if (n !== 4) {
       let at = polyAt.get(n);
       if (at === undefined) {
         polyAt.set(n, (at = poly.length / 2));
         for (let j = 0; j < n; j++) poly.push(Math.cos((2 * Math.PI * j) / n), Math.sin((2 * Math.PI * j) / n));
       }
-      triRoot[3 * t + 2] = at;
+      triRegion[3 * t + 2] = at;
     }
     triKind[t] = faceKindOf[f];
   }
 
-  // Stencils, CSR.
-  const rows = new Uint32Array(B.ctrl.length + 1);
+  const parts: Uint32Array[] = [
+    triRegion, new Uint32Array(Float32Array.from(poly).buffer), regionWords.view, patchIdx.view, fanWords.view, sectorWords.view,
+    threadWords.view, cosWords.view, rules.view, inputs.view, vertexFan,
+  ];
+  const offs: number[] = [];
   let total = 0;
-  B.ctrl.forEach((c, i) => {
-    rows[i] = total;
-    total += c.v.length;
-  });
-  rows[B.ctrl.length] = total;
-  const entryVertex = new Uint32Array(total);
-  const entryWeight = new Float32Array(total);
-  let e = 0;
-  for (const c of B.ctrl) {
-    for (let j = 0; j < c.v.length; j++) {
-      entryVertex[e] = c.v[j];
-      entryWeight[e] = c.w[j];
-      e++;
-    }
-  }
-  const nodes = Uint32Array.from(B.nodes);
-  const offTri = 0, offPoly = offTri + triRoot.length, offNodes = offPoly + poly.length, offRows = offNodes + nodes.length, offEntries = offRows + rows.length;
-  const words = new Uint32Array(offEntries + 2 * total);
-  words.set(triRoot, offTri);
-  words.set(new Uint32Array(Float32Array.from(poly).buffer), offPoly);
-  words.set(nodes, offNodes);
-  words.set(rows, offRows);
-  const ev = new Uint32Array(entryWeight.buffer);
-  for (let i = 0; i < total; i++) {
-    words[offEntries + 2 * i] = entryVertex[i];
-    words[offEntries + 2 * i + 1] = ev[i];
-  }
+  for (const p of parts) { offs.push(total); total += p.length; }
+  const words = new Uint32Array(total);
+  parts.forEach((p, i) => words.set(p, offs[i]));
+  const pointCount = nextPoint - nV0;
   return {
-    words, offTri, offPoly, offNodes, offRows, offEntries, nodeCount, ctrlCount: B.ctrl.length, vertexLimitBase,
-    patchCount: B.patchCount, unresolvedCount: B.unresolvedCount, maxDepth, triKind,
-    nodes, alpha: Float32Array.from(B.alpha), rows, entryVertex, entryWeight, triRoot, vertexCount: nV,
+    words, offTri: offs[0], offPoly: offs[1], offRegions: offs[2], offPatchIdx: offs[3], offFans: offs[4], offSectors: offs[5],
+    offThreads: offs[6], offCos: offs[7], offRules: offs[8], offInputs: offs[9], offVertexFan: offs[10],
+    pointCount, levelRanges, fanCount: fans.length, sliceWorkgroups: threadWords.n / WORKGROUP, maxDepth,
+    regionCount: regionWords.n / 2, patchCount, sectorRegionCount, levels: levels.length - 1, triKind, faceDepth, faceRegion,
+    regions: regionWords.view.slice(), fans: fanWords.view.slice(), triRegion, vertexCount: nV0,
+    gpuBytes: 4 * total + 12 * pointCount,
   };
 }
 
-export { SHARPNESS_INFINITE };
+/**
+ * Where a point of the surface is taken from (the CPU side of the evaluator's region lookup,
+ * wgsl/surface-cc.wgsl): for the checks, which split the exact region from the blended square
+ * round extraordinary vertices. (x, y): the quad's (u, v) or sub-face k's (s, t).
+ */
+export function regionOf(cc: CatmullClarkData, t: number, k: number, x: number, y: number): { blended: boolean; sector: boolean } {
+  const info = cc.triRegion[3 * t + 1];
+  const dd = info >>> 28;
+  const side = 1 << dd;
+  const i = Math.min(Math.floor(x * side), side - 1), j = Math.min(Math.floor(y * side), side - 1);
+  const reg = cc.triRegion[3 * t] + k * side * side + j * side + i;
+  const w0 = cc.regions[2 * reg];
+  if ((w0 & 3) !== REGION_SECTOR) return { blended: false, sector: false };
+  const [a, b] = rot((w0 >> 2) & 3, x * side - i, y * side - j);
+  const off = (w0 >> 8) & 15;
+  const D = (cc.fans[8 * cc.regions[2 * reg + 1]] >> 20) & 15;
+  // Blended inside the step-D square: max(a, b)·2^-offset < 2^-D.
+  return { blended: Math.max(a, b) * 2 ** (D - off) < 1, sector: true };
+}
+
+/** rot_r of the unit square: rot_1(x, y) = (y, 1 − x), rot_r = rot_1^r. */
+export function rot(r: number, x: number, y: number): [number, number] {
+  switch (r & 3) {
+    case 0: return [x, y];
+    case 1: return [y, 1 - x];
+    case 2: return [1 - x, 1 - y];
+    default: return [1 - y, x];
+  }
+}
