@@ -41,19 +41,11 @@ const TALK_MODELS = ['suzanne', 'bigguy', 'monsterfrog', 'imrod'];
 const PREPARE_LIMIT_MS = 60_000;
 /** OpenSubdiv runs per cage (median; cheap next to the rest). */
 const OSD_REPEATS = 3;
-/** Today's table builder (src/gpu/cc/build.ts) runs out of memory on imrod (8,995 faces, 4 GB
- * heap, issue 9): refuse large cages at once instead. The new builder removes this limit. */
-const TODAY_BUILDER_FACE_LIMIT = 4000;
-
 /**
- * The one Catmull-Clark preparation call of the benchmark (CPU, per topology), so that the
- * new builder of issue 9 replaces one line here. Throws for cages it cannot prepare.
+ * The one Catmull-Clark preparation call of the benchmark (CPU, topology only, per cage).
+ * Throws for cages it cannot prepare (they are listed as left out).
  */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
-  const faces = faceCount(cage);
-  if (faces > TODAY_BUILDER_FACE_LIMIT) {
-    throw new Error(`${faces} faces: today's table builder runs out of memory above about ${TODAY_BUILDER_FACE_LIMIT} faces (issue 9)`);
-  }
   return buildCatmullClark(cage, mesh);
 }
 

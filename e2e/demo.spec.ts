@@ -1,38 +1,15 @@
 // The demo page (index.html) end to end, in headless Chromium on SwiftShader: it starts without
 // console errors on the Catmull-Clark surface, draws deterministic frozen frames (Catmull-Clark,
-// patch colours, Phong), falls back to Phong where the subdivision tables are refused, survives a
+// patch colours, Phong), falls back to Phong where the Catmull-Clark preparation refuses a cage, survives a
 // bad OBJ and a lost device, and explains itself when WebGPU is missing.
 import { expect, test, type Page } from '@playwright/test';
-
-/** Console errors and uncaught exceptions of a page, collected from the start. */
-function collectErrors(page: Page): string[] {
-  const errors: string[] = [];
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-  });
-  page.on('pageerror', (e) => errors.push(e.message));
-  return errors;
-}
+import { collectErrors, dropFile, ready } from './helpers.ts';
 
 /** What the panel's cage picker shows. */
 function picked(page: Page) {
   return page.locator('.lil-gui.panel .lil-option').filter({ hasText: 'cage' }).first().locator('.lil-display');
 }
 
-async function ready(page: Page): Promise<void> {
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
-}
-
-/** Drop a file on the page the way a user's drag and drop does. */
-async function dropFile(page: Page, name: string, text: string): Promise<void> {
-  const dataTransfer = await page.evaluateHandle(({ name, text }) => {
-    const dt = new DataTransfer();
-    dt.items.add(new File([text], name, { type: 'text/plain' }));
-    return dt;
-  }, { name, text });
-  await page.dispatchEvent('body', 'dragenter', { dataTransfer });
-  await page.dispatchEvent('body', 'drop', { dataTransfer });
-}
 
 test('loads a model without console errors and shows its stats', async ({ page }) => {
   const errors = collectErrors(page);
@@ -48,7 +25,7 @@ test('loads a model without console errors and shows its stats', async ({ page }
   await expect(picked(page)).toHaveText('Torus');
   // The model list is built in: no request for an index (the built site has none: a 404 in the console).
   expect(requests.filter((u) => u.includes('index.json'))).toEqual([]);
-  // Catmull-Clark by default, its tables built in the worker; the talk's numbers in the panel.
+  // Catmull-Clark by default (topology prepared on the page's thread); the talk's numbers in the panel.
   await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark');
   await expect(page.getByTestId('stats-surface')).toContainText('256 regular');
   await expect(page.getByTestId('stats-other')).toContainText(/fixed, factor 8/);
@@ -145,27 +122,23 @@ test('the surface switch: Phong, flat cage and back to Catmull-Clark', async ({ 
   expect(errors).toEqual([]);
 });
 
-test('a model whose subdivision tables are refused falls back to Phong with a message', async ({ page }) => {
+test('a cage the Catmull-Clark preparation refuses falls back to Phong with a message', async ({ page }) => {
   const errors = collectErrors(page);
-  // A worker that refuses every cage, as buildCatmullClark does with one it cannot handle.
-  await page.addInitScript(() => {
-    class RefusingWorker extends EventTarget {
-      onmessage: ((e: MessageEvent) => void) | null = null;
-      onerror: ((e: Event) => void) | null = null;
-      postMessage(request: { id: number }): void {
-        setTimeout(() => this.onmessage?.(new MessageEvent('message', { data: { id: request.id, ok: false, message: 'the test refuses this cage' } })), 10);
-      }
-      terminate(): void {}
-    }
-    (window as unknown as { Worker: unknown }).Worker = RefusingWorker;
-  });
   await page.goto('/?model=torus&t=0');
   await ready(page);
-  const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for torus' });
-  await expect(toast).toContainText('the test refuses this cage');
+  // Chaikin creasing is refused by the GPU path's preparation (src/gpu/cc/build.ts).
+  const cube = [
+    'v -1 -1 -1', 'v 1 -1 -1', 'v 1 1 -1', 'v -1 1 -1', 'v -1 -1 1', 'v 1 -1 1', 'v 1 1 1', 'v -1 1 1',
+    'f 5 6 7 8', 'f 1 4 3 2', 'f 1 2 6 5', 'f 2 3 7 6', 'f 3 4 8 7', 'f 4 1 5 8',
+    't creasemethod 0/0/1 chaikin', 't crease 2/1/0 4 5 2.5',
+  ].join('\n');
+  await dropFile(page, 'chaikin-cube.obj', `${cube}\n`);
+  const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for chaikin-cube.obj' });
+  await expect(toast).toContainText('Chaikin creasing is not supported');
   await expect(toast).toContainText('Showing the Phong surface instead');
+  await expect(page.getByTestId('stats-cage')).toContainText('chaikin-cube.obj');
   await expect(page.getByTestId('stats-surface')).toContainText('Phong');
-  await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark unavailable: the test refuses this cage');
+  await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark unavailable: Chaikin creasing is not supported');
   await expect(page.getByTestId('stats-output')).toContainText('tris');
   expect(errors).toEqual([]);
 });

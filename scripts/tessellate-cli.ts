@@ -23,21 +23,9 @@ import { faceCount, type Cage } from '../src/mesh/index.ts';
 
 const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`;
 
-/** The CLI's one Catmull-Clark preparation call (CPU, per topology): the new builder of issue 9
- * replaces this line. */
+/** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
   return buildCatmullClark(cage, mesh);
-}
-
-/**
- * GPU bytes of the subdivision data: what Tessellator.setMesh uploads for the Catmull-Clark
- * surface on top of the Phong path: the static table words (u32), and in the cage buffer the
- * control points (3 f32 each) and the cage vertices' limit positions and normals (6 f32 each).
- * Computed here from the data object because the Tessellator has no accessor for it yet; the
- * new builder's merge switches this to one.
- */
-function subdivisionGpuBytes(cc: CatmullClarkData, mesh: PreparedMesh): number {
-  return 4 * cc.words.length + 4 * 3 * cc.ctrlCount + 4 * 6 * mesh.vertexCount;
 }
 
 class UsageError extends Error {}
@@ -154,7 +142,7 @@ export async function main(argv: string[]): Promise<number> {
     console.log(JSON.stringify({
       faces: faceCount(cage),
       cpuPrepMs: Number(cpuPrepMs.toFixed(3)),
-      gpuBytes: cc ? subdivisionGpuBytes(cc, mesh) : 0,
+      gpuBytes: cc ? cc.gpuBytes : 0,
       subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
       tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
       vertices: r.out.vertexCount,

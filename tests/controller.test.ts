@@ -87,7 +87,7 @@ describe('DemoController', () => {
     expect(await done).toBe(true);
     expect(h.log).toEqual([
       'loading Loading torus…',
-      'loading Building subdivision tables…',
+      'loading Preparing subdivision data…',
       'prepare torus',
       'upload torus catmull-clark +torus',
       'shown torus (was none) place-torus',

@@ -158,12 +158,18 @@ fn ccStep(f: CCFan, j: u32, L: u32) -> array<vec3<f32>, 12> {
 // (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
 // (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
 fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
-  let own = ccStep(f, i, L);
-  let nxt = ccStep(f, ccNb(f, i, 1), L);
-  var prv: array<vec3<f32>, 12>;
-  if (which == 0u) { prv = ccStep(f, ccNb(f, i, -1), L); }
-  var n2 = vec3<f32>(0.0);
-  if (which == 2u) { n2 = ccStep(f, ccNb(f, i, 2), L)[0]; }
+  // Step L's 12 points of sectors i (own, 0..11), i+1 (12..23), i−1 (A only, 24..35) and i+2
+  // (C only, its (1, 0) at 36), from ONE call site of ccStep in a loop: shader compilers inline
+  // every call, and one copy of the step per call site made this evaluator take seconds to
+  // compile on SwiftShader (three pipelines include it).
+  var pts: array<vec3<f32>, 37>;
+  for (var s = 0u; s < 4u; s++) {
+    if ((s == 2u && which != 0u) || (s == 3u && which != 2u)) { continue; }
+    let d = select(select(select(0, 1, s == 1u), -1, s == 2u), 2, s == 3u);
+    let o = ccStep(f, ccNb(f, i, d), L);
+    let n = select(12u, 1u, s == 3u);
+    for (var q = 0u; q < n; q++) { pts[12u * s + q] = o[q]; }
+  }
   let cL = ccCentre(f, L);
   var cp: array<vec3<f32>, 16>;
   let da = select(0, -1, which == 2u);
@@ -176,13 +182,13 @@ fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec
       if (a == 0 && b == 0) {
         q = cL;
       } else if (a == -1 && b == 0) {
-        q = n2;
+        q = pts[36];
       } else if (b < 0) {
-        q = prv[u32(a)];
+        q = pts[24u + u32(a)];
       } else if (a <= 0) {
-        q = nxt[4u * u32(b - 1) + u32(-a)];
+        q = pts[12u + 4u * u32(b - 1) + u32(-a)];
       } else {
-        q = own[4u * u32(a - 1) + u32(b)];
+        q = pts[4u * u32(a - 1) + u32(b)];
       }
       cp[4 * r + c] = q;
     }
@@ -224,14 +230,15 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
     blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
     if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
   }
-  var e: array<vec3<f32>, 3>;
-  if (a >= 1.0 && b < 1.0) {
-    e = ccSubPatch(f, sec, L, 0u, a - 1.0, b);
-  } else if (a >= 1.0) {
-    e = ccSubPatch(f, sec, L, 1u, a - 1.0, b - 1.0);
-  } else {
-    e = ccSubPatch(f, sec, L, 2u, a, b - 1.0);
+  // Which sub-patch holds (a, b): A, B or C; one call site (see ccSubPatch).
+  var which = 2u;
+  var lx = a;
+  var ly = b - 1.0;
+  if (a >= 1.0) {
+    lx = a - 1.0;
+    if (b < 1.0) { which = 0u; ly = b; } else { which = 1u; }
   }
+  let e = ccSubPatch(f, sec, L, which, lx, ly);
   let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
   if (blend >= 1.0) { return q; }
   let p0 = ccP(lb);
@@ -299,17 +306,15 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let n = info & 255u;
   let fan = (info >> 8u) & 0xfffffu;
   let dd = info >> 28u;
-  var sp: SurfacePoint;
+  // The face parameter (sub-face k, x, y), then one call of the region evaluator (a single
+  // call site keeps the inlined shader small).
+  var kxy: vec3<f32>;
   if (n == 4u) {
-    if (fan == 1u) {
-      sp = ccEvalRegion(first, dd, 0u, w.y + w.z, w.z);
-    } else {
-      sp = ccEvalRegion(first, dd, 0u, w.y, w.y + w.z);
-    }
+    kxy = select(vec3<f32>(0.0, w.y, w.y + w.z), vec3<f32>(0.0, w.y + w.z, w.z), fan == 1u);
   } else {
-    let kst = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, w);
-    sp = ccEvalRegion(first, dd, u32(kst.x), kst.y, kst.z);
+    kxy = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, w);
   }
+  let sp = ccEvalRegion(first, dd, u32(kxy.x), kxy.y, kxy.z);
   if (params.ccFlat == 0u) { return sp; }
   // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a
   // tess factor interpolated from the three edges (on an edge: that edge's factor, so both

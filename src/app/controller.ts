@@ -153,7 +153,7 @@ export class DemoController<M extends { title: string }, D, P = void> {
     let data: D | null = model === this.#model ? this.#data : null;
     let dataError: string | null = model === this.#model ? this.#dataError : null;
     if (surface === 'catmull-clark' && !data) {
-      if (!this.#ports.surfaceReady(model)) this.#ports.loading('Building subdivision tables…');
+      if (!this.#ports.surfaceReady(model)) this.#ports.loading('Preparing subdivision data…');
       this.#preparingFor = serial;
       this.#setPreparing(true);
       try {

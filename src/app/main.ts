@@ -2,8 +2,8 @@
  * The demo page: a cage, tessellated on the GPU (the Catmull-Clark limit surface, or Phong
  * tessellation), drawn lit and shadowed with optional wireframe, cage overlay and patch colours.
  * The geometry is rebuilt only when the model, the factors or (in adaptive mode) the camera
- * change; every other frame draws the stored buffers again. The Catmull-Clark tables are built
- * on the CPU once per model, in a worker (cc-tables.ts).
+ * change; every other frame draws the stored buffers again. The Catmull-Clark data (topology only)
+ * is prepared on the CPU once per model (cc-tables.ts); the GPU builds the patches every frame.
  *
  * What is shown (model, surface, its data) and the flow that changes it live in controller.ts;
  * this file is the page: the canvas, the GPU objects, the panel, the stats and the messages.
@@ -54,7 +54,7 @@ class TessellationDemo extends DemoBase {
   #cageLines: CageLines | null = null;
   #counts: CountsReader | null = null;
 
-  /** Catmull-Clark tables per cage (built in a worker): the controller's surface data. */
+  /** Catmull-Clark data per cage (topology only, cached): the controller's surface data. */
   readonly #ccTables = new CcTableCache();
 
   /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
@@ -365,7 +365,6 @@ class TessellationDemo extends DemoBase {
         building: this.controller.preparing,
         kinds: this.cc ? kindCounts(this.cc.data.triKind) : undefined,
         tablesMs: this.cc?.ms,
-        tablesWhere: this.cc?.where,
       },
       other: this.#otherMode.counts,
       mode: this.params.mode,

@@ -15,9 +15,8 @@ export interface SurfaceStats {
   building?: boolean;
   /** Triangles per patch kind (regular, irregular quad, triangle region, crease). */
   kinds?: [number, number, number, number];
-  /** Wall-clock ms of the CPU table build, and where it ran. */
+  /** Wall-clock ms of the CPU preparation (topology only). */
   tablesMs?: number;
-  tablesWhere?: string;
 }
 
 /** The other factor mode's output, counted by an occasional extra build. */
@@ -81,12 +80,12 @@ export function renderStats(s: StatsInput): string {
   if (s.surface) {
     const sf = s.surface;
     let text = `<b>${SURFACE_NAMES[sf.shown]}</b>`;
-    if (sf.building) text += ' <span class="muted">building subdivision tables…</span>';
+    if (sf.building) text += ' <span class="muted">preparing subdivision data…</span>';
     if (sf.fallback) text += ` <span class="warn">Catmull-Clark unavailable: ${esc(sf.fallback)}</span>`;
     if (sf.shown === 'catmull-clark' && sf.kinds) {
       const [reg, irr, tri, crease] = sf.kinds;
       text += ` <span class="muted">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;
-      if (sf.tablesMs !== undefined) text += ` · tables ${(sf.tablesMs / 1000).toFixed(sf.tablesMs < 1000 ? 2 : 1)} s${sf.tablesWhere ? ` (${esc(sf.tablesWhere)})` : ''}`;
+      if (sf.tablesMs !== undefined) text += ` · prepared in ${sf.tablesMs < 10 ? sf.tablesMs.toFixed(1) : Math.round(sf.tablesMs)} ms`;
       text += '</span>';
     }
     rows.push(row('surface', text, 'stats-surface'));

@@ -1,0 +1,31 @@
+// Helpers shared by the demo's end-to-end specs.
+import { expect, type Page } from '@playwright/test';
+
+/** Console errors and uncaught exceptions of a page, collected from the start. */
+export function collectErrors(page: Page): string[] {
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  page.on('pageerror', (e) => errors.push(e.message));
+  return errors;
+}
+
+/** The page has drawn its first complete frame of the current model. */
+export async function ready(page: Page): Promise<void> {
+  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
+}
+
+/** Drop a file on the page the way a user's drag and drop does. */
+export async function dropFile(page: Page, name: string, text: string): Promise<void> {
+  const dataTransfer = await page.evaluateHandle(
+    ({ name, text }) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([text], name, { type: 'text/plain' }));
+      return dt;
+    },
+    { name, text },
+  );
+  await page.dispatchEvent('body', 'dragenter', { dataTransfer });
+  await page.dispatchEvent('body', 'drop', { dataTransfer });
+}
