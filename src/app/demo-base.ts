@@ -7,6 +7,7 @@
  * animating. `frozenTime` (the URL's ?t=) pins the clock for deterministic screenshots.
  */
 import { createGpu, GpuUnavailableError, type GpuContext } from '../gpu/device.ts';
+import { GpuMemory, trackDevice } from '../gpu/tracked-device.ts';
 import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { setLoading, setPageState, showFatal, showToast } from './ui.ts';
 
@@ -29,7 +30,11 @@ const KEY_ORBIT_STEP = (5 * Math.PI) / 180;
 export abstract class DemoBase {
   readonly canvas: HTMLCanvasElement;
   readonly frozenTime: number | null;
+  /** The device context; its `device` counts every buffer and texture made through it in
+   * `memory` (src/gpu/tracked-device.ts), so everything the page allocates is on the ledger. */
   gpu!: GpuContext;
+  /** The live GPU buffers and textures of the current device (a new ledger per device). */
+  memory = new GpuMemory();
   context!: GPUCanvasContext;
   /** The canvas texture's format, and the view format the renderer draws with (its -srgb twin). */
   canvasFormat!: GPUTextureFormat;
@@ -110,7 +115,7 @@ export abstract class DemoBase {
   }
 
   async #initDevice(): Promise<void> {
-    this.gpu = await createGpu({
+    const gpu = await createGpu({
       gpu: navigator.gpu,
       onLost: (info) => void this.#recover(info),
       onUncapturedError: (error) => {
@@ -118,13 +123,17 @@ export abstract class DemoBase {
         showToast(error.message, { kind: 'error', title: 'WebGPU error' });
       },
     });
+    const tracked = trackDevice(gpu.device);
+    this.memory = tracked.memory;
+    this.gpu = { ...gpu, device: tracked.device };
     this.context = this.canvas.getContext('webgpu') as GPUCanvasContext;
     this.canvasFormat = navigator.gpu.getPreferredCanvasFormat();
     // Draw through an -srgb view: lighting stays linear, blending and MSAA resolve happen in
     // linear space, and the canvas (whose own format cannot be -srgb) stores encoded values.
     this.renderFormat = `${this.canvasFormat}-srgb` as GPUTextureFormat;
     this.context.configure({
-      device: this.gpu.device,
+      // The platform checks that this is a real GPUDevice: not the counting stand-in.
+      device: tracked.real,
       format: this.canvasFormat,
       viewFormats: [this.renderFormat],
       alphaMode: 'opaque',
@@ -156,7 +165,9 @@ export abstract class DemoBase {
   }
 
   #tick(): void {
-    if (this.#recovering || !this.camera) return;
+    // A hidden tab draws nothing (browsers mostly stop animation frames anyway); the frame owed
+    // stays owed and is drawn when the tab is shown again (see #bindInput's visibilitychange).
+    if (this.#recovering || !this.camera || document.visibilityState === 'hidden') return;
     if (!this.#dirty && !(this.frozenTime === null && this.isAnimating())) {
       this.#lastFrameAt = 0;
       return;
@@ -210,6 +221,13 @@ export abstract class DemoBase {
 
   #bindInput(): void {
     const canvas = this.canvas;
+    document.addEventListener('visibilitychange', () => {
+      if (document.visibilityState === 'visible') {
+        // Timings measured across the hidden time would read as one very long frame.
+        this.#lastFrameAt = 0;
+        this.requestFrame();
+      }
+    });
     canvas.addEventListener('pointerdown', (e) => {
       canvas.setPointerCapture(e.pointerId);
       this.#pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });

@@ -376,6 +376,7 @@ class TessellationDemo extends DemoBase {
       jsMs: this.timing.jsMs,
       rebuilds: this.#rebuilds,
       adapter: this.gpu.adapterName,
+      memory: this.memory.counts,
     });
   }
 
@@ -588,6 +589,8 @@ async function main(): Promise<void> {
   (window as unknown as { tessellab: unknown }).tessellab = {
     demo,
     loseDevice: () => demo.gpu.device.destroy(),
+    /** The bytes (and counts) of the page's live GPU buffers and textures, and per label. */
+    gpuMemory: () => ({ ...demo.memory.counts, byLabel: demo.memory.byLabel() }),
   };
   if (!(await demo.start())) return;
 
