@@ -6,7 +6,7 @@
  * Frames are drawn on demand: only when something changed (camera, size, settings) or while
  * animating. `frozenTime` (the URL's ?t=) pins the clock for deterministic screenshots.
  */
-import { createGpu, GpuUnavailableError, type GpuContext } from '../gpu/device.ts';
+import { createGpu, GpuUnavailableError, type GpuContext, type LimitName } from '../gpu/device.ts';
 import { GpuMemory, trackDevice } from '../gpu/tracked-device.ts';
 import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { setLoading, setPageState, showFatal, showToast } from './ui.ts';
@@ -65,6 +65,10 @@ export abstract class DemoBase {
   protected onCameraChanged(): void {}
   /** Release GPU resources of a lost device (they are garbage, but hold JS references). */
   protected onDeviceLost(): void {}
+  /** Limits the page would like (requested up to what the adapter has; see GpuContext.clamps). */
+  protected wantedLimits(): Partial<Record<LimitName, number>> {
+    return {};
+  }
   /** Whether to keep drawing frames without further input (animation). */
   protected isAnimating(): boolean {
     return false;
@@ -117,12 +121,22 @@ export abstract class DemoBase {
   async #initDevice(): Promise<void> {
     const gpu = await createGpu({
       gpu: navigator.gpu,
+      wantedLimits: this.wantedLimits(),
       onLost: (info) => void this.#recover(info),
       onUncapturedError: (error) => {
         console.error(`WebGPU ${error.constructor.name}: ${error.message}`);
         showToast(error.message, { kind: 'error', title: 'WebGPU error' });
       },
     });
+    if (gpu.compatibility) {
+      gpu.destroy();
+      // The canvas is drawn through an -srgb view of its texture (below): compatibility mode
+      // allows no format reinterpretation (and no bgra8unorm-srgb).
+      throw new GpuUnavailableError(
+        'limit',
+        'This GPU offers WebGPU only in compatibility mode, and the demo draws through an sRGB view of the canvas, which that mode does not allow.',
+      );
+    }
     const tracked = trackDevice(gpu.device);
     this.memory = tracked.memory;
     this.gpu = { ...gpu, device: tracked.device };

@@ -14,6 +14,8 @@ import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
 import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
+import { outputCapacity } from '../gpu/factors.ts';
+import type { LimitName } from '../gpu/device.ts';
 import { CcTableCache, type CcTables } from './cc-tables.ts';
 import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
@@ -137,8 +139,37 @@ class TessellationDemo extends DemoBase {
     return this.controller.data;
   }
 
+  /** The output buffers the capacity asks for (positions: 12 bytes a vertex, indices: 12 a triangle). */
+  protected override wantedLimits(): Partial<Record<LimitName, number>> {
+    const bytes = 12 * this.#requestedCapacity;
+    return { maxStorageBufferBindingSize: bytes, maxBufferSize: bytes };
+  }
+
+  get #requestedCapacity(): number {
+    return Math.round(this.params.capacity * 1e6);
+  }
+
+  /** What the device's limits cut (said once per device, and kept in the stats). */
+  #clamps: string[] = [];
+
+  #reportClamps(): void {
+    const clamps = [...this.gpu.clamps];
+    const asked = this.#requestedCapacity;
+    const fits = outputCapacity(this.gpu.device.limits, { vertexCapacity: asked, triangleCapacity: asked });
+    if (fits.vertexCapacity < asked) {
+      clamps.push(`output buffers: ${fits.vertexCapacity.toLocaleString('en-US')} vertices and triangles (${asked.toLocaleString('en-US')} asked for), the budget scales factors to fit`);
+    }
+    const before = this.#clamps.join('\n');
+    this.#clamps = clamps;
+    // Once per device, and again only if a new device clamps differently.
+    if (clamps.length && clamps.join('\n') !== before) {
+      showToast(`${clamps.join('\n')}`, { kind: 'info', title: 'Clamped to this GPU\'s limits', timeout: 10_000 });
+    }
+  }
+
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
+    this.#reportClamps();
     this.#renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
     this.#flat = new CageGeometry(device);
     this.#counts = new CountsReader(device);
@@ -377,6 +408,7 @@ class TessellationDemo extends DemoBase {
       rebuilds: this.#rebuilds,
       adapter: this.gpu.adapterName,
       memory: this.memory.counts,
+      clamps: this.#clamps,
     });
   }
 
