@@ -88,6 +88,20 @@ class TessellationDemo extends DemoBase {
     clearTimeout: (id) => window.clearTimeout(id),
   });
   #firstFrameShown = false;
+  /** Test hook (window.tessellab.holdPreparation): surface data waits while held, as slow data would. */
+  #hold: { held: boolean; promise: Promise<void>; release(): void } = { held: false, promise: Promise.resolve(), release() {} };
+
+  holdPreparation(hold: boolean): void {
+    if (hold === this.#hold.held) return;
+    if (!hold) {
+      this.#hold.release();
+      this.#hold = { held: false, promise: Promise.resolve(), release() {} };
+      return;
+    }
+    let release!: () => void;
+    const promise = new Promise<void>((r) => (release = r));
+    this.#hold = { held: true, promise, release };
+  }
 
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
     super(canvas, { frozenTime: params.t });
@@ -98,8 +112,8 @@ class TessellationDemo extends DemoBase {
   /** The page's side of the controller. */
   #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
     return {
-      prepareSurface: (model) => this.#ccTables.get(model.cage),
-      surfaceReady: (model) => this.#ccTables.has(model.cage),
+      prepareSurface: (model) => this.#hold.promise.then(() => this.#ccTables.get(model.cage)),
+      surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage),
       upload: (model, surface, data) => this.#upload(model, surface, data),
       loading: (message) => setLoading(message),
       preparing: () => this.updateStats(true),
@@ -362,7 +376,8 @@ class TessellationDemo extends DemoBase {
         this.updateStats();
       });
     }
-    if (!this.#firstFrameShown && this.model) {
+    // Not the interim cage drawn while the model's surface is prepared: ready means the surface asked for.
+    if (!this.#firstFrameShown && this.model && !this.controller.preparing) {
       this.#firstFrameShown = true;
       // Ready once the GPU has finished the first complete frame (what screenshots wait for).
       void this.gpu.device.queue.onSubmittedWorkDone().then(() => {
@@ -621,9 +636,13 @@ async function main(): Promise<void> {
   (window as unknown as { tessellab: unknown }).tessellab = {
     demo,
     loseDevice: () => demo.gpu.device.destroy(),
+    /** Hold back (true) or hand over (false) models' surface data: the page shows what it draws meanwhile. */
+    holdPreparation: (hold: boolean) => demo.holdPreparation(hold),
     /** The bytes (and counts) of the page's live GPU buffers and textures, and per label. */
     gpuMemory: () => ({ ...demo.memory.counts, byLabel: demo.memory.byLabel() }),
   };
+  // Test hook: hold the first model's surface data from the start (e2e/demo.spec.ts).
+  if ((window as { tessellabHoldPreparation?: boolean }).tessellabHoldPreparation) demo.holdPreparation(true);
   if (!(await demo.start())) return;
 
   const name = params.model ?? DEFAULT_MODEL;
