@@ -301,7 +301,9 @@ class TessellationDemo extends DemoBase {
       this.#countsOwed = true;
       this.#geometryDirty = false;
       this.#rebuiltThisFrame = true;
-      this.#rebuilds++;
+      // The stats count tessellator builds; the flat cage's (drawn meanwhile while a surface is
+      // prepared) encodes nothing.
+      if (geometry instanceof TessellatorGeometry) this.#rebuilds++;
     }
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
