@@ -14,7 +14,7 @@ import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
 import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
-import { outputCapacity } from '../gpu/factors.ts';
+import { clampMessages, wantedOutputLimits } from './limits.ts';
 import type { LimitName } from '../gpu/device.ts';
 import { CcTableCache, type CcTables } from './cc-tables.ts';
 import { DemoController, type DemoPorts, type Shown } from './controller.ts';
@@ -155,8 +155,7 @@ class TessellationDemo extends DemoBase {
 
   /** The output buffers the capacity asks for (positions: 12 bytes a vertex, indices: 12 a triangle). */
   protected override wantedLimits(): Partial<Record<LimitName, number>> {
-    const bytes = 12 * this.#requestedCapacity;
-    return { maxStorageBufferBindingSize: bytes, maxBufferSize: bytes };
+    return wantedOutputLimits(this.#requestedCapacity);
   }
 
   get #requestedCapacity(): number {
@@ -167,17 +166,12 @@ class TessellationDemo extends DemoBase {
   #clamps: string[] = [];
 
   #reportClamps(): void {
-    const clamps = [...this.gpu.clamps];
-    const asked = this.#requestedCapacity;
-    const fits = outputCapacity(this.gpu.device.limits, { vertexCapacity: asked, triangleCapacity: asked });
-    if (fits.vertexCapacity < asked) {
-      clamps.push(`output buffers: ${fits.vertexCapacity.toLocaleString('en-US')} vertices and triangles (${asked.toLocaleString('en-US')} asked for), the budget scales factors to fit`);
-    }
+    const clamps = clampMessages(this.gpu.clamps, this.gpu.device.limits, this.#requestedCapacity);
     const before = this.#clamps.join('\n');
     this.#clamps = clamps;
     // Once per device, and again only if a new device clamps differently.
     if (clamps.length && clamps.join('\n') !== before) {
-      showToast(`${clamps.join('\n')}`, { kind: 'info', title: 'Clamped to this GPU\'s limits', timeout: 10_000 });
+      showToast(clamps.join('\n'), { kind: 'info', title: 'Clamped to this GPU\'s limits', timeout: 10_000 });
     }
   }
 
