@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { CageError } from '../src/mesh/index.ts';
-import { DemoController, errorMessage, type DemoPorts } from '../src/app/controller.ts';
+import { DemoController, errorMessage, type DemoControllerOptions, type DemoPorts } from '../src/app/controller.ts';
 import type { Surface } from '../src/app/params.ts';
 
 interface Model {
@@ -30,7 +30,7 @@ function deferred<T>() {
 /** Let every settled promise's continuations run. */
 const flush = () => new Promise((r) => setTimeout(r, 0));
 
-function harness(surface: Surface = 'catmull-clark') {
+function harness(surface: Surface = 'catmull-clark', options: DemoControllerOptions = {}) {
   const log: string[] = [];
   const pending = new Map<string, ReturnType<typeof deferred<Data>>>();
   const ready = new Set<string>();
@@ -66,7 +66,7 @@ function harness(surface: Surface = 'catmull-clark') {
     fellBack: (model, reason) => log.push(`fell back ${model.title}: ${reason}`),
     shown: (model, previous, placement) => log.push(`shown ${model.title} (was ${previous?.title ?? 'none'}) ${placement ?? '-'}`),
   };
-  const c = new DemoController<Model, Data, string>(ports, surface);
+  const c = new DemoController<Model, Data, string>(ports, surface, options);
   const release = (title: string) => {
     ready.add(title);
     pending.get(title)!.resolve({ of: title });
@@ -228,6 +228,52 @@ describe('DemoController', () => {
     expect(await toCc).toBe(false);
     expect(h.busy()).toBe(false);
     expect(h.gpu()).toEqual({ model: 'creature', surface: 'phong', data: null });
+  });
+
+  it('slow surface data: the model is shown at once as its flat cage, placed once; the surface follows in place', async () => {
+    const h = harness('catmull-clark', { interimAfterMs: 5 });
+    const first = h.c.loadModel(model('torus'), 'torus', 'place-torus');
+    await flush();
+    h.release('torus');
+    expect(await first).toBe(true);
+    const done = h.c.loadModel(model('pawn'), 'pawn', 'place-pawn');
+    await new Promise((r) => setTimeout(r, 20));
+    // The interim picture: pawn's cage, placed with its camera, the wait still said.
+    expect(h.c.model?.title).toBe('pawn');
+    expect(h.c.shownSurface).toBe('cage');
+    expect(h.c.preparing).toBe(true);
+    expect(h.gpu()).toEqual({ model: 'pawn', surface: 'cage', data: null });
+    expect(h.log.at(-1)).toBe('loading Preparing subdivision data…');
+    h.release('pawn');
+    expect(await done).toBe(true);
+    expect(h.gpu()).toEqual({ model: 'pawn', surface: 'catmull-clark', data: 'pawn' });
+    // Placed once (with the cage); the surface's arrival is the same model: no new placement.
+    expect(h.log.filter((l) => l.startsWith('shown') && l.includes('pawn'))).toEqual([
+      'shown pawn (was torus) place-pawn',
+      'shown pawn (was pawn) -',
+    ]);
+    expect(h.busy()).toBe(false);
+  });
+
+  it('surface data that comes in time shows no interim cage; a request overtaken while waiting shows nothing', async () => {
+    const h = harness('catmull-clark', { interimAfterMs: 50 });
+    const first = h.c.loadModel(model('torus'), 'torus');
+    await flush();
+    h.release('torus');
+    expect(await first).toBe(true);
+    expect(h.log.filter((l) => l.startsWith('upload'))).toEqual(['upload torus catmull-clark +torus']);
+    const slow = h.c.loadModel(model('creature'), 'creature');
+    await flush();
+    const other = h.c.loadModel(model('gear'), 'gear');
+    await new Promise((r) => setTimeout(r, 80));
+    // gear's own wait went past the delay: its cage is shown; creature's never was.
+    expect(h.log.some((l) => l.startsWith('upload creature'))).toBe(false);
+    expect(h.gpu()).toEqual({ model: 'gear', surface: 'cage', data: null });
+    h.release('creature');
+    h.release('gear');
+    expect(await slow).toBe(false);
+    expect(await other).toBe(true);
+    expect(h.gpu()).toEqual({ model: 'gear', surface: 'catmull-clark', data: 'gear' });
   });
 
   it('reupload puts the shown state on a new device', async () => {

@@ -25,7 +25,8 @@ async function gpuEntry(): Promise<GPU> {
 
 beforeAll(async () => {
   gpuObject = await gpuEntry();
-  ctx = await createGpu({ gpu: gpuObject });
+  // More than any adapter has: the device gets the adapter's maximum, and says it was clamped.
+  ctx = await createGpu({ gpu: gpuObject, wantedLimits: { maxStorageBufferBindingSize: 2 ** 40, maxBufferSize: 2 ** 40 } });
 });
 afterAll(() => {
   ctx?.destroy();
@@ -78,10 +79,12 @@ function differing(a: Uint8Array, b: Uint8Array): number {
 }
 
 describe('device', () => {
-  it('raises the buffer limits to the adapter maximum and labels the device', () => {
+  it('raises the wanted buffer limits up to the adapter maximum, says what it clamped, and labels the device', () => {
     const { adapter, device } = ctx;
     expect(device.limits.maxStorageBufferBindingSize).toBe(adapter.limits.maxStorageBufferBindingSize);
     expect(device.limits.maxBufferSize).toBe(adapter.limits.maxBufferSize);
+    expect(ctx.clamps).toHaveLength(2);
+    expect(ctx.clamps[0]).toMatch(/^maxStorageBufferBindingSize: \d+ MiB of the 1048576 MiB asked for$/);
     expect(device.label).toBe('tessellab device');
     expect(ctx.timestamps).toBe(adapter.features.has('timestamp-query'));
     expect(device.features.has('timestamp-query')).toBe(ctx.timestamps);

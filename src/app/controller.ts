@@ -7,6 +7,10 @@
  *     → upload to the GPU (Catmull-Clark refused there too: Phong instead, and say why)
  *     → commit: the model, its data and the surface drawn change together, and the page is told.
  *
+ * Something on screen at once: when the surface data of a model not shown yet takes longer than
+ * `interimAfterMs`, the model is committed first as its flat cage (placed, its camera framed), and
+ * the data's arrival switches the surface of the same model: the camera does not move.
+ *
  * One staleness rule: every request takes the next serial number, and a flow whose serial is no
  * longer the latest stops at its next step and changes nothing (a later model or surface replaced
  * it). A failed request changes nothing either: the page keeps what it showed, and is told why.
@@ -49,8 +53,17 @@ export interface DemoPorts<M extends { title: string }, D, P = void> {
   shown(model: M, previous: M | null, placement: P | undefined): void;
 }
 
+export interface DemoControllerOptions {
+  /** Milliseconds of waiting for surface data before the model is shown as its flat cage
+   * meanwhile (default 100: data that comes within a few frames shows no interim picture). */
+  interimAfterMs?: number;
+}
+
+const BUILDING = 'Preparing subdivision data…';
+
 export class DemoController<M extends { title: string }, D, P = void> {
   readonly #ports: DemoPorts<M, D, P>;
+  readonly #interimAfterMs: number;
   #surface: Surface;
   #serial = 0;
   #version = 0;
@@ -65,8 +78,9 @@ export class DemoController<M extends { title: string }, D, P = void> {
   /** The serial of the request that set `preparing` (only it clears it). */
   #preparingFor = 0;
 
-  constructor(ports: DemoPorts<M, D, P>, surface: Surface) {
+  constructor(ports: DemoPorts<M, D, P>, surface: Surface, options: DemoControllerOptions = {}) {
     this.#ports = ports;
+    this.#interimAfterMs = options.interimAfterMs ?? 100;
     this.#surface = surface;
     this.#shown = surface;
   }
@@ -153,18 +167,30 @@ export class DemoController<M extends { title: string }, D, P = void> {
     let data: D | null = model === this.#model ? this.#data : null;
     let dataError: string | null = model === this.#model ? this.#dataError : null;
     if (surface === 'catmull-clark' && !data) {
-      if (!this.#ports.surfaceReady(model)) this.#ports.loading('Preparing subdivision data…');
+      const ready = this.#ports.surfaceReady(model);
+      if (!ready) this.#ports.loading(BUILDING);
       this.#preparingFor = serial;
       this.#setPreparing(true);
-      try {
-        data = await this.#ports.prepareSurface(model);
-        dataError = null;
-      } catch (e) {
-        dataError = errorMessage(e);
-      } finally {
-        // A later request that prepares owns the flag; one that does not must not leave it set.
-        if (this.#preparingFor === serial) this.#setPreparing(false);
+      const prepared = Promise.resolve()
+        .then(() => this.#ports.prepareSurface(model))
+        .then(
+          (d) => ({ data: d, error: null }),
+          (e: unknown) => ({ data: null, error: errorMessage(e) }),
+        );
+      // A model not on screen yet, whose data is slow: show its flat cage meanwhile.
+      if (!ready && model !== this.#model) {
+        const first = await Promise.race([prepared, new Promise<null>((r) => setTimeout(() => r(null), this.#interimAfterMs))]);
+        if (stale()) {
+          if (this.#preparingFor === serial) this.#setPreparing(false);
+          return false;
+        }
+        if (first === null) this.#showInterim(model, placement);
       }
+      const r = await prepared;
+      data = r.data;
+      dataError = r.error;
+      // A later request that prepares owns the flag; one that does not must not leave it set.
+      if (this.#preparingFor === serial) this.#setPreparing(false);
       if (stale()) return false;
     }
 
@@ -199,6 +225,33 @@ export class DemoController<M extends { title: string }, D, P = void> {
     // The placement goes with the model's first showing (also when a surface change overtook its load).
     this.#ports.shown(model, previous, model !== previous ? placement : undefined);
     return true;
+  }
+
+  /** Commit `model` as its flat cage while its surface data is prepared (placed now, so that the
+   * surface that follows keeps the camera). If even the cage cannot be uploaded, nothing changes:
+   * the full upload that follows will say why. */
+  #showInterim(model: M, placement: P | undefined): void {
+    try {
+      this.#ports.upload(model, 'cage', null);
+    } catch {
+      if (this.#model) {
+        try {
+          this.#ports.upload(this.#model, this.#shown, this.#data);
+        } catch {
+          // As in #run: the device is going away, and onInit will upload again.
+        }
+      }
+      return;
+    }
+    const previous = this.#model;
+    this.#version++;
+    this.#model = model;
+    this.#data = null;
+    this.#dataError = null;
+    this.#shown = 'cage';
+    this.#ports.shown(model, previous, model !== previous ? placement : undefined);
+    // The page ends a wait when a model is shown; this one goes on.
+    this.#ports.loading(BUILDING);
   }
 
   /** Upload for `surface`; where the Catmull-Clark upload refuses the model, Phong instead. */

@@ -6,7 +6,8 @@
  * Frames are drawn on demand: only when something changed (camera, size, settings) or while
  * animating. `frozenTime` (the URL's ?t=) pins the clock for deterministic screenshots.
  */
-import { createGpu, GpuUnavailableError, type GpuContext } from '../gpu/device.ts';
+import { createGpu, GpuUnavailableError, type GpuContext, type LimitName } from '../gpu/device.ts';
+import { GpuMemory, trackDevice } from '../gpu/tracked-device.ts';
 import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { setLoading, setPageState, showFatal, showToast } from './ui.ts';
 
@@ -29,7 +30,11 @@ const KEY_ORBIT_STEP = (5 * Math.PI) / 180;
 export abstract class DemoBase {
   readonly canvas: HTMLCanvasElement;
   readonly frozenTime: number | null;
+  /** The device context; its `device` counts every buffer and texture made through it in
+   * `memory` (src/gpu/tracked-device.ts), so everything the page allocates is on the ledger. */
   gpu!: GpuContext;
+  /** The live GPU buffers and textures of the current device (a new ledger per device). */
+  memory = new GpuMemory();
   context!: GPUCanvasContext;
   /** The canvas texture's format, and the view format the renderer draws with (its -srgb twin). */
   canvasFormat!: GPUTextureFormat;
@@ -60,6 +65,10 @@ export abstract class DemoBase {
   protected onCameraChanged(): void {}
   /** Release GPU resources of a lost device (they are garbage, but hold JS references). */
   protected onDeviceLost(): void {}
+  /** Limits the page would like (requested up to what the adapter has; see GpuContext.clamps). */
+  protected wantedLimits(): Partial<Record<LimitName, number>> {
+    return {};
+  }
   /** Whether to keep drawing frames without further input (animation). */
   protected isAnimating(): boolean {
     return false;
@@ -110,21 +119,35 @@ export abstract class DemoBase {
   }
 
   async #initDevice(): Promise<void> {
-    this.gpu = await createGpu({
+    const gpu = await createGpu({
       gpu: navigator.gpu,
+      wantedLimits: this.wantedLimits(),
       onLost: (info) => void this.#recover(info),
       onUncapturedError: (error) => {
         console.error(`WebGPU ${error.constructor.name}: ${error.message}`);
         showToast(error.message, { kind: 'error', title: 'WebGPU error' });
       },
     });
+    if (gpu.compatibility) {
+      gpu.destroy();
+      // The canvas is drawn through an -srgb view of its texture (below): compatibility mode
+      // allows no format reinterpretation (and no bgra8unorm-srgb).
+      throw new GpuUnavailableError(
+        'limit',
+        'This GPU offers WebGPU only in compatibility mode, and the demo draws through an sRGB view of the canvas, which that mode does not allow.',
+      );
+    }
+    const tracked = trackDevice(gpu.device);
+    this.memory = tracked.memory;
+    this.gpu = { ...gpu, device: tracked.device };
     this.context = this.canvas.getContext('webgpu') as GPUCanvasContext;
     this.canvasFormat = navigator.gpu.getPreferredCanvasFormat();
     // Draw through an -srgb view: lighting stays linear, blending and MSAA resolve happen in
     // linear space, and the canvas (whose own format cannot be -srgb) stores encoded values.
     this.renderFormat = `${this.canvasFormat}-srgb` as GPUTextureFormat;
     this.context.configure({
-      device: this.gpu.device,
+      // The platform checks that this is a real GPUDevice: not the counting stand-in.
+      device: tracked.real,
       format: this.canvasFormat,
       viewFormats: [this.renderFormat],
       alphaMode: 'opaque',
@@ -156,7 +179,9 @@ export abstract class DemoBase {
   }
 
   #tick(): void {
-    if (this.#recovering || !this.camera) return;
+    // A hidden tab draws nothing (browsers mostly stop animation frames anyway); the frame owed
+    // stays owed and is drawn when the tab is shown again (see #bindInput's visibilitychange).
+    if (this.#recovering || !this.camera || document.visibilityState === 'hidden') return;
     if (!this.#dirty && !(this.frozenTime === null && this.isAnimating())) {
       this.#lastFrameAt = 0;
       return;
@@ -210,6 +235,13 @@ export abstract class DemoBase {
 
   #bindInput(): void {
     const canvas = this.canvas;
+    document.addEventListener('visibilitychange', () => {
+      if (document.visibilityState === 'visible') {
+        // Timings measured across the hidden time would read as one very long frame.
+        this.#lastFrameAt = 0;
+        this.requestFrame();
+      }
+    });
     canvas.addEventListener('pointerdown', (e) => {
       canvas.setPointerCapture(e.pointerId);
       this.#pointers.set(e.pointerId, { x: e.clientX, y: e.clientY });

@@ -14,6 +14,8 @@ import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
 import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
 import type { FactorParams } from '../gpu/types.ts';
+import { clampMessages, wantedOutputLimits } from './limits.ts';
+import type { LimitName } from '../gpu/device.ts';
 import { CcTableCache, type CcTables } from './cc-tables.ts';
 import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
@@ -86,6 +88,20 @@ class TessellationDemo extends DemoBase {
     clearTimeout: (id) => window.clearTimeout(id),
   });
   #firstFrameShown = false;
+  /** Test hook (window.tessellab.holdPreparation): surface data waits while held, as slow data would. */
+  #hold: { held: boolean; promise: Promise<void>; release(): void } = { held: false, promise: Promise.resolve(), release() {} };
+
+  holdPreparation(hold: boolean): void {
+    if (hold === this.#hold.held) return;
+    if (!hold) {
+      this.#hold.release();
+      this.#hold = { held: false, promise: Promise.resolve(), release() {} };
+      return;
+    }
+    let release!: () => void;
+    const promise = new Promise<void>((r) => (release = r));
+    this.#hold = { held: true, promise, release };
+  }
 
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
     super(canvas, { frozenTime: params.t });
@@ -96,8 +112,8 @@ class TessellationDemo extends DemoBase {
   /** The page's side of the controller. */
   #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
     return {
-      prepareSurface: (model) => this.#ccTables.get(model.cage),
-      surfaceReady: (model) => this.#ccTables.has(model.cage),
+      prepareSurface: (model) => this.#hold.promise.then(() => this.#ccTables.get(model.cage)),
+      surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage),
       upload: (model, surface, data) => this.#upload(model, surface, data),
       loading: (message) => setLoading(message),
       preparing: () => this.updateStats(true),
@@ -137,8 +153,31 @@ class TessellationDemo extends DemoBase {
     return this.controller.data;
   }
 
+  /** The output buffers the capacity asks for (positions: 12 bytes a vertex, indices: 12 a triangle). */
+  protected override wantedLimits(): Partial<Record<LimitName, number>> {
+    return wantedOutputLimits(this.#requestedCapacity);
+  }
+
+  get #requestedCapacity(): number {
+    return Math.round(this.params.capacity * 1e6);
+  }
+
+  /** What the device's limits cut (said once per device, and kept in the stats). */
+  #clamps: string[] = [];
+
+  #reportClamps(): void {
+    const clamps = clampMessages(this.gpu.clamps, this.gpu.device.limits, this.#requestedCapacity);
+    const before = this.#clamps.join('\n');
+    this.#clamps = clamps;
+    // Once per device, and again only if a new device clamps differently.
+    if (clamps.length && clamps.join('\n') !== before) {
+      showToast(clamps.join('\n'), { kind: 'info', title: 'Clamped to this GPU\'s limits', timeout: 10_000 });
+    }
+  }
+
   protected override async onInit(): Promise<void> {
     const device = this.gpu.device;
+    this.#reportClamps();
     this.#renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
     this.#flat = new CageGeometry(device);
     this.#counts = new CountsReader(device);
@@ -256,7 +295,9 @@ class TessellationDemo extends DemoBase {
       this.#countsOwed = true;
       this.#geometryDirty = false;
       this.#rebuiltThisFrame = true;
-      this.#rebuilds++;
+      // The stats count tessellator builds; the flat cage's (drawn meanwhile while a surface is
+      // prepared) encodes nothing.
+      if (geometry instanceof TessellatorGeometry) this.#rebuilds++;
     }
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
@@ -331,7 +372,8 @@ class TessellationDemo extends DemoBase {
         this.updateStats();
       });
     }
-    if (!this.#firstFrameShown && this.model) {
+    // Not the interim cage drawn while the model's surface is prepared: ready means the surface asked for.
+    if (!this.#firstFrameShown && this.model && !this.controller.preparing) {
       this.#firstFrameShown = true;
       // Ready once the GPU has finished the first complete frame (what screenshots wait for).
       void this.gpu.device.queue.onSubmittedWorkDone().then(() => {
@@ -375,6 +417,8 @@ class TessellationDemo extends DemoBase {
       jsMs: this.timing.jsMs,
       rebuilds: this.#rebuilds,
       adapter: this.gpu.adapterName,
+      memory: this.memory.counts,
+      clamps: this.#clamps,
     });
   }
 
@@ -587,7 +631,13 @@ async function main(): Promise<void> {
   (window as unknown as { tessellab: unknown }).tessellab = {
     demo,
     loseDevice: () => demo.gpu.device.destroy(),
+    /** Hold back (true) or hand over (false) models' surface data: the page shows what it draws meanwhile. */
+    holdPreparation: (hold: boolean) => demo.holdPreparation(hold),
+    /** The bytes (and counts) of the page's live GPU buffers and textures, and per label. */
+    gpuMemory: () => ({ ...demo.memory.counts, byLabel: demo.memory.byLabel() }),
   };
+  // Test hook: hold the first model's surface data from the start (e2e/demo.spec.ts).
+  if ((window as { tessellabHoldPreparation?: boolean }).tessellabHoldPreparation) demo.holdPreparation(true);
   if (!(await demo.start())) return;
 
   const name = params.model ?? DEFAULT_MODEL;

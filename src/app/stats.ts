@@ -4,6 +4,7 @@
  */
 import type { LoadedModel } from './models.ts';
 import type { MeshCounts } from './counts.ts';
+import type { GpuMemoryCounts } from '../gpu/tracked-device.ts';
 
 /** The surface drawn, and what the Catmull-Clark tables are (or why there are none). */
 export interface SurfaceStats {
@@ -43,6 +44,10 @@ export interface StatsInput {
   jsMs: number;
   rebuilds: number;
   adapter: string;
+  /** The page's live GPU buffers and textures (src/gpu/tracked-device.ts). */
+  memory?: GpuMemoryCounts;
+  /** What the device's limits clamped (output buffers, budget), said once per device. */
+  clamps?: string[];
 }
 
 const int = new Intl.NumberFormat('en-US');
@@ -55,6 +60,10 @@ function percent(n: number, of: number): string {
   if (!of) return '–';
   const p = (100 * n) / of;
   return p < 0.1 && n > 0 ? '<0.1%' : `${p.toFixed(p < 10 ? 1 : 0)}%`;
+}
+
+function mib(bytes: number): string {
+  return `${(bytes / 2 ** 20).toFixed(bytes < 10 * 2 ** 20 ? 2 : 1)} MiB`;
 }
 
 function ms(x: number): string {
@@ -130,6 +139,11 @@ export function renderStats(s: StatsInput): string {
     rows.push(row('GPU ms', '<span class="muted">no timestamp-query on this device</span>', 'stats-gpu'));
   }
   rows.push(row('frame', `${s.frameMs ? `${s.frameMs.toFixed(1)} ms` : 'idle'} · JS ${s.jsMs.toFixed(2)} ms · ${int.format(s.rebuilds)} builds`, 'stats-frame'));
+  if (s.memory) {
+    const m = s.memory;
+    rows.push(row('GPU memory', `<b>${mib(m.bytes)}</b> <span class="muted">${int.format(m.buffers)} buffers ${mib(m.bufferBytes)} · ${int.format(m.textures)} textures ${mib(m.textureBytes)}</span>`, 'stats-memory'));
+  }
+  if (s.clamps?.length) rows.push(row('limits', s.clamps.map((c) => `<span class="warn">${esc(c)}</span>`).join('<br>'), 'stats-limits'));
   rows.push(row('adapter', `<span class="muted">${esc(s.adapter)}</span>`));
   return `<dl>${rows.join('')}</dl>`;
 }

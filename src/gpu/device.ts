@@ -3,8 +3,15 @@
  * dawn.node's GPU object.
  *
  * The tessellator stores the whole output mesh in a few large buffers (the talk's 16M-vertex
- * cap is ~700 MB), so we ask for the largest buffer limits the adapter allows: the device
- * defaults are only 128 MiB per storage binding and 256 MiB per buffer, whatever the GPU.
+ * cap is ~700 MB), more than the device defaults (128 MiB per storage binding, 256 MiB per
+ * buffer). The page says how much it would like (`wantedLimits`); we request that much where the
+ * adapter has it, and otherwise what the adapter has, and list each such clamp in `clamps` so the
+ * page can tell the user (its output buffers then shrink to fit: factors.ts outputCapacity).
+ *
+ * Limits the pipeline cannot run without (`minimumLimits`, PIPELINE_LIMITS) are requested as
+ * they are, or the device is refused with a message naming them: a WebGPU compatibility-mode
+ * adapter (OpenGL ES / D3D11 class) defaults to 128 invocations per workgroup and no storage
+ * buffers in the vertex stage, though it may offer more when asked.
  */
 
 export type GpuProblem = 'no-webgpu' | 'no-adapter' | 'missing-feature' | 'limit' | 'device-failed';
@@ -19,15 +26,45 @@ export class GpuUnavailableError extends Error {
   }
 }
 
-export type LimitName = 'maxStorageBufferBindingSize' | 'maxBufferSize' | 'maxStorageBuffersPerShaderStage' | 'maxComputeWorkgroupStorageSize' | 'maxComputeInvocationsPerWorkgroup';
+export type LimitName =
+  | 'maxStorageBufferBindingSize'
+  | 'maxBufferSize'
+  | 'maxStorageBuffersPerShaderStage'
+  | 'maxStorageBuffersInVertexStage'
+  | 'maxComputeWorkgroupStorageSize'
+  | 'maxComputeInvocationsPerWorkgroup'
+  | 'maxComputeWorkgroupSizeX';
+
+/**
+ * What the demo's passes need beyond WebGPU compatibility mode's defaults:
+ *  - 256 invocations along x: wgsl/scan.wgsl runs @workgroup_size(256) (compat: 128);
+ *  - 2 read-only storage buffers in the vertex stage: the renderer's wireframe (indices and
+ *    positions) and patch colours (source triangles and kinds) bind group (compat: 0).
+ * Core WebGPU's defaults meet all of them. tests/limits.node.test.ts checks that a device with the
+ * compatibility-mode defaults fails without them and runs the whole pipeline with them.
+ */
+export const PIPELINE_LIMITS: Partial<Record<LimitName, number>> = {
+  maxComputeInvocationsPerWorkgroup: 256,
+  maxComputeWorkgroupSizeX: 256,
+  maxStorageBuffersInVertexStage: 2,
+};
 
 export interface DeviceOptions {
   /** `navigator.gpu`, or dawn.node's GPU object. */
   gpu: GPU | undefined;
   /** Features the app cannot run without (none today: the demo needs vanilla WebGPU). */
   requiredFeatures?: GPUFeatureName[];
-  /** Smallest acceptable values of limits (checked against the adapter, then requested). */
+  /** Smallest acceptable values of limits (checked against the adapter, then requested).
+   * PIPELINE_LIMITS are always among them. A limit the adapter does not know (e.g.
+   * maxStorageBuffersInVertexStage, which only implementations with compatibility mode have)
+   * is not restricted there, and is not requested. */
   minimumLimits?: Partial<Record<LimitName, number>>;
+  /** Limits the app would like (e.g. buffer sizes for the output it was asked for): requested up
+   * to what the adapter has; where it has less, the clamp is listed in GpuContext.clamps. */
+  wantedLimits?: Partial<Record<LimitName, number>>;
+  /** 'compatibility' asks for a compatibility-mode adapter (where the implementation has one);
+   * without it, and when no core adapter is available, the compatibility one is tried too. */
+  featureLevel?: 'core' | 'compatibility';
   /** Called once when the device is lost for any reason other than our own `destroy()`. */
   onLost?: (info: GPUDeviceLostInfo) => void;
   /** Validation and out-of-memory errors nobody caught with an error scope. */
@@ -42,19 +79,26 @@ export interface GpuContext {
   timestamps: boolean;
   /** "vendor / architecture / description", for the stats panel and bug reports. */
   adapterName: string;
+  /** Wanted limits the adapter could not give, one sentence each ("maxBufferSize: 256 MiB of
+   * the 768 MiB asked for"): the page says so. Empty when everything wanted was granted. */
+  clamps: string[];
+  /** Whether the device runs with WebGPU's compatibility-mode restrictions. */
+  compatibility: boolean;
   /** Destroy the device without reporting a loss. */
   destroy(): void;
 }
-
-/** Limits raised to the adapter's maximum: everything that bounds how big the output mesh may be. */
-const RAISED_LIMITS: LimitName[] = ['maxStorageBufferBindingSize', 'maxBufferSize', 'maxStorageBuffersPerShaderStage'];
 
 export async function createGpu(options: DeviceOptions): Promise<GpuContext> {
   const { gpu } = options;
   if (!gpu) {
     throw new GpuUnavailableError('no-webgpu', 'navigator.gpu is not defined: this browser does not support WebGPU, or it is turned off.');
   }
-  const adapter = await gpu.requestAdapter({ powerPreference: options.powerPreference ?? 'high-performance' });
+  const powerPreference = options.powerPreference ?? 'high-performance';
+  // A device that only has compatibility mode (OpenGL ES, D3D11) gives no core adapter: ask for
+  // a compatibility one then (implementations without the option ignore featureLevel).
+  const adapter =
+    (await gpu.requestAdapter({ powerPreference, featureLevel: options.featureLevel ?? 'core' })) ??
+    (options.featureLevel === 'compatibility' ? null : await gpu.requestAdapter({ powerPreference, featureLevel: 'compatibility' }));
   if (!adapter) {
     throw new GpuUnavailableError('no-adapter', 'requestAdapter() returned null: WebGPU is supported, but no suitable GPU adapter is available (it may be blocklisted).');
   }
@@ -63,17 +107,13 @@ export async function createGpu(options: DeviceOptions): Promise<GpuContext> {
   if (missing.length) {
     throw new GpuUnavailableError('missing-feature', `This GPU lacks the WebGPU feature${missing.length > 1 ? 's' : ''} ${missing.join(', ')}.`);
   }
-  for (const [name, min] of Object.entries(options.minimumLimits ?? {}) as [LimitName, number][]) {
-    const has = adapter.limits[name];
-    if (has < min) {
-      throw new GpuUnavailableError('limit', `This GPU's ${name} is ${has}; the demo needs at least ${min}.`);
-    }
-  }
-
-  const requiredLimits: Record<string, number> = {};
-  for (const name of RAISED_LIMITS) requiredLimits[name] = adapter.limits[name];
-  for (const [name, min] of Object.entries(options.minimumLimits ?? {})) {
-    requiredLimits[name] = Math.max(requiredLimits[name] ?? 0, min);
+  const { requiredLimits, clamps, short } = planLimits(
+    adapter.limits,
+    { ...PIPELINE_LIMITS, ...options.minimumLimits },
+    options.wantedLimits ?? {},
+  );
+  if (short.length) {
+    throw new GpuUnavailableError('limit', `This GPU's limits are below what the demo needs: ${short.join('; ')}.`);
   }
   // Timestamps are optional: with them the stats show per-pass GPU time, without them they say so.
   const timestamps = adapter.features.has('timestamp-query');
@@ -100,6 +140,10 @@ export async function createGpu(options: DeviceOptions): Promise<GpuContext> {
     adapter,
     device,
     timestamps,
+    clamps,
+    // Without core-features-and-limits (a feature that core devices always have), compatibility
+    // mode's restrictions apply; implementations that predate the feature have no such mode.
+    compatibility: isCompatibilityDevice(device),
     adapterName: describeAdapter(adapter),
     destroy() {
       destroyedByUs = true;
@@ -112,4 +156,49 @@ function describeAdapter(adapter: GPUAdapter): string {
   const info = adapter.info;
   if (!info) return 'unknown adapter';
   return [info.vendor, info.architecture, info.description].filter((s) => s?.length).join(' / ') || 'unknown adapter';
+}
+
+/** Whether `device` has WebGPU compatibility mode's restrictions. */
+export function isCompatibilityDevice(device: GPUDevice): boolean {
+  return hasCoreFeatureName(device) && !device.features.has('core-features-and-limits');
+}
+
+/** Implementations that know compatibility mode list core-features-and-limits on core devices
+ * and expose maxStorageBuffersInVertexStage; older ones have neither (and are all core). */
+function hasCoreFeatureName(device: GPUDevice): boolean {
+  return 'maxStorageBuffersInVertexStage' in device.limits;
+}
+
+function formatLimit(name: string, value: number): string {
+  return /Size$/.test(name) && value >= 2 ** 20 ? `${Math.round(value / 2 ** 20)} MiB` : String(value);
+}
+
+/**
+ * The limits to request of an adapter: every minimum as it is (`short` lists those the adapter
+ * lacks), every wanted value up to what the adapter has (`clamps` lists those cut). Limits the
+ * adapter does not report are skipped: requesting an unknown limit fails device creation. Pure,
+ * for tests/device-limits.test.ts.
+ */
+export function planLimits(
+  adapterLimits: GPUSupportedLimits | Record<string, number | undefined>,
+  minimum: Partial<Record<LimitName, number>>,
+  wanted: Partial<Record<LimitName, number>>,
+): { requiredLimits: Record<string, number>; clamps: string[]; short: string[] } {
+  const has = (name: string) => (adapterLimits as Record<string, number | undefined>)[name];
+  const requiredLimits: Record<string, number> = {};
+  const clamps: string[] = [];
+  const short: string[] = [];
+  for (const [name, want] of Object.entries(wanted) as [LimitName, number][]) {
+    const max = has(name);
+    if (max === undefined) continue;
+    requiredLimits[name] = Math.min(want, max);
+    if (max < want) clamps.push(`${name}: ${formatLimit(name, max)} of the ${formatLimit(name, want)} asked for`);
+  }
+  for (const [name, min] of Object.entries(minimum) as [LimitName, number][]) {
+    const max = has(name);
+    if (max === undefined) continue;
+    if (max < min) short.push(`${name} is ${max}, the demo needs ${min}`);
+    else requiredLimits[name] = Math.max(requiredLimits[name] ?? 0, min);
+  }
+  return { requiredLimits, clamps, short };
 }

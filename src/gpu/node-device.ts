@@ -4,6 +4,7 @@
  * Debian `chromium` package ships (when the process is started that way: see adapterEnv).
  */
 import { existsSync } from 'node:fs';
+import { PIPELINE_LIMITS, planLimits } from './device.ts';
 
 export const SWIFTSHADER_ICD = '/usr/lib/chromium/vk_swiftshader_icd.json';
 
@@ -23,13 +24,18 @@ export async function createNodeDevice(dawnToggles: string[] = []): Promise<{ de
       : 'install a Vulkan driver, or the Debian chromium package for SwiftShader';
     throw new Error(`no WebGPU adapter: ${hint}`);
   }
+  // The largest output buffers the adapter allows (the CLI's capacity option asks for them), and
+  // the pipeline's own minimums (device.ts PIPELINE_LIMITS: a compatibility-mode adapter has
+  // smaller defaults, and is refused with the limits it lacks).
+  const { requiredLimits, short } = planLimits(adapter.limits, PIPELINE_LIMITS, {
+    maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize,
+    maxBufferSize: adapter.limits.maxBufferSize,
+  });
+  if (short.length) throw new Error(`the WebGPU adapter's limits are below what the pipeline needs: ${short.join('; ')}`);
   const device = await adapter.requestDevice({
     label: 'tessellab headless',
     requiredFeatures: adapter.features.has('timestamp-query') ? ['timestamp-query'] : [],
-    requiredLimits: {
-      maxStorageBufferBindingSize: adapter.limits.maxStorageBufferBindingSize,
-      maxBufferSize: adapter.limits.maxBufferSize,
-    },
+    requiredLimits,
   });
   const info = adapter.info;
   return { device, adapterName: [info.vendor, info.architecture, info.device, info.description].filter(Boolean).join(' ') || 'unknown adapter' };

@@ -1,0 +1,81 @@
+// Something on screen at once (issue 13): while a model's Catmull-Clark data is prepared, the
+// demo draws the model's flat cage, framed as the surface will be; when the data comes, the
+// surface replaces it with the same camera. The preparation is held back through the page's test
+// hook (window.tessellab.holdPreparation, or window.tessellabHoldPreparation before the page
+// starts), so the interim picture can be caught: it must be exactly the flat-cage frame of that
+// model (?surface=cage), and the final one exactly the surface's own frame, in both a first load
+// and a switch from another model.
+import { expect, test, type Page } from '@playwright/test';
+
+interface Hooks {
+  tessellab: {
+    holdPreparation(hold: boolean): void;
+    demo: { loadBuiltin(name: string): Promise<boolean>; controller: { shownSurface: string; preparing: boolean } };
+  };
+  tessellabHoldPreparation?: boolean;
+}
+
+async function ready(page: Page): Promise<void> {
+  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
+}
+
+/** The canvas, without the loading message drawn over it. */
+function canvas(page: Page): Promise<Buffer> {
+  return page.locator('#view').screenshot({ style: '#loading { visibility: hidden !important; }' });
+}
+
+/** The frozen frame of `model` drawn as `surface` when loaded directly. */
+async function reference(page: Page, model: string, surface: 'cage' | 'catmull-clark'): Promise<Buffer> {
+  await page.goto(`/?model=${model}&ui=0&t=0&surface=${surface}`);
+  await ready(page);
+  return canvas(page);
+}
+
+/** Wait until the page shows `model`'s flat cage while its surface data is held back. */
+async function interim(page: Page): Promise<void> {
+  await page.waitForFunction(() => {
+    const c = (window as unknown as Hooks).tessellab?.demo.controller;
+    return c?.preparing && c.shownSurface === 'cage';
+  });
+  await expect(page.locator('#loading')).toContainText('Preparing subdivision data');
+}
+
+test('a model is on screen while its surface is prepared, and the surface keeps its camera', async ({ page }) => {
+  test.setTimeout(120_000);
+  const errors: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+  });
+  page.on('pageerror', (e) => errors.push(e.message));
+  const boxCage = await reference(page, 'creased-box', 'cage');
+  const boxSurface = await reference(page, 'creased-box', 'catmull-clark');
+  const torusCage = await reference(page, 'torus', 'cage');
+  const torusSurface = await reference(page, 'torus', 'catmull-clark');
+  expect(boxCage.equals(boxSurface)).toBe(false);
+
+  // The first model: its cage at once (the page is not "ready": that means the surface asked for).
+  await page.addInitScript(() => {
+    (window as unknown as Hooks).tessellabHoldPreparation = true;
+  });
+  await page.goto('/?model=creased-box&ui=0&t=0');
+  await interim(page);
+  await expect.poll(async () => (await canvas(page)).equals(boxCage), { timeout: 15_000 }).toBe(true);
+  await expect(page.locator('body')).not.toHaveAttribute('data-state', 'ready');
+  await page.evaluate(() => (window as unknown as Hooks).tessellab.holdPreparation(false));
+  await ready(page);
+  await expect.poll(async () => (await canvas(page)).equals(boxSurface), { timeout: 15_000 }).toBe(true);
+
+  // A switch: the new model's cage at once (not the old model, not an empty canvas), then its surface.
+  await page.evaluate(() => {
+    const t = (window as unknown as Hooks).tessellab;
+    t.holdPreparation(true);
+    void t.demo.loadBuiltin('torus');
+  });
+  await interim(page);
+  await expect.poll(async () => (await canvas(page)).equals(torusCage), { timeout: 15_000 }).toBe(true);
+  await page.evaluate(() => (window as unknown as Hooks).tessellab.holdPreparation(false));
+  await page.waitForFunction(() => (window as unknown as Hooks).tessellab.demo.controller.shownSurface === 'catmull-clark');
+  await expect(page.locator('#loading')).toBeHidden();
+  await expect.poll(async () => (await canvas(page)).equals(torusSurface), { timeout: 15_000 }).toBe(true);
+  expect(errors).toEqual([]);
+});
