@@ -342,7 +342,9 @@ The adaptive rule keeps every visible edge's Phong chord error below 1/${lodScal
 ${equalError.join('\n')}
 `;
   if (outFile) {
-    writeFileSync(outFile, doc);
+    // Sections written by other scripts (e.g. scripts/displacement-storage.ts) are kept as they are.
+    const kept = existsSync(outFile) ? readFileSync(outFile, 'utf8').split(/^(?=## )/m).filter((sec) => sec.startsWith('## ') && !doc.includes(sec.split('\n')[0])) : [];
+    writeFileSync(outFile, kept.length ? `${doc}\n${kept.join('').trimEnd()}\n` : doc);
     console.log(`\nwritten to ${outFile}`);
   } else console.log('\n--models without --out: nothing written');
   return 0;
