@@ -2,7 +2,7 @@
 // per-edge results of the factor pass (src/pattern/clamped.ts is the CPU original):
 //   the frame (prepare.ts packFrame) names the bottom, left and right edges; a framed line is
 //   an edge's line read in the frame's direction; c is the clamp line u + v = c;
-//   rows j = 0..nl: row 0 keeps k_0 = #{u_i < c} columns (its points past u_{k_0} are the gap
+//   rows j = 0..nl: row 0 keeps k_0 = #{u_i < c} columns (nb − 1 if nr = 1; the points past u_{k_0} are the gap
 //   strip's), row j ≥ 1 keeps k_j = #{u_i < c − v_j}, row nl is the corner C; the gap strip is
 //   cut by the gap matching below. Shared by the count, plan and emit passes.
 

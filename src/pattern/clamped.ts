@@ -34,7 +34,8 @@
  *      would pass the line collapse onto E_j and are merged into it. Row 0 is the bottom edge
  *      itself, never clamped, so no edge vertex ever moves: its grid part is u_0..u_{k_0}, with
  *      u_{k_0} the first point at or past the clamp line (k_0 ≤ nb − 1 since c ≤ u_{nb−1}); the
- *      points after it belong to the gap strip. Row nl is corner C.
+ *      points after it belong to the gap strip. (With a single right segment, k_0 = nb − 1: the
+ *      strip then has only B and C to cut from.) Row nl is corner C.
  *      Between rows j and j+1, column i gives a "lower" triangle if i < k_j and an "upper"
  *      one if i < k_{j+1} (k_j = columns kept in row j), so a quad disappears exactly when it
  *      has collapsed.
@@ -274,6 +275,9 @@ export function assembleClamped(bottom: number[], left: number[], right: number[
   const end = new Array<number>(nl + 1);
   k[0] = 0;
   while (bottom[k[0]] < c) k[0]++; // c ≤ u_{nb−1}, so k_0 ≤ nb − 1
+  // With a single right segment the strip can only be fanned from B and C, and a bottom tail
+  // there would be a fan of caps from B: keep the bottom in the grid (fanned from E_1).
+  if (nr === 1) k[0] = nb - 1;
   end[0] = bottom[k[0]];
   for (let j = 1; j <= nl; j++) {
     const e = Math.max(0, c - left[j]);
