@@ -6,7 +6,7 @@
  * on the CPU once per model, in a worker (cc-tables.ts).
  */
 import GUI from 'lil-gui';
-import { CageError } from '../mesh/index.ts';
+import { CageError, isClosed } from '../mesh/index.ts';
 import { mat4 } from 'gl-matrix';
 import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
@@ -458,7 +458,7 @@ class TessellationDemo extends DemoBase {
     const surface = this.shownSurface;
     this.flat!.setCage(model.cage);
     if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? this.cc!.data : undefined);
-    this.renderer!.setMesh(this.geometry!.output);
+    this.renderer!.setMesh(this.geometry!.output, isClosed(model.cage, model.topology));
     this.renderer!.setPatchKinds(surface === 'catmull-clark' ? this.cc!.data.triKind : null);
     this.updateLegend();
     this.cageLines?.vertices.destroy();
