@@ -223,14 +223,16 @@ export class Renderer {
     // Each mesh pipeline twice, by the mesh's cage (setMesh): an open surface is drawn and casts
     // from both faces (lit from whichever side is seen, render-lit.wgsl); a closed one culls its
     // back faces, which otherwise fight the front faces along occlusion contours (the dotted
-    // brow of issue 13) and show where a thin sliver folds.
+    // brow of issue 13) and show where a thin sliver folds. Its shadow map keeps the faces turned
+    // AWAY from the light instead: the lit side then never shadows itself (culling those back
+    // faces there drew acne stripes all over the lit side).
     for (const closed of [false, true]) {
       const cullMode: GPUCullMode = closed ? 'back' : 'none';
       this.#shadowPipelines[+closed] = device.createRenderPipeline({
-        label: closed ? 'shadow pipeline (closed: back faces culled)' : 'shadow pipeline (open: two-sided)',
+        label: closed ? 'shadow pipeline (closed: faces towards the light culled)' : 'shadow pipeline (open: two-sided)',
         layout: frameOnly,
         vertex: { module: shadowModule, entryPoint: 'shadowVertex', buffers: [MESH_BUFFERS[0]] },
-        primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
+        primitive: { topology: 'triangle-list', cullMode: closed ? 'front' : 'none', frontFace: 'ccw' },
         // Slope-scaled bias against acne on surfaces the light grazes.
         depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
       });
