@@ -9,6 +9,7 @@
  * this file is the page: the canvas, the GPU objects, the panel, the stats and the messages.
  */
 import GUI from 'lil-gui';
+import { isClosed } from '../mesh/index.ts';
 import { mat4 } from 'gl-matrix';
 import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
 import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
@@ -453,7 +454,7 @@ class TessellationDemo extends DemoBase {
     if (!renderer || !this.#flat) return;
     this.#flat.setCage(model.cage);
     if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined);
-    renderer.setMesh(this.#geometryFor(surface)?.output ?? null);
+    renderer.setMesh(this.#geometryFor(surface)?.output ?? null, isClosed(model.cage, model.topology));
     renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
     this.#cageLines?.vertices.destroy();
     this.#cageLines = uploadCageLines(this.gpu.device, model.cage);

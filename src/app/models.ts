@@ -24,6 +24,10 @@ export const BUILTIN_MODELS: ModelEntry[] = [
   { name: 'gear', label: 'Gear' },
   { name: 'icosphere', label: 'Icosphere ball' },
   { name: 'sheet', label: 'Open sheet' },
+  // With UVs and a height map (public/models/displaced.json), shown undisplaced until the
+  // surface shaders displace.
+  { name: 'brick-box', label: 'Brick box (UVs)' },
+  { name: 'creature-wrinkles', label: 'Creature (UVs)' },
 ];
 
 export const DEFAULT_MODEL = 'creature';

@@ -92,8 +92,10 @@ export class Renderer {
   #shadingBindGroup: GPUBindGroup;
   #shadowMap: GPUTexture;
 
-  #shadowPipeline: GPURenderPipeline;
-  #litPipeline: GPURenderPipeline;
+  /** [open, closed] (setMesh's `closed`). */
+  #shadowPipelines: GPURenderPipeline[] = [];
+  #litPipelines: GPURenderPipeline[] = [];
+  #closed = false;
   #groundPipeline: GPURenderPipeline;
   #backdropPipeline: GPURenderPipeline;
   #wirePipeline: GPURenderPipeline;
@@ -212,25 +214,32 @@ export class Renderer {
       depthCompare: compare,
     });
 
-    this.#shadowPipeline = device.createRenderPipeline({
-      label: 'shadow pipeline',
-      layout: pipelineLayout('shadow'),
-      vertex: { module: shadowModule, entryPoint: 'shadowVertex', buffers: [MESH_BUFFERS[0]] },
-      // Both faces cast: open surfaces have no back to hide behind.
-      primitive: { topology: 'triangle-list', cullMode: 'none' },
-      // Slope-scaled bias against acne on surfaces the light grazes.
-      depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
-    });
-    this.#litPipeline = device.createRenderPipeline({
-      label: 'lit pipeline',
-      layout: pipelineLayout('lit'),
-      vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
-      fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
-      // No culling: open surfaces are lit from whichever side is seen.
-      primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'ccw' },
-      depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
-      multisample,
-    });
+    // Each mesh pipeline twice, by the mesh's cage (setMesh): an open surface is drawn and casts
+    // from both faces (lit from whichever side is seen, render-lit.wgsl); a closed one culls its
+    // back faces, which otherwise fight the front faces along occlusion contours (the dotted
+    // brow of issue 13) and show where a thin sliver folds. Its shadow map keeps the faces turned
+    // AWAY from the light instead: the lit side then never shadows itself (culling those back
+    // faces there drew acne stripes all over the lit side).
+    for (const closed of [false, true]) {
+      const cullMode: GPUCullMode = closed ? 'back' : 'none';
+      this.#shadowPipelines[+closed] = device.createRenderPipeline({
+        label: closed ? 'shadow pipeline (closed: faces towards the light culled)' : 'shadow pipeline (open: two-sided)',
+        layout: pipelineLayout('shadow'),
+        vertex: { module: shadowModule, entryPoint: 'shadowVertex', buffers: [MESH_BUFFERS[0]] },
+        primitive: { topology: 'triangle-list', cullMode: closed ? 'front' : 'none', frontFace: 'ccw' },
+        // Slope-scaled bias against acne on surfaces the light grazes.
+        depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
+      });
+      this.#litPipelines[+closed] = device.createRenderPipeline({
+        label: closed ? 'lit pipeline (closed: back faces culled)' : 'lit pipeline (open: two-sided)',
+        layout: pipelineLayout('lit'),
+        vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
+        fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
+        primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
+        depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
+        multisample,
+      });
+    }
     this.#groundPipeline = device.createRenderPipeline({
       label: 'ground pipeline',
       layout: pipelineLayout('ground'),
@@ -300,9 +309,11 @@ export class Renderer {
     }
   }
 
-  /** The mesh to draw: the tessellator's output (its buffers live as long as it does) or the cage's. */
-  setMesh(mesh: TessellatedMesh | null): void {
+  /** The mesh to draw: the tessellator's output (its buffers live as long as it does) or the cage's.
+   * `closed`: its cage has no boundary (mesh/topology.ts isClosed), so back faces are culled. */
+  setMesh(mesh: TessellatedMesh | null, closed = false): void {
     this.#mesh = mesh;
+    this.#closed = closed;
     this.#wireBindGroup = null;
     this.#wireArgsBindGroup = null;
     this.#patchBindGroup = null;
@@ -400,7 +411,7 @@ export class Renderer {
       timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 } : undefined,
     });
     if (mesh) {
-      shadowPass.setPipeline(this.#shadowPipeline);
+      shadowPass.setPipeline(this.#shadowPipelines[+this.#closed]);
       shadowPass.setBindGroup(0, this.#sceneBindGroup);
       shadowPass.setVertexBuffer(0, mesh.positions);
       shadowPass.setIndexBuffer(mesh.indices, 'uint32');
@@ -433,7 +444,7 @@ export class Renderer {
     pass.setPipeline(this.#backdropPipeline);
     pass.draw(3);
     if (mesh && this.#patchBindGroup) {
-      pass.setPipeline(this.#litPipeline);
+      pass.setPipeline(this.#litPipelines[+this.#closed]);
       pass.setBindGroup(2, this.#patchBindGroup);
       pass.setVertexBuffer(0, mesh.positions);
       pass.setVertexBuffer(1, mesh.normals);

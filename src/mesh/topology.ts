@@ -241,6 +241,14 @@ export function buildTopology(cage: Cage): Topology {
   return { ...he, vertBoundary, valence, vertRingStart };
 }
 
+/** Whether the cage is closed: every edge has two faces and no face is a hole (a drawn
+ * surface with no boundary, whose back faces are never seen from outside). */
+export function isClosed(cage: Cage, topo: HalfEdges): boolean {
+  if (cage.holes.length) return false;
+  for (let e = 0; e < topo.edgeFaceCount.length; e++) if (topo.edgeFaceCount[e] !== 2) return false;
+  return topo.edgeFaceCount.length > 0;
+}
+
 /** Find the edge joining a and b, or -1. */
 export function findEdge(m: HalfEdges, a: number, b: number): number {
   for (let k = m.vertEdgeOffsets[a]; k < m.vertEdgeOffsets[a + 1]; k++) {
