@@ -6,7 +6,6 @@
 import { defineConfig, devices } from '@playwright/test';
 import { chromiumArgs, chromiumPath } from './chromium-flags.ts';
 
-
 // E2E_PORT: run beside another server (or another run) on 4173.
 const port = Number(process.env.E2E_PORT ?? 4173);
 

@@ -95,7 +95,14 @@ function median(xs: number[]): number {
   return s[Math.floor(s.length / 2)];
 }
 
-async function timeRebuild(device: GPUDevice, tess: Tessellator, mesh: PreparedMesh, o: HeadlessOptions, repeats: number, cc?: CatmullClarkData): Promise<Run> {
+async function timeRebuild(
+  device: GPUDevice,
+  tess: Tessellator,
+  mesh: PreparedMesh,
+  o: HeadlessOptions,
+  repeats: number,
+  cc?: CatmullClarkData,
+): Promise<Run> {
   tess.setMesh(mesh, cc);
   const samples: Record<string, number>[] = [];
   for (let i = 0; i < repeats + 1; i++) {
@@ -156,7 +163,8 @@ function fixedFactorForError(mesh: PreparedMesh, o: HeadlessOptions, errorPixels
   for (let e = 0; e < mesh.edgeCount; e++) {
     const [a, b] = [mesh.edgeVerts[2 * e], mesh.edgeVerts[2 * e + 1]];
     const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
-    const p0 = v(mesh.positions, a), p1 = v(mesh.positions, b);
+    const p0 = v(mesh.positions, a),
+      p1 = v(mesh.positions, b);
     const off = phongMidpointOffset(p0, p1, v(mesh.normals, a), v(mesh.normals, b));
     const mid = [0, 1, 2].map((i) => (p0[i] + p1[i]) / 2 + off[i]);
     const dist = Math.hypot(mid[0] - cam.eye[0], mid[1] - cam.eye[1], mid[2] - cam.eye[2]);
@@ -170,7 +178,15 @@ export async function main(argv: string[]): Promise<number> {
   const quick = argv.includes('--quick');
   const outIdx = argv.indexOf('--out');
   const modelsIdx = argv.indexOf('--models');
-  const only = modelsIdx >= 0 ? new Set((argv[modelsIdx + 1] ?? '').split(',').map((m) => m.trim().replace(/\.obj$/, '')).filter(Boolean)) : undefined;
+  const only =
+    modelsIdx >= 0
+      ? new Set(
+          (argv[modelsIdx + 1] ?? '')
+            .split(',')
+            .map((m) => m.trim().replace(/\.obj$/, ''))
+            .filter(Boolean),
+        )
+      : undefined;
   const outFile = outIdx >= 0 ? argv[outIdx + 1] : only ? undefined : 'BENCHMARKS.md';
   const fixedFactor = quick ? 8 : 16;
   const repeats = quick ? 2 : REPEATS;
@@ -181,7 +197,9 @@ export async function main(argv: string[]): Promise<number> {
   }
   const tess = Tessellator.create(device, bakeTables(64));
 
-  const models = readdirSync('public/models').filter((f) => f.endsWith('.obj')).sort()
+  const models = readdirSync('public/models')
+    .filter((f) => f.endsWith('.obj'))
+    .sort()
     .filter((f) => !only || only.has(f.replace('.obj', '')));
   // The Catmull-Clark table: the project's models, then the talk's where ../shared is present.
   const ccModels: { name: string; path: string }[] = models.map((f) => ({ name: f.replace('.obj', ''), path: `public/models/${f}` }));
@@ -204,7 +222,8 @@ export async function main(argv: string[]): Promise<number> {
   const rows: string[] = [];
   const lodScale = 4;
   const adaptive: HeadlessOptions = { mode: 'adaptive', lodScale };
-  const header = '| model | cage tris | mode | out verts | out tris | factors ms | count+budget ms | weld ms | tessellate ms | total ms | Mtris/ms | write-bound ms | efficiency |';
+  const header =
+    '| model | cage tris | mode | out verts | out tris | factors ms | count+budget ms | weld ms | tessellate ms | total ms | Mtris/ms | write-bound ms | efficiency |';
   const rule = '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|';
   const equalError: string[] = [];
   console.log(header);
@@ -212,7 +231,10 @@ export async function main(argv: string[]): Promise<number> {
   for (const file of models) {
     const cage = loadCage(readFileSync(`public/models/${file}`, 'utf8')).cage;
     const mesh = prepareMesh(cage);
-    const runs: [string, HeadlessOptions][] = [[`fixed ${fixedFactor}`, { mode: 'fixed', fixedFactor }], [`adaptive (lod ${lodScale})`, adaptive]];
+    const runs: [string, HeadlessOptions][] = [
+      [`fixed ${fixedFactor}`, { mode: 'fixed', fixedFactor }],
+      [`adaptive (lod ${lodScale})`, adaptive],
+    ];
     const measured: Record<string, Run> = {};
     for (const [label, o] of runs) {
       const r = await timeRebuild(device, tess, mesh, o, repeats);
@@ -228,7 +250,9 @@ export async function main(argv: string[]): Promise<number> {
     const F = fixedFactorForError(mesh, adaptive, 1 / lodScale);
     const eq = await timeRebuild(device, tess, mesh, { mode: 'fixed', fixedFactor: F }, 1);
     const a = measured[`adaptive (lod ${lodScale})`];
-    equalError.push(`| ${file.replace('.obj', '')} | ${F.toFixed(2)} | ${eq.vertices} | ${eq.triangles} | ${a.vertices} | ${a.triangles} | ${((100 * a.triangles) / eq.triangles).toFixed(0)} % |`);
+    equalError.push(
+      `| ${file.replace('.obj', '')} | ${F.toFixed(2)} | ${eq.vertices} | ${eq.triangles} | ${a.vertices} | ${a.triangles} | ${((100 * a.triangles) / eq.triangles).toFixed(0)} % |`,
+    );
   }
   tess.destroy();
 
@@ -245,7 +269,9 @@ export async function main(argv: string[]): Promise<number> {
     if (typeof o === 'string') console.log(`note: ${o}`);
     const osdMs = o && typeof o !== 'string' ? o.ms_total : undefined;
     const osdCells = (cpuMs: number | undefined) =>
-      osdMs === undefined ? '— | —' : `${osdMs.toFixed(osdMs < 10 ? 2 : 1)} | ${cpuMs === undefined ? '—' : `${(cpuMs / osdMs).toFixed(1)}×`}`;
+      osdMs === undefined
+        ? '— | —'
+        : `${osdMs.toFixed(osdMs < 10 ? 2 : 1)} | ${cpuMs === undefined ? '—' : `${(cpuMs / osdMs).toFixed(1)}×`}`;
     const mesh = prepareMesh(cage);
     const started = performance.now();
     let data: CatmullClarkData;
@@ -282,27 +308,38 @@ export async function main(argv: string[]): Promise<number> {
     const fixedRun = await run({ mode: 'fixed', fixedFactor }); // last, so the draw passes see it
     const sub = fixedRun.stages.subdivision ?? 0;
     const tessMs = fixedRun.total - sub;
-    talk.push(`| ${name} | ${faces} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} / ${warmMs.toFixed(0)} | ${Math.round(data.gpuBytes / faces)} | ${osdCells(warmMs)} |`);
+    talk.push(
+      `| ${name} | ${faces} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} / ${warmMs.toFixed(0)} | ${Math.round(data.gpuBytes / faces)} | ${osdCells(warmMs)} |`,
+    );
     const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
     const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
     const r = mesh.size / 2;
     const lightView = mat4.lookAt(mat4.create(), [centre[0] + 2 * r, centre[1] + 3 * r, centre[2] + 2 * r], centre, [0, 1, 0]);
     const lightProj = mat4.orthoZO(mat4.create(), -r, r, -r, r, 0.1 * r, 8 * r);
-    const { litMs, shadowMs } = await timeDrawPasses(device, cc.output, cam.viewProj, mat4.multiply(mat4.create(), lightProj, lightView) as Float32Array, repeats);
+    const { litMs, shadowMs } = await timeDrawPasses(
+      device,
+      cc.output,
+      cam.viewProj,
+      mat4.multiply(mat4.create(), lightProj, lightView) as Float32Array,
+      repeats,
+    );
     const perM = 1e6 / fixedRun.triangles;
-    draws.push(`| ${name} | ${fixedRun.triangles} | ${(fixedRun.total * perM).toFixed(2)} | ${(litMs * perM).toFixed(2)} | ${(shadowMs * perM).toFixed(2)} | ${((litMs + 4 * shadowMs) * perM).toFixed(2)} |`);
+    draws.push(
+      `| ${name} | ${fixedRun.triangles} | ${(fixedRun.total * perM).toFixed(2)} | ${(litMs * perM).toFixed(2)} | ${(shadowMs * perM).toFixed(2)} | ${((litMs + 4 * shadowMs) * perM).toFixed(2)} |`,
+    );
     console.log(talk[talk.length - 1]);
   }
   cc.destroy();
   device.destroy();
 
-  const osdNote = 'bin' in osd
-    ? `*OpenSubdiv ms* is OpenSubdiv (libosd) on the same cage in the same run, in its own process on the same machine
+  const osdNote =
+    'bin' in osd
+      ? `*OpenSubdiv ms* is OpenSubdiv (libosd) on the same cage in the same run, in its own process on the same machine
 (tools/osd-check/osd_time.cpp, timed in-process, median of ${OSD_REPEATS}): reading the OBJ, the topology refiner and Bfr
 surface factory, an exact \`Bfr::Surface<double>\` (approximation level 10) for every face, and 9×9 evaluations per
 (sub-)face. *warm CPU prep / OpenSubdiv* is the ratio of the two CPU times (issue 9's target: ≤ 1).
 `
-    : `(No OpenSubdiv column: ${osd.reason})
+      : `(No OpenSubdiv column: ${osd.reason})
 `;
   const machine = `${cpus()[0]?.model ?? 'unknown CPU'} (${cpus().length} cores, ${(totalmem() / 2 ** 30).toFixed(0)} GiB)`;
   const doc = `# Benchmarks
@@ -356,7 +393,11 @@ ${equalError.join('\n')}
 `;
   if (outFile) {
     // Sections written by other scripts (e.g. scripts/displacement-storage.ts) are kept as they are.
-    const kept = existsSync(outFile) ? readFileSync(outFile, 'utf8').split(/^(?=## )/m).filter((sec) => sec.startsWith('## ') && !doc.includes(sec.split('\n')[0])) : [];
+    const kept = existsSync(outFile)
+      ? readFileSync(outFile, 'utf8')
+          .split(/^(?=## )/m)
+          .filter((sec) => sec.startsWith('## ') && !doc.includes(sec.split('\n')[0]))
+      : [];
     writeFileSync(outFile, kept.length ? `${doc}\n${kept.join('').trimEnd()}\n` : doc);
     console.log(`\nwritten to ${outFile}`);
   } else console.log('\n--models without --out: nothing written');

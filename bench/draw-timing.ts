@@ -35,13 +35,17 @@ export async function timeDrawPasses(
   ];
   const depthStencil: GPUDepthStencilState = { format: 'depth32float', depthWriteEnabled: true, depthCompare: 'less' };
   const lit = device.createRenderPipeline({
-    label: 'bench lit', layout: 'auto', depthStencil,
+    label: 'bench lit',
+    layout: 'auto',
+    depthStencil,
     vertex: { module, entryPoint: 'vs', buffers: vertexBuffers },
     fragment: { module, entryPoint: 'fs', targets: [{ format: 'rgba8unorm' }] },
     primitive: { cullMode: 'back' },
   });
   const shadow = device.createRenderPipeline({
-    label: 'bench shadow', layout: 'auto', depthStencil,
+    label: 'bench shadow',
+    layout: 'auto',
+    depthStencil,
     vertex: { module, entryPoint: 'vsDepth', buffers: [vertexBuffers[0]] },
     primitive: { cullMode: 'none' },
   });
@@ -53,10 +57,28 @@ export async function timeDrawPasses(
   const camera = uniform('bench camera', viewProj);
   const lightCamera = uniform('bench light camera', lightViewProj);
   const litGroup = device.createBindGroup({ layout: lit.getBindGroupLayout(0), entries: [{ binding: 0, resource: { buffer: camera } }] });
-  const shadowGroup = device.createBindGroup({ layout: shadow.getBindGroupLayout(0), entries: [{ binding: 0, resource: { buffer: lightCamera } }] });
-  const color = device.createTexture({ label: 'bench color', size: [1920, 1080], format: 'rgba8unorm', usage: GPUTextureUsage.RENDER_ATTACHMENT });
-  const depth = device.createTexture({ label: 'bench depth', size: [1920, 1080], format: 'depth32float', usage: GPUTextureUsage.RENDER_ATTACHMENT });
-  const shadowMap = device.createTexture({ label: 'bench shadow map', size: [2048, 2048], format: 'depth32float', usage: GPUTextureUsage.RENDER_ATTACHMENT });
+  const shadowGroup = device.createBindGroup({
+    layout: shadow.getBindGroupLayout(0),
+    entries: [{ binding: 0, resource: { buffer: lightCamera } }],
+  });
+  const color = device.createTexture({
+    label: 'bench color',
+    size: [1920, 1080],
+    format: 'rgba8unorm',
+    usage: GPUTextureUsage.RENDER_ATTACHMENT,
+  });
+  const depth = device.createTexture({
+    label: 'bench depth',
+    size: [1920, 1080],
+    format: 'depth32float',
+    usage: GPUTextureUsage.RENDER_ATTACHMENT,
+  });
+  const shadowMap = device.createTexture({
+    label: 'bench shadow map',
+    size: [2048, 2048],
+    format: 'depth32float',
+    usage: GPUTextureUsage.RENDER_ATTACHMENT,
+  });
   const querySet = device.createQuerySet({ type: 'timestamp', count: 4 });
   const resolve = device.createBuffer({ size: 32, usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC });
   const read = device.createBuffer({ size: 32, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });

@@ -23,15 +23,21 @@ import { inflateSync } from 'node:zlib';
 /** Luminance (0..1) difference a speckle must exceed. */
 const SPECKLE_THRESHOLD = 0.1;
 
-interface Image { width: number; height: number; rgba: Uint8Array }
+interface Image {
+  width: number;
+  height: number;
+  rgba: Uint8Array;
+}
 
 /** A minimal PNG decoder: 8-bit RGB or RGBA, not interlaced (what Chromium's screenshots are). */
 function decodePng(png: Buffer): Image {
   const sig = [137, 80, 78, 71, 13, 10, 26, 10];
   if (!sig.every((b, i) => png[i] === b)) throw new Error('not a PNG');
-  let width = 0, height = 0, colorType = 0;
+  let width = 0,
+    height = 0,
+    colorType = 0;
   const idat: Buffer[] = [];
-  for (let at = 8; at < png.length;) {
+  for (let at = 8; at < png.length; ) {
     const len = png.readUInt32BE(at);
     const type = png.toString('latin1', at + 4, at + 8);
     const data = png.subarray(at + 8, at + 8 + len);
@@ -40,7 +46,8 @@ function decodePng(png: Buffer): Image {
       height = data.readUInt32BE(4);
       const depth = data[8];
       colorType = data[9];
-      if (depth !== 8 || (colorType !== 2 && colorType !== 6) || data[12] !== 0) throw new Error(`unsupported PNG: depth ${depth}, colour type ${colorType}, interlace ${data[12]}`);
+      if (depth !== 8 || (colorType !== 2 && colorType !== 6) || data[12] !== 0)
+        throw new Error(`unsupported PNG: depth ${depth}, colour type ${colorType}, interlace ${data[12]}`);
     } else if (type === 'IDAT') idat.push(data);
     else if (type === 'IEND') break;
     at += 12 + len;
@@ -55,13 +62,17 @@ function decodePng(png: Buffer): Image {
     const filter = raw[y * (stride + 1)];
     const src = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
     for (let i = 0; i < stride; i++) {
-      const a = i >= bpp ? line[i - bpp] : 0, b = prev[i], c = i >= bpp ? prev[i - bpp] : 0;
+      const a = i >= bpp ? line[i - bpp] : 0,
+        b = prev[i],
+        c = i >= bpp ? prev[i - bpp] : 0;
       let p = 0;
       if (filter === 1) p = a;
       else if (filter === 2) p = b;
       else if (filter === 3) p = (a + b) >> 1;
       else if (filter === 4) {
-        const pa = Math.abs(b - c), pb = Math.abs(a - c), pc = Math.abs(a + b - 2 * c);
+        const pa = Math.abs(b - c),
+          pb = Math.abs(a - c),
+          pc = Math.abs(a + b - 2 * c);
         p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
       } else if (filter !== 0) throw new Error(`bad PNG filter ${filter}`);
       line[i] = (src[i] + p) & 255;
@@ -127,7 +138,11 @@ test.describe('no isolated dark speckles against a high fixed factor', () => {
   test.use({ viewport: { width: 1000, height: 700 } });
   test.setTimeout(300_000);
 
-  for (const [model, mode] of [['creature', 'mode=adaptive'], ['pawn', 'mode=adaptive'], ['pawn', 'mode=fixed&factor=8']]) {
+  for (const [model, mode] of [
+    ['creature', 'mode=adaptive'],
+    ['pawn', 'mode=adaptive'],
+    ['pawn', 'mode=fixed&factor=8'],
+  ]) {
     {
       test(`${model}, ${mode}`, async ({ page }) => {
         const frame = await frozenFrame(page, `model=${model}&${mode}`);

@@ -10,7 +10,6 @@ function picked(page: Page) {
   return page.locator('.lil-gui.panel .lil-option').filter({ hasText: 'cage' }).first().locator('.lil-display');
 }
 
-
 test('loads a model without console errors and shows its stats', async ({ page }) => {
   const errors = collectErrors(page);
   const requests: string[] = [];
@@ -30,7 +29,11 @@ test('loads a model without console errors and shows its stats', async ({ page }
   await expect(page.getByTestId('stats-surface')).toContainText('256 regular');
   await expect(page.getByTestId('stats-other')).toContainText(/fixed, factor 8/);
   await expect(page.getByTestId('stats-other')).toContainText('tris');
-  if (await page.evaluate(() => (window as unknown as { tessellab: { demo: { gpu: { timestamps: boolean } } } }).tessellab.demo.gpu.timestamps)) {
+  if (
+    await page.evaluate(
+      () => (window as unknown as { tessellab: { demo: { gpu: { timestamps: boolean } } } }).tessellab.demo.gpu.timestamps,
+    )
+  ) {
     await expect(page.getByTestId('stats-subdiv')).toContainText('patch build');
     await expect(page.getByTestId('stats-build')).toContainText('tessellate');
   }
@@ -128,9 +131,22 @@ test('a cage the Catmull-Clark preparation refuses falls back to Phong with a me
   await ready(page);
   // Chaikin creasing is refused by the GPU path's preparation (src/gpu/cc/build.ts).
   const cube = [
-    'v -1 -1 -1', 'v 1 -1 -1', 'v 1 1 -1', 'v -1 1 -1', 'v -1 -1 1', 'v 1 -1 1', 'v 1 1 1', 'v -1 1 1',
-    'f 5 6 7 8', 'f 1 4 3 2', 'f 1 2 6 5', 'f 2 3 7 6', 'f 3 4 8 7', 'f 4 1 5 8',
-    't creasemethod 0/0/1 chaikin', 't crease 2/1/0 4 5 2.5',
+    'v -1 -1 -1',
+    'v 1 -1 -1',
+    'v 1 1 -1',
+    'v -1 1 -1',
+    'v -1 -1 1',
+    'v 1 -1 1',
+    'v 1 1 1',
+    'v -1 1 1',
+    'f 5 6 7 8',
+    'f 1 4 3 2',
+    'f 1 2 6 5',
+    'f 2 3 7 6',
+    'f 3 4 8 7',
+    'f 4 1 5 8',
+    't creasemethod 0/0/1 chaikin',
+    't crease 2/1/0 4 5 2.5',
   ].join('\n');
   await dropFile(page, 'chaikin-cube.obj', `${cube}\n`);
   const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for chaikin-cube.obj' });

@@ -17,7 +17,10 @@ function watchErrors(page: Page): string[] {
 
 /** The pattern CLI's counts (the reference the page must agree with). */
 function cli(args: string[]): { vertexCount: number; triangleCount: number } {
-  const out = execFileSync('npx', ['tsx', 'scripts/pattern-cli.ts', ...args, '--json'], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
+  const out = execFileSync('npx', ['tsx', 'scripts/pattern-cli.ts', ...args, '--json'], {
+    encoding: 'utf8',
+    stdio: ['ignore', 'pipe', 'pipe'],
+  });
   return JSON.parse(out);
 }
 
@@ -38,15 +41,19 @@ async function shownCounts(page: Page, scope = 'body'): Promise<Shown[]> {
 
 /** Whether a canvas has drawn something besides its background. */
 async function canvasHasInk(page: Page, selector = '[data-testid="diagram-canvas"]'): Promise<boolean> {
-  return page.locator(selector).first().evaluate((c: HTMLCanvasElement) => {
-    const ctx = c.getContext('2d');
-    if (!ctx || c.width === 0) return false;
-    const { data } = ctx.getImageData(0, 0, c.width, c.height);
-    const bg = [data[0], data[1], data[2]];
-    let differ = 0;
-    for (let i = 0; i < data.length; i += 4 * 7) if (Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]) > 60) differ++;
-    return differ > 50;
-  });
+  return page
+    .locator(selector)
+    .first()
+    .evaluate((c: HTMLCanvasElement) => {
+      const ctx = c.getContext('2d');
+      if (!ctx || c.width === 0) return false;
+      const { data } = ctx.getImageData(0, 0, c.width, c.height);
+      const bg = [data[0], data[1], data[2]];
+      let differ = 0;
+      for (let i = 0; i < data.length; i += 4 * 7)
+        if (Math.abs(data[i] - bg[0]) + Math.abs(data[i + 1] - bg[1]) + Math.abs(data[i + 2] - bg[2]) > 60) differ++;
+      return differ > 50;
+    });
 }
 
 test.describe('pages load without console errors', () => {
@@ -92,7 +99,9 @@ test.describe('pages load without console errors', () => {
 
 test.describe('counts shown equal the pattern CLI', () => {
   test('triangle, every mode at 3.5, 7, 12 (inside 5)', async ({ page }) => {
-    await page.goto('diagrams/triangle.html?mode=clamped,integer,pow2,fractional_odd,fractional_even&f0=3.5&f1=7&f2=12&inside=5&autoplay=0');
+    await page.goto(
+      'diagrams/triangle.html?mode=clamped,integer,pow2,fractional_odd,fractional_even&f0=3.5&f1=7&f2=12&inside=5&autoplay=0',
+    );
     const shown = await shownCounts(page);
     expect(shown.map((s) => s.mode)).toEqual(['clamped', 'integer', 'pow2', 'fractional_odd', 'fractional_even']);
     for (const s of shown) {
@@ -132,22 +141,34 @@ test.describe('frozen frames match the committed screenshots', () => {
   test('line: even redistribution at 10.3', async ({ page }) => {
     await page.goto('diagrams/line.html?fig=even-10.3&t=2.3&chrome=0&theme=light');
     await expect(page.locator('[data-testid="diagram"]')).toHaveAttribute('data-state', 'paused');
-    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('line-even-10.3.png', { maxDiffPixels: 10, threshold: 0.05 });
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('line-even-10.3.png', {
+      maxDiffPixels: 10,
+      threshold: 0.05,
+    });
   });
 
   test('triangle: gap matching', async ({ page }) => {
     await page.goto('diagrams/triangle.html?fig=gap-matching&t=2.5&chrome=0&theme=light');
-    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('triangle-gap-matching.png', { maxDiffPixels: 10, threshold: 0.05 });
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('triangle-gap-matching.png', {
+      maxDiffPixels: 10,
+      threshold: 0.05,
+    });
   });
 
   test('line trace, dark theme: D3D11 does not converge', async ({ page }) => {
     await page.goto('diagrams/line.html?fig=d3d11-does-not-converge&t=4.5&chrome=0&theme=dark');
-    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('line-d3d11-does-not-converge-dark.png', { maxDiffPixels: 10, threshold: 0.05 });
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('line-d3d11-does-not-converge-dark.png', {
+      maxDiffPixels: 10,
+      threshold: 0.05,
+    });
   });
 
   test('triangle: D3D11 next to clamped', async ({ page }) => {
     await page.goto('diagrams/triangle.html?fig=d3d11-vs-clamped&t=3.2&chrome=0&theme=light');
-    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('triangle-d3d11-vs-clamped.png', { maxDiffPixels: 10, threshold: 0.05 });
+    await expect(page.locator('[data-testid="diagram-canvas"]')).toHaveScreenshot('triangle-d3d11-vs-clamped.png', {
+      maxDiffPixels: 10,
+      threshold: 0.05,
+    });
   });
 });
 
@@ -160,7 +181,9 @@ test.describe('embedding', () => {
     await expect(frame.locator('[data-testid="controls"]')).toHaveCount(0); // chrome=0
     await expect(frame.locator('[data-testid="play"]')).toBeVisible(); // but a pause button
     // The parent set the iframe's height from the message: the whole figure fits, no scrollbar.
-    await expect.poll(async () => page.locator('[data-testid="embed-iframe"]').evaluate((f: HTMLIFrameElement) => parseFloat(f.style.height))).toBeGreaterThan(200); // it starts at 150px
+    await expect
+      .poll(async () => page.locator('[data-testid="embed-iframe"]').evaluate((f: HTMLIFrameElement) => parseFloat(f.style.height)))
+      .toBeGreaterThan(200); // it starts at 150px
     const fit = await page.locator('[data-testid="embed-iframe"]').evaluate((f: HTMLIFrameElement) => {
       const doc = f.contentDocument as Document;
       return Math.abs(doc.documentElement.scrollHeight - f.clientHeight);

@@ -34,7 +34,8 @@ function flatPrism(n: number): Cage {
 
 function grid9(cage: Cage): [number, number, number][] {
   const out: [number, number, number][] = [];
-  for (let f = 0; f < cage.faceOffsets.length - 1; f++) for (let j = 0; j <= 8; j++) for (let i = 0; i <= 8; i++) out.push([f, i / 8, j / 8]);
+  for (let f = 0; f < cage.faceOffsets.length - 1; f++)
+    for (let j = 0; j <= 8; j++) for (let i = 0; i <= 8; i++) out.push([f, i / 8, j / 8]);
   return out;
 }
 
@@ -45,11 +46,26 @@ function perFaceSamples(cage: Cage, n: number, seed = 3): [number, number, numbe
   const out: [number, number, number][] = [];
   for (let f = 0; f < cage.faceOffsets.length - 1; f++) {
     const tri = cage.faceOffsets[f + 1] - cage.faceOffsets[f] === 3;
-    const corners = tri ? [[0, 0], [1, 0], [0, 1]] : [[0, 0], [1, 0], [1, 1], [0, 1]];
+    const corners = tri
+      ? [
+          [0, 0],
+          [1, 0],
+          [0, 1],
+        ]
+      : [
+          [0, 0],
+          [1, 0],
+          [1, 1],
+          [0, 1],
+        ];
     for (const [u, v] of corners) out.push([f, u, v]);
     for (let i = 0; i < n; i++) {
-      let u = rnd(), v = rnd();
-      if (tri && u + v > 1) { u = 1 - u; v = 1 - v; }
+      let u = rnd(),
+        v = rnd();
+      if (tri && u + v > 1) {
+        u = 1 - u;
+        v = 1 - v;
+      }
       out.push([f, u, v]);
     }
   }
@@ -72,7 +88,9 @@ for (const m of ['suzanne', 'bigguy', 'monsterfrog', 'imrod']) {
 }
 
 const pct = (x: number) => `${(100 * x).toFixed(3)}%`;
-console.log(`| cage | scheme | max pos | RMS pos | max normal | RMS normal | points/patch (quad, tri) | patch kinds | edge gap | edge normal jump | samples |`);
+console.log(
+  `| cage | scheme | max pos | RMS pos | max normal | RMS normal | points/patch (quad, tri) | patch kinds | edge gap | edge normal jump | samples |`,
+);
 console.log(`|---|---|---|---|---|---|---|---|---|---|---|`);
 for (const { name, cage: make, grid } of cages) {
   const cage = make();
@@ -98,18 +116,32 @@ for (const { name, cage: make, grid } of cages) {
     const e = accErrors(S, refs, params);
     const T = S.topology;
     const kinds = new Map<number, number>();
-    let quadPts = 0, quads = 0, triPts = 0, tris = 0;
+    let quadPts = 0,
+      quads = 0,
+      triPts = 0,
+      tris = 0;
     for (let f = 0; f < T.nPatches; f++) {
       const k = T.patches[2 * f];
       kinds.set(k, (kinds.get(k) ?? 0) + 1);
       const n = (f + 1 < T.nPatches ? T.patches[2 * f + 3] : T.nPoints) - T.patches[2 * f + 1];
-      if (T.faceSize[f] === 4) { quadPts += n; quads++; } else { triPts += n; tris++; }
+      if (T.faceSize[f] === 4) {
+        quadPts += n;
+        quads++;
+      } else {
+        triPts += n;
+        tris++;
+      }
     }
     const c = continuity(S, undefined, 8);
-    const kindText = [...kinds].sort((a, b) => a[0] - b[0]).map(([k, n]) => `${KIND_NAMES[k]} ${n}`).join(', ');
+    const kindText = [...kinds]
+      .sort((a, b) => a[0] - b[0])
+      .map(([k, n]) => `${KIND_NAMES[k]} ${n}`)
+      .join(', ');
     const ppp = `${quads ? (quadPts / quads).toFixed(1) : '–'}, ${tris ? (triPts / tris).toFixed(0) : '–'}`;
     const warn = T.warnings.length ? ' (creases ignored)' : '';
-    console.log(`| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} |`);
+    console.log(
+      `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} |`,
+    );
     if (scheme === 'pm-acc') console.error(`${name}: exact reference ${(exactMs / 1000).toFixed(1)} s`);
   }
 }

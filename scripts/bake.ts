@@ -23,7 +23,9 @@ for (const m of maxes) {
   const words = bakeTables(m);
   const t = new PatternTables(words);
   const bytes = words.byteLength;
-  console.log(`${String(m).padStart(10)} | ${String(t.slotCount).padStart(5)} | ${String(t.stateCount).padStart(6)} | ${String(bytes).padStart(10)} | ${(bytes / 1e6).toFixed(2)}`);
+  console.log(
+    `${String(m).padStart(10)} | ${String(t.slotCount).padStart(5)} | ${String(t.stateCount).padStart(6)} | ${String(bytes).padStart(10)} | ${(bytes / 1e6).toFixed(2)}`,
+  );
   if (write) writeFileSync(join(out, `hable-${m}.bin`), new Uint8Array(words.buffer));
 }
 if (write) console.log(`written to ${out}/hable-{${maxes.join(',')}}.bin`);

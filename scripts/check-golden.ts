@@ -104,22 +104,17 @@ for (const c of tris) {
   const label = `tri ${c.family} ${p} (${c.factors.join(', ')}) / ${c.inside}`;
   const problems: string[] = [];
   if (got.vertexCount !== c.vertexCount || got.triangleCount !== c.triangleCount) {
-    problems.push(
-      `counts ${got.vertexCount}/${got.triangleCount}, expected ${c.vertexCount}/${c.triangleCount}`,
-    );
+    problems.push(`counts ${got.vertexCount}/${got.triangleCount}, expected ${c.vertexCount}/${c.triangleCount}`);
   }
   if (counts.vertexCount !== c.vertexCount || counts.triangleCount !== c.triangleCount) {
-    problems.push(
-      `closed form ${counts.vertexCount}/${counts.triangleCount}, expected ${c.vertexCount}/${c.triangleCount}`,
-    );
+    problems.push(`closed form ${counts.vertexCount}/${counts.triangleCount}, expected ${c.vertexCount}/${c.triangleCount}`);
   }
   const wantBary = c.points.flat().map(toFixed);
   const pi = firstDiff(got.bary, wantBary);
   if (pi >= 0) {
     const v = Math.floor(pi / 3);
     problems.push(
-      `point ${v}: got (${got.bary.slice(3 * v, 3 * v + 3).join(', ')}), ` +
-        `expected (${wantBary.slice(3 * v, 3 * v + 3).join(', ')})`,
+      `point ${v}: got (${got.bary.slice(3 * v, 3 * v + 3).join(', ')}), ` + `expected (${wantBary.slice(3 * v, 3 * v + 3).join(', ')})`,
     );
   }
   const wantTris = c.triangles.flat();
@@ -135,9 +130,7 @@ for (const c of tris) {
   else note(`${label}: ${problems.join('; ')}`);
 }
 
-console.log(
-  `golden: ${lineOk}/${lines.length} line cases, ${triOk}/${tris.length} triangle cases match`,
-);
+console.log(`golden: ${lineOk}/${lines.length} line cases, ${triOk}/${tris.length} triangle cases match`);
 if (details.length > 0) {
   console.log(`first mismatches:\n  ${details.join('\n  ')}`);
 }

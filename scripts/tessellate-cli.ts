@@ -70,13 +70,27 @@ function parse(argv: string[]) {
         o.lodScale = s;
         break;
       }
-      case '--eye': o.eye = vec3(value(), '--eye'); break;
-      case '--target': o.target = vec3(value(), '--target'); break;
-      case '--out': out = value(); break;
-      case '--params': params = value(); break;
-      case '--stats': stats = true; break;
-      case '--surface': surface = value(); break;
-      case '--flat-baseline': o.flatBaseline = true; break;
+      case '--eye':
+        o.eye = vec3(value(), '--eye');
+        break;
+      case '--target':
+        o.target = vec3(value(), '--target');
+        break;
+      case '--out':
+        out = value();
+        break;
+      case '--params':
+        params = value();
+        break;
+      case '--stats':
+        stats = true;
+        break;
+      case '--surface':
+        surface = value();
+        break;
+      case '--flat-baseline':
+        o.flatBaseline = true;
+        break;
       default:
         if (a.startsWith('--')) throw new UsageError(`unknown option ${a}`);
         if (model) throw new UsageError(`one model only (got '${model}' and '${a}')`);
@@ -119,7 +133,10 @@ export async function main(argv: string[]): Promise<number> {
   } catch (e) {
     // No GPU: run again on SwiftShader, if it is installed.
     if (!process.env.VK_ICD_FILENAMES && existsSync(SWIFTSHADER_ICD)) {
-      const r = spawnSync(process.execPath, process.argv.slice(1), { stdio: 'inherit', env: { ...process.env, VK_ICD_FILENAMES: SWIFTSHADER_ICD } });
+      const r = spawnSync(process.execPath, process.argv.slice(1), {
+        stdio: 'inherit',
+        env: { ...process.env, VK_ICD_FILENAMES: SWIFTSHADER_ICD },
+      });
       return r.status ?? 1;
     }
     console.error(`tessellate: ${(e as Error).message}`);
@@ -130,28 +147,47 @@ export async function main(argv: string[]): Promise<number> {
   const cc = args.o.surface === 'catmull-clark' ? prepareCatmullClark(cage, mesh) : undefined;
   const cpuPrepMs = performance.now() - started;
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc });
-  if (args.out) writeFileSync(args.out, meshToObj(r, `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`));
+  if (args.out)
+    writeFileSync(
+      args.out,
+      meshToObj(
+        r,
+        `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`,
+      ),
+    );
   if (args.params) {
     const p = vertexParams(r, cage);
-    writeFileSync(args.params, args.params.endsWith('.txt') ? paramsToText(p) : JSON.stringify({ vertexCount: p.length, params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])) }) + '\n');
+    writeFileSync(
+      args.params,
+      args.params.endsWith('.txt')
+        ? paramsToText(p)
+        : JSON.stringify({
+            vertexCount: p.length,
+            params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])),
+          }) + '\n',
+    );
   }
   if (args.stats) {
     const timed = Object.keys(r.timings).length > 0;
     const total = Object.values(r.timings).reduce((a, b) => a + b, 0);
     const subdivision = r.timings.subdivision ?? 0;
-    console.log(JSON.stringify({
-      faces: faceCount(cage),
-      cpuPrepMs: Number(cpuPrepMs.toFixed(3)),
-      gpuBytes: cc ? cc.gpuBytes : 0,
-      subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
-      tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
-      vertices: r.out.vertexCount,
-      triangles: r.out.triangleCount,
-      adapter: adapterName,
-    }));
+    console.log(
+      JSON.stringify({
+        faces: faceCount(cage),
+        cpuPrepMs: Number(cpuPrepMs.toFixed(3)),
+        gpuBytes: cc ? cc.gpuBytes : 0,
+        subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
+        tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
+        vertices: r.out.vertexCount,
+        triangles: r.out.triangleCount,
+        adapter: adapterName,
+      }),
+    );
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');
-  console.error(`tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`);
+  console.error(
+    `tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
+  );
   device.destroy();
   return 0;
 }

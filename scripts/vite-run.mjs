@@ -13,7 +13,10 @@ if (!entry) {
 }
 const root = resolve(fileURLToPath(import.meta.url), '../..');
 const server = await createServer({
-  configFile: false, root, logLevel: 'error', appType: 'custom',
+  configFile: false,
+  root,
+  logLevel: 'error',
+  appType: 'custom',
   server: { middlewareMode: true, hmr: false, ws: false },
 });
 const runner = createServerModuleRunner(server.environments.ssr, { hmr: false });

@@ -13,10 +13,11 @@ import { angleBetween } from './tess-checks.ts';
 /** An n-gonal prism with wavy heights (so no accidental symmetry hides errors), n-gon caps. */
 export function prism(n: number, wobble = 0.15): Cage {
   const p: number[] = [];
-  for (const z of [-1, 1]) for (let i = 0; i < n; i++) {
-    const a = (2 * Math.PI * i) / n;
-    p.push(Math.cos(a), Math.sin(a), z * (1 + wobble * Math.sin(3 * a + z)));
-  }
+  for (const z of [-1, 1])
+    for (let i = 0; i < n; i++) {
+      const a = (2 * Math.PI * i) / n;
+      p.push(Math.cos(a), Math.sin(a), z * (1 + wobble * Math.sin(3 * a + z)));
+    }
   const f: number[][] = [[...Array(n).keys()].map((i) => n + i), [...Array(n).keys()].map((i) => n - 1 - i)];
   for (let i = 0; i < n; i++) f.push([i, (i + 1) % n, n + ((i + 1) % n), n + i]);
   return makeCage(p, f);
@@ -32,21 +33,43 @@ export function ccStep(cage: Cage): Cage {
 
 /** Regular octahedron: all triangles, valence 4 (notes §8.5). */
 export function octahedron(): Cage {
-  return makeCage([1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1],
-    [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]]);
+  return makeCage(
+    [1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1],
+    [
+      [0, 2, 4],
+      [2, 1, 4],
+      [1, 3, 4],
+      [3, 0, 4],
+      [2, 0, 5],
+      [1, 2, 5],
+      [3, 1, 5],
+      [0, 3, 5],
+    ],
+  );
 }
 
 export function bboxDiagonal(P: ArrayLike<number>): number {
-  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < P.length; i += 3) for (let c = 0; c < 3; c++) { lo[c] = Math.min(lo[c], P[i + c]); hi[c] = Math.max(hi[c], P[i + c]); }
+  const lo = [Infinity, Infinity, Infinity],
+    hi = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < P.length; i += 3)
+    for (let c = 0; c < 3; c++) {
+      lo[c] = Math.min(lo[c], P[i + c]);
+      hi[c] = Math.max(hi[c], P[i + c]);
+    }
   return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
 /** Parameter of point t ∈ [0,1] along corner k → k+1 of a face with m corners ((u,v) or (w1,w2)). */
 export function edgeParam(m: number, k: number, t: number): [number, number] {
   if (m === 4) {
-    const uv = [[0, 0], [1, 0], [1, 1], [0, 1]];
-    const a = uv[k], b = uv[(k + 1) % 4];
+    const uv = [
+      [0, 0],
+      [1, 0],
+      [1, 1],
+      [0, 1],
+    ];
+    const a = uv[k],
+      b = uv[(k + 1) % 4];
     return [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])];
   }
   const w = [0, 0, 0];
@@ -57,20 +80,31 @@ export function edgeParam(m: number, k: number, t: number): [number, number] {
 
 export type NormalFn = (face: number, u: number, v: number) => V3;
 
-export interface EdgeStats { maxGap: number; maxJumpDeg: number; edges: number; worst: string }
+export interface EdgeStats {
+  maxGap: number;
+  maxJumpDeg: number;
+  edges: number;
+  worst: string;
+}
 
 /**
  * Position gap (/ bbox diagonal) and normal jump (degrees) along every interior edge, sampled at
  * `samples` points, evaluated from both faces. `include(fa, fb)` selects which edges count.
  */
-export function continuity(S: AccSurface, normal: NormalFn = (f, u, v) => S.evaluate(f, u, v).N, samples = 9,
-  include: (fa: number, fb: number) => boolean = () => true): EdgeStats {
-  const T = S.topology, cage = S.cage;
+export function continuity(
+  S: AccSurface,
+  normal: NormalFn = (f, u, v) => S.evaluate(f, u, v).N,
+  samples = 9,
+  include: (fa: number, fb: number) => boolean = () => true,
+): EdgeStats {
+  const T = S.topology,
+    cage = S.cage;
   const diag = bboxDiagonal(cage.positions);
   const stats: EdgeStats = { maxGap: 0, maxJumpDeg: 0, edges: 0, worst: '' };
   const corner = new Map<string, [number, number]>(); // "a,b" directed → (face, k)
   for (let f = 0; f < T.nPatches; f++) {
-    const o = cage.faceOffsets[f], m = cage.faceOffsets[f + 1] - o;
+    const o = cage.faceOffsets[f],
+      m = cage.faceOffsets[f + 1] - o;
     for (let k = 0; k < m; k++) corner.set(`${cage.faceIndices[o + k]},${cage.faceIndices[o + ((k + 1) % m)]}`, [f, k]);
   }
   for (const [key, [fa, ka]] of corner) {
@@ -81,15 +115,21 @@ export function continuity(S: AccSurface, normal: NormalFn = (f, u, v) => S.eval
     const [fb, kb] = other;
     if (!include(fa, fb)) continue;
     stats.edges++;
-    const ma = T.faceSize[fa], mb = T.faceSize[fb];
+    const ma = T.faceSize[fa],
+      mb = T.faceSize[fb];
     for (let i = 0; i <= samples; i++) {
       const t = i / samples;
-      const [ua, va] = edgeParam(ma, ka, t), [ub, vb] = edgeParam(mb, kb, 1 - t);
-      const pa = S.evaluate(fa, ua, va).P, pb = S.evaluate(fb, ub, vb).P;
+      const [ua, va] = edgeParam(ma, ka, t),
+        [ub, vb] = edgeParam(mb, kb, 1 - t);
+      const pa = S.evaluate(fa, ua, va).P,
+        pb = S.evaluate(fb, ub, vb).P;
       const gap = Math.hypot(pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]) / diag;
       const jump = (angleBetween(normal(fa, ua, va), normal(fb, ub, vb)) * 180) / Math.PI;
       if (gap > stats.maxGap) stats.maxGap = gap;
-      if (jump > stats.maxJumpDeg) { stats.maxJumpDeg = jump; stats.worst = `faces ${fa}/${fb} edge ${a}-${b} t=${t.toFixed(2)}`; }
+      if (jump > stats.maxJumpDeg) {
+        stats.maxJumpDeg = jump;
+        stats.worst = `faces ${fa}/${fb} edge ${a}-${b} t=${t.toFixed(2)}`;
+      }
     }
   }
   return stats;
@@ -103,7 +143,8 @@ export class ExactAt {
   constructor(readonly cage: Cage) {
     this.S = new Surface(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
     this.mesh = prepareMesh(cage);
-    for (let t = 0; t < this.mesh.triangleCount; t++) if (!this.triOfFace.has(this.mesh.triFace[t])) this.triOfFace.set(this.mesh.triFace[t], t);
+    for (let t = 0; t < this.mesh.triangleCount; t++)
+      if (!this.triOfFace.has(this.mesh.triFace[t])) this.triOfFace.set(this.mesh.triFace[t], t);
   }
   at(face: number, u: number, v: number) {
     const m = this.cage.faceOffsets[face + 1] - this.cage.faceOffsets[face];
@@ -114,7 +155,14 @@ export class ExactAt {
   }
 }
 
-export interface ErrorRow { samples: number; maxP: number; rmsP: number; maxN: number; rmsN: number; nan: number }
+export interface ErrorRow {
+  samples: number;
+  maxP: number;
+  rmsP: number;
+  maxN: number;
+  rmsN: number;
+  nan: number;
+}
 
 /** Deterministic random (face, u, v): quads uniform in the square, triangles in the simplex. */
 export function randomFaceParams(cage: Cage, n: number, seed = 7): [number, number, number][] {
@@ -124,8 +172,12 @@ export function randomFaceParams(cage: Cage, n: number, seed = 7): [number, numb
   const out: [number, number, number][] = [];
   for (let i = 0; i < n; i++) {
     const f = Math.min(nF - 1, Math.floor(rnd() * nF));
-    let u = rnd(), v = rnd();
-    if (cage.faceOffsets[f + 1] - cage.faceOffsets[f] === 3 && u + v > 1) { u = 1 - u; v = 1 - v; }
+    let u = rnd(),
+      v = rnd();
+    if (cage.faceOffsets[f + 1] - cage.faceOffsets[f] === 3 && u + v > 1) {
+      u = 1 - u;
+      v = 1 - v;
+    }
     out.push([f, u, v]);
   }
   return out;
@@ -134,10 +186,19 @@ export function randomFaceParams(cage: Cage, n: number, seed = 7): [number, numb
 /** Position (/ bbox diagonal) and normal (degrees) errors of an ACC surface against exact CC. */
 export function accErrors(S: AccSurface, exact: ExactAt | ReturnType<ExactAt['at']>[], params: [number, number, number][]): ErrorRow {
   const diag = bboxDiagonal(S.cage.positions);
-  let maxP = 0, sp = 0, maxN = 0, sn = 0, nn = 0, nan = 0;
+  let maxP = 0,
+    sp = 0,
+    maxN = 0,
+    sn = 0,
+    nn = 0,
+    nan = 0;
   params.forEach(([f, u, v], i) => {
-    const a = S.evaluate(f, u, v), r = Array.isArray(exact) ? exact[i] : exact.at(f, u, v);
-    if (![...a.P, ...a.N].every(Number.isFinite)) { nan++; return; }
+    const a = S.evaluate(f, u, v),
+      r = Array.isArray(exact) ? exact[i] : exact.at(f, u, v);
+    if (![...a.P, ...a.N].every(Number.isFinite)) {
+      nan++;
+      return;
+    }
     const dp = Math.hypot(a.P[0] - r.P[0], a.P[1] - r.P[1], a.P[2] - r.P[2]) / diag;
     maxP = Math.max(maxP, dp);
     sp += dp * dp;
@@ -148,5 +209,12 @@ export function accErrors(S: AccSurface, exact: ExactAt | ReturnType<ExactAt['at
       nn++;
     }
   });
-  return { samples: params.length, maxP, rmsP: Math.sqrt(sp / Math.max(1, params.length)), maxN, rmsN: Math.sqrt(sn / Math.max(1, nn)), nan };
+  return {
+    samples: params.length,
+    maxP,
+    rmsP: Math.sqrt(sp / Math.max(1, params.length)),
+    maxN,
+    rmsN: Math.sqrt(sn / Math.max(1, nn)),
+    nan,
+  };
 }

@@ -26,7 +26,11 @@ afterAll(() => releaseDevice());
 
 function cageBuffer(device: GPUDevice, P: ArrayLike<number>): GPUBuffer {
   const f = Float32Array.from(P);
-  const b = device.createBuffer({ label: 'test cage positions', size: f.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+  const b = device.createBuffer({
+    label: 'test cage positions',
+    size: f.byteLength,
+    usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+  });
   device.queue.writeBuffer(b, 0, f);
   return b;
 }
@@ -36,7 +40,10 @@ function params(cage: Cage, n: number, seed: number): [number, number, number][]
   // Corners and edges (where the Gregory blends are 0/0 and the Pm sectors meet).
   out.forEach((p, i) => {
     const tri = cage.faceOffsets[p[0] + 1] - cage.faceOffsets[p[0]] === 3;
-    if (i % 10 === 0) { p[1] = i % 20 === 0 ? 0 : 1; p[2] = tri ? 0 : i % 40 === 0 ? 1 : 0; }
+    if (i % 10 === 0) {
+      p[1] = i % 20 === 0 ? 0 : 1;
+      p[2] = tri ? 0 : i % 40 === 0 ? 1 : 0;
+    }
     if (i % 10 === 1) p[2] = 0;
     if (i % 10 === 2 && !tri) p[1] = p[2]; // the c-patch diagonal
   });
@@ -44,7 +51,11 @@ function params(cage: Cage, n: number, seed: number): [number, number, number][]
 }
 
 const models: [string, () => Cage][] = [
-  ['cube', () => cube()], ['octahedron', octahedron], ['creature', () => loadCage(creature).cage], ['torus', () => loadCage(torus).cage], ['creased-box', () => loadCage(creasedBox).cage],
+  ['cube', () => cube()],
+  ['octahedron', octahedron],
+  ['creature', () => loadCage(creature).cage],
+  ['torus', () => loadCage(torus).cage],
+  ['creased-box', () => loadCage(creasedBox).cage],
 ];
 
 describe('ACC patches on the GPU against the f64 yardstick', () => {
@@ -72,18 +83,26 @@ describe('ACC patches on the GPU against the f64 yardstick', () => {
         const s = await gpu.sample(pts);
         expect((await device.popErrorScope())?.message).toBeUndefined();
         device.pushErrorScope('validation');
-        let maxP = 0, maxN = 0, worst = '';
+        let maxP = 0,
+          maxN = 0,
+          worst = '';
         pts.forEach(([f, u, v], i) => {
           const r = cpu.evaluate(f, u, v);
-          const p = Array.from(s.pos.subarray(3 * i, 3 * i + 3)), n = Array.from(s.normal.subarray(3 * i, 3 * i + 3));
+          const p = Array.from(s.pos.subarray(3 * i, 3 * i + 3)),
+            n = Array.from(s.normal.subarray(3 * i, 3 * i + 3));
           expect([...p, ...n].every(Number.isFinite), `NaN at ${f} ${u} ${v}`).toBe(true);
           maxP = Math.max(maxP, Math.hypot(p[0] - r.P[0], p[1] - r.P[1], p[2] - r.P[2]) / diag);
           const dn = (angleBetween(n, r.N) * 180) / Math.PI;
-          if (dn > maxN) { maxN = dn; worst = `face ${f} (${u}, ${v}) kind ${cpu.kind(f)}`; }
+          if (dn > maxN) {
+            maxN = dn;
+            worst = `face ${f} (${u}, ${v}) kind ${cpu.kind(f)}`;
+          }
         });
         expect(maxP, `${scheme} positions`).toBeLessThan(POSITION_TOL);
         expect(maxN, `${scheme} normals, worst ${worst}`).toBeLessThan(NORMAL_TOL_DEG);
-        console.log(`${name} ${scheme}: points ${maxPt.toExponential(2)}, positions ${maxP.toExponential(2)}, normals ${maxN.toExponential(2)}°`);
+        console.log(
+          `${name} ${scheme}: points ${maxPt.toExponential(2)}, positions ${maxP.toExponential(2)}, normals ${maxN.toExponential(2)}°`,
+        );
         // A deformed cage: re-run only the build.
         const moved = Float64Array.from(cage.positions, (x, i) => x + 0.1 * Math.sin(3 * i));
         device.queue.writeBuffer(cageBuf, 0, Float32Array.from(moved));

@@ -8,10 +8,27 @@ describe('URL parameters', () => {
   });
 
   it('reads every tunable', () => {
-    const p = parseParams('?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage');
+    const p = parseParams(
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage',
+    );
     expect(p).toEqual({
-      model: 'torus', up: 'y', mode: 'fixed', surface: 'cage', patches: false, flat: true, lod: 2.5, factor: 12, wire: false, cage: true, spin: true, t: 1.5,
-      yaw: 30, pitch: -10, dist: 3, ui: false, capacity: 0.5,
+      model: 'torus',
+      up: 'y',
+      mode: 'fixed',
+      surface: 'cage',
+      patches: false,
+      flat: true,
+      lod: 2.5,
+      factor: 12,
+      wire: false,
+      cage: true,
+      spin: true,
+      t: 1.5,
+      yaw: 30,
+      pitch: -10,
+      dist: 3,
+      ui: false,
+      capacity: 0.5,
     });
   });
 
@@ -62,7 +79,14 @@ describe('URL parameters', () => {
 
   it('formats only what differs from the defaults, and round-trips', () => {
     expect(formatParams(DEFAULT_PARAMS)).toBe('');
-    const cases = ['?model=gear&mode=fixed&factor=7.5', '?lod=0.25&wire=0&cage=1&surface=cage', '?model=sheet&up=y&t=0&yaw=12.5&pitch=20&dist=2.5', '?spin=1&ui=0&cap=16', '?surface=phong', '?patches=1&flat=0'];
+    const cases = [
+      '?model=gear&mode=fixed&factor=7.5',
+      '?lod=0.25&wire=0&cage=1&surface=cage',
+      '?model=sheet&up=y&t=0&yaw=12.5&pitch=20&dist=2.5',
+      '?spin=1&ui=0&cap=16',
+      '?surface=phong',
+      '?patches=1&flat=0',
+    ];
     for (const q of cases) {
       const p = parseParams(q);
       expect(parseParams(formatParams(p))).toEqual(p);
@@ -75,7 +99,9 @@ describe('the model list', () => {
   it("names exactly the project's models in public/models (the page asks the server for no index)", async () => {
     const { readdirSync } = await import('node:fs');
     const { BUILTIN_MODELS, DEFAULT_MODEL } = await import('../src/app/models.ts');
-    const files = readdirSync(new URL('../public/models/', import.meta.url)).filter((f) => f.endsWith('.obj')).map((f) => f.slice(0, -4));
+    const files = readdirSync(new URL('../public/models/', import.meta.url))
+      .filter((f) => f.endsWith('.obj'))
+      .map((f) => f.slice(0, -4));
     expect(BUILTIN_MODELS.map((m) => m.name).sort()).toEqual(files.sort());
     expect(BUILTIN_MODELS.map((m) => m.name)).toContain(DEFAULT_MODEL);
     expect(new Set(BUILTIN_MODELS.map((m) => m.label)).size).toBe(BUILTIN_MODELS.length);

@@ -1,9 +1,24 @@
 import { describe, expect, it } from 'vitest';
 import { mat4 } from 'gl-matrix';
 import {
-  boundingSphere, boundsOf, cameraMatrices, clipPlanes, dolly, eyePosition, fitDistance, fitOrbit, lightViewProj,
-  MAX_PITCH, orbit, perspectiveZO, transformBounds, transformPoint, upAxisMatrix, DEFAULT_LIGHT_DIR,
-  type Bounds, type Vec3,
+  boundingSphere,
+  boundsOf,
+  cameraMatrices,
+  clipPlanes,
+  dolly,
+  eyePosition,
+  fitDistance,
+  fitOrbit,
+  lightViewProj,
+  MAX_PITCH,
+  orbit,
+  perspectiveZO,
+  transformBounds,
+  transformPoint,
+  upAxisMatrix,
+  DEFAULT_LIGHT_DIR,
+  type Bounds,
+  type Vec3,
 } from '../src/gpu/camera.ts';
 
 const box: Bounds = { min: [-1, -2, -3], max: [3, 2, 1] };
@@ -17,7 +32,10 @@ function clip(m: ArrayLike<number>, p: Vec3): [number, number, number, number] {
 describe('projection (WebGPU clip space, z in 0..1)', () => {
   it('maps the near plane to z = 0 and the far plane to z = 1', () => {
     const p = perspectiveZO(1, 1.5, 0.1, 100);
-    for (const [depth, want] of [[0.1, 0], [100, 1]] as const) {
+    for (const [depth, want] of [
+      [0.1, 0],
+      [100, 1],
+    ] as const) {
       const c = clip(p, [0, 0, -depth]);
       expect(c[2] / c[3]).toBeCloseTo(want, 6);
     }
@@ -136,10 +154,22 @@ describe('light camera', () => {
   it('holds the whole bounding sphere inside its box, z in 0..1', () => {
     const s = boundingSphere(box);
     const m = lightViewProj(s, DEFAULT_LIGHT_DIR);
-    const dirs: Vec3[] = [[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1], [0.6, -0.6, 0.5]];
+    const dirs: Vec3[] = [
+      [1, 0, 0],
+      [-1, 0, 0],
+      [0, 1, 0],
+      [0, -1, 0],
+      [0, 0, 1],
+      [0, 0, -1],
+      [0.6, -0.6, 0.5],
+    ];
     for (const d of dirs) {
       const n = Math.hypot(...d);
-      const p: Vec3 = [s.center[0] + (d[0] / n) * s.radius * 0.999, s.center[1] + (d[1] / n) * s.radius * 0.999, s.center[2] + (d[2] / n) * s.radius * 0.999];
+      const p: Vec3 = [
+        s.center[0] + (d[0] / n) * s.radius * 0.999,
+        s.center[1] + (d[1] / n) * s.radius * 0.999,
+        s.center[2] + (d[2] / n) * s.radius * 0.999,
+      ];
       const [x, y, z, w] = clip(m, p);
       expect(w).toBeCloseTo(1, 12); // orthographic
       expect(Math.abs(x)).toBeLessThanOrEqual(1);
@@ -152,7 +182,11 @@ describe('light camera', () => {
   it('is nearer to the light for points closer to it', () => {
     const s = boundingSphere(box);
     const m = lightViewProj(s, DEFAULT_LIGHT_DIR);
-    const towards = (k: number): Vec3 => [s.center[0] + DEFAULT_LIGHT_DIR[0] * k, s.center[1] + DEFAULT_LIGHT_DIR[1] * k, s.center[2] + DEFAULT_LIGHT_DIR[2] * k];
+    const towards = (k: number): Vec3 => [
+      s.center[0] + DEFAULT_LIGHT_DIR[0] * k,
+      s.center[1] + DEFAULT_LIGHT_DIR[1] * k,
+      s.center[2] + DEFAULT_LIGHT_DIR[2] * k,
+    ];
     expect(clip(m, towards(s.radius * 0.5))[2]).toBeLessThan(clip(m, towards(-s.radius * 0.5))[2]);
   });
 

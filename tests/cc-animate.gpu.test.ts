@@ -42,7 +42,12 @@ function camera(mesh: PreparedMesh, eyeDistance: number, lodScale: number): Fact
 }
 
 async function make(flatBaseline: boolean): Promise<Tessellator> {
-  const t = Tessellator.create(await getDevice(), tables, { vertexCapacity: 1 << 19, triangleCapacity: 1 << 19, surface: 'catmull-clark', flatBaseline });
+  const t = Tessellator.create(await getDevice(), tables, {
+    vertexCapacity: 1 << 19,
+    triangleCapacity: 1 << 19,
+    surface: 'catmull-clark',
+    flatBaseline,
+  });
   made.push(t);
   return t;
 }
@@ -64,11 +69,15 @@ describe('Catmull-Clark with an animated cage', () => {
     await run(t, camera(mesh, 1.5 * mesh.size, 2));
     for (const phase of [0.3, 1.1]) {
       // A smooth deformation: bend and swell (same topology, tables untouched).
-      const moved: Cage = { ...cage, positions: cage.positions.map((x, i) => {
-        const v = Math.floor(i / 3), c = i % 3;
-        const p = cage.positions.subarray(3 * v, 3 * v + 3);
-        return c === 1 ? x + 0.2 * Math.sin(phase + 1.7 * p[0]) : c === 2 ? x * (1 + 0.1 * Math.cos(phase + p[1])) : x;
-      }) };
+      const moved: Cage = {
+        ...cage,
+        positions: cage.positions.map((x, i) => {
+          const v = Math.floor(i / 3),
+            c = i % 3;
+          const p = cage.positions.subarray(3 * v, 3 * v + 3);
+          return c === 1 ? x + 0.2 * Math.sin(phase + 1.7 * p[0]) : c === 2 ? x * (1 + 0.1 * Math.cos(phase + p[1])) : x;
+        }),
+      };
       const movedMesh = prepareMesh(moved);
       t.updateCage(movedMesh.positions, movedMesh.normals);
       const enc = t.device.createCommandEncoder();
@@ -86,7 +95,13 @@ describe('Catmull-Clark with an animated cage', () => {
       const out = await run(t, camera(movedMesh, 1.5 * movedMesh.size, 2));
       const edgeF = new Uint32Array(await readBuffer(t.device, t.workBuffer, 4 * mesh.edgeCount, 4 * t.workLayout.edgeF));
       const ref = new CCReference(moved, movedMesh, cc);
-      const report = checkTessellation(movedMesh, edgeF, out, { closed: true, reference: (tri, w) => { const x = ref.at(tri, w).ref; return { pos: x.P, normal: x.N }; } });
+      const report = checkTessellation(movedMesh, edgeF, out, {
+        closed: true,
+        reference: (tri, w) => {
+          const x = ref.at(tri, w).ref;
+          return { pos: x.P, normal: x.N };
+        },
+      });
       expect(report.problems).toEqual([]);
     }
   });
@@ -96,7 +111,8 @@ describe('Catmull-Clark with an animated cage', () => {
 function weightsIn(mesh: PreparedMesh, out: MeshReadback, v: number, t: number): number[] | null {
   const s = out.srcTri[v];
   const b = out.bary[v];
-  const w = b === BARY_CORNER1 ? [0, 65536, 0] : b === BARY_CORNER2 ? [0, 0, 65536] : [65536 - (b & 0xffff) - (b >>> 16), b & 0xffff, b >>> 16];
+  const w =
+    b === BARY_CORNER1 ? [0, 65536, 0] : b === BARY_CORNER2 ? [0, 0, 65536] : [65536 - (b & 0xffff) - (b >>> 16), b & 0xffff, b >>> 16];
   const res = [0, 0, 0];
   for (let i = 0; i < 3; i++) {
     if (!w[i]) continue;
@@ -159,7 +175,10 @@ function maxPop(mesh: PreparedMesh, prev: MeshReadback, next: MeshReadback): num
 }
 
 describe('Catmull-Clark pop test (flat baseline by tess factor)', () => {
-  for (const [name, text] of [['torus', torus], ['creased-box', creasedBox]] as const) {
+  for (const [name, text] of [
+    ['torus', torus],
+    ['creased-box', creasedBox],
+  ] as const) {
     it(`${name}: sweeping the LOD scale moves no vertex by more than ${POP_BOUND} of the model size`, async () => {
       const cage = loadCage(text).cage;
       const mesh = prepareMesh(cage);

@@ -22,11 +22,28 @@ export interface ErrorStats {
   worstN: string;
 }
 
-const empty = (): ErrorStats & { sp: number; sn: number; nn: number; all: number[] } => ({ count: 0, maxP: 0, rmsP: 0, p99P: 0, maxN: 0, rmsN: 0, worst: '', worstN: '', sp: 0, sn: 0, nn: 0, all: [] });
+const empty = (): ErrorStats & { sp: number; sn: number; nn: number; all: number[] } => ({
+  count: 0,
+  maxP: 0,
+  rmsP: 0,
+  p99P: 0,
+  maxN: 0,
+  rmsN: 0,
+  worst: '',
+  worstN: '',
+  sp: 0,
+  sn: 0,
+  nn: 0,
+  all: [],
+});
 
 export class CCReference {
   readonly S: Surface;
-  constructor(readonly cage: Cage, readonly mesh: PreparedMesh, readonly cc: CatmullClarkData) {
+  constructor(
+    readonly cage: Cage,
+    readonly mesh: PreparedMesh,
+    readonly cc: CatmullClarkData,
+  ) {
     this.S = new Surface(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
   }
 
@@ -34,35 +51,51 @@ export class CCReference {
   at(t: number, w: [number, number, number]) {
     const fp = faceParam(this.mesh, this.cage, t, w);
     const k = 'k' in fp ? fp.k : 0;
-    const x = 'k' in fp ? fp.s : fp.u, y = 'k' in fp ? fp.t : fp.v;
+    const x = 'k' in fp ? fp.s : fp.u,
+      y = 'k' in fp ? fp.t : fp.v;
     const ref = 'k' in fp ? this.S.evaluateSubFace(fp.face, fp.k, fp.s, fp.t) : this.S.evaluate(fp.face, fp.u, fp.v);
     return { ref, blended: regionOf(this.cc, t, k, x, y).blended, face: fp.face };
   }
 
   /** Compare GPU points (positions, normals) at (t, w) items. */
   compare(items: { t: number; w: [number, number, number] }[], pos: ArrayLike<number>, nrm: ArrayLike<number>) {
-    const exact = empty(), blended = empty();
+    const exact = empty(),
+      blended = empty();
     let nan = 0;
     items.forEach(({ t, w }, i) => {
       const { ref, blended: b, face } = this.at(t, w);
-      const p = [pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]], n = [nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]];
+      const p = [pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]],
+        n = [nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]];
       if (![...p, ...n].every(Number.isFinite)) nan++;
       const st = b ? blended : exact;
       const dp = Math.hypot(p[0] - ref.P[0], p[1] - ref.P[1], p[2] - ref.P[2]) / this.mesh.size;
       st.count++;
       st.sp += dp * dp;
       st.all.push(dp);
-      if (dp > st.maxP) { st.maxP = dp; st.worst = `tri ${t} face ${face} w ${w.map((x) => x.toFixed(5))}: ${p} vs ${ref.P}`; }
+      if (dp > st.maxP) {
+        st.maxP = dp;
+        st.worst = `tri ${t} face ${face} w ${w.map((x) => x.toFixed(5))}: ${p} vs ${ref.P}`;
+      }
       if (ref.normalDefined) {
         const dn = (angleBetween(n, ref.N) * 180) / Math.PI;
         st.sn += dn * dn;
         st.nn++;
-        if (dn > st.maxN) { st.maxN = dn; st.worstN = `tri ${t} face ${face} w ${w.map((x) => x.toFixed(5))}: ${n} vs ${ref.N}`; }
+        if (dn > st.maxN) {
+          st.maxN = dn;
+          st.worstN = `tri ${t} face ${face} w ${w.map((x) => x.toFixed(5))}: ${n} vs ${ref.N}`;
+        }
       }
     });
     const p99 = (a: number[]) => (a.length ? a.sort((x, y) => x - y)[Math.floor(0.99 * (a.length - 1))] : 0);
     const fin = (s: ReturnType<typeof empty>): ErrorStats => ({
-      count: s.count, maxP: s.maxP, rmsP: Math.sqrt(s.sp / Math.max(1, s.count)), p99P: p99(s.all), maxN: s.maxN, rmsN: Math.sqrt(s.sn / Math.max(1, s.nn)), worst: s.worst, worstN: s.worstN,
+      count: s.count,
+      maxP: s.maxP,
+      rmsP: Math.sqrt(s.sp / Math.max(1, s.count)),
+      p99P: p99(s.all),
+      maxN: s.maxN,
+      rmsN: Math.sqrt(s.sn / Math.max(1, s.nn)),
+      worst: s.worst,
+      worstN: s.worstN,
     });
     return { exact: fin(exact), blended: fin(blended), nan };
   }
@@ -75,11 +108,22 @@ export function randomSamples(mesh: PreparedMesh, n: number, seed = 1) {
   const out: { t: number; w1: number; w2: number; w: [number, number, number] }[] = [];
   for (let i = 0; i < n; i++) {
     const t = Math.floor(rnd() * mesh.triangleCount);
-    let a = rnd(), b = rnd();
-    if (a + b > 1) { a = 1 - a; b = 1 - b; }
-    let w1 = Math.round(a * 65536), w2 = Math.round(b * 65536);
-    if (i % 8 === 0) { w1 = 0; w2 = 0; }
-    if (i % 8 === 1) { w1 = 1 + (i % 97); w2 = i % 5; } // within 2^-10 of corner 0
+    let a = rnd(),
+      b = rnd();
+    if (a + b > 1) {
+      a = 1 - a;
+      b = 1 - b;
+    }
+    let w1 = Math.round(a * 65536),
+      w2 = Math.round(b * 65536);
+    if (i % 8 === 0) {
+      w1 = 0;
+      w2 = 0;
+    }
+    if (i % 8 === 1) {
+      w1 = 1 + (i % 97);
+      w2 = i % 5;
+    } // within 2^-10 of corner 0
     if (w1 + w2 > 65536) w2 = 65536 - w1;
     out.push({ t, w1, w2, w: [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536] });
   }

@@ -25,15 +25,21 @@ function faceRegions(cc: CatmullClarkData, cage: Cage, f: number): number[] {
 
 function torus(nu: number, nv: number): Cage {
   const p: number[] = [];
-  for (let j = 0; j < nv; j++) for (let i = 0; i < nu; i++) {
-    const u = (2 * Math.PI * i) / nu, v = (2 * Math.PI * j) / nv;
-    p.push((2 + Math.cos(v)) * Math.cos(u), (2 + Math.cos(v)) * Math.sin(u), Math.sin(v));
-  }
+  for (let j = 0; j < nv; j++)
+    for (let i = 0; i < nu; i++) {
+      const u = (2 * Math.PI * i) / nu,
+        v = (2 * Math.PI * j) / nv;
+      p.push((2 + Math.cos(v)) * Math.cos(u), (2 + Math.cos(v)) * Math.sin(u), Math.sin(v));
+    }
   const f: number[][] = [];
-  for (let j = 0; j < nv; j++) for (let i = 0; i < nu; i++) {
-    const a = j * nu + i, b = j * nu + ((i + 1) % nu), c = ((j + 1) % nv) * nu + ((i + 1) % nu), d = ((j + 1) % nv) * nu + i;
-    f.push([a, b, c, d]);
-  }
+  for (let j = 0; j < nv; j++)
+    for (let i = 0; i < nu; i++) {
+      const a = j * nu + i,
+        b = j * nu + ((i + 1) % nu),
+        c = ((j + 1) % nv) * nu + ((i + 1) % nu),
+        d = ((j + 1) % nv) * nu + i;
+      f.push([a, b, c, d]);
+    }
   return makeCage(p, f);
 }
 

@@ -50,7 +50,12 @@ describe.skipIf(!present)("Catmull-Clark on the talk's models", () => {
         best = Math.min(best, performance.now() - t0);
       }
       const device = await getDevice();
-      tess ??= Tessellator.create(device, bakeTables(64), { vertexCapacity: 1 << 21, triangleCapacity: 1 << 21, surface: 'catmull-clark', flatBaseline: false });
+      tess ??= Tessellator.create(device, bakeTables(64), {
+        vertexCapacity: 1 << 21,
+        triangleCapacity: 1 << 21,
+        surface: 'catmull-clark',
+        flatBaseline: false,
+      });
       device.pushErrorScope('validation');
       tess.setMesh(mesh, cc);
       const enc = device.createCommandEncoder();
@@ -62,7 +67,10 @@ describe.skipIf(!present)("Catmull-Clark on the talk's models", () => {
       const ref = new CCReference(cage, mesh, cc);
       const step = Math.max(1, Math.floor(out.vertexCount / SAMPLE));
       const errs: number[] = [];
-      let blended = 0, nan = 0, worst = '', worstD = 0;
+      let blended = 0,
+        nan = 0,
+        worst = '',
+        worstD = 0;
       for (let v = 0; v < out.vertexCount; v += step) {
         const b = out.bary[v];
         let w1: number, w2: number;
@@ -73,19 +81,40 @@ describe.skipIf(!present)("Catmull-Clark on the talk's models", () => {
         const w: [number, number, number] = [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536];
         const r = ref.at(t, w);
         const p = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
-        if (!p.every(Number.isFinite)) { nan++; continue; }
-        if (r.blended) { blended++; continue; }
+        if (!p.every(Number.isFinite)) {
+          nan++;
+          continue;
+        }
+        if (r.blended) {
+          blended++;
+          continue;
+        }
         const d = Math.hypot(p[0] - r.ref.P[0], p[1] - r.ref.P[1], p[2] - r.ref.P[2]) / mesh.size;
-        if (d > worstD) { worstD = d; worst = `tri ${t} face ${r.face} w ${w.map((x) => x.toFixed(5))}`; }
+        if (d > worstD) {
+          worstD = d;
+          worst = `tri ${t} face ${r.face} w ${w.map((x) => x.toFixed(5))}`;
+        }
         errs.push(d);
       }
       errs.sort((a, b) => a - b);
       const max = errs[errs.length - 1] ?? 0;
       const p99 = errs[Math.floor(0.99 * (errs.length - 1))] ?? 0;
-      console.log(name, JSON.stringify({
-        faces, prepMs: +best.toFixed(1), gpuBytesPerFace: Math.round(cc.gpuBytes / faces), levels: cc.levels, fans: cc.fanCount,
-        regions: cc.regionCount, vertices: out.vertexCount, checked: errs.length, blended, max, p99,
-      }));
+      console.log(
+        name,
+        JSON.stringify({
+          faces,
+          prepMs: +best.toFixed(1),
+          gpuBytesPerFace: Math.round(cc.gpuBytes / faces),
+          levels: cc.levels,
+          fans: cc.fanCount,
+          regions: cc.regionCount,
+          vertices: out.vertexCount,
+          checked: errs.length,
+          blended,
+          max,
+          p99,
+        }),
+      );
       expect(nan).toBe(0);
       expect(max, worst).toBeLessThan(MAX_BOUND);
       expect(p99).toBeLessThanOrEqual(P99_BOUND);

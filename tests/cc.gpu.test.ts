@@ -40,7 +40,12 @@ const camera = testCamera;
 
 async function tessellator(): Promise<Tessellator> {
   const device = await getDevice();
-  tess ??= Tessellator.create(device, tables, { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20, surface: 'catmull-clark', flatBaseline: false });
+  tess ??= Tessellator.create(device, tables, {
+    vertexCapacity: 1 << 20,
+    triangleCapacity: 1 << 20,
+    surface: 'catmull-clark',
+    flatBaseline: false,
+  });
   return tess;
 }
 
@@ -58,8 +63,13 @@ function outputItems(out: MeshReadback) {
 }
 
 const models: [string, string, boolean][] = [
-  ['torus', torus, true], ['creased-box', creasedBox, true], ['sheet', sheet, false], ['pawn', pawn, true],
-  ['creature', creature, true], ['icosphere', icosphere, true], ['gear', gear, true],
+  ['torus', torus, true],
+  ['creased-box', creasedBox, true],
+  ['sheet', sheet, false],
+  ['pawn', pawn, true],
+  ['creature', creature, true],
+  ['icosphere', icosphere, true],
+  ['gear', gear, true],
 ];
 
 describe('Catmull-Clark surface against the CPU reference', () => {
@@ -91,7 +101,13 @@ describe('Catmull-Clark surface against the CPU reference', () => {
         expect(r.exact.maxN).toBeLessThan(NORMAL_BOUND_DEG);
         expect(r.blended.maxP, r.blended.worst).toBeLessThan(BLENDED_POSITION_BOUND);
       }
-      const report = checkTessellation(mesh, edgeF, out, { closed, reference: (tri, w) => { const r = ref.at(tri, w).ref; return { pos: r.P, normal: r.N }; } });
+      const report = checkTessellation(mesh, edgeF, out, {
+        closed,
+        reference: (tri, w) => {
+          const r = ref.at(tri, w).ref;
+          return { pos: r.P, normal: r.N };
+        },
+      });
       expect(report.problems).toEqual([]);
     });
   }

@@ -64,10 +64,18 @@ describe('clamped parallelogram: fixed cases', () => {
 
   it('reports its degenerate triangles at a few factor sets', () => {
     const sets: [number, number, number][] = [
-      [1, 1, 1], [16, 16, 16], [1.5, 1.5, 1.5], [2.001, 2, 2], [3.5, 7, 12], [5.3, 2.2, 9.9], [64, 1.01, 33.3], [10.3, 10.3, 10.3],
+      [1, 1, 1],
+      [16, 16, 16],
+      [1.5, 1.5, 1.5],
+      [2.001, 2, 2],
+      [3.5, 7, 12],
+      [5.3, 2.2, 9.9],
+      [64, 1.01, 33.3],
+      [10.3, 10.3, 10.3],
       // One unit of 16.16 below 2 the two 1→2 points of an edge meet (the ghost dies at 2):
       // the only zero-area triangles this construction makes.
-      [2 - 2 ** -16, 5, 5], [2 - 2 ** -16, 2 - 2 ** -16, 2 - 2 ** -16],
+      [2 - 2 ** -16, 5, 5],
+      [2 - 2 ** -16, 2 - 2 ** -16, 2 - 2 ** -16],
     ];
     let total = 0;
     for (const f of sets) {
@@ -111,22 +119,32 @@ describe('clamped parallelogram: properties over random factor sets', () => {
     // Triangle A has the shared edge as its edge i walked forwards (from its lower vertex),
     // triangle B has it as its edge j walked backwards. Both get the edge's one factor.
     fc.assert(
-      fc.property(factors, factors, fc.integer({ min: 0, max: 2 }), fc.integer({ min: 0, max: 2 }), reverse, reverse, (fa, fb, i, j, ra, rb) => {
-        const shared = fa[i];
-        const fB = [...fb] as [number, number, number];
-        fB[j] = shared;
-        const rA = [...ra] as [boolean, boolean, boolean];
-        const rB = [...rb] as [boolean, boolean, boolean];
-        rA[i] = false;
-        rB[j] = true;
-        const A = clampedTriangle(fa, rA as Reverse);
-        const B = clampedTriangle(fB as [number, number, number], rB as Reverse);
-        // On A's edge i, t is the weight of the edge's far (higher) vertex; on B's edge j the
-        // far-in-B's-order corner is the lower vertex, so the higher vertex has weight ONE − t.
-        const onA = edgeParams(A, i);
-        const onB = edgeParams(B, j).map((t) => ONE - t).sort((a, b) => a - b);
-        expect(onA).toEqual(onB);
-      }),
+      fc.property(
+        factors,
+        factors,
+        fc.integer({ min: 0, max: 2 }),
+        fc.integer({ min: 0, max: 2 }),
+        reverse,
+        reverse,
+        (fa, fb, i, j, ra, rb) => {
+          const shared = fa[i];
+          const fB = [...fb] as [number, number, number];
+          fB[j] = shared;
+          const rA = [...ra] as [boolean, boolean, boolean];
+          const rB = [...rb] as [boolean, boolean, boolean];
+          rA[i] = false;
+          rB[j] = true;
+          const A = clampedTriangle(fa, rA as Reverse);
+          const B = clampedTriangle(fB as [number, number, number], rB as Reverse);
+          // On A's edge i, t is the weight of the edge's far (higher) vertex; on B's edge j the
+          // far-in-B's-order corner is the lower vertex, so the higher vertex has weight ONE − t.
+          const onA = edgeParams(A, i);
+          const onB = edgeParams(B, j)
+            .map((t) => ONE - t)
+            .sort((a, b) => a - b);
+          expect(onA).toEqual(onB);
+        },
+      ),
       { numRuns: 3000 },
     );
   });
@@ -135,10 +153,18 @@ describe('clamped parallelogram: properties over random factor sets', () => {
     // Hausdorff distance (in the u,v plane, edge length 1) between consecutive vertex sets.
     const step = 2e-3;
     let worst = 0;
-    const bases: [number, number, number][] = [[1, 1, 1], [6.3, 2.7, 11.2], [1.4, 9, 3.3], [12, 12, 1]];
+    const bases: [number, number, number][] = [
+      [1, 1, 1],
+      [6.3, 2.7, 11.2],
+      [1.4, 9, 3.3],
+      [12, 12, 1],
+    ];
     for (const base of bases) {
       for (let e = 0; e < 3; e++) {
-        for (const r of [[false, false, false], [true, true, true]] as Reverse[]) {
+        for (const r of [
+          [false, false, false],
+          [true, true, true],
+        ] as Reverse[]) {
           const at = (f: number) => {
             const ff = [...base] as [number, number, number];
             ff[e] = f;
@@ -166,7 +192,8 @@ function hausdorff2d(a: TriPattern, b: TriPattern): number {
     let worst = 0;
     for (let i = 0; i < p.vertexCount; i++) {
       let best = Infinity;
-      const x = p.bary[3 * i + 1], y = p.bary[3 * i + 2];
+      const x = p.bary[3 * i + 1],
+        y = p.bary[3 * i + 2];
       for (let j = 0; j < q.vertexCount && best > 0; j++) {
         best = Math.min(best, Math.hypot(q.bary[3 * j + 1] - x, q.bary[3 * j + 2] - y));
       }

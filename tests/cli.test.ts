@@ -22,11 +22,18 @@ describe('pattern CLI', () => {
   });
 
   it('prints the reference counts for triangles', () => {
-    expect(json('tri --mode fractional_even --factors 16,16,16 --inside 16 --json')).toMatchObject({ vertexCount: 217, triangleCount: 384 });
+    expect(json('tri --mode fractional_even --factors 16,16,16 --inside 16 --json')).toMatchObject({
+      vertexCount: 217,
+      triangleCount: 384,
+    });
     expect(json('tri --mode clamped --factors 16,16,16 --json')).toMatchObject({ vertexCount: 153, triangleCount: 256 });
     const one = json('tri --mode clamped --factors 1,1,1 --json');
     expect(one.triangles.length).toBe(1);
-    expect(one.triangles[0].map((i: number) => one.points[i])).toEqual([[1, 0, 0], [0, 1, 0], [0, 0, 1]]);
+    expect(one.triangles[0].map((i: number) => one.points[i])).toEqual([
+      [1, 0, 0],
+      [0, 1, 0],
+      [0, 0, 1],
+    ]);
     const o = json('tri --mode clamped --factors 3.5,7,12 --reverse 0,1,0 --json');
     expect(o.points.length).toBe(o.vertexCount);
     for (const p of o.points) expect(p[0] + p[1] + p[2]).toBeCloseTo(1, 12);
@@ -34,7 +41,10 @@ describe('pattern CLI', () => {
 
   it('sweeps a line, one JSON object per factor', () => {
     const r = run('line --mode hable --sweep 1,2,0.25');
-    const rows = r.stdout.trim().split('\n').map((l) => JSON.parse(l));
+    const rows = r.stdout
+      .trim()
+      .split('\n')
+      .map((l) => JSON.parse(l));
     expect(rows.map((o) => o.factor)).toEqual([1, 1.25, 1.5, 1.75, 2]);
     expect(rows.map((o) => o.vertexCount)).toEqual([2, 4, 4, 4, 3]);
   });
@@ -42,7 +52,10 @@ describe('pattern CLI', () => {
   it('reads factor sets from a file, with inside factors, reverse flags and comments', () => {
     const r = run('tri --mode clamped --factors-file f.txt', { 'f.txt': '# sets\n1,1,1\n\n4,5,6;1,0,1\n' });
     expect(r.code).toBe(0);
-    const rows = r.stdout.trim().split('\n').map((l) => JSON.parse(l));
+    const rows = r.stdout
+      .trim()
+      .split('\n')
+      .map((l) => JSON.parse(l));
     expect(rows.length).toBe(2);
     expect(rows[1].reverse).toEqual([1, 0, 1]);
     const d = run('tri --mode integer --factors-file f.txt', { 'f.txt': '2,3,4,5\n' });

@@ -16,7 +16,10 @@ import { ONE } from '../src/pattern/fixed.ts';
 
 /** A camera looking at `target` from `eye` (WebGPU clip space), as the factor rule wants it. */
 export function cameraRule(
-  mode: 'fixed' | 'adaptive', eye: Vec3, target: Vec3, size: number,
+  mode: 'fixed' | 'adaptive',
+  eye: Vec3,
+  target: Vec3,
+  size: number,
   opts: { fixedFactor?: number; lodScale?: number; fovY?: number; viewportHeight?: number; maxFactor?: number } = {},
 ): FactorRule {
   const fovY = opts.fovY ?? Math.PI / 4;
@@ -48,11 +51,13 @@ export interface CpuTriangle {
 
 /** Every output triangle of the CPU pipeline, in the pattern's (positive) winding. */
 export function cpuTessellate(mesh: PreparedMesh, rule: FactorRule, trueNormals = false): CpuTriangle[] {
-  const P = mesh.positions, N = mesh.normals;
+  const P = mesh.positions,
+    N = mesh.normals;
   const vec = (a: ArrayLike<number>, i: number): Vec3 => [a[3 * i], a[3 * i + 1], a[3 * i + 2]];
   const edgeF = new Float64Array(mesh.edgeCount);
   for (let e = 0; e < mesh.edgeCount; e++) {
-    const a = mesh.edgeVerts[2 * e], b = mesh.edgeVerts[2 * e + 1];
+    const a = mesh.edgeVerts[2 * e],
+      b = mesh.edgeVerts[2 * e + 1];
     // The GPU stores the factor as 16.16; so does this, so both see the same line state.
     edgeF[e] = Math.round(edgeFactor(vec(P, a), vec(P, b), vec(N, a), vec(N, b), rule) * ONE) / ONE;
   }
@@ -90,7 +95,10 @@ export function geometricNormal(t: CpuTriangle): number[] {
 export function phongSurfaceNormal(mesh: PreparedMesh, t: number, w: readonly [number, number, number]): number[] {
   const h = 1e-4;
   const at = (d1: number, d2: number) => phongPoint(mesh, t, [w[0] - d1 - d2, w[1] + d1, w[2] + d2]).pos;
-  const a = at(h, 0), b = at(-h, 0), c = at(0, h), d = at(0, -h);
+  const a = at(h, 0),
+    b = at(-h, 0),
+    c = at(0, h),
+    d = at(0, -h);
   const t1 = [0, 1, 2].map((i) => a[i] - b[i]);
   const t2 = [0, 1, 2].map((i) => c[i] - d[i]);
   const n = [t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0]];

@@ -40,20 +40,36 @@ describe('crease row weights in WGSL', () => {
     for (let k = 1; k <= 10; k++) us.push(2 ** -k * 0.999, 2 ** -k * 1.001);
     const pairs = new Float32Array(2 * sigmas.length * us.length);
     let n = 0;
-    for (const s of sigmas) for (const u of us) { pairs[2 * n] = s; pairs[2 * n + 1] = u; n++; }
+    for (const s of sigmas)
+      for (const u of us) {
+        pairs[2 * n] = s;
+        pairs[2 * n + 1] = u;
+        n++;
+      }
 
     const device = await getDevice();
     const module = device.createShaderModule({ label: 'crease-basis test', code: kernel });
     const info = await module.getCompilationInfo();
     expect(info.messages.filter((m) => m.type === 'error').map((m) => m.message)).toEqual([]);
     const pipeline = device.createComputePipeline({ label: 'crease-basis test', layout: 'auto', compute: { module, entryPoint: 'main' } });
-    const input = device.createBuffer({ label: 'crease-basis inputs', size: pairs.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
-    const output = device.createBuffer({ label: 'crease-basis outputs', size: 32 * n, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
+    const input = device.createBuffer({
+      label: 'crease-basis inputs',
+      size: pairs.byteLength,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
+    const output = device.createBuffer({
+      label: 'crease-basis outputs',
+      size: 32 * n,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC,
+    });
     device.queue.writeBuffer(input, 0, pairs);
     const bind = device.createBindGroup({
       label: 'crease-basis test',
       layout: pipeline.getBindGroupLayout(0),
-      entries: [{ binding: 0, resource: { buffer: input } }, { binding: 1, resource: { buffer: output } }],
+      entries: [
+        { binding: 0, resource: { buffer: input } },
+        { binding: 1, resource: { buffer: output } },
+      ],
     });
     const enc = device.createCommandEncoder({ label: 'crease-basis test' });
     const pass = enc.beginComputePass({ label: 'crease-basis test' });
@@ -66,13 +82,22 @@ describe('crease row weights in WGSL', () => {
     input.destroy();
     output.destroy();
 
-    let worstValue = 0, worstDu = 0, where = '';
+    let worstValue = 0,
+      worstDu = 0,
+      where = '';
     for (let i = 0; i < n; i++) {
       const w = creaseRowWeights(pairs[2 * i], pairs[2 * i + 1]);
       for (let j = 0; j < 4; j++) {
-        const dv = Math.abs(got[8 * i + j] - w.value[j]), dd = Math.abs(got[8 * i + 4 + j] - w.du[j]);
-        if (!(dv <= worstValue)) { worstValue = dv; if (dv > TOL) where = `σ ${pairs[2 * i]} u ${pairs[2 * i + 1]} value ${j}`; }
-        if (!(dd <= worstDu)) { worstDu = dd; if (dd > TOL) where = `σ ${pairs[2 * i]} u ${pairs[2 * i + 1]} du ${j}`; }
+        const dv = Math.abs(got[8 * i + j] - w.value[j]),
+          dd = Math.abs(got[8 * i + 4 + j] - w.du[j]);
+        if (!(dv <= worstValue)) {
+          worstValue = dv;
+          if (dv > TOL) where = `σ ${pairs[2 * i]} u ${pairs[2 * i + 1]} value ${j}`;
+        }
+        if (!(dd <= worstDu)) {
+          worstDu = dd;
+          if (dd > TOL) where = `σ ${pairs[2 * i]} u ${pairs[2 * i + 1]} du ${j}`;
+        }
       }
     }
     console.log(`crease weights, ${n} (σ, u) pairs: max |Δ value| ${worstValue.toExponential(2)}, max |Δ du| ${worstDu.toExponential(2)}`);

@@ -28,13 +28,17 @@ function rng(seed: number): () => number {
 }
 
 // Jittered all-quad torus: NI around the major circle (face u), NJ around the minor (face v).
-const NI = 8, NJ = 6;
+const NI = 8,
+  NJ = 6;
 const idx = (i: number, j: number): number => (((i % NI) + NI) % NI) * NJ + (((j % NJ) + NJ) % NJ);
 const torusPos = ((): Float64Array => {
-  const rand = rng(9), p = new Float64Array(3 * NI * NJ);
+  const rand = rng(9),
+    p = new Float64Array(3 * NI * NJ);
   for (let i = 0; i < NI; i++) {
     for (let j = 0; j < NJ; j++) {
-      const th = (2 * Math.PI * i) / NI, ph = (2 * Math.PI * j) / NJ, rr = 3 + Math.cos(ph);
+      const th = (2 * Math.PI * i) / NI,
+        ph = (2 * Math.PI * j) / NJ,
+        rr = 3 + Math.cos(ph);
       const o = 3 * idx(i, j);
       p[o] = rr * Math.cos(th) + 0.3 * (rand() - 0.5);
       p[o + 1] = rr * Math.sin(th) + 0.3 * (rand() - 0.5);
@@ -47,11 +51,13 @@ const torusFaces: number[][] = [];
 for (let i = 0; i < NI; i++) for (let j = 0; j < NJ; j++) torusFaces.push([idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1)]);
 const faceId = (i: number, j: number): number => (((i % NI) + NI) % NI) * NJ + (((j % NJ) + NJ) % NJ);
 const diag = ((): number => {
-  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-  for (let v = 0; v < NI * NJ; v++) for (let c = 0; c < 3; c++) {
-    lo[c] = Math.min(lo[c], torusPos[3 * v + c]);
-    hi[c] = Math.max(hi[c], torusPos[3 * v + c]);
-  }
+  const lo = [Infinity, Infinity, Infinity],
+    hi = [-Infinity, -Infinity, -Infinity];
+  for (let v = 0; v < NI * NJ; v++)
+    for (let c = 0; c < 3; c++) {
+      lo[c] = Math.min(lo[c], torusPos[3 * v + c]);
+      hi[c] = Math.max(hi[c], torusPos[3 * v + c]);
+    }
   return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 })();
 
@@ -68,7 +74,8 @@ function patchFrom(at: (c: number, r: number) => number): Float64Array {
  * limit tangents whose lengths are not parametric derivatives (SurfacePoint.atVertex): there
  * only P and N are compared.
  */
-const derivDiff = (want: SurfacePoint, du: V, dv: V): number => (want.atVertex ? 0 : Math.max(maxDiff(du, want.dPdu), maxDiff(dv, want.dPdv)));
+const derivDiff = (want: SurfacePoint, du: V, dv: V): number =>
+  want.atVertex ? 0 : Math.max(maxDiff(du, want.dPdu), maxDiff(dv, want.dPdv));
 
 const SIGMAS = [0.5, 1, 1.5, 2.7, 10, 0, 2.3, 3.7];
 // Down to 1e-6 from the crease, the level breakpoints 2^-k (and their neighbours), and beyond.
@@ -80,7 +87,8 @@ describe('single semi-sharp crease: closed form vs exact refinement (jittered to
   // Crease loop A runs around the minor circle through i = I0: faces (I0, j) have it on their
   // u = 0 side (their own patch layout is the closed form's), faces (I0-1, j) on u = 1 (mirror
   // the columns, evaluate at 1 - u; d/du changes sign).
-  const I0 = 2, J0 = 3;
+  const I0 = 2,
+    J0 = 3;
   for (const sigma of SIGMAS) {
     it(`sharpness ${sigma}: loop across u (faces with the crease at u = 0 and at u = 1)`, () => {
       const creases: [number, number, number][] = [];
@@ -90,16 +98,25 @@ describe('single semi-sharp crease: closed form vs exact refinement (jittered to
       for (const j of [0, 4]) {
         const cpL = patchFrom((c, r) => idx(I0 - 1 + c, j - 1 + r)); // crease at u = 0
         const cpR = patchFrom((c, r) => idx(I0 - 1 - c + 2, j - 1 + r)); // face (I0-1, j) mirrored: column c = 3 - c'
-        for (const u of US) for (const v of VS) {
-          const want = S.evaluate(faceId(I0, j), u, v);
-          const got = evalCreasePatch(cpL, sigma, u, v);
-          worst = Math.max(worst, maxDiff(got.P, want.P), derivDiff(want, got.dPdu, got.dPdv));
-          expect(maxDiff(got.N, want.N), `N at (${u}, ${v})`).toBeLessThanOrEqual(1e-10);
+        for (const u of US)
+          for (const v of VS) {
+            const want = S.evaluate(faceId(I0, j), u, v);
+            const got = evalCreasePatch(cpL, sigma, u, v);
+            worst = Math.max(worst, maxDiff(got.P, want.P), derivDiff(want, got.dPdu, got.dPdv));
+            expect(maxDiff(got.N, want.N), `N at (${u}, ${v})`).toBeLessThanOrEqual(1e-10);
 
-          const wantR = S.evaluate(faceId(I0 - 1, j), 1 - u, v);
-          const gotR = evalCreasePatch(cpR, sigma, u, v);
-          worst = Math.max(worst, maxDiff(gotR.P, wantR.P), derivDiff(wantR, gotR.dPdu.map((x) => -x), gotR.dPdv));
-        }
+            const wantR = S.evaluate(faceId(I0 - 1, j), 1 - u, v);
+            const gotR = evalCreasePatch(cpR, sigma, u, v);
+            worst = Math.max(
+              worst,
+              maxDiff(gotR.P, wantR.P),
+              derivDiff(
+                wantR,
+                gotR.dPdu.map((x) => -x),
+                gotR.dPdv,
+              ),
+            );
+          }
       }
       if (process.env.CREASE_REPORT) console.log(`σ ${sigma}: worst |Δ| / diag = ${(worst / diag).toExponential(2)}`);
       expect(worst).toBeLessThanOrEqual(TOL);
@@ -113,12 +130,19 @@ describe('single semi-sharp crease: closed form vs exact refinement (jittered to
       let worst = 0;
       for (const i of [1, 6]) {
         const cpT = patchFrom((c, r) => idx(i - 1 + r, J0 - 1 + c));
-        for (const u of US) for (const v of VS) {
-          const want = S.evaluate(faceId(i, J0), v, u);
-          const got = evalCreasePatch(cpT, sigma, u, v);
-          worst = Math.max(worst, maxDiff(got.P, want.P), derivDiff(want, got.dPdv, got.dPdu));
-          expect(maxDiff(got.N.map((x) => -x), want.N), `N at (${u}, ${v})`).toBeLessThanOrEqual(1e-10);
-        }
+        for (const u of US)
+          for (const v of VS) {
+            const want = S.evaluate(faceId(i, J0), v, u);
+            const got = evalCreasePatch(cpT, sigma, u, v);
+            worst = Math.max(worst, maxDiff(got.P, want.P), derivDiff(want, got.dPdv, got.dPdu));
+            expect(
+              maxDiff(
+                got.N.map((x) => -x),
+                want.N,
+              ),
+              `N at (${u}, ${v})`,
+            ).toBeLessThanOrEqual(1e-10);
+          }
       }
       if (process.env.CREASE_REPORT) console.log(`σ ${sigma}: worst |Δ| / diag = ${(worst / diag).toExponential(2)}`);
       expect(worst).toBeLessThanOrEqual(TOL);
@@ -155,11 +179,16 @@ function refineRow(sigma: number, b: number[], L: number, u: number): { P: numbe
     s = s > 1 ? Math.fround(s - 1) : 0;
   }
   const n = 2 ** L;
-  const m = Math.min(Math.floor(u * n), n - 1), t = u * n - m;
+  const m = Math.min(Math.floor(u * n), n - 1),
+    t = u * n - m;
   const B = [(1 - t) ** 3 / 6, (3 * t ** 3 - 6 * t * t + 4) / 6, (-3 * t ** 3 + 3 * t * t + 3 * t + 1) / 6, t ** 3 / 6];
   const D = [-0.5 * (1 - t) ** 2, 0.5 * (3 * t * t - 4 * t), 0.5 * (-3 * t * t + 2 * t + 1), 0.5 * t * t];
-  let P = 0, dP = 0;
-  for (let i = 0; i < 4; i++) { P += B[i] * p[m + i]; dP += n * D[i] * p[m + i]; }
+  let P = 0,
+    dP = 0;
+  for (let i = 0; i < 4; i++) {
+    P += B[i] * p[m + i];
+    dP += n * D[i] * p[m + i];
+  }
   return { P, dP };
 }
 
@@ -212,7 +241,8 @@ describe('crease row weights', () => {
 
   it('evaluates vector rows of any dimension and both array types', () => {
     const row = [0, 0, 0, 1, 2, 3, 4, 4, 4, -1, 0, 7];
-    const a = evalCreaseRow(2.3, 0.1, row), b = evalCreaseRow(2.3, 0.1, Float64Array.from(row));
+    const a = evalCreaseRow(2.3, 0.1, row),
+      b = evalCreaseRow(2.3, 0.1, Float64Array.from(row));
     expect(a).toEqual(b);
     const w = creaseRowWeights(2.3, 0.1);
     for (let c = 0; c < 3; c++) {
@@ -224,10 +254,14 @@ describe('crease row weights', () => {
   it('is affine in the fractional part: W(k + f) = (1 − f) W(k) + f W(k + 1) (§7.2), for k + 1 < 10', () => {
     // Not across 10: σ = 10 is infinitely sharp, not "10 sharp levels", so 9 < σ < 10 is no blend of 9 and 10.
     for (const sigma of [0.5, 2.3, 3.7, 8.5]) {
-      const s = Math.fround(sigma), k = Math.floor(s), f = s - k;
+      const s = Math.fround(sigma),
+        k = Math.floor(s),
+        f = s - k;
       for (let x = 0; x <= 200; x++) {
         const u = (x / 200) ** 3; // dense near the crease
-        const w = creaseRowWeights(sigma, u), a = creaseRowWeights(k, u), b = creaseRowWeights(k + 1, u);
+        const w = creaseRowWeights(sigma, u),
+          a = creaseRowWeights(k, u),
+          b = creaseRowWeights(k + 1, u);
         for (let i = 0; i < 4; i++) {
           expect(Math.abs(w.value[i] - ((1 - f) * a.value[i] + f * b.value[i]))).toBeLessThanOrEqual(1e-15);
           expect(Math.abs(w.du[i] - ((1 - f) * a.du[i] + f * b.du[i]))).toBeLessThanOrEqual(1e-14);

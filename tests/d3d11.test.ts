@@ -6,13 +6,7 @@
  */
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import {
-  RULER_BIRTH_ORDER,
-  d3d11Line,
-  d3d11SegmentCount,
-  d3d11TriCounts,
-  d3d11Triangle,
-} from '../src/pattern/d3d11';
+import { RULER_BIRTH_ORDER, d3d11Line, d3d11SegmentCount, d3d11TriCounts, d3d11Triangle } from '../src/pattern/d3d11';
 import { ONE } from '../src/pattern/fixed';
 import { D3D11_PARTITIONINGS, type D3D11Partitioning, type TriPattern } from '../src/pattern/types';
 
@@ -42,9 +36,12 @@ const SLIVER_AREA = 4 * ONE;
 /** Twice the signed area of triangle t in (u, v), exact (|value| < 2^34). */
 function cross2(m: TriPattern, t: number): number {
   const [a, b, c] = [m.triangles[3 * t], m.triangles[3 * t + 1], m.triangles[3 * t + 2]];
-  const ua = m.bary[3 * a], va = m.bary[3 * a + 1];
-  const ub = m.bary[3 * b], vb = m.bary[3 * b + 1];
-  const uc = m.bary[3 * c], vc = m.bary[3 * c + 1];
+  const ua = m.bary[3 * a],
+    va = m.bary[3 * a + 1];
+  const ub = m.bary[3 * b],
+    vb = m.bary[3 * b + 1];
+  const uc = m.bary[3 * c],
+    vc = m.bary[3 * c + 1];
   return (ub - ua) * (vc - va) - (vb - va) * (uc - ua);
 }
 
@@ -143,18 +140,28 @@ function outerEdges(p: D3D11Partitioning, factors: Tri3, m: TriPattern): number[
 describe('d3d11 tables', () => {
   it('derives the 33-entry ruler table of the notes (§2.4)', () => {
     expect(RULER_BIRTH_ORDER).toEqual([
-      0, 32, 16, 8, 17, 4, 18, 9, 19, 2, 20, 10, 21, 5, 22, 11, 23, 1, 24, 12, 25, 6, 26, 13, 27,
-      3, 28, 14, 29, 7, 30, 15, 31,
+      0, 32, 16, 8, 17, 4, 18, 9, 19, 2, 20, 10, 21, 5, 22, 11, 23, 1, 24, 12, 25, 6, 26, 13, 27, 3, 28, 14, 29, 7, 30, 15, 31,
     ]);
   });
 
   it('counts segments per notes §2.2', () => {
     const cases: [D3D11Partitioning, number, number][] = [
-      ['integer', 1, 1], ['integer', 1.01, 2], ['integer', 2.01, 3],
-      ['pow2', 1, 1], ['pow2', 1.01, 2], ['pow2', 2.01, 4], ['pow2', 5, 8], ['pow2', 33, 64],
-      ['fractional_odd', 1, 1], ['fractional_odd', 1.01, 3], ['fractional_odd', 3, 3],
-      ['fractional_odd', 3.01, 5], ['fractional_odd', 64, 63],
-      ['fractional_even', 1, 2], ['fractional_even', 2, 2], ['fractional_even', 2.01, 4],
+      ['integer', 1, 1],
+      ['integer', 1.01, 2],
+      ['integer', 2.01, 3],
+      ['pow2', 1, 1],
+      ['pow2', 1.01, 2],
+      ['pow2', 2.01, 4],
+      ['pow2', 5, 8],
+      ['pow2', 33, 64],
+      ['fractional_odd', 1, 1],
+      ['fractional_odd', 1.01, 3],
+      ['fractional_odd', 3, 3],
+      ['fractional_odd', 3.01, 5],
+      ['fractional_odd', 64, 63],
+      ['fractional_even', 1, 2],
+      ['fractional_even', 2, 2],
+      ['fractional_even', 2.01, 4],
       ['fractional_even', 4.01, 6],
     ];
     for (const [p, f, s] of cases) expect(d3d11SegmentCount(p, f), `${p} ${f}`).toBe(s);
@@ -197,17 +204,14 @@ describe('d3d11Line', () => {
     // Golden README: converting the double directly changes fractional_odd 55.059; rounding
     // float32 ties upward changes fractional_even 41.443.
     expect(d3d11Line('fractional_odd', 55.059).x).toEqual([
-      0, 1191, 2382, 3572, 4763, 5954, 7145, 8335, 9526, 10717, 11908, 13098, 14289, 15480, 16671,
-      17861, 19052, 20243, 21434, 22624, 23815, 25006, 26197, 27388, 27421, 28612, 29803, 30994,
-      32184, 33352, 34542, 35733, 36924, 38115, 38148, 39339, 40530, 41721, 42912, 44102, 45293,
-      46484, 47675, 48865, 50056, 51247, 52438, 53628, 54819, 56010, 57201, 58391, 59582, 60773,
-      61964, 63154, 64345, 65536,
+      0, 1191, 2382, 3572, 4763, 5954, 7145, 8335, 9526, 10717, 11908, 13098, 14289, 15480, 16671, 17861, 19052, 20243, 21434, 22624, 23815,
+      25006, 26197, 27388, 27421, 28612, 29803, 30994, 32184, 33352, 34542, 35733, 36924, 38115, 38148, 39339, 40530, 41721, 42912, 44102,
+      45293, 46484, 47675, 48865, 50056, 51247, 52438, 53628, 54819, 56010, 57201, 58391, 59582, 60773, 61964, 63154, 64345, 65536,
     ]);
     expect(d3d11Line('fractional_even', 41.443).x).toEqual([
-      0, 1582, 3163, 4745, 6327, 7909, 9490, 11072, 12654, 14236, 15361, 16943, 18524, 20106,
-      21688, 23270, 24851, 26433, 28015, 29597, 31178, 32768, 34358, 35939, 37521, 39103, 40685,
-      42266, 43848, 45430, 47012, 48593, 50175, 51300, 52882, 54464, 56046, 57627, 59209, 60791,
-      62373, 63954, 65536,
+      0, 1582, 3163, 4745, 6327, 7909, 9490, 11072, 12654, 14236, 15361, 16943, 18524, 20106, 21688, 23270, 24851, 26433, 28015, 29597,
+      31178, 32768, 34358, 35939, 37521, 39103, 40685, 42266, 43848, 45430, 47012, 48593, 50175, 51300, 52882, 54464, 56046, 57627, 59209,
+      60791, 62373, 63954, 65536,
     ]);
   });
 
@@ -283,10 +287,7 @@ describe('d3d11Line', () => {
         if (!isMonotone(d3d11Line('fractional_even', e + k / ONE).x)) folds.push(e * ONE + k);
       }
     }
-    const expected = [
-      ...Array.from({ length: 6 }, (_, i) => 6 * ONE + 1 + i),
-      ...Array.from({ length: 414 }, (_, i) => 30 * ONE + 1 + i),
-    ];
+    const expected = [...Array.from({ length: 6 }, (_, i) => 6 * ONE + 1 + i), ...Array.from({ length: 414 }, (_, i) => 30 * ONE + 1 + i)];
     expect(folds).toEqual(expected);
     expect(expected.every((F) => inFoldWindow(F / ONE))).toBe(true);
     // In a triangle, the folded edge gives two hairline triangles of opposite orientation.
@@ -346,8 +347,9 @@ describe('d3d11Line', () => {
     }
     console.log(
       `d3d11 continuity (Hausdorff per 1e-3 factor step): ` +
-        FRACTIONAL.map((p) => `${p} ${measured[p].max.toFixed(6)} (at f≈${measured[p].at.toFixed(3)}, ` +
-          `L≈${(measured[p].max / step).toFixed(3)})`).join(', '),
+        FRACTIONAL.map(
+          (p) => `${p} ${measured[p].max.toFixed(6)} (at f≈${measured[p].at.toFixed(3)}, ` + `L≈${(measured[p].max / step).toFixed(3)})`,
+        ).join(', '),
     );
     // A step of 1e-3 moves no point by more than ~1/6 of it (odd 1→3: x = (f−1)/6), plus the
     // 2^-16 grid of the factor and of the result.
@@ -413,7 +415,9 @@ describe('d3d11Triangle', () => {
   it('has the reference vertex / triangle counts (notes §2.5–2.6, golden README)', () => {
     for (const [factors, inside, integer, odd, even] of COUNT_TABLE) {
       const want: [D3D11Partitioning, [number, number] | null][] = [
-        ['integer', integer], ['fractional_odd', odd], ['fractional_even', even],
+        ['integer', integer],
+        ['fractional_odd', odd],
+        ['fractional_even', even],
       ];
       for (const [p, vt] of want) {
         if (!vt) continue;
@@ -436,9 +440,7 @@ describe('d3d11Triangle', () => {
     });
     const m = d3d11Triangle('integer', [2, 2, 2], 2);
     const h = ONE / 2;
-    expect(m.bary).toEqual([
-      0, ONE, 0, 0, h, h, 0, 0, ONE, h, 0, h, ONE, 0, 0, h, h, 0, 0x5555, 0x5555, 0x5556,
-    ]);
+    expect(m.bary).toEqual([0, ONE, 0, 0, h, h, 0, 0, ONE, h, 0, h, ONE, 0, 0, h, h, 0, 0x5555, 0x5555, 0x5556]);
     expect(m.triangles).toEqual([0, 1, 6, 1, 2, 6, 2, 3, 6, 3, 4, 6, 4, 5, 6, 5, 0, 6]);
     // The even centre is the last point and is not symmetric: w gets the extra unit.
     const e = d3d11Triangle('fractional_even', [5, 6, 7], 9);
@@ -447,8 +449,14 @@ describe('d3d11Triangle', () => {
 
   it('collapses the forced fractional_odd picture frame onto the corners', () => {
     for (const [factors, inside] of [
-      [[4, 4, 4], 1], [[1.5, 1, 1], 1], [[1, 2, 3], 1], [[4, 4, 4], NaN], [[2.5, 3.5, 7], NaN],
-      [[4, 4, 4], 0], [[4, 4, 4], -5], [[4, 4, 4], -Infinity],
+      [[4, 4, 4], 1],
+      [[1.5, 1, 1], 1],
+      [[1, 2, 3], 1],
+      [[4, 4, 4], NaN],
+      [[2.5, 3.5, 7], NaN],
+      [[4, 4, 4], 0],
+      [[4, 4, 4], -5],
+      [[4, 4, 4], -Infinity],
     ] as [Tri3, number][]) {
       const m = d3d11Triangle('fractional_odd', factors, inside);
       const ring = m.bary.slice(-9);
@@ -464,12 +472,13 @@ describe('d3d11Triangle', () => {
     // onto the first ring (⅔ and a halved shift, both rounded) it makes a corner that is
     // non-convex by a unit, and two transition triangles come out slightly inverted.
     const inside = 8 + 13 / ONE;
-    expect(d3d11Line('fractional_even', inside).x).toEqual([
-      0, 8192, 8193, 16384, 24576, 32768, 40960, 49152, 57343, 57344, ONE,
-    ]);
+    expect(d3d11Line('fractional_even', inside).x).toEqual([0, 8192, 8193, 16384, 24576, 32768, 40960, 49152, 57343, 57344, ONE]);
     const m = d3d11Triangle('fractional_even', [3, 3, 3], inside);
     const flipped = Array.from({ length: m.triangleCount }, (_, t) => [t, cross2(m, t)]).filter(([, a]) => a < 0);
-    expect(flipped).toEqual([[22, -8191], [34, -13653]]);
+    expect(flipped).toEqual([
+      [22, -8191],
+      [34, -13653],
+    ]);
     checkMesh('fractional_even', [3, 3, 3], inside, m);
     // A little further from the epoch, nothing is flipped.
     const later = d3d11Triangle('fractional_even', [3, 3, 3], 8.01);
@@ -493,22 +502,14 @@ describe('d3d11Triangle', () => {
       { weight: 1, arbitrary: fc.double({ min: 0.9, max: 70, noNaN: true }) },
       { weight: 1, arbitrary: fc.constantFrom(1, 2, 3, 1 + 2 ** -17, 1 + 2 ** -16, 4 + 2 ** -16, 6 + 2 ** -15, 30.001, 63, 64, Infinity) },
     );
-    const insideFactor = fc.oneof(
-      { weight: 9, arbitrary: factor },
-      { weight: 1, arbitrary: fc.constantFrom(NaN, 0, -3, -Infinity) },
-    );
+    const insideFactor = fc.oneof({ weight: 9, arbitrary: factor }, { weight: 1, arbitrary: fc.constantFrom(NaN, 0, -3, -Infinity) });
     fc.assert(
-      fc.property(
-        fc.constantFrom(...D3D11_PARTITIONINGS),
-        fc.tuple(factor, factor, factor),
-        insideFactor,
-        (p, factors, inside) => {
-          const m = d3d11Triangle(p, factors, inside);
-          checkMesh(p, factors, inside, m);
-          const edges = outerEdges(p, factors, m);
-          for (let e = 0; e < 3; e++) expect(edges[e]).toEqual(d3d11Line(p, factors[e]).x);
-        },
-      ),
+      fc.property(fc.constantFrom(...D3D11_PARTITIONINGS), fc.tuple(factor, factor, factor), insideFactor, (p, factors, inside) => {
+        const m = d3d11Triangle(p, factors, inside);
+        checkMesh(p, factors, inside, m);
+        const edges = outerEdges(p, factors, m);
+        for (let e = 0; e < 3; e++) expect(edges[e]).toEqual(d3d11Line(p, factors[e]).x);
+      }),
       { numRuns: 3000 },
     );
   });

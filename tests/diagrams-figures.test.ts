@@ -28,7 +28,10 @@ describe('every figure', () => {
       for (const t of [0, p.start, period(p.timing) * 0.37, period(p.timing) * 0.81]) {
         const fr = p.kind === 'line' ? lineFigure(p, t) : triangleFigure(p, t);
         expect(coordinatesFinite(fr.scene), `${f.id} at ${t}`).toBe(true);
-        expect(fr.counts.map((c) => c.mode), f.id).toEqual(p.modes);
+        expect(
+          fr.counts.map((c) => c.mode),
+          f.id,
+        ).toEqual(p.modes);
         expect(fr.scene.width).toBeGreaterThan(100);
         expect(fr.scene.height).toBeGreaterThan(100);
       }
@@ -48,7 +51,11 @@ describe('triangle counts are the pattern code’s', () => {
   it('at any factors, for every mode (full stage)', () => {
     fc.assert(
       fc.property(
-        fc.tuple(fc.double({ min: 1, max: 20, noNaN: true }), fc.double({ min: 1, max: 20, noNaN: true }), fc.double({ min: 1, max: 20, noNaN: true })),
+        fc.tuple(
+          fc.double({ min: 1, max: 20, noNaN: true }),
+          fc.double({ min: 1, max: 20, noNaN: true }),
+          fc.double({ min: 1, max: 20, noNaN: true }),
+        ),
         fc.double({ min: 1, max: 20, noNaN: true }),
         (edges, inside) => {
           const q = `mode=clamped,integer,pow2,fractional_odd,fractional_even&f0=${edges[0]}&f1=${edges[1]}&f2=${edges[2]}&inside=${inside}`;
@@ -115,7 +122,9 @@ describe('line figures', () => {
     for (const t of [0.5, 2, 3.5, 7]) {
       const fr = lineFigure(p, t);
       const f = Number(fr.factors[0].value);
-      const red = fr.scene.shapes.filter((s) => s.kind === 'dots' && s.fill === 'accent').reduce((n, s) => n + (s.kind === 'dots' ? s.pts.length / 2 : 0), 0);
+      const red = fr.scene.shapes
+        .filter((s) => s.kind === 'dots' && s.fill === 'accent')
+        .reduce((n, s) => n + (s.kind === 'dots' ? s.pts.length / 2 : 0), 0);
       const expected = p.modes.reduce((n, m) => n + line(m, f).moving.filter(Boolean).length, 0);
       expect(red, `t=${t}`).toBe(expected);
       fr.counts.forEach((c) => expect(c.vertices).toBe(line(c.mode as never, f).x.length));

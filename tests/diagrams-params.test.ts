@@ -121,7 +121,11 @@ describe('triangle parameters', () => {
     const { params, messages } = tri('');
     expect(messages).toEqual([]);
     expect(params.modes).toEqual(['clamped']);
-    expect(params.factors).toEqual([[1, 8], [1, 8], [1, 8]]);
+    expect(params.factors).toEqual([
+      [1, 8],
+      [1, 8],
+      [1, 8],
+    ]);
     expect(params.inside).toBeNull();
     expect(params.stage).toBe('full');
   });
@@ -216,16 +220,24 @@ describe('toQuery', () => {
 describe('any input', () => {
   it('never throws and always gives a drawable figure', () => {
     const keys = [...new Set([...knownKeys('line'), ...knownKeys('triangle'), 'junk'])];
-    const value = fc.oneof(fc.string(), fc.double().map(String), fc.constantFrom('1', '0', '', 'NaN', 'Infinity', '1..64', '..', 'hable,even'));
+    const value = fc.oneof(
+      fc.string(),
+      fc.double().map(String),
+      fc.constantFrom('1', '0', '', 'NaN', 'Infinity', '1..64', '..', 'hable,even'),
+    );
     fc.assert(
-      fc.property(fc.constantFrom('line', 'triangle') as fc.Arbitrary<'line' | 'triangle'>, fc.dictionary(fc.constantFrom(...keys), value), (kind, input) => {
-        const { params } = parseParams(kind, input);
-        expect(params.modes.length).toBeGreaterThan(0);
-        const tracks = params.kind === 'line' ? [params.factor] : [...params.factors, ...(params.inside ? [params.inside] : [])];
-        for (const tr of tracks) for (const v of tr) expect(v >= 1 && v <= 256).toBe(true);
-        expect(params.timing.duration).toBeGreaterThan(0);
-        expect(Number.isFinite(params.speed) && params.speed > 0).toBe(true);
-      }),
+      fc.property(
+        fc.constantFrom('line', 'triangle') as fc.Arbitrary<'line' | 'triangle'>,
+        fc.dictionary(fc.constantFrom(...keys), value),
+        (kind, input) => {
+          const { params } = parseParams(kind, input);
+          expect(params.modes.length).toBeGreaterThan(0);
+          const tracks = params.kind === 'line' ? [params.factor] : [...params.factors, ...(params.inside ? [params.inside] : [])];
+          for (const tr of tracks) for (const v of tr) expect(v >= 1 && v <= 256).toBe(true);
+          expect(params.timing.duration).toBeGreaterThan(0);
+          expect(Number.isFinite(params.speed) && params.speed > 0).toBe(true);
+        },
+      ),
       { numRuns: 300 },
     );
   });

@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { defaultDuration, isAnimated, period, phaseAt, snapValue, timeForValue, trackValue, type Timing } from '../src/diagrams/timeline.ts';
+import {
+  defaultDuration,
+  isAnimated,
+  period,
+  phaseAt,
+  snapValue,
+  timeForValue,
+  trackValue,
+  type Timing,
+} from '../src/diagrams/timeline.ts';
 
 describe('time → phase', () => {
   const pp: Timing = { duration: 4, hold: 1, loop: 'pingpong' };

@@ -18,7 +18,10 @@ import { readFileSync } from 'node:fs';
 type V3 = [number, number, number];
 const sub = (a: V3, b: V3): V3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const crs = (a: V3, b: V3): V3 => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-const unit = (a: V3): V3 => { const l = Math.hypot(...a); return [a[0] / l, a[1] / l, a[2] / l]; };
+const unit = (a: V3): V3 => {
+  const l = Math.hypot(...a);
+  return [a[0] / l, a[1] / l, a[2] / l];
+};
 const angle = (a: V3, b: V3): number => Math.atan2(Math.hypot(...crs(a, b)), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
 
 /** A cage with per-corner uvs given as one [u, v] per face corner (face-varying, no sharing). */
@@ -28,44 +31,60 @@ function withUvs(cage: Cage, cornerUvs: [number, number][]): Cage {
 
 /** n x n grid of quads on z = 0, uv = (x, y) / n (one shared chart, no seams). */
 function flatGrid(n = 4): Cage {
-  const pos: number[] = [], faces: number[][] = [], uvs: [number, number][] = [];
+  const pos: number[] = [],
+    faces: number[][] = [],
+    uvs: [number, number][] = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) pos.push(i, j, 0);
-  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-    const f = [j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i];
-    faces.push(f);
-    for (const v of f) uvs.push([(v % (n + 1)) / n, Math.floor(v / (n + 1)) / n]);
-  }
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++) {
+      const f = [j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1, (j + 1) * (n + 1) + i];
+      faces.push(f);
+      for (const v of f) uvs.push([(v % (n + 1)) / n, Math.floor(v / (n + 1)) / n]);
+    }
   return withUvs(makeCage(pos, faces), uvs);
 }
 
 /** Torus nu x nv (R = 1, r = 0.4) with uv = (i/nu, j/nv); the last column and row use u = 1, v = 1 (a value seam). */
 function torusUv(nu = 16, nv = 8, r = 0.4): Cage {
-  const pos: number[] = [], faces: number[][] = [], uvs: [number, number][] = [];
-  for (let j = 0; j < nv; j++) for (let i = 0; i < nu; i++) {
-    const a = (2 * Math.PI * i) / nu, t = (2 * Math.PI * j) / nv;
-    pos.push((1 + r * Math.cos(t)) * Math.cos(a), (1 + r * Math.cos(t)) * Math.sin(a), r * Math.sin(t));
-  }
+  const pos: number[] = [],
+    faces: number[][] = [],
+    uvs: [number, number][] = [];
+  for (let j = 0; j < nv; j++)
+    for (let i = 0; i < nu; i++) {
+      const a = (2 * Math.PI * i) / nu,
+        t = (2 * Math.PI * j) / nv;
+      pos.push((1 + r * Math.cos(t)) * Math.cos(a), (1 + r * Math.cos(t)) * Math.sin(a), r * Math.sin(t));
+    }
   const id = (i: number, j: number): number => (j % nv) * nu + (i % nu);
-  for (let j = 0; j < nv; j++) for (let i = 0; i < nu; i++) {
-    faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
-    uvs.push([i / nu, j / nv], [(i + 1) / nu, j / nv], [(i + 1) / nu, (j + 1) / nv], [i / nu, (j + 1) / nv]);
-  }
+  for (let j = 0; j < nv; j++)
+    for (let i = 0; i < nu; i++) {
+      faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+      uvs.push([i / nu, j / nv], [(i + 1) / nu, j / nv], [(i + 1) / nu, (j + 1) / nv], [i / nu, (j + 1) / nv]);
+    }
   return withUvs(makeCage(pos, faces), uvs);
 }
 
-const smooth16: HeightMap = heightMapFromFunction(64, 64, 16, (u, v) =>
-  0.5 + 0.3 * Math.sin(2 * Math.PI * (3 * u + v)) * Math.cos(2 * Math.PI * 2 * v) + 0.15 * Math.sin(2 * Math.PI * 5 * u));
+const smooth16: HeightMap = heightMapFromFunction(
+  64,
+  64,
+  16,
+  (u, v) => 0.5 + 0.3 * Math.sin(2 * Math.PI * (3 * u + v)) * Math.cos(2 * Math.PI * 2 * v) + 0.15 * Math.sin(2 * Math.PI * 5 * u),
+);
 
 /** Deterministic points well inside texel cells (so central differences do not straddle a bilinear kink). */
 function samplePoints(ds: DisplacedSurface, count: number, seed = 1): { face: number; u: number; v: number }[] {
   let x = seed;
-  const rnd = (): number => { x = (x * 1103515245 + 12345) % 2147483648; return x / 2147483648; };
+  const rnd = (): number => {
+    x = (x * 1103515245 + 12345) % 2147483648;
+    return x / 2147483648;
+  };
   const out: { face: number; u: number; v: number }[] = [];
   const { width: W, height: H } = ds.map;
   while (out.length < count) {
     const p = { face: Math.floor(rnd() * ds.surface.faceCount), u: 0.05 + 0.9 * rnd(), v: 0.05 + 0.9 * rnd() };
     const uv = ds.evaluateLocal(p).uv;
-    const fx = uv[0] * W - 0.5, fy = (1 - uv[1]) * H - 0.5;
+    const fx = uv[0] * W - 0.5,
+      fy = (1 - uv[1]) * H - 0.5;
     const frac = (z: number): number => z - Math.floor(z);
     if (Math.min(frac(fx), 1 - frac(fx), frac(fy), 1 - frac(fy)) > 0.02) out.push(p);
   }
@@ -106,9 +125,10 @@ describe('displaced limit surface (CPU reference)', () => {
     }
   });
 
-  it('flat cage: the displaced normal matches finite differences of P\' within 1e-6 rad', () => {
+  it("flat cage: the displaced normal matches finite differences of P' within 1e-6 rad", () => {
     const ds = new DisplacedSurface(new Surface(flatGrid()), smooth16, { scale: 0.2, midLevel: 0.5 });
-    let worst = 0, tilt = 0;
+    let worst = 0,
+      tilt = 0;
     for (const p of samplePoints(ds, 60, 7)) {
       const a = ds.evaluateLocal(p);
       const fd = finiteDiff(ds, p);
@@ -120,16 +140,20 @@ describe('displaced limit surface (CPU reference)', () => {
   });
 
   it('torus: within max|h|·κ of finite differences without the h·∂N term, within 1e-6 rad with it', () => {
-    const scale = 0.05, mid = 0.5;
+    const scale = 0.05,
+      mid = 0.5;
     const ds = new DisplacedSurface(new Surface(torusUv()), smooth16, { scale, midLevel: mid });
-    let worst = 0, worstFixed = 0, maxH = 0;
+    let worst = 0,
+      worstFixed = 0,
+      maxH = 0;
     for (const p of samplePoints(ds, 60, 3)) {
       const a = ds.evaluateLocal(p);
       const fd = finiteDiff(ds, p);
       worst = Math.max(worst, angle(a.N, fd.normal));
       maxH = Math.max(maxH, Math.abs(a.h));
       // Add back the dropped term: ∂P'/∂u = ∂P/∂u + ∂h/∂u·N + h·∂N/∂u.
-      const Pu: V3 = [0, 0, 0], Pv: V3 = [0, 0, 0];
+      const Pu: V3 = [0, 0, 0],
+        Pv: V3 = [0, 0, 0];
       for (let k = 0; k < 3; k++) {
         Pu[k] = a.base.dPdu[k] + a.dhdu * a.base.N[k] + a.h * fd.Nu[k];
         Pv[k] = a.base.dPdv[k] + a.dhdv * a.base.N[k] + a.h * fd.Nv[k];
@@ -149,17 +173,25 @@ describe('displaced limit surface (CPU reference)', () => {
     const { cage, ds } = prism();
     const top = 0; // face 0 is the top pentagon
     const d = 1e-6;
-    let worstFixed = 0, tilt = 0;
-    for (const [k, s, t] of [[0, 0.3, 0.4], [2, 0.7, 0.2], [4, 0.55, 0.8], [1, 0.15, 0.6]]) {
+    let worstFixed = 0,
+      tilt = 0;
+    for (const [k, s, t] of [
+      [0, 0.3, 0.4],
+      [2, 0.7, 0.2],
+      [4, 0.55, 0.8],
+      [1, 0.15, 0.6],
+    ]) {
       const a = ds.evaluateLocal({ face: top, k, s, t });
       const at = (ss: number, tt: number) => ds.evaluateLocal({ face: top, k, s: ss, t: tt });
       const dP = (f: (q: ReturnType<typeof at>) => V3) => [
         sub(f(at(s + d, t)), f(at(s - d, t))).map((c) => c / (2 * d)) as V3,
         sub(f(at(s, t + d)), f(at(s, t - d))).map((c) => c / (2 * d)) as V3,
       ];
-      const [Ps, Pt] = dP((q) => q.P), [Ns, Nt] = dP((q) => q.base.N);
+      const [Ps, Pt] = dP((q) => q.P),
+        [Ns, Nt] = dP((q) => q.base.N);
       const fdNormal = unit(crs(Ps, Pt));
-      const Pu: V3 = [0, 0, 0], Pv: V3 = [0, 0, 0];
+      const Pu: V3 = [0, 0, 0],
+        Pv: V3 = [0, 0, 0];
       for (let c = 0; c < 3; c++) {
         Pu[c] = a.base.dPdu[c] + a.dhdu * a.base.N[c] + a.h * Ns[c];
         Pv[c] = a.base.dPdv[c] + a.dhdv * a.base.N[c] + a.h * Nt[c];
@@ -179,11 +211,15 @@ describe('displaced limit surface (CPU reference)', () => {
 function prism(): { cage: Cage; ds: DisplacedSurface } {
   const pos: number[] = [];
   for (const z of [0, 1]) for (let k = 0; k < 5; k++) pos.push(Math.cos((2 * Math.PI * k) / 5), Math.sin((2 * Math.PI * k) / 5), z);
-  const faces = [[5, 6, 7, 8, 9], [4, 3, 2, 1, 0]];
+  const faces = [
+    [5, 6, 7, 8, 9],
+    [4, 3, 2, 1, 0],
+  ];
   for (let k = 0; k < 5; k++) faces.push([k, (k + 1) % 5, 5 + ((k + 1) % 5), 5 + k]);
   const uvs: [number, number][] = [];
   for (const f of faces) {
-    if (f.length === 5) for (let k = 0; k < 5; k++) uvs.push([0.5 + 0.45 * Math.cos((2 * Math.PI * k) / 5), 0.5 + 0.45 * Math.sin((2 * Math.PI * k) / 5)]);
+    if (f.length === 5)
+      for (let k = 0; k < 5; k++) uvs.push([0.5 + 0.45 * Math.cos((2 * Math.PI * k) / 5), 0.5 + 0.45 * Math.sin((2 * Math.PI * k) / 5)]);
     else uvs.push([0, 0], [1, 0], [1, 1], [0, 1]);
   }
   const cage = withUvs(makeCage(pos, faces), uvs);
@@ -196,15 +232,18 @@ describe('UV seams: one owner per weld vertex', () => {
   it('every cage edge and vertex of a cage where every edge is a seam displaces identically from all its faces', () => {
     const { cage, ds } = prism();
     const T = ds.surface.topology;
-    let disagreeLocal = 0, checked = 0;
+    let disagreeLocal = 0,
+      checked = 0;
     for (let h = 0; h < T.faceIndices.length; h++) {
       const tw = T.heTwin[h];
       if (tw < h) continue; // each interior edge once (closed cage: every edge has a twin)
-      const a = T.faceIndices[h], b = T.faceIndices[T.heNext[h]];
+      const a = T.faceIndices[h],
+        b = T.faceIndices[T.heNext[h]];
       const lo = Math.min(a, b);
       for (const x of [0.125, 0.25, 0.5, 0.625, 0.875]) {
         const sides: SurfaceParam[] = [h, tw].map((hh) => {
-          const f = T.heFace[hh], j = hh - T.faceOffsets[f];
+          const f = T.heFace[hh],
+            j = hh - T.faceOffsets[f];
           return faceEdgeParam(cage, f, j, T.faceIndices[hh] === lo ? x : 1 - x);
         });
         const [pa, pb] = sides.map((p) => ds.at(p));
@@ -225,15 +264,20 @@ describe('UV seams: one owner per weld vertex', () => {
     for (let v = 0; v < T.nVerts; v++) {
       const got = [];
       for (let k = T.vertHeOffsets[v]; k < T.vertHeOffsets[v + 1]; k++) {
-        const hh = T.vertHe[k], f = T.heFace[hh];
+        const hh = T.vertHe[k],
+          f = T.heFace[hh];
         got.push(ds.at(faceEdgeParam(cage, f, hh - T.faceOffsets[f], 0)));
       }
       expect(got.length).toBe(3);
-      for (const g of got) { expect(g.P).toEqual(got[0].P); expect(g.N).toEqual(got[0].N); expect(g.at.face).toBe(ds.vertexOwner[v]); }
+      for (const g of got) {
+        expect(g.P).toEqual(got[0].P);
+        expect(g.N).toEqual(got[0].N);
+        expect(g.at.face).toBe(ds.vertexOwner[v]);
+      }
     }
   });
 
-  it('the owners are the faces through which the compute tessellator\'s weld evaluates (prepare.ts)', () => {
+  it("the owners are the faces through which the compute tessellator's weld evaluates (prepare.ts)", () => {
     const models = ['creature', 'pawn', 'gear', 'icosphere', 'creased-box', 'sheet'];
     for (const name of models) {
       const { cage, topology: T } = loadCage(readFileSync(new URL(`../public/models/${name}.obj`, import.meta.url), 'utf8'));
@@ -244,9 +288,11 @@ describe('UV seams: one owner per weld vertex', () => {
         expect(own.vertex[v]).toBe(o === 0xffffffff ? -1 : mesh.triFace[o >>> 2]);
       }
       const prepEdge = new Map<string, number>();
-      for (let e = 0; e < mesh.edgeCount; e++) prepEdge.set(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`, mesh.triFace[mesh.edgeOwner[e] >>> 2]);
+      for (let e = 0; e < mesh.edgeCount; e++)
+        prepEdge.set(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`, mesh.triFace[mesh.edgeOwner[e] >>> 2]);
       for (let e = 0; e < T.nEdges; e++) {
-        const a = T.edgeVerts[2 * e], b = T.edgeVerts[2 * e + 1];
+        const a = T.edgeVerts[2 * e],
+          b = T.edgeVerts[2 * e + 1];
         expect(own.edge[e], `${name} edge ${a}-${b}`).toBe(prepEdge.get(`${Math.min(a, b)},${Math.max(a, b)}`));
       }
     }
@@ -256,7 +302,8 @@ describe('UV seams: one owner per weld vertex', () => {
     const ds = new DisplacedSurface(new Surface(torusUv()), smooth16, { scale: 0.05, midLevel: 0.5 });
     // Face 15 (i = 15) ends at u = 1; face 0 starts at u = 0 on the same cage edge.
     for (const v of [0.25, 0.5, 0.75]) {
-      const a = ds.evaluateLocal({ face: 15, u: 1, v }), b = ds.evaluateLocal({ face: 0, u: 0, v });
+      const a = ds.evaluateLocal({ face: 15, u: 1, v }),
+        b = ds.evaluateLocal({ face: 0, u: 0, v });
       expect(a.uv[0]).toBe(1);
       expect(b.uv[0]).toBe(0);
       expect(Math.abs(a.h - b.h)).toBeLessThan(1e-12);
@@ -265,9 +312,15 @@ describe('UV seams: one owner per weld vertex', () => {
   });
 });
 
-describe('the project\'s displaced models (public/models/displaced.json)', () => {
-  const list = JSON.parse(readFileSync(new URL('../public/models/displaced.json', import.meta.url), 'utf8')) as
-    { model: string; heightMap: string; bits: 8 | 16; scale: number; midLevel: number; wrap: 'repeat' | 'clamp' }[];
+describe("the project's displaced models (public/models/displaced.json)", () => {
+  const list = JSON.parse(readFileSync(new URL('../public/models/displaced.json', import.meta.url), 'utf8')) as {
+    model: string;
+    heightMap: string;
+    bits: 8 | 16;
+    scale: number;
+    midLevel: number;
+    wrap: 'repeat' | 'clamp';
+  }[];
 
   it('lists at least two models, each with complete UVs, real seams and a decodable map', async () => {
     const { decodeHeightPng } = await import('../src/mesh/heightmap-png.ts');
@@ -282,8 +335,12 @@ describe('the project\'s displaced models (public/models/displaced.json)', () =>
       const map = decodeHeightPng(new Uint8Array(bytes));
       expect(map.bits).toBe(m.bits);
       // The map is not flat: it has detail to displace.
-      let lo = Infinity, hi = -Infinity;
-      for (const x of map.data) { lo = Math.min(lo, x); hi = Math.max(hi, x); }
+      let lo = Infinity,
+        hi = -Infinity;
+      for (const x of map.data) {
+        lo = Math.min(lo, x);
+        hi = Math.max(hi, x);
+      }
       expect((hi - lo) / ((1 << map.bits) - 1)).toBeGreaterThan(0.4);
     }
   });
@@ -298,7 +355,11 @@ describe('the project\'s displaced models (public/models/displaced.json)', () =>
       let moved = 0;
       for (let f = 0; f < T.nFaces; f += 3) {
         if (T.faceOffsets[f + 1] - T.faceOffsets[f] !== 4) continue;
-        for (const [u, v] of [[0.3, 0.6], [0.5, 0.5], [0.8, 0.1]]) {
+        for (const [u, v] of [
+          [0.3, 0.6],
+          [0.5, 0.5],
+          [0.8, 0.1],
+        ]) {
           const p = ds.at({ face: f, u, v });
           for (const c of [...p.P, ...p.N]) expect(Number.isFinite(c)).toBe(true);
           expect(Math.abs(p.h)).toBeLessThanOrEqual(hmax + 1e-12);
@@ -324,8 +385,13 @@ describe('per-face data for the GPU and the factor rule', () => {
   it('faceSampleRange contains every sample in the face and is tight on a gradient map', async () => {
     const { faceSampleRange } = await import('../src/mesh/index.ts');
     const { decodeHeightPng } = await import('../src/mesh/heightmap-png.ts');
-    const list = JSON.parse(readFileSync(new URL('../public/models/displaced.json', import.meta.url), 'utf8')) as
-      { model: string; heightMap: string; scale: number; midLevel: number; wrap: 'repeat' | 'clamp' }[];
+    const list = JSON.parse(readFileSync(new URL('../public/models/displaced.json', import.meta.url), 'utf8')) as {
+      model: string;
+      heightMap: string;
+      scale: number;
+      midLevel: number;
+      wrap: 'repeat' | 'clamp';
+    }[];
     for (const m of list) {
       const { cage, topology: T } = loadCage(readFileSync(new URL(`../public/models/${m.model}`, import.meta.url), 'utf8'));
       const map = decodeHeightPng(new Uint8Array(readFileSync(new URL(`../public/models/${m.heightMap}`, import.meta.url))));
@@ -333,7 +399,13 @@ describe('per-face data for the GPU and the factor rule', () => {
       const range = faceSampleRange(cage, map, m.wrap);
       for (let f = 0; f < T.nFaces; f += 7) {
         const n = T.faceOffsets[f + 1] - T.faceOffsets[f];
-        for (const [s, t] of [[0, 0], [0.5, 0.5], [0.9, 0.2], [1, 1], [0.33, 0.77]]) {
+        for (const [s, t] of [
+          [0, 0],
+          [0.5, 0.5],
+          [0.9, 0.2],
+          [1, 1],
+          [0.33, 0.77],
+        ]) {
           const p = ds.evaluateLocal(n === 4 ? { face: f, u: s, v: t } : { face: f, k: 1, s, t });
           const sample = p.h / m.scale + m.midLevel;
           expect(sample).toBeGreaterThanOrEqual(range[2 * f] - 1e-12);
@@ -354,7 +426,7 @@ describe('per-face data for the GPU and the factor rule', () => {
     }
   });
 
-  it('faceCornerUvs packs each corner\'s uv at its face-corner offset', async () => {
+  it("faceCornerUvs packs each corner's uv at its face-corner offset", async () => {
     const { faceCornerUvs, uvAtSubFace } = await import('../src/mesh/index.ts');
     const { cage } = prism();
     const packed = faceCornerUvs(cage);

@@ -1,7 +1,15 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { mat4 } from 'gl-matrix';
-import { edgeFactor, phongMidpointOffset, budgetScale, outputCapacity, sphereOutsideFrustum, type FactorRule, type Vec3 } from '../src/gpu/factors.ts';
+import {
+  edgeFactor,
+  phongMidpointOffset,
+  budgetScale,
+  outputCapacity,
+  sphereOutsideFrustum,
+  type FactorRule,
+  type Vec3,
+} from '../src/gpu/factors.ts';
 import { faceParam, inverseBilinear } from '../src/gpu/face-params.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { makeCage } from '../src/mesh/types.ts';
@@ -10,8 +18,14 @@ import { grid2d } from '../src/gpu/tessellator.ts';
 const view = mat4.lookAt(mat4.create(), [0, 0, 5], [0, 0, 0], [0, 1, 0]);
 const proj = mat4.perspectiveZO(mat4.create(), Math.PI / 4, 1, 0.1, 100);
 const rule = (over: Partial<FactorRule> = {}): FactorRule => ({
-  mode: 'adaptive', fixedFactor: 1, lodScale: 1, viewProj: mat4.multiply(mat4.create(), proj, view), eye: [0, 0, 5],
-  pixelAngle: Math.PI / 4 / 1080, maxFactor: 64, ...over,
+  mode: 'adaptive',
+  fixedFactor: 1,
+  lodScale: 1,
+  viewProj: mat4.multiply(mat4.create(), proj, view),
+  eye: [0, 0, 5],
+  pixelAngle: Math.PI / 4 / 1080,
+  maxFactor: 64,
+  ...over,
 });
 const unit = (v: number[]): Vec3 => {
   const l = Math.hypot(v[0], v[1], v[2]);
@@ -19,20 +33,31 @@ const unit = (v: number[]): Vec3 => {
 };
 // An arc of the unit circle seen from the eye: normals are the radial directions.
 const arc = (theta: number): [Vec3, Vec3, Vec3, Vec3] => [
-  [Math.sin(-theta / 2), 0, Math.cos(-theta / 2)], [Math.sin(theta / 2), 0, Math.cos(theta / 2)],
-  unit([Math.sin(-theta / 2), 0, Math.cos(-theta / 2)]), unit([Math.sin(theta / 2), 0, Math.cos(theta / 2)]),
+  [Math.sin(-theta / 2), 0, Math.cos(-theta / 2)],
+  [Math.sin(theta / 2), 0, Math.cos(theta / 2)],
+  unit([Math.sin(-theta / 2), 0, Math.cos(-theta / 2)]),
+  unit([Math.sin(theta / 2), 0, Math.cos(theta / 2)]),
 ];
 
 describe('edge factor rule', () => {
   it('is symmetric in the two ends of the edge', () => {
-    const v = fc.tuple(fc.double({ min: -2, max: 2, noNaN: true }), fc.double({ min: -2, max: 2, noNaN: true }), fc.double({ min: -2, max: 2, noNaN: true }));
-    fc.assert(fc.property(v, v, v, v, (p0, p1, a, b) => {
-      if (Math.hypot(...a) < 1e-3 || Math.hypot(...b) < 1e-3) return;
-      const n0 = unit(a), n1 = unit(b);
-      expect(edgeFactor(p0, p1, n0, n1, rule())).toBeCloseTo(edgeFactor(p1, p0, n1, n0, rule()), 9);
-      const e = phongMidpointOffset(p0, p1, n0, n1), f = phongMidpointOffset(p1, p0, n1, n0);
-      for (let i = 0; i < 3; i++) expect(e[i]).toBeCloseTo(f[i], 12);
-    }), { numRuns: 500 });
+    const v = fc.tuple(
+      fc.double({ min: -2, max: 2, noNaN: true }),
+      fc.double({ min: -2, max: 2, noNaN: true }),
+      fc.double({ min: -2, max: 2, noNaN: true }),
+    );
+    fc.assert(
+      fc.property(v, v, v, v, (p0, p1, a, b) => {
+        if (Math.hypot(...a) < 1e-3 || Math.hypot(...b) < 1e-3) return;
+        const n0 = unit(a),
+          n1 = unit(b);
+        expect(edgeFactor(p0, p1, n0, n1, rule())).toBeCloseTo(edgeFactor(p1, p0, n1, n0, rule()), 9);
+        const e = phongMidpointOffset(p0, p1, n0, n1),
+          f = phongMidpointOffset(p1, p0, n1, n0);
+        for (let i = 0; i < 3; i++) expect(e[i]).toBeCloseTo(f[i], 12);
+      }),
+      { numRuns: 500 },
+    );
   });
 
   it('is 1 on flat geometry and grows with curvature, LOD scale and closeness', () => {
@@ -86,9 +111,17 @@ describe('budget and buffer sizing', () => {
     expect(4000 * s * s).toBeLessThan(1000);
   });
   it('sizes the outputs from the device limits, never above what one binding holds', () => {
-    expect(outputCapacity({ maxStorageBufferBindingSize: 128 << 20, maxBufferSize: 256 << 20 })).toEqual({ vertexCapacity: Math.floor((128 << 20) / 12), triangleCapacity: Math.floor((128 << 20) / 12) });
-    expect(outputCapacity({ maxStorageBufferBindingSize: 2 ** 31, maxBufferSize: 2 ** 32 })).toEqual({ vertexCapacity: 1 << 24, triangleCapacity: 1 << 24 });
-    expect(outputCapacity({ maxStorageBufferBindingSize: 2 ** 31, maxBufferSize: 2 ** 32 }, { vertexCapacity: 1000 }).vertexCapacity).toBe(1000);
+    expect(outputCapacity({ maxStorageBufferBindingSize: 128 << 20, maxBufferSize: 256 << 20 })).toEqual({
+      vertexCapacity: Math.floor((128 << 20) / 12),
+      triangleCapacity: Math.floor((128 << 20) / 12),
+    });
+    expect(outputCapacity({ maxStorageBufferBindingSize: 2 ** 31, maxBufferSize: 2 ** 32 })).toEqual({
+      vertexCapacity: 1 << 24,
+      triangleCapacity: 1 << 24,
+    });
+    expect(outputCapacity({ maxStorageBufferBindingSize: 2 ** 31, maxBufferSize: 2 ** 32 }, { vertexCapacity: 1000 }).vertexCapacity).toBe(
+      1000,
+    );
   });
   it('folds dispatches wider than 65535 workgroups into 2D', () => {
     expect(grid2d(10)).toEqual([10, 1]);
@@ -107,24 +140,32 @@ describe('face parameters for --params', () => {
     expect(faceParam(mesh, cage, 0, [1 / 3, 1 / 3, 1 / 3])).toEqual({ face: 0, u: 2 / 3, v: 1 / 3 });
     expect(faceParam(mesh, cage, 1, [0, 0.5, 0.5])).toEqual({ face: 0, u: 0.5, v: 1 });
   });
-  it('on a triangle face equals the notes\' closed form (k = argmax, s = 2·w_{k+1} on edge k→k+1)', () => {
+  it("on a triangle face equals the notes' closed form (k = argmax, s = 2·w_{k+1} on edge k→k+1)", () => {
     const cage = makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]);
     const mesh = prepareMesh(cage);
-    fc.assert(fc.property(fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (a, b) => {
-      const w = [a, b * (1 - a), (1 - a) * (1 - b)] as [number, number, number];
-      const k = w.indexOf(Math.max(...w));
-      const p = faceParam(mesh, cage, 0, w) as { k: number; s: number; t: number };
-      if (w.filter((x) => x === w[k]).length > 1) return; // on a sub-face boundary either side is right
-      expect(p.k).toBe(k);
-      const bn = w[(k + 1) % 3], bp = w[(k + 2) % 3], d = bn - bp;
-      const s = (12 * bn) / (3 + 2 * d + Math.sqrt(Math.max(0, (3 + 2 * d) ** 2 - 24 * bn)));
-      const t = (12 * bp) / (3 - 2 * d + Math.sqrt(Math.max(0, (3 - 2 * d) ** 2 - 24 * bp)));
-      expect(p.s).toBeCloseTo(s, 9);
-      expect(p.t).toBeCloseTo(t, 9);
-    }), { numRuns: 500 });
+    fc.assert(
+      fc.property(fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (a, b) => {
+        const w = [a, b * (1 - a), (1 - a) * (1 - b)] as [number, number, number];
+        const k = w.indexOf(Math.max(...w));
+        const p = faceParam(mesh, cage, 0, w) as { k: number; s: number; t: number };
+        if (w.filter((x) => x === w[k]).length > 1) return; // on a sub-face boundary either side is right
+        expect(p.k).toBe(k);
+        const bn = w[(k + 1) % 3],
+          bp = w[(k + 2) % 3],
+          d = bn - bp;
+        const s = (12 * bn) / (3 + 2 * d + Math.sqrt(Math.max(0, (3 + 2 * d) ** 2 - 24 * bn)));
+        const t = (12 * bp) / (3 - 2 * d + Math.sqrt(Math.max(0, (3 - 2 * d) ** 2 - 24 * bp)));
+        expect(p.s).toBeCloseTo(s, 9);
+        expect(p.t).toBeCloseTo(t, 9);
+      }),
+      { numRuns: 500 },
+    );
   });
   it('inverts a bilinear map', () => {
-    const a = [0, 0], b = [2, 0.2], c = [1.5, 1.7], d = [-0.2, 1];
+    const a = [0, 0],
+      b = [2, 0.2],
+      c = [1.5, 1.7],
+      d = [-0.2, 1];
     const [s, t] = inverseBilinear([0.9, 0.6], a, b, c, d);
     const x = (1 - s) * (1 - t) * a[0] + s * (1 - t) * b[0] + s * t * c[0] + (1 - s) * t * d[0];
     expect(x).toBeCloseTo(0.9, 12);

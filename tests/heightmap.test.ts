@@ -12,13 +12,15 @@ const texel = (i: number, j: number): number => RAW[j * 4 + i] / 255;
 
 describe('height map sampling', () => {
   it('texel centres return the texel; row 0 is the top of the image (v near 1)', () => {
-    for (let j = 0; j < 3; j++) for (let i = 0; i < 4; i++) {
-      expect(sampleHeight(map, (i + 0.5) / 4, 1 - (j + 0.5) / 3).value).toBeCloseTo(texel(i, j), 12);
-    }
+    for (let j = 0; j < 3; j++)
+      for (let i = 0; i < 4; i++) {
+        expect(sampleHeight(map, (i + 0.5) / 4, 1 - (j + 0.5) / 3).value).toBeCloseTo(texel(i, j), 12);
+      }
   });
 
   it('is bilinear between texel centres, and its gradient is the bilinear patch gradient', () => {
-    const u = (1 + 0.5 + 0.3) / 4, v = 1 - (1 + 0.5 + 0.6) / 3; // 30% from texel (1,1) to (2,1), 60% to row 2
+    const u = (1 + 0.5 + 0.3) / 4,
+      v = 1 - (1 + 0.5 + 0.6) / 3; // 30% from texel (1,1) to (2,1), 60% to row 2
     const want = 0.4 * (0.7 * texel(1, 1) + 0.3 * texel(2, 1)) + 0.6 * (0.7 * texel(1, 2) + 0.3 * texel(2, 2));
     const s = sampleHeight(map, u, v);
     expect(s.value).toBeCloseTo(want, 12);
@@ -30,7 +32,11 @@ describe('height map sampling', () => {
   });
 
   it('repeat wraps by whole tiles; clamp holds the edge texels', () => {
-    for (const [u, v] of [[0.03, 0.2], [0.97, 0.9], [0.5, 0.01]]) {
+    for (const [u, v] of [
+      [0.03, 0.2],
+      [0.97, 0.9],
+      [0.5, 0.01],
+    ]) {
       expect(sampleHeight(map, u + 1, v - 2).value).toBeCloseTo(sampleHeight(map, u, v).value, 12);
     }
     // Repeat: between the last and first column the lookup blends texels 3 and 0.

@@ -13,8 +13,20 @@ import { loadCage } from '../src/mesh/index.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { phongPoint } from '../src/gpu/phong.ts';
 import {
-  InstancedTessellator, prepareInstanced, cpuLevels, patchTriangle, snapPatchVertex, patchDomain, patchEdgeIds, patchCanonical,
-  cpuDynamicEdgeLevel, instancedVertexParams, BUCKETS, type InstancedMesh, type HeadlessInstanced, type LevelParams,
+  InstancedTessellator,
+  prepareInstanced,
+  cpuLevels,
+  patchTriangle,
+  snapPatchVertex,
+  patchDomain,
+  patchEdgeIds,
+  patchCanonical,
+  cpuDynamicEdgeLevel,
+  instancedVertexParams,
+  BUCKETS,
+  type InstancedMesh,
+  type HeadlessInstanced,
+  type LevelParams,
 } from '../src/gpu/instanced.ts';
 import { vertexEdges, POW2_LEVEL_COUNT } from '../src/pattern/pow2.ts';
 import creature from '../public/models/creature.obj?raw';
@@ -31,7 +43,7 @@ async function tessellator(): Promise<InstancedTessellator> {
 }
 
 function rng(seed: number) {
-  return () => ((seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32);
+  return () => (seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32;
 }
 function randomLevels(n: number, max: number, seed: number): Uint32Array {
   const r = rng(seed);
@@ -57,7 +69,11 @@ function camera(m: InstancedMesh, distance: number): { viewProj: Float32Array; e
  * Every check of the headless output against the CPU; returns the largest gap across an edge
  * (in units of the model's size) and the largest position error.
  */
-function checkHeadless(m: InstancedMesh, out: HeadlessInstanced, tess: InstancedTessellator): { gap: number; posError: number; edgesChecked: number } {
+function checkHeadless(
+  m: InstancedMesh,
+  out: HeadlessInstanced,
+  tess: InstancedTessellator,
+): { gap: number; posError: number; edgesChecked: number } {
   const size = m.prepared.size;
   const { edgeLevels, patchLevels } = out;
   // Edge level = min over its patches' levels (modes static, per-patch) or ≤ each patch's level
@@ -70,7 +86,9 @@ function checkHeadless(m: InstancedMesh, out: HeadlessInstanced, tess: Instanced
   const seen = new Uint8Array(m.patchCount);
   // Per edge and side (patch): canonical parameter → position.
   const sides = new Map<number, Map<number, Map<number, number[]>>>();
-  let v0 = 0, t0 = 0, posError = 0;
+  let v0 = 0,
+    t0 = 0,
+    posError = 0;
   tess.patterns.entries.forEach((entry, b) => {
     const P = entry.level;
     const pattern = tess.patterns.ij.subarray(entry.baseVertex, entry.baseVertex + entry.vertexCount);
@@ -92,12 +110,15 @@ function checkHeadless(m: InstancedMesh, out: HeadlessInstanced, tess: Instanced
         const { t, w } = patchTriangle(m, p, P, i, j);
         const ref = phongPoint(m.prepared, t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]);
         for (let c = 0; c < 3; c++) {
-          const x = out.positions[3 * v + c], n = out.normals[3 * v + c];
+          const x = out.positions[3 * v + c],
+            n = out.normals[3 * v + c];
           if (!Number.isFinite(x) || !Number.isFinite(n)) throw new Error(`NaN or infinity at vertex ${v}`);
           posError = Math.max(posError, Math.abs(x - ref.pos[c]) / size);
         }
         // Boundary points, by edge, side and canonical parameter.
-        const dom = patchDomain(m, p), can = patchCanonical(m, p), ids = patchEdgeIds(m, p);
+        const dom = patchDomain(m, p),
+          can = patchCanonical(m, p),
+          ids = patchEdgeIds(m, p);
         for (const { edge, t: te } of vertexEdges(dom, P, i, j)) {
           const e = ids[edge];
           const cpar = can[edge] ? te / P : 1 - te / P;
@@ -132,7 +153,8 @@ function checkHeadless(m: InstancedMesh, out: HeadlessInstanced, tess: Instanced
 
   // Cracks: along every edge shared by two patches, both sides hold exactly the points
   // {j / L_e} and pair up one to one; report the largest distance between partners.
-  let gap = 0, edgesChecked = 0;
+  let gap = 0,
+    edgesChecked = 0;
   for (const [e, bySide] of sides) {
     const L = edgeLevels[e];
     const expected = Array.from({ length: L + 1 }, (_, j) => j / L);
@@ -140,7 +162,8 @@ function checkHeadless(m: InstancedMesh, out: HeadlessInstanced, tess: Instanced
     if (bySide.size < 2) continue;
     const [a, b] = [...bySide.values()];
     for (const c of expected) {
-      const pa = a.get(c)!, pb = b.get(c)!;
+      const pa = a.get(c)!,
+        pb = b.get(c)!;
       gap = Math.max(gap, Math.hypot(pa[0] - pb[0], pa[1] - pb[1], pa[2] - pb[2]) / size);
     }
     edgesChecked++;
@@ -184,7 +207,11 @@ describe('instanced tessellator', () => {
     }
   });
 
-  const models: [string, string, number][] = [['creature', creature, 16], ['gear', gear, 32], ['icosphere', icosphere, 64]];
+  const models: [string, string, number][] = [
+    ['creature', creature, 16],
+    ['gear', gear, 32],
+    ['icosphere', icosphere, 64],
+  ];
   for (const [name, text, max] of models) {
     it(`${name}, random per-patch levels up to ${max}: headless output on the CPU's snap and surface, no flip, no crack`, async () => {
       const tess = await tessellator();
@@ -192,7 +219,9 @@ describe('instanced tessellator', () => {
       tess.setMesh(m);
       tess.setWanted(randomLevels(m.patchCount, max, name.length));
       const out = await tess.headless({ mode: 'per-patch' });
-      expect(Array.from(out.records)).toEqual(Array.from(cpuLevels(m, randomLevels(m.patchCount, max, name.length), tess.patterns).records));
+      expect(Array.from(out.records)).toEqual(
+        Array.from(cpuLevels(m, randomLevels(m.patchCount, max, name.length), tess.patterns).records),
+      );
       const r = checkHeadless(m, out, tess);
       // Face parameters for the CLI's --params: on a quad face, exactly the patch's (u, v) (the
       // quad's split maps back as src/gpu/face-params.ts inverts it, which the exact surfaces use).
@@ -207,8 +236,10 @@ describe('instanced tessellator', () => {
         expect(Math.abs(q.u - out.uv[2 * v]) + Math.abs(q.v - out.uv[2 * v + 1])).toBeLessThan(1e-12);
       }
       expect(quadVerts > 0).toBe(m.quadCount > 0);
-      console.log(`${name}: ${m.patchCount} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles; ` +
-        `${r.edgesChecked} shared edges, largest gap ${r.gap.toExponential(2)} of the size, largest position error ${r.posError.toExponential(2)}`);
+      console.log(
+        `${name}: ${m.patchCount} patches, ${out.vertexCount} vertices, ${out.triangleCount} triangles; ` +
+          `${r.edgesChecked} shared edges, largest gap ${r.gap.toExponential(2)} of the size, largest position error ${r.posError.toExponential(2)}`,
+      );
       expect(r.edgesChecked).toBeGreaterThan(0);
       expect(r.gap).toBeLessThan(1e-6);
       expect(r.posError).toBeLessThan(2e-6);
@@ -238,7 +269,9 @@ describe('instanced tessellator', () => {
       expect(compared).toBeGreaterThan(0.99 * m.edgeCount);
       for (let p = 0; p < m.patchCount; p++) expect(out.patchLevels[p]).toBe(Math.max(...patchEdgeIds(m, p).map((e) => out.edgeLevels[e])));
       const r = checkHeadless(m, out, tess);
-      console.log(`creature, dynamic at ${distance} × size: ${out.triangleCount} triangles, levels ${[...new Set(out.edgeLevels)].sort((a, b) => a - b)}, largest gap ${r.gap.toExponential(2)}`);
+      console.log(
+        `creature, dynamic at ${distance} × size: ${out.triangleCount} triangles, levels ${[...new Set(out.edgeLevels)].sort((a, b) => a - b)}, largest gap ${r.gap.toExponential(2)}`,
+      );
       expect(r.gap).toBeLessThan(1e-6);
       total.push(out.triangleCount);
     }
@@ -247,26 +280,58 @@ describe('instanced tessellator', () => {
     // Draw: one lit pass and one shadow pass into small targets; the lit pass must cover pixels.
     const cam = camera(m, 0.8 * m.prepared.size);
     device.pushErrorScope('validation');
-    const colour = device.createTexture({ label: 'test colour', size: [64, 64], format: 'rgba8unorm', usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
-    const depth = device.createTexture({ label: 'test depth', size: [64, 64], format: 'depth32float', usage: GPUTextureUsage.RENDER_ATTACHMENT });
-    const shadow = device.createTexture({ label: 'test shadow map', size: [64, 64], format: 'depth32float', usage: GPUTextureUsage.RENDER_ATTACHMENT });
+    const colour = device.createTexture({
+      label: 'test colour',
+      size: [64, 64],
+      format: 'rgba8unorm',
+      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC,
+    });
+    const depth = device.createTexture({
+      label: 'test depth',
+      size: [64, 64],
+      format: 'depth32float',
+      usage: GPUTextureUsage.RENDER_ATTACHMENT,
+    });
+    const shadow = device.createTexture({
+      label: 'test shadow map',
+      size: [64, 64],
+      format: 'depth32float',
+      usage: GPUTextureUsage.RENDER_ATTACHMENT,
+    });
     tess.writeFrame({ viewProj: cam.viewProj, eye: cam.eye });
     const enc = device.createCommandEncoder({ label: 'test draw' });
     tess.encodeLevels(enc, { mode: 'static', level: 4 });
     let pass = enc.beginRenderPass({
-      label: 'test shadow pass', colorAttachments: [],
-      depthStencilAttachment: { view: shadow.createView({ label: 'test shadow view' }), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' },
+      label: 'test shadow pass',
+      colorAttachments: [],
+      depthStencilAttachment: {
+        view: shadow.createView({ label: 'test shadow view' }),
+        depthClearValue: 1,
+        depthLoadOp: 'clear',
+        depthStoreOp: 'store',
+      },
     });
     tess.encodeDraw(pass, 'shadow');
     pass.end();
     pass = enc.beginRenderPass({
       label: 'test lit pass',
-      colorAttachments: [{ view: colour.createView({ label: 'test colour view' }), clearValue: [0, 0, 0, 0], loadOp: 'clear', storeOp: 'store' }],
-      depthStencilAttachment: { view: depth.createView({ label: 'test depth view' }), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'discard' },
+      colorAttachments: [
+        { view: colour.createView({ label: 'test colour view' }), clearValue: [0, 0, 0, 0], loadOp: 'clear', storeOp: 'store' },
+      ],
+      depthStencilAttachment: {
+        view: depth.createView({ label: 'test depth view' }),
+        depthClearValue: 1,
+        depthLoadOp: 'clear',
+        depthStoreOp: 'discard',
+      },
     });
     tess.encodeDraw(pass, 'lit');
     pass.end();
-    const read = device.createBuffer({ label: 'test colour read', size: 64 * 64 * 4, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+    const read = device.createBuffer({
+      label: 'test colour read',
+      size: 64 * 64 * 4,
+      usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ,
+    });
     enc.copyTextureToBuffer({ texture: colour }, { buffer: read, bytesPerRow: 256 }, [64, 64]);
     device.queue.submit([enc.finish()]);
     expect((await device.popErrorScope())?.message).toBeUndefined();

@@ -7,14 +7,28 @@
 import { describe, it, expect } from 'vitest';
 import { loadCage } from '../src/mesh/index.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
-import { prepareInstanced, cpuLevels, snapPatchVertex, patchDomain, patchEdgeIds, patchCanonical, patchTriangle, PATCH_WORDS } from '../src/gpu/instanced.ts';
+import {
+  prepareInstanced,
+  cpuLevels,
+  snapPatchVertex,
+  patchDomain,
+  patchEdgeIds,
+  patchCanonical,
+  patchTriangle,
+  PATCH_WORDS,
+} from '../src/gpu/instanced.ts';
 import { pow2Pattern, vertexEdges } from '../src/pattern/pow2.ts';
 import creature from '../public/models/creature.obj?raw';
 import gear from '../public/models/gear.obj?raw';
 import icosphere from '../public/models/icosphere.obj?raw';
 import sheet from '../public/models/sheet.obj?raw';
 
-const models: [string, string][] = [['creature', creature], ['gear', gear], ['icosphere', icosphere], ['sheet', sheet]];
+const models: [string, string][] = [
+  ['creature', creature],
+  ['gear', gear],
+  ['icosphere', icosphere],
+  ['sheet', sheet],
+];
 
 describe('instanced patches, levels and snap on the CPU', () => {
   for (const [name, text] of models) {
@@ -23,15 +37,18 @@ describe('instanced patches, levels and snap on the CPU', () => {
       const prepared = prepareMesh(cage);
       const m = prepareInstanced(cage, prepared);
       // Quads are quad patches; every other face gives its n − 2 fan triangles.
-      let quads = 0, tris = 0;
+      let quads = 0,
+        tris = 0;
       const cageEdges = new Set<string>();
       for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
         if (cage.holes.includes(f)) continue;
-        const s = cage.faceOffsets[f], n = cage.faceOffsets[f + 1] - s;
+        const s = cage.faceOffsets[f],
+          n = cage.faceOffsets[f + 1] - s;
         if (n === 4) quads++;
         else tris += n - 2;
         for (let k = 0; k < n; k++) {
-          const a = cage.faceIndices[s + k], b = cage.faceIndices[s + ((k + 1) % n)];
+          const a = cage.faceIndices[s + k],
+            b = cage.faceIndices[s + ((k + 1) % n)];
           cageEdges.add(`${Math.min(a, b)},${Math.max(a, b)}`);
         }
       }
@@ -63,7 +80,18 @@ describe('instanced patches, levels and snap on the CPU', () => {
       // Patch corners map onto the cage triangles' corners.
       for (let p = 0; p < m.patchCount; p++) {
         const quad = patchDomain(m, p) === 'quad';
-        const at = quad ? [[0, 0], [1, 0], [1, 1], [0, 1]] : [[0, 0], [1, 0], [0, 1]];
+        const at = quad
+          ? [
+              [0, 0],
+              [1, 0],
+              [1, 1],
+              [0, 1],
+            ]
+          : [
+              [0, 0],
+              [1, 0],
+              [0, 1],
+            ];
         at.forEach(([i, j], k) => {
           const { t, w } = patchTriangle(m, p, 1, i, j);
           const c = w.indexOf(65536);
@@ -74,15 +102,18 @@ describe('instanced patches, levels and snap on the CPU', () => {
 
       // Random per-patch levels: edge = min of its patches; both sides snap onto {j / L_e}.
       let seed = 99;
-      const rand = () => ((seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32);
+      const rand = () => (seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32;
       const wanted = Uint32Array.from({ length: m.patchCount }, () => 2 ** Math.floor(rand() * 6));
       const lv = cpuLevels(m, wanted);
       expect(lv.counts.reduce((a, b) => a + b, 0)).toBe(m.patchCount);
       for (const [e, list] of users) expect(lv.edgeLevels[e]).toBe(Math.min(...list.map((u) => wanted[u.p])));
       const sides = new Map<number, Set<number>[]>();
       for (let p = 0; p < m.patchCount; p++) {
-        const P = lv.patchLevels[p], dom = patchDomain(m, p), pat = pow2Pattern(dom, P);
-        const ids = patchEdgeIds(m, p), can = patchCanonical(m, p);
+        const P = lv.patchLevels[p],
+          dom = patchDomain(m, p),
+          pat = pow2Pattern(dom, P);
+        const ids = patchEdgeIds(m, p),
+          can = patchCanonical(m, p);
         const mine = ids.map(() => new Set<number>());
         for (let v = 0; v < pat.ij.length / 2; v++) {
           const [i, j] = snapPatchVertex(m, p, P, pat.ij[2 * v], pat.ij[2 * v + 1], lv.edgeLevels);

@@ -149,7 +149,8 @@ describe('hable: the stable line', () => {
   });
 
   it('slides several points together, slowly (one-at-a-time slides one)', () => {
-    let maxHable = 0, maxOne = 0;
+    let maxHable = 0,
+      maxOne = 0;
     for (let f = 1; f <= 64; f += 0.01) {
       maxHable = Math.max(maxHable, line('hable', f).moving.filter(Boolean).length);
       maxOne = Math.max(maxOne, line('one-at-a-time', f).moving.filter(Boolean).length);
@@ -183,7 +184,7 @@ describe('hable: the stable line', () => {
   });
 });
 
-describe('the talk\'s intermediate lines', () => {
+describe("the talk's intermediate lines", () => {
   it('one-at-a-time at 3 is lopsided: two small segments, one big', () => {
     const { x } = line('one-at-a-time', 3);
     expect(x).toEqual([0, ONE / 4, ONE / 2, ONE]);
@@ -196,6 +197,7 @@ describe('the talk\'s intermediate lines', () => {
     expect(seg[10]).toBeCloseTo(0.3 / 10.3, 4);
   });
   it('even lands on the uniform grid at integers', () => {
-    for (const n of [1, 2, 3, 7, 16, 64]) expect(line('even', n).x).toEqual(Array.from({ length: n + 1 }, (_, k) => Math.floor((k * ONE) / n)));
+    for (const n of [1, 2, 3, 7, 16, 64])
+      expect(line('even', n).x).toEqual(Array.from({ length: n + 1 }, (_, k) => Math.floor((k * ONE) / n)));
   });
 });

@@ -1,7 +1,19 @@
 import { describe, expect, it } from 'vitest';
 import {
-  CageError, FaceKind, FACE_FLAG_BOUNDARY, FACE_FLAG_CREASED, FACE_FLAG_SEMISHARP, SHARPNESS_INFINITE,
-  buildTopology, classify, computeSharpness, loadCage, makeCage, parseObj, vertexRing, writeObj,
+  CageError,
+  FaceKind,
+  FACE_FLAG_BOUNDARY,
+  FACE_FLAG_CREASED,
+  FACE_FLAG_SEMISHARP,
+  SHARPNESS_INFINITE,
+  buildTopology,
+  classify,
+  computeSharpness,
+  loadCage,
+  makeCage,
+  parseObj,
+  vertexRing,
+  writeObj,
 } from '../src/mesh/index.ts';
 
 const CUBE = `# cube
@@ -74,7 +86,9 @@ describe('OBJ reader', () => {
     expect(Array.from(b.faceIndices)).toEqual(Array.from(a.faceIndices));
     expect(Array.from(b.faceUvIndices)).toEqual(Array.from(a.faceUvIndices));
     expect(Array.from(b.faceNormalIndices)).toEqual(Array.from(a.faceNormalIndices));
-    expect(b.creases.map(({ v0, v1, sharpness }) => [v0, v1, sharpness])).toEqual(a.creases.map(({ v0, v1, sharpness }) => [v0, v1, sharpness]));
+    expect(b.creases.map(({ v0, v1, sharpness }) => [v0, v1, sharpness])).toEqual(
+      a.creases.map(({ v0, v1, sharpness }) => [v0, v1, sharpness]),
+    );
     expect(b.corners.map(({ v, sharpness }) => [v, sharpness])).toEqual(a.corners.map(({ v, sharpness }) => [v, sharpness]));
     expect(b.fileOptions).toEqual(a.fileOptions);
     expect(writeObj(b)).toBe(writeObj(a));
@@ -131,7 +145,9 @@ describe('errors name the line and the problem', () => {
     expectError(head + 'f 1 2 3 4\nt crease x 0 1 1\n', 6, /nInt/);
   });
   it('lists every problem, sorted by line', () => {
-    try { loadCage('v 1\nv 1 2 3\nf 1 0 2\n'); } catch (e) {
+    try {
+      loadCage('v 1\nv 1 2 3\nf 1 0 2\n');
+    } catch (e) {
       expect((e as CageError).issues.map((i) => i.line)).toEqual([1, 3]);
       expect((e as CageError).message).toMatch(/^line 1: /);
     }
@@ -143,14 +159,15 @@ describe('errors name the line and the problem', () => {
 });
 
 describe('topology and classification', () => {
-  it('vertex rings follow OpenSubdiv\'s ordering', () => {
+  it("vertex rings follow OpenSubdiv's ordering", () => {
     const { topology: T } = loadCage(CUBE);
     for (let v = 0; v < 8; v++) {
       const r = vertexRing(T, v)!;
       expect(r.he).toHaveLength(3);
       expect(r.boundary).toBe(false);
       for (let i = 0; i < 3; i++) {
-        const h = r.he[i], hn = r.he[(i + 1) % 3];
+        const h = r.he[i],
+          hn = r.he[(i + 1) % 3];
         // face i contains v->e_i and e_{i+1}->v
         expect(T.faceIndices[T.hePrev[h]]).toBe(T.faceIndices[T.heNext[hn]]);
       }
@@ -158,7 +175,14 @@ describe('topology and classification', () => {
   });
   it('boundary sharpening and corners', () => {
     // 3x1 strip: corners get infinite vertex sharpness under edge-and-corner only.
-    const c = makeCage([0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 3, 1, 0], [[0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6]]);
+    const c = makeCage(
+      [0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 3, 1, 0],
+      [
+        [0, 1, 5, 4],
+        [1, 2, 6, 5],
+        [2, 3, 7, 6],
+      ],
+    );
     const T = buildTopology(c);
     const s1 = computeSharpness(c, T, { boundary: 'edge-and-corner', creasing: 'uniform' });
     expect(Array.from(s1.vertex)).toEqual([10, 0, 0, 10, 10, 0, 0, 10]);
@@ -170,14 +194,19 @@ describe('topology and classification', () => {
   });
   it('classifies faces for the GPU', () => {
     // 4x4 closed torus grid with one triangle pair replacing a quad and a creased loop.
-    const n = 5, p: number[] = [];
+    const n = 5,
+      p: number[] = [];
     for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) p.push(Math.cos(i), Math.sin(i), j);
     const id = (i: number, j: number): number => ((j + n) % n) * n + ((i + n) % n);
     const f: number[][] = [];
-    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-      if (i === 0 && j === 0) { f.push([id(0, 0), id(1, 0), id(1, 1)], [id(0, 0), id(1, 1), id(0, 1)]); continue; }
-      f.push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
-    }
+    for (let j = 0; j < n; j++)
+      for (let i = 0; i < n; i++) {
+        if (i === 0 && j === 0) {
+          f.push([id(0, 0), id(1, 0), id(1, 1)], [id(0, 0), id(1, 1), id(0, 1)]);
+          continue;
+        }
+        f.push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+      }
     const creases: [number, number, number][] = [];
     for (let i = 0; i < n; i++) creases.push([id(i, 3), id(i + 1, 3), 2]);
     const c = makeCage(p, f, { creases });

@@ -49,7 +49,9 @@ function folded(t: CpuTriangle): boolean {
 }
 
 describe('adaptive tessellation has no folded triangles', () => {
-  const files = readdirSync(MODELS).filter((f) => f.endsWith('.obj')).sort();
+  const files = readdirSync(MODELS)
+    .filter((f) => f.endsWith('.obj'))
+    .sort();
   it('finds the project models', () => expect(files.length).toBeGreaterThanOrEqual(5));
 
   for (const file of files) {
@@ -61,7 +63,9 @@ describe('adaptive tessellation has no folded triangles', () => {
       let total = 0;
       let folds = 0;
       for (let cam = 0; cam < 6; cam++) {
-        const yaw = rnd() * 2 * Math.PI, pitch = (rnd() - 0.5) * 2.4, dist = mesh.size * (0.6 + 1.4 * rnd());
+        const yaw = rnd() * 2 * Math.PI,
+          pitch = (rnd() - 0.5) * 2.4,
+          dist = mesh.size * (0.6 + 1.4 * rnd());
         const eye: Vec3 = [
           centre[0] + dist * Math.cos(pitch) * Math.sin(yaw),
           centre[1] + dist * Math.sin(pitch),
@@ -73,7 +77,9 @@ describe('adaptive tessellation has no folded triangles', () => {
         folds += bad.length;
         if (bad.length) {
           const b = bad[0];
-          report.push(`camera ${cam}: ${bad.length} of ${tris.length} folded, e.g. cage triangle ${b.cageTri} factors ${b.factors.map((f) => f.toFixed(3))} reverse ${b.reverse.map(Number).join('')} pattern triangle ${b.local}`);
+          report.push(
+            `camera ${cam}: ${bad.length} of ${tris.length} folded, e.g. cage triangle ${b.cageTri} factors ${b.factors.map((f) => f.toFixed(3))} reverse ${b.reverse.map(Number).join('')} pattern triangle ${b.local}`,
+          );
         }
       }
       expect(total).toBeGreaterThan(0);

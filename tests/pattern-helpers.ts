@@ -58,10 +58,14 @@ export function onEdge(p: TriPattern, v: number, i: number): boolean {
 export function checkTiling(p: TriPattern, areaSign = 1): MeshReport {
   let badBary = 0;
   for (let v = 0; v < p.vertexCount; v++) {
-    const a = p.bary[3 * v], b = p.bary[3 * v + 1], c = p.bary[3 * v + 2];
+    const a = p.bary[3 * v],
+      b = p.bary[3 * v + 1],
+      c = p.bary[3 * v + 2];
     if (a < 0 || b < 0 || c < 0 || a + b + c !== ONE || !Number.isInteger(a + b + c)) badBary++;
   }
-  let negative = 0, degenerate = 0, sum = 0;
+  let negative = 0,
+    degenerate = 0,
+    sum = 0;
   const used = new Uint8Array(p.vertexCount);
   const directed = new Map<number, number>();
   const undirected = new Map<number, number>();
@@ -72,7 +76,8 @@ export function checkTiling(p: TriPattern, areaSign = 1): MeshReport {
     if (s === 0) degenerate++;
     sum += s;
     for (let e = 0; e < 3; e++) {
-      const a = p.triangles[3 * t + e], b = p.triangles[3 * t + ((e + 1) % 3)];
+      const a = p.triangles[3 * t + e],
+        b = p.triangles[3 * t + ((e + 1) % 3)];
       used[a] = 1;
       directed.set(key(a, b), (directed.get(key(a, b)) ?? 0) + 1);
       const k = key(Math.min(a, b), Math.max(a, b));
@@ -82,7 +87,8 @@ export function checkTiling(p: TriPattern, areaSign = 1): MeshReport {
   const badEdges: string[] = [];
   for (const [k, n] of directed) if (n > 1) badEdges.push(`directed ${k} x${n}`);
   for (const [k, n] of undirected) {
-    const a = Math.floor(k / 1_000_003), b = k % 1_000_003;
+    const a = Math.floor(k / 1_000_003),
+      b = k % 1_000_003;
     if (n > 2) badEdges.push(`edge ${a}-${b} x${n}`);
     if (n === 1 && ![0, 1, 2].some((i) => onEdge(p, a, i) && onEdge(p, b, i))) badEdges.push(`open interior edge ${a}-${b}`);
   }

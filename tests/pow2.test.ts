@@ -6,8 +6,16 @@
  */
 import { describe, it, expect } from 'vitest';
 import {
-  POW2_LEVELS, pow2Pattern, snapEdgeParam, snapVertex, vertexEdges, packPatterns,
-  patternVertexCount, patternTriangleCount, type PatchDomain, type Pow2Pattern,
+  POW2_LEVELS,
+  pow2Pattern,
+  snapEdgeParam,
+  snapVertex,
+  vertexEdges,
+  packPatterns,
+  patternVertexCount,
+  patternTriangleCount,
+  type PatchDomain,
+  type Pow2Pattern,
 } from '../src/pattern/pow2.ts';
 
 const DOMAINS: PatchDomain[] = ['quad', 'tri'];
@@ -31,7 +39,8 @@ function edgeBits(p: Pow2Pattern): Uint8Array {
   let m = membership.get(p);
   if (!m) {
     m = new Uint8Array(p.ij.length / 2);
-    for (let v = 0; v < m.length; v++) for (const { edge } of vertexEdges(p.domain, p.level, p.ij[2 * v], p.ij[2 * v + 1])) m[v] |= 1 << edge;
+    for (let v = 0; v < m.length; v++)
+      for (const { edge } of vertexEdges(p.domain, p.level, p.ij[2 * v], p.ij[2 * v + 1])) m[v] |= 1 << edge;
     membership.set(p, m);
   }
   return m;
@@ -45,7 +54,8 @@ function checkSnap(p: Pow2Pattern, levels: number[], canonical: boolean[]): void
   const nT = p.indices.length / 3;
   const collapsedBoundary = new Array<boolean>(nT).fill(false);
   for (let e = 0; e < levels.length; e++) {
-    const Le = levels[e], R = P / Le;
+    const Le = levels[e],
+      R = P / Le;
     // The snapped boundary is exactly {jR}: as a set of edge parameters.
     const params = new Set<number>();
     for (let v = 0; v < bits.length; v++) {
@@ -56,10 +66,12 @@ function checkSnap(p: Pow2Pattern, levels: number[], canonical: boolean[]): void
     }
     expect([...params].sort((a, b) => a - b)).toEqual(Array.from({ length: Le + 1 }, (_, j) => j * R));
     // Triangles with a side on edge e: P of them, P − Le collapsed to a point.
-    let sides = 0, collapsed = 0;
+    let sides = 0,
+      collapsed = 0;
     for (let t = 0; t < nT; t++) {
       for (let s = 0; s < 3; s++) {
-        const a = p.indices[3 * t + s], b = p.indices[3 * t + ((s + 1) % 3)];
+        const a = p.indices[3 * t + s],
+          b = p.indices[3 * t + ((s + 1) % 3)];
         if (!(bits[a] & bits[b] & (1 << e))) continue;
         sides++;
         if (xy[2 * a] === xy[2 * b] && xy[2 * a + 1] === xy[2 * b + 1]) {
@@ -86,7 +98,8 @@ describe('power-of-two patterns (§8.11)', () => {
     it(`${domain}: counts, indices in range, counter-clockwise, covering the domain`, () => {
       for (const L of POW2_LEVELS) {
         const p = pow2Pattern(domain, L);
-        const nV = p.ij.length / 2, nT = p.indices.length / 3;
+        const nV = p.ij.length / 2,
+          nT = p.indices.length / 3;
         expect(nV).toBe(domain === 'quad' ? (L + 1) ** 2 : ((L + 1) * (L + 2)) / 2);
         expect(nT).toBe(domain === 'quad' ? 2 * L * L : L * L);
         expect(nV).toBe(patternVertexCount(domain, L));
@@ -109,7 +122,8 @@ describe('power-of-two patterns (§8.11)', () => {
   it('packs all 14 patterns with their bases; a draw record is 5 u32 (20 bytes)', () => {
     const packed = packPatterns();
     expect(packed.entries.length).toBe(14);
-    let v = 0, i = 0;
+    let v = 0,
+      i = 0;
     for (const [k, e] of packed.entries.entries()) {
       expect(e.domain).toBe(k < 7 ? 'quad' : 'tri');
       expect(e.level).toBe(POW2_LEVELS[k % 7]);
@@ -168,21 +182,30 @@ describe('snap function (§8.10)', () => {
         const combos = choices.length ** n;
         for (let c = 0; c < combos; c++) {
           const levels = Array.from({ length: n }, (_, e) => choices[Math.floor(c / choices.length ** e) % choices.length]);
-          for (let d = 0; d < 1 << n; d++) checkSnap(p, levels, Array.from({ length: n }, (_, e) => ((d >> e) & 1) === 1));
+          for (let d = 0; d < 1 << n; d++)
+            checkSnap(
+              p,
+              levels,
+              Array.from({ length: n }, (_, e) => ((d >> e) & 1) === 1),
+            );
         }
       }
     });
 
     it(`${domain}: random level assignments at P = 16, 32, 64`, () => {
       let seed = 12345;
-      const rand = () => ((seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32);
+      const rand = () => (seed = (Math.imul(seed, 1103515245) + 12345) >>> 0) / 2 ** 32;
       const n = EDGES[domain];
       for (const P of [16, 32, 64]) {
         const p = pow2Pattern(domain, P);
         const choices = POW2_LEVELS.filter((l) => l <= P);
         for (let k = 0; k < (P === 64 ? 6 : 20); k++) {
           const levels = Array.from({ length: n }, () => choices[Math.floor(rand() * choices.length)]);
-          checkSnap(p, levels, Array.from({ length: n }, () => rand() < 0.5));
+          checkSnap(
+            p,
+            levels,
+            Array.from({ length: n }, () => rand() < 0.5),
+          );
         }
       }
     });

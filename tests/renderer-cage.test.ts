@@ -9,8 +9,20 @@ import { cageEdges, cageLineVertices, CAGE_LINE_STRIDE, triangulateCage } from '
 // A unit cube, faces counter-clockwise seen from outside.
 const cube = makeCage(
   [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1],
-  [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]],
-  { creases: [[0, 1, 10], [1, 2, 2.5]] },
+  [
+    [0, 3, 2, 1],
+    [4, 5, 6, 7],
+    [0, 1, 5, 4],
+    [1, 2, 6, 5],
+    [2, 3, 7, 6],
+    [3, 0, 4, 7],
+  ],
+  {
+    creases: [
+      [0, 1, 10],
+      [1, 2, 2.5],
+    ],
+  },
 );
 
 describe('triangulateCage', () => {
@@ -32,7 +44,16 @@ describe('triangulateCage', () => {
       expect(n[0] * outward[0] + n[1] * outward[1] + n[2] * outward[2]).toBeGreaterThan(0.4);
     }
     // A pyramid apex over a square: the normal sums the four sloped faces.
-    const pyr = makeCage([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1], [[0, 3, 2, 1], [0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]);
+    const pyr = makeCage(
+      [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.5, 1],
+      [
+        [0, 3, 2, 1],
+        [0, 1, 4],
+        [1, 2, 4],
+        [2, 3, 4],
+        [3, 0, 4],
+      ],
+    );
     const p = triangulateCage(pyr);
     expect(p.normals[12]).toBeCloseTo(0, 6);
     expect(p.normals[13]).toBeCloseTo(0, 6);
@@ -51,7 +72,18 @@ describe('triangulateCage', () => {
   });
 
   it('drops hole faces', () => {
-    const holed = makeCage(cube.positions, [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]], { holes: [1] });
+    const holed = makeCage(
+      cube.positions,
+      [
+        [0, 3, 2, 1],
+        [4, 5, 6, 7],
+        [0, 1, 5, 4],
+        [1, 2, 6, 5],
+        [2, 3, 7, 6],
+        [3, 0, 4, 7],
+      ],
+      { holes: [1] },
+    );
     expect(triangulateCage(holed).triangleCount).toBe(10);
   });
 
@@ -63,7 +95,8 @@ describe('triangulateCage', () => {
       const t = triangulateCage(cage);
       let expected = 0;
       const holes = new Set(cage.holes);
-      for (let i = 0; i + 1 < cage.faceOffsets.length; i++) if (!holes.has(i)) expected += cage.faceOffsets[i + 1] - cage.faceOffsets[i] - 2;
+      for (let i = 0; i + 1 < cage.faceOffsets.length; i++)
+        if (!holes.has(i)) expected += cage.faceOffsets[i + 1] - cage.faceOffsets[i] - 2;
       expect(t.triangleCount, f).toBe(expected);
       for (let v = 0; v < t.vertexCount; v++) {
         const len = Math.hypot(t.normals[3 * v], t.normals[3 * v + 1], t.normals[3 * v + 2]);
@@ -98,7 +131,11 @@ describe('cage overlay', () => {
     const colour = (i: number) => Array.from(u8.slice(i * CAGE_LINE_STRIDE + 12, i * CAGE_LINE_STRIDE + 16));
     for (let i = 0; i < vertexCount; i++) {
       const v = pairs[i];
-      expect(Array.from(f32.slice(i * 4, i * 4 + 3))).toEqual([cube.positions[3 * v], cube.positions[3 * v + 1], cube.positions[3 * v + 2]]);
+      expect(Array.from(f32.slice(i * 4, i * 4 + 3))).toEqual([
+        cube.positions[3 * v],
+        cube.positions[3 * v + 1],
+        cube.positions[3 * v + 2],
+      ]);
       expect(colour(i)[3]).toBe(255);
     }
     const smooth = sharpness.indexOf(0);

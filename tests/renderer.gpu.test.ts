@@ -40,7 +40,14 @@ const FORMAT: GPUTextureFormat = 'rgba8unorm-srgb';
 // A cube from -1 to 1 with one crease, faces counter-clockwise seen from outside.
 const cube = makeCage(
   [-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1],
-  [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]],
+  [
+    [0, 3, 2, 1],
+    [4, 5, 6, 7],
+    [0, 1, 5, 4],
+    [1, 2, 6, 5],
+    [2, 3, 7, 6],
+    [3, 0, 4, 7],
+  ],
   { creases: [[4, 5, 10]] },
 );
 
@@ -53,9 +60,18 @@ function view(): View {
 /** Render one frame and read it back as RGBA8 rows (tightly packed). */
 async function draw(renderer: Renderer, options: { wireframe: boolean; cage: boolean; patchColours?: boolean }): Promise<Uint8Array> {
   const device = ctx.device;
-  const target = device.createTexture({ label: 'test target', size: [W, H], format: FORMAT, usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+  const target = device.createTexture({
+    label: 'test target',
+    size: [W, H],
+    format: FORMAT,
+    usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC,
+  });
   const bytesPerRow = Math.ceil((W * 4) / 256) * 256;
-  const read = device.createBuffer({ label: 'test readback', size: bytesPerRow * H, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+  const read = device.createBuffer({
+    label: 'test readback',
+    size: bytesPerRow * H,
+    usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
+  });
   const encoder = device.createCommandEncoder({ label: 'test frame' });
   renderer.render(encoder, target, view(), options);
   encoder.copyTextureToBuffer({ texture: target }, { buffer: read, bytesPerRow }, [W, H]);
@@ -187,7 +203,7 @@ describe('renderer', () => {
     destroyMesh(mesh);
   });
 
-  it('follows the mesh\'s GPU-written draw args (indirect): zero triangles draw nothing', async () => {
+  it("follows the mesh's GPU-written draw args (indirect): zero triangles draw nothing", async () => {
     const device = ctx.device;
     device.pushErrorScope('validation');
     const renderer = Renderer.create(device, { colorFormat: FORMAT, shadowMapSize: 256 });

@@ -3,13 +3,29 @@
 import { makeCage, type Cage } from '../src/mesh/index.ts';
 
 export const cubePos = [-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1];
-export const cubeFaces = [[4, 5, 6, 7], [0, 3, 2, 1], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]];
+export const cubeFaces = [
+  [4, 5, 6, 7],
+  [0, 3, 2, 1],
+  [0, 1, 5, 4],
+  [1, 2, 6, 5],
+  [2, 3, 7, 6],
+  [3, 0, 4, 7],
+];
 
 export function cube(tags: Parameters<typeof makeCage>[2] = {}, scale = 1): Cage {
-  return makeCage(cubePos.map((x) => x * scale), cubeFaces, tags);
+  return makeCage(
+    cubePos.map((x) => x * scale),
+    cubeFaces,
+    tags,
+  );
 }
 
-export const ringCrease = (s: number): [number, number, number][] => [[4, 5, s], [5, 6, s], [6, 7, s], [7, 4, s]];
+export const ringCrease = (s: number): [number, number, number][] => [
+  [4, 5, s],
+  [5, 6, s],
+  [6, 7, s],
+  [7, 4, s],
+];
 
 export function fan(n: number): Cage {
   const p = [0, 0, 1];
@@ -21,7 +37,12 @@ export function fan(n: number): Cage {
 }
 
 export function grid3(): Cage {
-  const H = [[0, 1, 0, 2], [1, 3, 2, 0], [0, 2, 1, 1], [2, 0, 1, 0]];
+  const H = [
+    [0, 1, 0, 2],
+    [1, 3, 2, 0],
+    [0, 2, 1, 1],
+    [2, 0, 1, 0],
+  ];
   const p: number[] = [];
   for (let j = 0; j < 4; j++) for (let i = 0; i < 4; i++) p.push(i, j, H[j][i]);
   const f: number[][] = [];
@@ -30,19 +51,38 @@ export function grid3(): Cage {
 }
 
 export function tetra(): Cage {
-  return makeCage([1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1], [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]]);
+  return makeCage(
+    [1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1],
+    [
+      [0, 1, 2],
+      [0, 2, 3],
+      [0, 3, 1],
+      [1, 3, 2],
+    ],
+  );
 }
 
 export function triPrism(): Cage {
   const r = Math.sqrt(3) / 2;
-  return makeCage([1, 0, -1, -0.5, r, -1, -0.5, -r, -1, 1, 0, 1, -0.5, r, 1, -0.5, -r, 1],
-    [[3, 4, 5], [0, 2, 1], [0, 1, 4, 3], [1, 2, 5, 4], [2, 0, 3, 5]]);
+  return makeCage(
+    [1, 0, -1, -0.5, r, -1, -0.5, -r, -1, 1, 0, 1, -0.5, r, 1, -0.5, -r, 1],
+    [
+      [3, 4, 5],
+      [0, 2, 1],
+      [0, 1, 4, 3],
+      [1, 2, 5, 4],
+      [2, 0, 3, 5],
+    ],
+  );
 }
 
 export function pentPrism(): Cage {
   const p: number[] = [];
   for (const z of [-1, 1]) for (let i = 0; i < 5; i++) p.push(Math.cos((2 * Math.PI * i) / 5), Math.sin((2 * Math.PI * i) / 5), z);
-  const f: number[][] = [[5, 6, 7, 8, 9], [4, 3, 2, 1, 0]];
+  const f: number[][] = [
+    [5, 6, 7, 8, 9],
+    [4, 3, 2, 1, 0],
+  ];
   for (let i = 0; i < 5; i++) f.push([i, (i + 1) % 5, 5 + ((i + 1) % 5), 5 + i]);
   return makeCage(p, f);
 }

@@ -1,8 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { makeCage } from '../src/mesh/index.ts';
-import {
-  Surface, bsplineBasis, evalBSplinePatch, levelFromCage, limitPositions, refine, refineUniform,
-} from '../src/subdiv/index.ts';
+import { Surface, bsplineBasis, evalBSplinePatch, levelFromCage, limitPositions, refine, refineUniform } from '../src/subdiv/index.ts';
 import { cube, fan, grid3, pentPrism, ringCrease, tetra, triPrism } from './subdiv-fixtures.ts';
 
 type V = ArrayLike<number>;
@@ -34,10 +32,19 @@ describe('smooth cube [-1,1]^3 (values from OpenSubdiv 3.5)', () => {
     for (let f = 0; f < 6; f++) expect(Math.hypot(...s.evaluate(f, 0.5, 0.5).P)).toBeCloseTo(34 / 81, 14);
   });
   it('has octahedral symmetry of |P| across all faces and orientations', () => {
-    for (const [u, v] of [[0.3, 0.1], [0.77, 0.41]]) {
+    for (const [u, v] of [
+      [0.3, 0.1],
+      [0.77, 0.41],
+    ]) {
       const ref = Math.hypot(...S.evaluate(0, u, v).P);
       for (let f = 0; f < 6; f++) {
-        for (const [a, b] of [[u, v], [1 - v, u], [1 - u, 1 - v], [v, 1 - u], [v, u]]) {
+        for (const [a, b] of [
+          [u, v],
+          [1 - v, u],
+          [1 - u, 1 - v],
+          [v, 1 - u],
+          [v, u],
+        ]) {
           expect(Math.hypot(...S.evaluate(f, a, b).P)).toBeCloseTo(ref, 13);
         }
       }
@@ -80,9 +87,24 @@ describe('semi-sharp creases (ring of four top edges)', () => {
   });
   it('is affine in the fractional part of the sharpness', () => {
     const f = Math.fround(2.3) - 2;
-    const P = (s: number): V => new Surface(cube({ creases: [[4, 5, s], [5, 6, s]], corners: [[0, s]] })).evaluate(0, 0.3, 0.2).P;
-    const a = P(2), b = P(3), c = P(2.3);
-    close(c, [0, 1, 2].map((i) => (1 - f) * a[i] + f * b[i]), 1e-15);
+    const P = (s: number): V =>
+      new Surface(
+        cube({
+          creases: [
+            [4, 5, s],
+            [5, 6, s],
+          ],
+          corners: [[0, s]],
+        }),
+      ).evaluate(0, 0.3, 0.2).P;
+    const a = P(2),
+      b = P(3),
+      c = P(2.3);
+    close(
+      c,
+      [0, 1, 2].map((i) => (1 - f) * a[i] + f * b[i]),
+      1e-15,
+    );
   });
 });
 
@@ -107,7 +129,7 @@ describe('single crease on edge v4-v5 and corner sharpness', () => {
     close(S.evaluate(0, 0.5, 0).N, [0, -0.075867666, 0.997117895], 1e-9);
     close(S.evaluate(2, 0.5, 1).N, [0, -0.997117895, 0.075867666], 1e-9);
   });
-  it('infinitely sharp dart: our exact limit is near OpenSubdiv\'s level-10 value', () => {
+  it("infinitely sharp dart: our exact limit is near OpenSubdiv's level-10 value", () => {
     const P = new Surface(cube({ creases: [[4, 5, 10]] })).evaluate(0, 0, 0).P;
     close(P, [-0.490015244945, -0.564984450121, 0.564984450121], 1e-4);
   });
@@ -152,7 +174,8 @@ describe('valence-n fans, boundaries, planar cages', () => {
     const S = new Surface(makeCage(p, f, { creases }));
     // Face 5 = [6,7,12,11] has the crease (vertices 11,12 of row j=2) on its side 2 (v = 1).
     const b = [0, 1, 2, 3].map((i) => [i, 2, h(i, 2)]);
-    const bb = [0, 0, 0, 0], db = [0, 0, 0, 0];
+    const bb = [0, 0, 0, 0],
+      db = [0, 0, 0, 0];
     for (const t of [0, 0.25, 0.5, 0.8, 1]) {
       bsplineBasis(t, bb, db);
       // Segment between b1 and b2, with phantom-free interior vertices b0..b3.
@@ -162,17 +185,23 @@ describe('valence-n fans, boundaries, planar cages', () => {
   });
   it('a planar cage stays planar', () => {
     let seed = 7;
-    const rnd = (): number => ((seed = (seed * 16807) % 2147483647) / 2147483647) - 0.5;
+    const rnd = (): number => (seed = (seed * 16807) % 2147483647) / 2147483647 - 0.5;
     const p: number[] = [];
     for (let j = 0; j < 4; j++) for (let i = 0; i < 4; i++) p.push(i + 0.3 * rnd(), j + 0.3 * rnd(), 0);
     const f: number[][] = [];
     for (let j = 0; j < 3; j++) for (let i = 0; i < 3; i++) f.push([4 * j + i, 4 * j + i + 1, 4 * j + i + 5, 4 * j + i + 4]);
     const S = new Surface(makeCage(p, f));
-    for (let k = 0; k < 9; k++) for (const [u, v] of [[0, 0], [0.3, 0.9], [1, 0.5], [0.5, 0.5]]) {
-      const r = S.evaluate(k, u, v);
-      expect(r.P[2]).toBe(0);
-      expect(Math.abs(r.N[2])).toBe(1);
-    }
+    for (let k = 0; k < 9; k++)
+      for (const [u, v] of [
+        [0, 0],
+        [0.3, 0.9],
+        [1, 0.5],
+        [0.5, 0.5],
+      ]) {
+        const r = S.evaluate(k, u, v);
+        expect(r.P[2]).toBe(0);
+        expect(Math.abs(r.N[2])).toBe(1);
+      }
   });
 });
 
@@ -182,23 +211,32 @@ describe('regular patches are bicubic B-splines', () => {
     const n = 6;
     const p: number[] = [];
     const H = (i: number, j: number): number => Math.cos(i * 1.1) * Math.sin(j * 0.9 + 0.2) + 0.1 * i * ((i + j) % 3);
-    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-      const a = (2 * Math.PI * i) / n, b = (2 * Math.PI * j) / n;
-      const R = 3 + (1 + 0.2 * H(i, j)) * Math.cos(b);
-      p.push(R * Math.cos(a), R * Math.sin(a), (1 + 0.2 * H(i, j)) * Math.sin(b));
-    }
+    for (let j = 0; j < n; j++)
+      for (let i = 0; i < n; i++) {
+        const a = (2 * Math.PI * i) / n,
+          b = (2 * Math.PI * j) / n;
+        const R = 3 + (1 + 0.2 * H(i, j)) * Math.cos(b);
+        p.push(R * Math.cos(a), R * Math.sin(a), (1 + 0.2 * H(i, j)) * Math.sin(b));
+      }
     const id = (i: number, j: number): number => ((j + n) % n) * n + ((i + n) % n);
     const f: number[][] = [];
     for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) f.push([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
     const S = new Surface(makeCage(p, f));
-    const i0 = 2, j0 = 3;
+    const i0 = 2,
+      j0 = 3;
     const cp = new Float64Array(48);
-    for (let r = 0; r < 4; r++) for (let c = 0; c < 4; c++) {
-      const v = id(i0 - 1 + c, j0 - 1 + r);
-      cp.set(p.slice(3 * v, 3 * v + 3), 3 * (4 * r + c));
-    }
+    for (let r = 0; r < 4; r++)
+      for (let c = 0; c < 4; c++) {
+        const v = id(i0 - 1 + c, j0 - 1 + r);
+        cp.set(p.slice(3 * v, 3 * v + 3), 3 * (4 * r + c));
+      }
     const out = new Float64Array(9);
-    for (const [u, v] of [[0.1, 0.2], [0.5, 0.5], [0.93, 0.07], [1, 1]]) {
+    for (const [u, v] of [
+      [0.1, 0.2],
+      [0.5, 0.5],
+      [0.93, 0.07],
+      [1, 1],
+    ]) {
       evalBSplinePatch(cp, u, v, out);
       const r = S.evaluate(id(i0, j0), u, v);
       close(r.P, out.subarray(0, 3), 1e-14);
@@ -241,7 +279,13 @@ describe('triangles and n-gons (sub-face parameterisation)', () => {
 
 describe('consistency', () => {
   const cages = {
-    cube: cube({ creases: [[4, 5, 2.3], [5, 6, 10]], corners: [[0, 1.5]] }),
+    cube: cube({
+      creases: [
+        [4, 5, 2.3],
+        [5, 6, 10],
+      ],
+      corners: [[0, 1.5]],
+    }),
     pentPrism: pentPrism(),
     triPrism: triPrism(),
     grid3: grid3(),
@@ -255,7 +299,19 @@ describe('consistency', () => {
       let params: Param[] = [];
       for (let f = 0; f < L.he.nFaces; f++) {
         const n = L.he.faceOffsets[f + 1] - L.he.faceOffsets[f];
-        params.push({ f, k: -1, c: n === 4 ? [[0, 0], [1, 0], [1, 1], [0, 1]] : [] });
+        params.push({
+          f,
+          k: -1,
+          c:
+            n === 4
+              ? [
+                  [0, 0],
+                  [1, 0],
+                  [1, 1],
+                  [0, 1],
+                ]
+              : [],
+        });
       }
       for (let level = 0; level <= 2; level++) {
         const lim = limitPositions(L);
@@ -272,12 +328,22 @@ describe('consistency', () => {
         const C = refine(L);
         const next: Param[] = [];
         for (let h = 0; h < C.he.nFaces; h++) {
-          const pf = C.faceParent![h], j = C.faceCorner![h];
+          const pf = C.faceParent![h],
+            j = C.faceCorner![h];
           const pr = params[pf];
           const n = L.he.faceOffsets[pf + 1] - L.he.faceOffsets[pf];
           if (!pr.c.length) {
             // Child j of a cage n-gon is sub-face j.
-            next.push({ f: pr.f, k: j, c: [[0, 0], [1, 0], [1, 1], [0, 1]] });
+            next.push({
+              f: pr.f,
+              k: j,
+              c: [
+                [0, 0],
+                [1, 0],
+                [1, 1],
+                [0, 1],
+              ],
+            });
             continue;
           }
           const mid = (a: [number, number], b: [number, number]): [number, number] => [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2];
@@ -294,7 +360,11 @@ describe('consistency', () => {
     for (const cage of [cube({ creases: [[4, 5, 1.7]] }), pentPrism()]) {
       const S = new Surface(cage);
       const h = 1e-6;
-      for (const [f, k, s, t] of [[0, 0, 0.3, 0.4], [2, 0, 0.61, 0.27], [0, 0, 0.05, 0.9]]) {
+      for (const [f, k, s, t] of [
+        [0, 0, 0.3, 0.4],
+        [2, 0, 0.61, 0.27],
+        [0, 0, 0.05, 0.9],
+      ]) {
         const n = S.faceSize(f);
         const ev = (a: number, b: number): V => (n === 4 ? S.evaluate(f, a, b) : S.evaluateSubFace(f, k, a, b)).P;
         const r = n === 4 ? S.evaluate(f, s, t) : S.evaluateSubFace(f, k, s, t);

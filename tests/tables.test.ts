@@ -64,7 +64,11 @@ describe('baked pattern tables', () => {
   });
 
   it('reproduce the clamped triangle exactly (points and indices)', () => {
-    const f = fc.oneof(fc.double({ min: 1, max: 64, noNaN: true }), fc.integer({ min: 1, max: 64 }), fc.double({ min: 1, max: 2.5, noNaN: true }));
+    const f = fc.oneof(
+      fc.double({ min: 1, max: 64, noNaN: true }),
+      fc.integer({ min: 1, max: 64 }),
+      fc.double({ min: 1, max: 2.5, noNaN: true }),
+    );
     fc.assert(
       fc.property(fc.tuple(f, f, f), fc.tuple(fc.boolean(), fc.boolean(), fc.boolean()), (factors, reverse) => {
         expect(get(64).clampedTriangle(factors, reverse)).toEqual(clampedTriangle(factors, reverse));
@@ -73,9 +77,18 @@ describe('baked pattern tables', () => {
     );
     // and with a larger table
     fc.assert(
-      fc.property(fc.tuple(fc.double({ min: 1, max: 128, noNaN: true }), fc.double({ min: 1, max: 128, noNaN: true }), fc.double({ min: 1, max: 128, noNaN: true })), (factors) => {
-        expect(get(128).clampedTriangle(factors, [true, false, true])).toEqual(clampedTriangle(factors, [true, false, true], { maxFactor: 128 }));
-      }),
+      fc.property(
+        fc.tuple(
+          fc.double({ min: 1, max: 128, noNaN: true }),
+          fc.double({ min: 1, max: 128, noNaN: true }),
+          fc.double({ min: 1, max: 128, noNaN: true }),
+        ),
+        (factors) => {
+          expect(get(128).clampedTriangle(factors, [true, false, true])).toEqual(
+            clampedTriangle(factors, [true, false, true], { maxFactor: 128 }),
+          );
+        },
+      ),
       { numRuns: 200 },
     );
   });

@@ -21,7 +21,9 @@ export interface TessReport {
 
 /** Angle between two vectors, accurate for small angles too (acos is not, near 1). */
 export function angleBetween(a: number[], b: number[]): number {
-  const cx = a[1] * b[2] - a[2] * b[1], cy = a[2] * b[0] - a[0] * b[2], cz = a[0] * b[1] - a[1] * b[0];
+  const cx = a[1] * b[2] - a[2] * b[1],
+    cy = a[2] * b[0] - a[0] * b[2],
+    cz = a[0] * b[1] - a[1] * b[0];
   return Math.atan2(Math.hypot(cx, cy, cz), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
 }
 
@@ -34,7 +36,8 @@ function weightsByCageVertex(mesh: PreparedMesh, out: MeshReadback, v: number): 
   if (packed === BARY_CORNER1) w = [0, ONE, 0];
   else if (packed === BARY_CORNER2) w = [0, 0, ONE];
   else {
-    const w1 = packed & 0xffff, w2 = packed >>> 16;
+    const w1 = packed & 0xffff,
+      w2 = packed >>> 16;
     w = [ONE - w1 - w2, w1, w2];
   }
   const m = new Map<number, number>();
@@ -45,8 +48,14 @@ function weightsByCageVertex(mesh: PreparedMesh, out: MeshReadback, v: number): 
 }
 
 export function checkTessellation(
-  mesh: PreparedMesh, edgeF: Uint32Array, out: MeshReadback,
-  opts: { closed: boolean; maxErrors?: number; reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] } },
+  mesh: PreparedMesh,
+  edgeF: Uint32Array,
+  out: MeshReadback,
+  opts: {
+    closed: boolean;
+    maxErrors?: number;
+    reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] };
+  },
 ): TessReport {
   const problems: string[] = [];
   const add = (p: string) => {
@@ -109,7 +118,8 @@ export function checkTessellation(
   const directed = new Map<string, number>();
   for (let t = 0; t < out.triangleCount; t++) {
     for (let c = 0; c < 3; c++) {
-      const a = out.indices[3 * t + c], b = out.indices[3 * t + ((c + 1) % 3)];
+      const a = out.indices[3 * t + c],
+        b = out.indices[3 * t + ((c + 1) % 3)];
       if (a === b) add(`triangle ${t} repeats vertex ${a}`);
       const k = `${a},${b}`;
       directed.set(k, (directed.get(k) ?? 0) + 1);

@@ -17,8 +17,17 @@ describe('npm run tessellate', () => {
     expect(r.status, r.stderr).toBe(0);
     const obj = readFileSync(out, 'utf8').split('\n');
     const v = obj.filter((l) => l.startsWith('v ')).length;
-    const faces = obj.filter((l) => l.startsWith('f ')).map((l) => l.slice(2).split(' ').map((x) => Number(x.split('//')[0])));
-    const cageFaces = readFileSync('public/models/torus.obj', 'utf8').split('\n').filter((l) => l.startsWith('f ')).length;
+    const faces = obj
+      .filter((l) => l.startsWith('f '))
+      .map((l) =>
+        l
+          .slice(2)
+          .split(' ')
+          .map((x) => Number(x.split('//')[0])),
+      );
+    const cageFaces = readFileSync('public/models/torus.obj', 'utf8')
+      .split('\n')
+      .filter((l) => l.startsWith('f ')).length;
     expect(faces.length).toBe(cageFaces * 2 * 16); // quads → 2 triangles → 16 each at factor 4
     const directed = new Set<string>();
     for (const f of faces) for (let i = 0; i < 3; i++) directed.add(`${f[i]},${f[(i + 1) % 3]}`);
@@ -41,8 +50,15 @@ describe('npm run tessellate', () => {
     const params = join(dir, 'creature.txt');
     const r = run('public/models/creature.obj', '--adaptive', '--lod', '2', '--out', out, '--params', params);
     expect(r.status, r.stderr).toBe(0);
-    const gpu = readFileSync(out, 'utf8').split('\n').filter((l) => l.startsWith('v ')).map((l) => l.slice(2).split(' ').map(Number));
-    const ref = spawnSync(process.execPath, ['node_modules/tsx/dist/cli.mjs', 'scripts/subdiv-cli.ts', '--points', params, 'public/models/creature.obj'], { encoding: 'utf8', timeout: 120_000, maxBuffer: 1 << 28 });
+    const gpu = readFileSync(out, 'utf8')
+      .split('\n')
+      .filter((l) => l.startsWith('v '))
+      .map((l) => l.slice(2).split(' ').map(Number));
+    const ref = spawnSync(
+      process.execPath,
+      ['node_modules/tsx/dist/cli.mjs', 'scripts/subdiv-cli.ts', '--points', params, 'public/models/creature.obj'],
+      { encoding: 'utf8', timeout: 120_000, maxBuffer: 1 << 28 },
+    );
     expect(ref.status, ref.stderr).toBe(0);
     const points = JSON.parse(ref.stdout).points as { P: number[] }[];
     expect(points.length).toBe(gpu.length);
@@ -57,15 +73,20 @@ describe('npm run tessellate', () => {
     expect(worst).toBeLessThan(1e-5);
   });
 
-  it('--stats prints one JSON line whose counts are the cage\'s and the written OBJ\'s', () => {
+  it("--stats prints one JSON line whose counts are the cage's and the written OBJ's", () => {
     const model = 'public/models/creased-box.obj';
     const out = join(dir, 'stats.obj');
     const r = run(model, '--fixed', '4', '--stats', '--out', out);
     expect(r.status, r.stderr).toBe(0);
-    const lines = r.stdout.trim().split('\n').filter((l) => l.startsWith('{'));
+    const lines = r.stdout
+      .trim()
+      .split('\n')
+      .filter((l) => l.startsWith('{'));
     expect(lines.length).toBe(1);
     const s = JSON.parse(lines[0]);
-    const cageFaces = readFileSync(model, 'utf8').split('\n').filter((l) => l.startsWith('f ')).length;
+    const cageFaces = readFileSync(model, 'utf8')
+      .split('\n')
+      .filter((l) => l.startsWith('f ')).length;
     const obj = readFileSync(out, 'utf8').split('\n');
     expect(s.faces).toBe(cageFaces);
     expect(s.vertices).toBe(obj.filter((l) => l.startsWith('v ')).length);

@@ -17,20 +17,24 @@ import type { Cage } from '../src/mesh/types.ts';
 const tables = bakeTables(64);
 afterAll(() => releaseDevice());
 
-
 const camera = testCamera;
 
 // Pipelines compile once per capacity setting (SwiftShader compiles slowly).
 const tessellators = new Map<string, Tessellator>();
 afterAll(() => tessellators.forEach((t) => t.destroy()));
 
-async function tessellate(cage: Cage, params: (m: PreparedMesh) => FactorParams, opts: { vertexCapacity?: number; triangleCapacity?: number } = {}) {
+async function tessellate(
+  cage: Cage,
+  params: (m: PreparedMesh) => FactorParams,
+  opts: { vertexCapacity?: number; triangleCapacity?: number } = {},
+) {
   const device = await getDevice();
   const mesh = prepareMesh(cage);
   device.pushErrorScope('validation');
   const key = JSON.stringify(opts);
   let tess = tessellators.get(key);
-  if (!tess) tessellators.set(key, (tess = Tessellator.create(device, tables, { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20, ...opts })));
+  if (!tess)
+    tessellators.set(key, (tess = Tessellator.create(device, tables, { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20, ...opts })));
   tess.setMesh(mesh);
   const enc = device.createCommandEncoder({ label: 'test rebuild' });
   tess.encode(enc, params(mesh));
@@ -53,11 +57,15 @@ describe('compute tessellator', () => {
     for (const setting of ['fixed 1', 'fixed 5.5', 'fixed 16', 'adaptive near', 'adaptive far'] as const) {
       it(`${name}, ${setting}: matches the CPU and is watertight`, async () => {
         const params = (m: PreparedMesh) =>
-          setting === 'fixed 1' ? camera(m, 4, 1)
-          : setting === 'fixed 5.5' ? camera(m, 4, 5.5)
-          : setting === 'fixed 16' ? camera(m, 4, 16)
-          : setting === 'adaptive near' ? camera(m, 1.5 * m.size, undefined, 4)
-          : camera(m, 6 * m.size);
+          setting === 'fixed 1'
+            ? camera(m, 4, 1)
+            : setting === 'fixed 5.5'
+              ? camera(m, 4, 5.5)
+              : setting === 'fixed 16'
+                ? camera(m, 4, 16)
+                : setting === 'adaptive near'
+                  ? camera(m, 1.5 * m.size, undefined, 4)
+                  : camera(m, 6 * m.size);
         const { mesh, out, edgeF, error } = await tessellate(make(), params);
         expect(error?.message).toBeUndefined();
         const report = checkTessellation(mesh, edgeF, out, { closed });
@@ -110,8 +118,13 @@ import { edgeFactor } from '../src/gpu/factors.ts';
 import { ONE } from '../src/pattern/fixed.ts';
 
 const models: [string, string, boolean][] = [
-  ['creased-box', creasedBox, true], ['creature', creature, true], ['gear', gear, true], ['icosphere', icosphere, true],
-  ['pawn', pawn, true], ['sheet', sheetModel, false], ['torus', torusModel, true],
+  ['creased-box', creasedBox, true],
+  ['creature', creature, true],
+  ['gear', gear, true],
+  ['icosphere', icosphere, true],
+  ['pawn', pawn, true],
+  ['sheet', sheetModel, false],
+  ['torus', torusModel, true],
 ];
 
 describe('compute tessellator on the project models', () => {
@@ -142,7 +155,13 @@ describe('compute tessellator on the project models', () => {
       const [a, b] = [mesh.edgeVerts[2 * e], mesh.edgeVerts[2 * e + 1]];
       const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
       const cpu = edgeFactor(v(mesh.positions, a), v(mesh.positions, b), v(mesh.normals, a), v(mesh.normals, b), {
-        mode: 'adaptive', fixedFactor: 1, lodScale: fp.lodScale, viewProj: fp.viewProj, eye: fp.eye, pixelAngle: fp.fovY / fp.viewportHeight, maxFactor: 64,
+        mode: 'adaptive',
+        fixedFactor: 1,
+        lodScale: fp.lodScale,
+        viewProj: fp.viewProj,
+        eye: fp.eye,
+        pixelAngle: fp.fovY / fp.viewportHeight,
+        maxFactor: 64,
       });
       const gpu = edgeF[e] / ONE;
       // f32 against f64: the same within 1e-4 relative, except where a culling test sits on its threshold.

@@ -2,7 +2,18 @@
 // and "linear all" interpolation over quads and n-gon sub-faces (src/mesh/uv.ts).
 import { describe, expect, it } from 'vitest';
 import {
-  CageError, buildTopology, loadCage, makeCage, uvTexelCoverage, parseObj, uvAt, uvAtSubFace, uvCoverage, uvSeams, writeObj, requireUvs,
+  CageError,
+  buildTopology,
+  loadCage,
+  makeCage,
+  uvTexelCoverage,
+  parseObj,
+  uvAt,
+  uvAtSubFace,
+  uvCoverage,
+  uvSeams,
+  writeObj,
+  requireUvs,
 } from '../src/mesh/index.ts';
 
 // Three quads on a sheet: quads A (0) and B (1) are separate uv islands (edge 2-5, 1-based, is a
@@ -51,20 +62,28 @@ describe('face-varying UVs in the mesh layer', () => {
     expect(uvCoverage(cage)).toBe('partial');
     expect(warnings.find((w) => w.line === 8 && /texture coordinates/.test(w.message))).toBeDefined();
     expect(() => requireUvs(cage)).toThrow(CageError);
-    try { requireUvs(cage); } catch (e) { expect((e as CageError).issues[0].line).toBe(8); }
+    try {
+      requireUvs(cage);
+    } catch (e) {
+      expect((e as CageError).issues[0].line).toBe(8);
+    }
     expect(uvCoverage(loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n').cage)).toBe('none');
   });
 
   it('a vt index out of range names the face line', () => {
     expect(() => loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nf 1/1 2/2 3/1\n')).toThrow(/line 5|texture coordinate index 2/);
-    try { loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nf 1/1 2/2 3/1\n'); } catch (e) {
+    try {
+      loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nf 1/1 2/2 3/1\n');
+    } catch (e) {
       expect((e as CageError).issues.some((i) => i.line === 5 && /texture coordinate index 2 is out of range/.test(i.message))).toBe(true);
     }
   });
 
   const pent = (): ReturnType<typeof loadCage>['cage'] =>
-    loadCage('v 0 0 0\nv 1 0 0\nv 1.3 0.9 0\nv 0.5 1.5 0\nv -0.3 0.9 0\n' +
-      'vt 0.1 0.2\nvt 0.9 0.1\nvt 1 0.8\nvt 0.5 1\nvt 0 0.7\nf 1/1 2/2 3/3 4/4 5/5\n').cage;
+    loadCage(
+      'v 0 0 0\nv 1 0 0\nv 1.3 0.9 0\nv 0.5 1.5 0\nv -0.3 0.9 0\n' +
+        'vt 0.1 0.2\nvt 0.9 0.1\nvt 1 0.8\nvt 0.5 1\nvt 0 0.7\nf 1/1 2/2 3/3 4/4 5/5\n',
+    ).cage;
 
   it('quads are bilinear in (u,v); n-gon sub-faces are bilinear over corner, midpoints and centre', () => {
     const { cage } = loadCage(STRIP);
@@ -78,19 +97,24 @@ describe('face-varying UVs in the mesh layer', () => {
     expect(q.dUvdv[1]).toBeCloseTo(0.5, 15);
     const c = pent();
     const cen = [0, 0];
-    for (let j = 0; j < 5; j++) { cen[0] += c.uvs[2 * j] / 5; cen[1] += c.uvs[2 * j + 1] / 5; }
+    for (let j = 0; j < 5; j++) {
+      cen[0] += c.uvs[2 * j] / 5;
+      cen[1] += c.uvs[2 * j + 1] / 5;
+    }
     for (let k = 0; k < 5; k++) {
       expect(uvAtSubFace(c, 0, k, 0, 0).uv).toEqual([c.uvs[2 * k], c.uvs[2 * k + 1]]);
       const m = uvAtSubFace(c, 0, k, 1, 1).uv;
       expect(m[0]).toBeCloseTo(cen[0], 15);
       expect(m[1]).toBeCloseTo(cen[1], 15);
       // The midpoint of edge k → k+1 is reached from both sub-faces that share it.
-      const a = uvAtSubFace(c, 0, k, 1, 0).uv, b = uvAtSubFace(c, 0, (k + 1) % 5, 0, 1).uv;
+      const a = uvAtSubFace(c, 0, k, 1, 0).uv,
+        b = uvAtSubFace(c, 0, (k + 1) % 5, 0, 1).uv;
       expect(a[0]).toBeCloseTo(b[0], 15);
       expect(a[1]).toBeCloseTo(b[1], 15);
     }
     // Derivatives match central differences of the interpolant.
-    const d = 1e-6, p = uvAtSubFace(c, 0, 2, 0.3, 0.6);
+    const d = 1e-6,
+      p = uvAtSubFace(c, 0, 2, 0.3, 0.6);
     const fu = [uvAtSubFace(c, 0, 2, 0.3 + d, 0.6).uv, uvAtSubFace(c, 0, 2, 0.3 - d, 0.6).uv];
     const fv = [uvAtSubFace(c, 0, 2, 0.3, 0.6 + d).uv, uvAtSubFace(c, 0, 2, 0.3, 0.6 - d).uv];
     for (let i = 0; i < 2; i++) {
@@ -107,7 +131,8 @@ describe('face-varying UVs in the mesh layer', () => {
     const s = uvSeams(cage, topology);
     const edge = (a: number, b: number): number => {
       for (let e = 0; e < topology.nEdges; e++) {
-        const p = topology.edgeVerts[2 * e], q = topology.edgeVerts[2 * e + 1];
+        const p = topology.edgeVerts[2 * e],
+          q = topology.edgeVerts[2 * e + 1];
         if ((p === a && q === b) || (p === b && q === a)) return e;
       }
       return -1;
@@ -127,7 +152,8 @@ describe('face-varying UVs in the mesh layer', () => {
   it('counts the texels whose centres the uv polygons cover, folding or dropping the outside', () => {
     const quad = (u0: number, u1: number, v0: number, v1: number) => ({
       ...makeCage([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], [[0, 1, 2, 3]]),
-      uvs: Float64Array.from([u0, v0, u1, v0, u1, v1, u0, v1]), faceUvIndices: Int32Array.from([0, 1, 2, 3]),
+      uvs: Float64Array.from([u0, v0, u1, v0, u1, v1, u0, v1]),
+      faceUvIndices: Int32Array.from([0, 1, 2, 3]),
     });
     // A quarter of an 8 x 8 map: 4 x 4 texel centres, in the bottom-left (image rows 4..7, columns 0..3).
     const a = uvTexelCoverage(quad(0, 0.5, 0, 0.5), 8, 8);
@@ -142,8 +168,15 @@ describe('face-varying UVs in the mesh layer', () => {
     expect(uvTexelCoverage(quad(0.75, 1.25, 0, 0.5), 8, 8, 'clamp').covered).toBe(8);
     // Two faces on the same uvs count each texel once.
     const twin = {
-      ...makeCage([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0, 2, 1, 0], [[0, 1, 2, 3], [1, 4, 5, 2]]),
-      uvs: Float64Array.from([0, 0, 0.5, 0, 0.5, 0.5, 0, 0.5]), faceUvIndices: Int32Array.from([0, 1, 2, 3, 0, 1, 2, 3]),
+      ...makeCage(
+        [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0, 2, 1, 0],
+        [
+          [0, 1, 2, 3],
+          [1, 4, 5, 2],
+        ],
+      ),
+      uvs: Float64Array.from([0, 0, 0.5, 0, 0.5, 0.5, 0, 0.5]),
+      faceUvIndices: Int32Array.from([0, 1, 2, 3, 0, 1, 2, 3]),
     };
     expect(uvTexelCoverage(twin, 8, 8).covered).toBe(16);
     // A triangle: the centres below its diagonal, and (crossing rule) those on it.

@@ -161,7 +161,11 @@ export abstract class DemoBase {
     this.#recovering = true;
     console.warn(`WebGPU device lost (${info.reason}): ${info.message}`);
     setPageState('lost');
-    showToast(`${info.message || 'no message'} — recreating the device and its resources.`, { kind: 'info', title: 'GPU device lost', timeout: 5000 });
+    showToast(`${info.message || 'no message'} — recreating the device and its resources.`, {
+      kind: 'info',
+      title: 'GPU device lost',
+      timeout: 5000,
+    });
     this.onDeviceLost();
     for (let attempt = 0; attempt < 3; attempt++) {
       try {

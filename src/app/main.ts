@@ -172,7 +172,7 @@ class TessellationDemo extends DemoBase {
     this.#clamps = clamps;
     // Once per device, and again only if a new device clamps differently.
     if (clamps.length && clamps.join('\n') !== before) {
-      showToast(clamps.join('\n'), { kind: 'info', title: 'Clamped to this GPU\'s limits', timeout: 10_000 });
+      showToast(clamps.join('\n'), { kind: 'info', title: "Clamped to this GPU's limits", timeout: 10_000 });
     }
   }
 
@@ -238,7 +238,14 @@ class TessellationDemo extends DemoBase {
     const kinds = this.cc?.data.triKind ?? new Uint8Array();
     const count = [0, 0, 0, 0];
     for (const k of kinds) count[k]++;
-    const hex = (c: readonly number[]) => `#${c.map((x) => Math.round(x * 255).toString(16).padStart(2, '0')).join('')}`;
+    const hex = (c: readonly number[]) =>
+      `#${c
+        .map((x) =>
+          Math.round(x * 255)
+            .toString(16)
+            .padStart(2, '0'),
+        )
+        .join('')}`;
     legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
       (p) => `<li><span class="swatch" style="background:${hex(p.srgb)}"></span>${p.name} <span class="muted">${count[p.kind]}</span></li>`,
     ).join('')}</ul>`;
@@ -307,11 +314,16 @@ class TessellationDemo extends DemoBase {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
-    renderer.render(encoder, target, { viewProj, model: this.#modelMatrix, eye: m.eye }, {
-      wireframe: this.params.wire,
-      cage: this.params.cage,
-      patchColours: this.patchColours,
-    });
+    renderer.render(
+      encoder,
+      target,
+      { viewProj, model: this.#modelMatrix, eye: m.eye },
+      {
+        wireframe: this.params.wire,
+        cage: this.params.cage,
+        patchColours: this.patchColours,
+      },
+    );
   }
 
   /**
@@ -527,15 +539,21 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   };
   const options = Object.fromEntries(BUILTIN_MODELS.map((m) => [m.label, m.name]));
   const modelFolder = gui.addFolder('Model');
-  const picker = modelFolder.add(state, 'model', options).name('cage').onChange((name: string) => {
-    p.model = name;
-    syncUrl(p);
-    void demo.loadBuiltin(name);
-  });
-  modelFolder.add(p, 'up', { 'Z (project models)': 'z', Y: 'y' }).name('up axis').onChange(() => {
-    syncUrl(p);
-    demo.placeModel();
-  });
+  const picker = modelFolder
+    .add(state, 'model', options)
+    .name('cage')
+    .onChange((name: string) => {
+      p.model = name;
+      syncUrl(p);
+      void demo.loadBuiltin(name);
+    });
+  modelFolder
+    .add(p, 'up', { 'Z (project models)': 'z', Y: 'y' })
+    .name('up axis')
+    .onChange(() => {
+      syncUrl(p);
+      demo.placeModel();
+    });
   modelFolder.add(state, 'open').name('open an OBJ file…');
 
   const tess = gui.addFolder('Tessellation');
@@ -543,18 +561,24 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     syncUrl(p);
     demo.invalidateGeometry();
   };
-  tess.add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' }).name('surface').onChange(() => {
-    syncUrl(p);
-    showFlat();
-    void demo.controller.setSurface(p.surface);
-  });
+  tess
+    .add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' })
+    .name('surface')
+    .onChange(() => {
+      syncUrl(p);
+      showFlat();
+      void demo.controller.setSurface(p.surface);
+    });
   const flat = tess.add(p, 'flat').name('flat baseline').onChange(changed);
   const showFlat = () => flat.show(p.surface === 'catmull-clark');
   showFlat();
-  tess.add(p, 'mode', { adaptive: 'adaptive', fixed: 'fixed' }).name('factors').onChange(() => {
-    showMode();
-    changed();
-  });
+  tess
+    .add(p, 'mode', { adaptive: 'adaptive', fixed: 'fixed' })
+    .name('factors')
+    .onChange(() => {
+      showMode();
+      changed();
+    });
   const lod = tess.add(p, 'lod', LOD_RANGE.min, LOD_RANGE.max, 0.05).name('LOD scale').onChange(changed);
   const factor = tess.add(p, 'factor', FACTOR_RANGE.min, FACTOR_RANGE.max, 0.25).name('fixed factor').onChange(changed);
   const showMode = () => {
@@ -568,10 +592,13 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     syncUrl(p);
     demo.requestFrame();
   };
-  view.add(p, 'patches').name('patch colours').onChange(() => {
-    demo.updateLegend();
-    redraw();
-  });
+  view
+    .add(p, 'patches')
+    .name('patch colours')
+    .onChange(() => {
+      demo.updateLegend();
+      redraw();
+    });
   view.add(p, 'wire').name('wireframe').onChange(redraw);
   view.add(p, 'cage').name('cage overlay').onChange(redraw);
   view.add(p, 'spin').name('turntable').onChange(redraw);

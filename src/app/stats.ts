@@ -133,15 +133,29 @@ export function renderStats(s: StatsInput): string {
       const detail = tess.map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
       rows.push(row('tessellation ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>`, 'stats-build'));
     }
-    const draw = Object.entries(s.drawTimes).map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
+    const draw = Object.entries(s.drawTimes)
+      .map(([k, v]) => `${esc(k)} ${ms(v)}`)
+      .join(' · ');
     rows.push(row('draw ms', draw || '…', 'stats-gpu'));
   } else {
     rows.push(row('GPU ms', '<span class="muted">no timestamp-query on this device</span>', 'stats-gpu'));
   }
-  rows.push(row('frame', `${s.frameMs ? `${s.frameMs.toFixed(1)} ms` : 'idle'} · JS ${s.jsMs.toFixed(2)} ms · ${int.format(s.rebuilds)} builds`, 'stats-frame'));
+  rows.push(
+    row(
+      'frame',
+      `${s.frameMs ? `${s.frameMs.toFixed(1)} ms` : 'idle'} · JS ${s.jsMs.toFixed(2)} ms · ${int.format(s.rebuilds)} builds`,
+      'stats-frame',
+    ),
+  );
   if (s.memory) {
     const m = s.memory;
-    rows.push(row('GPU memory', `<b>${mib(m.bytes)}</b> <span class="muted">${int.format(m.buffers)} buffers ${mib(m.bufferBytes)} · ${int.format(m.textures)} textures ${mib(m.textureBytes)}</span>`, 'stats-memory'));
+    rows.push(
+      row(
+        'GPU memory',
+        `<b>${mib(m.bytes)}</b> <span class="muted">${int.format(m.buffers)} buffers ${mib(m.bufferBytes)} · ${int.format(m.textures)} textures ${mib(m.textureBytes)}</span>`,
+        'stats-memory',
+      ),
+    );
   }
   if (s.clamps?.length) rows.push(row('limits', s.clamps.map((c) => `<span class="warn">${esc(c)}</span>`).join('<br>'), 'stats-limits'));
   rows.push(row('adapter', `<span class="muted">${esc(s.adapter)}</span>`));

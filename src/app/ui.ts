@@ -85,7 +85,7 @@ const FATAL_TEXT: Record<GpuProblem | 'lost' | 'other', { title: string; html: s
     html: `<p>This GPU does not offer a WebGPU feature the demo needs.</p>`,
   },
   limit: {
-    title: 'This GPU\'s limits are too small',
+    title: "This GPU's limits are too small",
     html: `<p>The demo needs larger WebGPU limits than this GPU offers.</p>`,
   },
   'device-failed': {

@@ -67,7 +67,8 @@ export class TessDiagramElement extends HTMLElement {
     if (params) for (const [k, v] of new URLSearchParams(params)) input[k.toLowerCase()] = v;
     for (const a of Array.from(this.attributes)) {
       const k = a.name.toLowerCase();
-      if (!EXTRA.includes(k) && k !== 'class' && k !== 'style' && k !== 'id' && !k.startsWith('data-') && !k.startsWith('aria-')) input[k] = a.value;
+      if (!EXTRA.includes(k) && k !== 'class' && k !== 'style' && k !== 'id' && !k.startsWith('data-') && !k.startsWith('aria-'))
+        input[k] = a.value;
     }
     const kindAttr = this.getAttribute('kind');
     const fig = input.fig ? findFigure(input.fig) : null;
@@ -76,9 +77,20 @@ export class TessDiagramElement extends HTMLElement {
     shadow.append(mount);
     const extraMessages: Message[] = [];
     if (kindAttr !== null && kindAttr !== 'line' && kindAttr !== 'triangle') {
-      extraMessages.push({ key: 'kind', text: `kind=${JSON.stringify(kindAttr)} should be "line" or "triangle"; drawing a ${kind} figure.` });
+      extraMessages.push({
+        key: 'kind',
+        text: `kind=${JSON.stringify(kindAttr)} should be "line" or "triangle"; drawing a ${kind} figure.`,
+      });
     }
-    this.player = new DiagramPlayer({ kind, input, mount, styleRoot: shadow, pagesBase: this.getAttribute('base') ?? defaultBase(), headingLevel: 3, extraMessages });
+    this.player = new DiagramPlayer({
+      kind,
+      input,
+      mount,
+      styleRoot: shadow,
+      pagesBase: this.getAttribute('base') ?? defaultBase(),
+      headingLevel: 3,
+      extraMessages,
+    });
     this.player.onReplace = (p) => (this.player = p);
   }
 }

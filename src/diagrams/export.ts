@@ -57,7 +57,8 @@ export async function exportWebm(src: AnimationSource, palette: Palette, onProgr
   const { Output, WebMOutputFormat, BufferTarget, CanvasSource, QUALITY_HIGH, canEncodeVideo } = await import('mediabunny');
   const first = src.frameAt(src.start);
   const { canvas, ctx, w, h } = canvasFor(first, scale);
-  if (!(await canEncodeVideo('vp9', { width: w, height: h }))) throw new Error('this browser cannot encode VP9 video (WebCodecs); try the GIF export');
+  if (!(await canEncodeVideo('vp9', { width: w, height: h })))
+    throw new Error('this browser cannot encode VP9 video (WebCodecs); try the GIF export');
   const output = new Output({ format: new WebMOutputFormat(), target: new BufferTarget() });
   const source = new CanvasSource(canvas, { codec: 'vp9', bitrate: QUALITY_HIGH });
   output.addVideoTrack(source, { frameRate: fps });

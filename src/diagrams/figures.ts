@@ -141,7 +141,8 @@ export const FIGURES: readonly Figure[] = [
     title: 'Every line pattern at one factor',
     caption:
       "All the line patterns stacked at the same factor: the talk's steps from powers of two to Hable's line, and D3D11's four partitionings. Red points are the sliding or newest ones.",
-    query: 'mode=pow2-snap,one-at-a-time,even,odd-first,slow-slide,hable,integer,pow2,fractional_odd,fractional_even&from=1&to=16&duration=10&start=3.5',
+    query:
+      'mode=pow2-snap,one-at-a-time,even,odd-first,slow-slide,hable,integer,pow2,fractional_odd,fractional_even&from=1&to=16&duration=10&start=3.5',
   },
   // ------------------------------------------------------------------------------------ triangle
   {
@@ -213,7 +214,7 @@ export const FIGURES: readonly Figure[] = [
     slide: 'Full pattern',
     title: 'The full pattern: three independent edges',
     caption:
-      "Three edge factors and no inside factor. The grid comes from the bottom and left edges, the strip matches the right edge, and every edge carries exactly its own line, so two triangles that share an edge always agree: no cracks.",
+      'Three edge factors and no inside factor. The grid comes from the bottom and left edges, the strip matches the right edge, and every edge carries exactly its own line, so two triangles that share an edge always agree: no cracks.',
     query: 'f0=2..7..11&f1=3..12..5&f2=6..4..14&duration=10&start=3',
   },
   {
@@ -222,8 +223,9 @@ export const FIGURES: readonly Figure[] = [
     slide: 'Each edge moves on its own',
     title: 'Each edge moves on its own',
     caption:
-      "Drop one edge at a time to 1 and bring it back. In D3D11 (left) the outer strip absorbs the change and the interior, driven by the inside factor, stays as it is. In the clamped pattern (right) each edge keeps its own line too: the grid follows the bottom and left edges, and the strip absorbs the right one.",
-    query: 'mode=fractional_even,clamped&f0=8..1..8..8..8..8..8&f1=8..8..8..1..8..8..8&f2=8..8..8..8..8..1..8&inside=8&loop=repeat&duration=12&start=1.2',
+      'Drop one edge at a time to 1 and bring it back. In D3D11 (left) the outer strip absorbs the change and the interior, driven by the inside factor, stays as it is. In the clamped pattern (right) each edge keeps its own line too: the grid follows the bottom and left edges, and the strip absorbs the right one.',
+    query:
+      'mode=fractional_even,clamped&f0=8..1..8..8..8..8..8&f1=8..8..8..1..8..8..8&f2=8..8..8..8..8..1..8&inside=8&loop=repeat&duration=12&start=1.2',
   },
   {
     id: 'inefficient-16',
@@ -240,7 +242,7 @@ export const FIGURES: readonly Figure[] = [
     slide: 'DX11 vs. clamped: varied factors',
     title: 'Long, thin triangles',
     caption:
-      "A long thin triangle wants few points across and many along. D3D11 has a single inside factor: low, and the interior is too coarse along the triangle; high, and it is far too fine across it (it sweeps 2 → 16 here). The clamped pattern takes its columns from the short edge and its rows from a long one.",
+      'A long thin triangle wants few points across and many along. D3D11 has a single inside factor: low, and the interior is too coarse along the triangle; high, and it is far too fine across it (it sweeps 2 → 16 here). The clamped pattern takes its columns from the short edge and its rows from a long one.',
     query: 'mode=fractional_even,clamped&shape=thin&f0=2&f1=16&f2=16&inside=2..16&duration=7&start=3',
   },
   {

@@ -107,7 +107,8 @@ function drawRows(b: SceneBuilder, p: LineParams, f: number, top: number, x0: nu
       const len = (pat.x[i] - pat.x[i - 1]) / ONE;
       if (p.segments) b.line(X(a), y, X(Math.min(1, e)), y, segmentRole(len, f), 3.5);
       const w = X(Math.min(1, e)) - X(a);
-      if (p.labels && e <= 1 + 1e-9 && w >= 12) b.text((X(a) + X(e)) / 2, y - 10, (len * f).toFixed(w >= 34 ? 2 : 1), 10, 'muted', { anchor: 'middle', mono: true });
+      if (p.labels && e <= 1 + 1e-9 && w >= 12)
+        b.text((X(a) + X(e)) / 2, y - 10, (len * f).toFixed(w >= 34 ? 2 : 1), 10, 'muted', { anchor: 'middle', mono: true });
     }
     // Points: still ones in ink, moving (newest or sliding) ones in red, on top.
     const still: number[] = [];
@@ -151,7 +152,16 @@ export interface Trace {
 const traceCache = new Map<string, Trace>();
 
 /** Every point's track over [lo, hi] (samples uniform in the eased factor). Cached. */
-export function computeTrace(mode: LineMode, lo: number, hi: number, log: boolean, maxFactor: number, half: boolean, follow: number | null, samples = 480): Trace {
+export function computeTrace(
+  mode: LineMode,
+  lo: number,
+  hi: number,
+  log: boolean,
+  maxFactor: number,
+  half: boolean,
+  follow: number | null,
+  samples = 480,
+): Trace {
   const key = [mode, lo, hi, log, maxFactor, half, follow, samples].join('|');
   const hit = traceCache.get(key);
   if (hit) return hit;
@@ -278,8 +288,10 @@ function drawTrace(b: SceneBuilder, p: LineParams, f: number, width: number, cou
     }
     b.text(x0, top - 46, LINE_MODE_LABEL[mode], 13.5, 'ink', { weight: 600 });
     b.text(x0, top - 30, countsText(counts[counts.length - 1]), 11, 'muted');
-    for (const v of [0, 0.5, 1]) b.text(X(v), top + ph + 16, fmtPos(v), 10.5, 'muted', { anchor: v === 0 ? 'start' : v === 1 ? 'end' : 'middle' });
-    for (const m of p.marks) if (m !== 0.5 && m !== 0 && m !== 1) b.text(X(m), top + ph + 16, fmtPos(m), 10.5, 'muted', { anchor: 'middle' });
+    for (const v of [0, 0.5, 1])
+      b.text(X(v), top + ph + 16, fmtPos(v), 10.5, 'muted', { anchor: v === 0 ? 'start' : v === 1 ? 'end' : 'middle' });
+    for (const m of p.marks)
+      if (m !== 0.5 && m !== 0 && m !== 1) b.text(X(m), top + ph + 16, fmtPos(m), 10.5, 'muted', { anchor: 'middle' });
   });
   if (p.half) b.text(width - right, top + ph + 34, 'position on the half-edge (½ of the edge = 1)', 10.5, 'muted', { anchor: 'end' });
   return top + ph + (p.half ? 44 : 28);

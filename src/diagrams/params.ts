@@ -78,7 +78,24 @@ export interface Parsed<P extends Params = Params> {
   figure: Figure | null;
 }
 
-const COMMON_KEYS = ['fig', 't', 'start', 'autoplay', 'speed', 'duration', 'hold', 'loop', 'ease', 'snap', 'chrome', 'caption', 'theme', 'labels', 'maxfactor', 'embed'];
+const COMMON_KEYS = [
+  'fig',
+  't',
+  'start',
+  'autoplay',
+  'speed',
+  'duration',
+  'hold',
+  'loop',
+  'ease',
+  'snap',
+  'chrome',
+  'caption',
+  'theme',
+  'labels',
+  'maxfactor',
+  'embed',
+];
 const LINE_KEYS = ['mode', 'factor', 'from', 'to', 'view', 'track', 'half', 'marks', 'segments'];
 const TRI_KEYS = ['mode', 'from', 'to', 'f0', 'f1', 'f2', 'inside', 'reverse', 'stage', 'shape', 'loops', 'points'];
 
@@ -179,7 +196,10 @@ class Reader {
     }
     const vals = parts.map((p) => (p === '' ? NaN : Number(p)));
     if (vals.some((v) => !Number.isFinite(v))) {
-      this.say(k, `${k}=${JSON.stringify(s)} is not a factor (a number such as 5.5, or key values such as 1..16); using ${def.join('..')}.`);
+      this.say(
+        k,
+        `${k}=${JSON.stringify(s)} is not a factor (a number such as 5.5, or key values such as 1..16); using ${def.join('..')}.`,
+      );
       return def;
     }
     const clamped = vals.map((v) => Math.min(hi, Math.max(lo, v)));
@@ -191,7 +211,10 @@ class Reader {
     if (s === undefined) return def;
     const out: T[] = [];
     const bad: string[] = [];
-    for (const part of s.split(',').map((p) => p.trim()).filter(Boolean)) {
+    for (const part of s
+      .split(',')
+      .map((p) => p.trim())
+      .filter(Boolean)) {
       const m = resolveMode(part, options);
       if (m === null) bad.push(part);
       else if (!out.includes(m)) out.push(m);
@@ -218,7 +241,10 @@ function isPow2(n: number): boolean {
 }
 
 /** Parse (and validate) the parameters of a `kind` figure. Never throws. */
-export function parseParams<K extends Kind>(kind: K, input: string | URLSearchParams | Record<string, string | null | undefined>): Parsed<K extends 'line' ? LineParams : TriParams> {
+export function parseParams<K extends Kind>(
+  kind: K,
+  input: string | URLSearchParams | Record<string, string | null | undefined>,
+): Parsed<K extends 'line' ? LineParams : TriParams> {
   let given = toRaw(input);
   const pre: Message[] = [];
   let figure: Figure | null = null;
@@ -226,7 +252,11 @@ export function parseParams<K extends Kind>(kind: K, input: string | URLSearchPa
   if (figId !== undefined) {
     const f = findFigure(figId.trim());
     if (!f) pre.push({ key: 'fig', text: `there is no figure ${JSON.stringify(figId)}; see the diagram index for the list.` });
-    else if (f.kind !== kind) pre.push({ key: 'fig', text: `figure ${JSON.stringify(figId)} is a ${f.kind} figure, not a ${kind} figure; open ${f.kind}.html?fig=${f.id}.` });
+    else if (f.kind !== kind)
+      pre.push({
+        key: 'fig',
+        text: `figure ${JSON.stringify(figId)} is a ${f.kind} figure, not a ${kind} figure; open ${f.kind}.html?fig=${f.id}.`,
+      });
     else {
       figure = f;
       given = mergePreset(kind, f, given);
@@ -304,9 +334,14 @@ export function parseParams<K extends Kind>(kind: K, input: string | URLSearchPa
     const from = r.num('from', 1, 1, maxFactor, 'a factor');
     const to = r.num('to', r.has('from') ? Math.min(maxFactor, Math.max(8, from)) : 8, 1, maxFactor, 'a factor');
     const all: Track = from === to ? [from] : [from, to];
-    const factors: [Track, Track, Track] = [r.track('f0', all, 1, maxFactor), r.track('f1', all, 1, maxFactor), r.track('f2', all, 1, maxFactor)];
+    const factors: [Track, Track, Track] = [
+      r.track('f0', all, 1, maxFactor),
+      r.track('f1', all, 1, maxFactor),
+      r.track('f2', all, 1, maxFactor),
+    ];
     const inside = r.has('inside') ? r.track('inside', [8], 1, 64) : null;
-    if (inside && !modes.some((m) => m !== 'clamped')) r.say('inside', 'inside applies to the D3D11 modes only: the clamped pattern has no inside factor (ignored).');
+    if (inside && !modes.some((m) => m !== 'clamped'))
+      r.say('inside', 'inside applies to the D3D11 modes only: the clamped pattern has no inside factor (ignored).');
     let reverse: [boolean, boolean, boolean] = [false, false, false];
     if (r.has('reverse')) {
       const s = (r.raw.get('reverse') as string).replace(/,/g, '').trim();

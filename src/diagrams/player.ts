@@ -45,7 +45,11 @@ function injectStyle(root: Document | ShadowRoot): void {
 }
 
 type Attrs = Record<string, string | number | boolean | undefined>;
-function h<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Attrs = {}, ...children: (Node | string | null | undefined)[]): HTMLElementTagNameMap[K] {
+function h<K extends keyof HTMLElementTagNameMap>(
+  tag: K,
+  attrs: Attrs = {},
+  ...children: (Node | string | null | undefined)[]
+): HTMLElementTagNameMap[K] {
   const el = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs)) {
     if (v === undefined || v === false) continue;
@@ -58,7 +62,8 @@ function h<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Attrs = {}, ...
 }
 
 const ICON_PLAY = '<svg width="12" height="12" viewBox="0 0 12 12" aria-hidden="true"><path d="M2 1l9 5-9 5z" fill="currentColor"/></svg>';
-const ICON_PAUSE = '<svg width="12" height="12" viewBox="0 0 12 12" aria-hidden="true"><path d="M2 1h3v10H2zM7 1h3v10H7z" fill="currentColor"/></svg>';
+const ICON_PAUSE =
+  '<svg width="12" height="12" viewBox="0 0 12 12" aria-hidden="true"><path d="M2 1h3v10H2zM7 1h3v10H7z" fill="currentColor"/></svg>';
 
 const GENERIC_CAPTION: Record<Kind, [string, string]> = {
   line: ['Line patterns', 'Points of each line pattern at the same tessellation factor. Red points are sliding or new.'],
@@ -121,16 +126,31 @@ export class DiagramPlayer {
     this.els = { counts: h('output', { class: 'td-counts', 'data-testid': 'counts', 'aria-live': 'off' }), sliders: new Map() };
     const level = Math.min(6, Math.max(1, opts.headingLevel ?? 2));
     const head = p.caption
-      ? h('header', { class: 'td-head' }, h(`h${level}` as 'h2', { class: 'td-title', text: this.title }), h('p', { class: 'td-caption', 'data-testid': 'caption', text: caption }))
+      ? h(
+          'header',
+          { class: 'td-head' },
+          h(`h${level}` as 'h2', { class: 'td-title', text: this.title }),
+          h('p', { class: 'td-caption', 'data-testid': 'caption', text: caption }),
+        )
       : null;
     const msgs = h('div', { class: 'td-msgs', role: 'alert', 'data-testid': 'messages', hidden: this.messages.length === 0 });
     if (this.messages.length) {
-      msgs.append(h('strong', { text: 'Some parameters were not understood: ' }), h('ul', {}, ...this.messages.map((m) => h('li', { text: m.text }))));
+      msgs.append(
+        h('strong', { text: 'Some parameters were not understood: ' }),
+        h('ul', {}, ...this.messages.map((m) => h('li', { text: m.text }))),
+      );
     }
     const stage = h('div', { class: 'td-stage' }, this.canvas);
     this.root = h(
       'figure',
-      { class: 'td', tabindex: 0, 'data-kind': opts.kind, 'data-testid': 'diagram', 'aria-label': this.title, 'aria-keyshortcuts': 'Space K ArrowLeft ArrowRight Home End' },
+      {
+        class: 'td',
+        tabindex: 0,
+        'data-kind': opts.kind,
+        'data-testid': 'diagram',
+        'aria-label': this.title,
+        'aria-keyshortcuts': 'Space K ArrowLeft ArrowRight Home End',
+      },
       head,
       msgs,
       stage,
@@ -225,7 +245,7 @@ export class DiagramPlayer {
     c.style.aspectRatio = `${scene.width} / ${scene.height}`;
     c.style.maxWidth = `${Math.round(scene.width * 1.3)}px`;
     const cssW = c.clientWidth || scene.width;
-    const dpr = (typeof devicePixelRatio === 'number' && devicePixelRatio > 0 ? devicePixelRatio : 1);
+    const dpr = typeof devicePixelRatio === 'number' && devicePixelRatio > 0 ? devicePixelRatio : 1;
     const pw = Math.max(1, Math.round(cssW * dpr));
     const ph = Math.max(1, Math.round((pw * scene.height) / scene.width));
     if (c.width !== pw || c.height !== ph) {
@@ -247,7 +267,13 @@ export class DiagramPlayer {
         const what = this.params.kind === 'line' ? ['point', 'segment', 'zero-length'] : ['vertex', 'triangle', 'degenerate'];
         const span = h(
           'span',
-          { class: 'td-count', 'data-mode': k.mode, 'data-vertices': k.vertices, 'data-triangles': k.triangles, 'data-degenerate': k.degenerate },
+          {
+            class: 'td-count',
+            'data-mode': k.mode,
+            'data-vertices': k.vertices,
+            'data-triangles': k.triangles,
+            'data-degenerate': k.degenerate,
+          },
           h('b', { text: `${k.label}:` }),
           ` ${plural(k.vertices, what[0], what[0] === 'vertex' ? 'vertices' : `${what[0]}s`)}, ${plural(k.triangles, what[1])}, ${k.degenerate} ${what[2]}`,
         );
@@ -293,7 +319,8 @@ export class DiagramPlayer {
       // A figure whose factors never change has nothing to play (a sweep makes it move again).
       b.disabled = still;
       b.title = still ? 'Every factor is fixed in this figure: set a sweep to animate it' : '';
-      b.innerHTML = (this.playing ? ICON_PAUSE : ICON_PLAY) + (b === this.els.play ? `<span>${this.playing ? 'Pause' : 'Play'}</span>` : '');
+      b.innerHTML =
+        (this.playing ? ICON_PAUSE : ICON_PLAY) + (b === this.els.play ? `<span>${this.playing ? 'Pause' : 'Play'}</span>` : '');
       b.setAttribute('aria-label', this.playing ? 'Pause animation' : 'Play animation');
       b.dataset.state = this.playing ? 'playing' : 'paused';
     }
@@ -386,7 +413,16 @@ export class DiagramPlayer {
     // Row 1: transport.
     els.play = h('button', { class: 'td-play', type: 'button', 'data-testid': 'play', 'aria-keyshortcuts': 'Space' });
     els.play.addEventListener('click', () => this.setPlaying(!this.playing));
-    els.scrub = h('input', { class: 'td-scrub', type: 'range', min: 0, max: period(p.timing), step: 0.01, value: 0, 'aria-label': 'Time', 'data-testid': 'scrub' });
+    els.scrub = h('input', {
+      class: 'td-scrub',
+      type: 'range',
+      min: 0,
+      max: period(p.timing),
+      step: 0.01,
+      value: 0,
+      'aria-label': 'Time',
+      'data-testid': 'scrub',
+    });
     els.scrub.addEventListener('input', () => {
       this.setPlaying(false);
       this.setTime(Number(els.scrub!.value));
@@ -399,7 +435,14 @@ export class DiagramPlayer {
       p.speed = Number(speed.value);
       this.changed();
     });
-    const transport = h('div', { class: 'td-row' }, els.play, els.scrub, els.time, h('label', {}, h('span', { class: 'td-sr', text: 'Speed' }), speed));
+    const transport = h(
+      'div',
+      { class: 'td-row' },
+      els.play,
+      els.scrub,
+      els.time,
+      h('label', {}, h('span', { class: 'td-sr', text: 'Speed' }), speed),
+    );
 
     // Row 2: modes.
     const all = p.kind === 'line' ? LINE_MODES : TRI_MODES;
@@ -446,15 +489,53 @@ export class DiagramPlayer {
       opts.append(h('label', { class: 'td-chip' }, box, h('span', { text: label })));
     };
     if (p.kind === 'line') {
-      select('View', ['line', 'trace'], () => p.view, (v) => (p.view = v as typeof p.view), 'view');
-      toggle('segments by size', () => p.segments, (v) => (p.segments = v));
-      toggle('weights', () => p.labels, (v) => (p.labels = v));
-      toggle('whole factors', () => p.snap, (v) => (p.snap = v));
+      select(
+        'View',
+        ['line', 'trace'],
+        () => p.view,
+        (v) => (p.view = v as typeof p.view),
+        'view',
+      );
+      toggle(
+        'segments by size',
+        () => p.segments,
+        (v) => (p.segments = v),
+      );
+      toggle(
+        'weights',
+        () => p.labels,
+        (v) => (p.labels = v),
+      );
+      toggle(
+        'whole factors',
+        () => p.snap,
+        (v) => (p.snap = v),
+      );
     } else {
-      select('Stage', STAGES, () => p.stage, (v) => (p.stage = v as typeof p.stage), 'stage');
-      select('Shape', SHAPES, () => p.shape, (v) => (p.shape = v as typeof p.shape), 'shape');
-      toggle('edge loops', () => p.loops, (v) => (p.loops = v));
-      toggle('vertices', () => p.points, (v) => (p.points = v));
+      select(
+        'Stage',
+        STAGES,
+        () => p.stage,
+        (v) => (p.stage = v as typeof p.stage),
+        'stage',
+      );
+      select(
+        'Shape',
+        SHAPES,
+        () => p.shape,
+        (v) => (p.shape = v as typeof p.shape),
+        'shape',
+      );
+      toggle(
+        'edge loops',
+        () => p.loops,
+        (v) => (p.loops = v),
+      );
+      toggle(
+        'vertices',
+        () => p.points,
+        (v) => (p.points = v),
+      );
     }
     els.theme = h('button', { type: 'button', 'data-testid': 'theme' });
     const themeLabel = () => (els.theme!.textContent = `Theme: ${p.theme}`);
@@ -522,7 +603,13 @@ export class DiagramPlayer {
     const reset = h('button', { type: 'button', text: 'Reset', 'data-testid': 'reset' });
     reset.addEventListener('click', () => this.replaceWith(this.initialQuery));
     exp.append(copy, reset);
-    els.embed = h('textarea', { readonly: true, 'aria-label': 'Link and embed code', 'data-testid': 'embed-code', rows: 5, spellcheck: 'false' });
+    els.embed = h('textarea', {
+      readonly: true,
+      'aria-label': 'Link and embed code',
+      'data-testid': 'embed-code',
+      rows: 5,
+      spellcheck: 'false',
+    });
     els.embed.value = this.embedCode(toQuery(p));
     const embed = h('details', { class: 'td-embed' }, h('summary', { text: 'Link and embed code' }), els.embed);
 
@@ -539,7 +626,15 @@ export class DiagramPlayer {
     this.els.sliders.clear();
     box.replaceChildren();
     const add = (name: string, label: string, max: number, pin: (v: number) => void) => {
-      const input = h('input', { type: 'range', min: 0, max: 1000, step: 1, 'aria-label': `${label} (drag to pin)`, 'data-max': max, 'data-testid': `slider-${name}` });
+      const input = h('input', {
+        type: 'range',
+        min: 0,
+        max: 1000,
+        step: 1,
+        'aria-label': `${label} (drag to pin)`,
+        'data-max': max,
+        'data-testid': `slider-${name}`,
+      });
       const out = h('output', { text: '' });
       input.addEventListener('input', () => {
         pin(fromPos(Number(input.value), max));
@@ -551,7 +646,15 @@ export class DiagramPlayer {
     };
     const range = (label: string, get: () => [number, number], set: (a: number, b: number) => void, max: number) => {
       const [a, b] = get();
-      const from = h('input', { type: 'number', min: 1, max, step: 0.1, value: a, 'aria-label': `${label} from`, 'data-testid': 'sweep-from' });
+      const from = h('input', {
+        type: 'number',
+        min: 1,
+        max,
+        step: 0.1,
+        value: a,
+        'aria-label': `${label} from`,
+        'data-testid': 'sweep-from',
+      });
       const to = h('input', { type: 'number', min: 1, max, step: 0.1, value: b, 'aria-label': `${label} to`, 'data-testid': 'sweep-to' });
       const apply = () => {
         const x = Math.min(max, Math.max(1, Number(from.value) || 1));
@@ -562,12 +665,26 @@ export class DiagramPlayer {
       };
       from.addEventListener('change', apply);
       to.addEventListener('change', apply);
-      box.append(h('div', { class: 'td-slider', style: 'grid-template-columns: auto auto auto auto' }, h('span', { class: 'td-label', text: 'sweep' }), from, h('span', { class: 'td-label', text: 'to' }), to));
+      box.append(
+        h(
+          'div',
+          { class: 'td-slider', style: 'grid-template-columns: auto auto auto auto' },
+          h('span', { class: 'td-label', text: 'sweep' }),
+          from,
+          h('span', { class: 'td-label', text: 'to' }),
+          to,
+        ),
+      );
     };
     const mf = p.maxFactor;
     if (p.kind === 'line') {
       add('factor', 'factor', mf, (v) => (p.factor = [v]));
-      range('Factor', () => [Math.min(...p.factor), Math.max(...p.factor)], (a, b) => (p.factor = a === b ? [a] : [a, b]), mf);
+      range(
+        'Factor',
+        () => [Math.min(...p.factor), Math.max(...p.factor)],
+        (a, b) => (p.factor = a === b ? [a] : [a, b]),
+        mf,
+      );
     } else {
       for (let i = 0; i < 3; i++) add(`f${i}`, `f${i}`, mf, (v) => (p.factors[i] = [v]));
       if (p.modes.some((m) => m !== 'clamped')) {
@@ -575,11 +692,16 @@ export class DiagramPlayer {
       }
       const lo = Math.min(...p.factors.flat());
       const hi = Math.max(...p.factors.flat());
-      range('Edge factors', () => [lo, hi], (a, b) => {
-        const tr = a === b ? [a] : [a, b];
-        p.factors = [tr, tr, tr];
-        p.inside = null;
-      }, mf);
+      range(
+        'Edge factors',
+        () => [lo, hi],
+        (a, b) => {
+          const tr = a === b ? [a] : [a, b];
+          p.factors = [tr, tr, tr];
+          p.inside = null;
+        },
+        mf,
+      );
     }
     if (this.frame) this.updateReadouts(this.frame);
   }

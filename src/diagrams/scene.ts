@@ -5,19 +5,7 @@
  * Nothing here knows about patterns.
  */
 
-export type Role =
-  | 'bg'
-  | 'ink'
-  | 'muted'
-  | 'faint'
-  | 'grid'
-  | 'accent'
-  | 'green'
-  | 'blue'
-  | 'orange'
-  | 'fill'
-  | 'fillAlt'
-  | 'fillOut';
+export type Role = 'bg' | 'ink' | 'muted' | 'faint' | 'grid' | 'accent' | 'green' | 'blue' | 'orange' | 'fill' | 'fillAlt' | 'fillOut';
 
 export type Palette = Record<Role, string>;
 
@@ -115,7 +103,14 @@ export class SceneBuilder {
   dots(pts: number[], r: number, fill: Role, stroke?: Role, width?: number): void {
     if (pts.length) this.shapes.push({ kind: 'dots', pts, r, fill, ...(stroke ? { stroke, width: width ?? 1 } : {}) });
   }
-  text(x: number, y: number, text: string, size: number, role: Role, opts: { anchor?: TextShape['anchor']; weight?: TextShape['weight']; mono?: boolean } = {}): void {
+  text(
+    x: number,
+    y: number,
+    text: string,
+    size: number,
+    role: Role,
+    opts: { anchor?: TextShape['anchor']; weight?: TextShape['weight']; mono?: boolean } = {},
+  ): void {
     this.shapes.push({ kind: 'text', x, y, text, size, role, ...opts });
   }
   build(width: number, height: number, title: string, desc: string): Scene {
@@ -160,7 +155,12 @@ export function sceneToSvg(scene: Scene, palette: Palette, opts: { background?: 
     if (s.kind === 'path') {
       const attrs = [`d="${pathData(s.polys, s.closed)}"`, `fill="${s.fill ? palette[s.fill] : 'none'}"`];
       if (s.stroke) {
-        attrs.push(`stroke="${palette[s.stroke]}"`, `stroke-width="${r2(s.width ?? 1)}"`, 'stroke-linejoin="round"', 'stroke-linecap="round"');
+        attrs.push(
+          `stroke="${palette[s.stroke]}"`,
+          `stroke-width="${r2(s.width ?? 1)}"`,
+          'stroke-linejoin="round"',
+          'stroke-linecap="round"',
+        );
         if (s.dash) attrs.push(`stroke-dasharray="${s.dash.map(r2).join(' ')}"`);
       }
       if (s.opacity !== undefined && s.opacity !== 1) attrs.push(`opacity="${r2(s.opacity)}"`);

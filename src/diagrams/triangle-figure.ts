@@ -55,7 +55,12 @@ export function triFactorsAt(p: TriParams, t: number): TriFactors {
 }
 
 /** The pattern of one panel in frame coordinates (no copies of pattern logic: only relabelling). */
-export function framePattern(mode: TriMode, fc: TriFactors, reverse: readonly [boolean, boolean, boolean], maxFactor: number): FramePattern {
+export function framePattern(
+  mode: TriMode,
+  fc: TriFactors,
+  reverse: readonly [boolean, boolean, boolean],
+  maxFactor: number,
+): FramePattern {
   if (mode === 'clamped') {
     const { framed } = clampedConstruction(fc.edges, reverse, { maxFactor });
     return framed;
@@ -96,10 +101,24 @@ type V2 = [number, number];
 
 /** Corners A, B, C of each shape in a unit box (y down). */
 function shapeCorners(shape: Shape): [V2, V2, V2] {
-  if (shape === 'right') return [[0, 1], [1, 1], [0, 0]];
-  if (shape === 'thin') return [[0, 1], [0.26, 1], [0.13, 0]];
+  if (shape === 'right')
+    return [
+      [0, 1],
+      [1, 1],
+      [0, 0],
+    ];
+  if (shape === 'thin')
+    return [
+      [0, 1],
+      [0.26, 1],
+      [0.13, 0],
+    ];
   const h = Math.sqrt(3) / 2;
-  return [[0, h], [1, h], [0.5, 0]];
+  return [
+    [0, h],
+    [1, h],
+    [0.5, 0],
+  ];
 }
 
 class Mapper {
@@ -110,7 +129,10 @@ class Mapper {
   ) {}
   /** Frame (u, v) in [0, 1] (u toward B, v toward C) to screen. */
   uv(u: number, v: number): V2 {
-    return [this.A[0] + u * (this.B[0] - this.A[0]) + v * (this.C[0] - this.A[0]), this.A[1] + u * (this.B[1] - this.A[1]) + v * (this.C[1] - this.A[1])];
+    return [
+      this.A[0] + u * (this.B[0] - this.A[0]) + v * (this.C[0] - this.A[0]),
+      this.A[1] + u * (this.B[1] - this.A[1]) + v * (this.C[1] - this.A[1]),
+    ];
   }
   /** Fixed-point frame barycentrics of vertex i. */
   vert(bary: number[], i: number): V2 {
@@ -161,7 +183,16 @@ function countsLine(c: PanelCounts): string {
   return `${plural(c.triangles, 'triangle')} · ${plural(c.vertices, 'vertex', 'vertices')} · ${c.degenerate} degenerate`;
 }
 
-function drawMesh(b: SceneBuilder, m: Mapper, pat: FramePattern, from: number, to: number, fill: Role, edges: boolean, loops: boolean): void {
+function drawMesh(
+  b: SceneBuilder,
+  m: Mapper,
+  pat: FramePattern,
+  from: number,
+  to: number,
+  fill: Role,
+  edges: boolean,
+  loops: boolean,
+): void {
   const tris: number[][] = [];
   for (let t = from; t < to; t++) {
     const [a, c, d] = [pat.triangles[3 * t], pat.triangles[3 * t + 1], pat.triangles[3 * t + 2]];
@@ -259,7 +290,8 @@ function drawParallelogram(b: SceneBuilder, box: PanelBox, p: TriParams, fc: Tri
   b.path([...rows, ...cols], { stroke: 'ink', width: 0.8, opacity: 0.8 });
   // Quad diagonals, as the grid's triangles.
   const diag: number[][] = [];
-  for (let i = 0; i + 1 < L.u.length; i++) for (let j = 0; j + 1 < L.v.length; j++) diag.push(flat([m.uv(L.u[i], L.v[j]), m.uv(L.u[i + 1], L.v[j + 1])]));
+  for (let i = 0; i + 1 < L.u.length; i++)
+    for (let j = 0; j + 1 < L.v.length; j++) diag.push(flat([m.uv(L.u[i], L.v[j]), m.uv(L.u[i + 1], L.v[j + 1])]));
   b.path(diag, { stroke: 'ink', width: 0.5, opacity: 0.35 });
   outline(b, m);
   const still: number[] = [];
@@ -287,11 +319,15 @@ function drawClampNoGap(b: SceneBuilder, box: PanelBox, p: TriParams, fc: TriFac
   let count = 0;
   const nb = L.u.length - 1;
   const nl = L.v.length - 1;
-  const area = (a: [number, number], c: [number, number], d: [number, number]) => (c[0] - a[0]) * (d[1] - a[1]) - (c[1] - a[1]) * (d[0] - a[0]);
+  const area = (a: [number, number], c: [number, number], d: [number, number]) =>
+    (c[0] - a[0]) * (d[1] - a[1]) - (c[1] - a[1]) * (d[0] - a[0]);
   for (let j = 0; j < nl; j++) {
     for (let i = 0; i < nb; i++) {
       if (L.u[i] >= 1 - L.v[j] && i > 0) continue; // both corners already on the hypotenuse: nothing left
-      for (const t of [[q(i, j), q(i + 1, j), q(i + 1, j + 1)], [q(i, j), q(i + 1, j + 1), q(i, j + 1)]] as [number, number][][]) {
+      for (const t of [
+        [q(i, j), q(i + 1, j), q(i + 1, j + 1)],
+        [q(i, j), q(i + 1, j + 1), q(i, j + 1)],
+      ] as [number, number][][]) {
         count++;
         if (Math.abs(area(t[0], t[1], t[2])) < 1e-12) {
           degenerate++;
@@ -361,7 +397,12 @@ function drawClamped(b: SceneBuilder, box: PanelBox, p: TriParams, pat: FramePat
   outline(b, m);
 }
 
-function layout(n: number, shape: Shape, stage: TriParams['stage'], modes: TriMode[]): { cols: number; rows: number; S: number; bw: number; bh: number; corners: [V2, V2, V2] } {
+function layout(
+  n: number,
+  shape: Shape,
+  stage: TriParams['stage'],
+  modes: TriMode[],
+): { cols: number; rows: number; S: number; bw: number; bh: number; corners: [V2, V2, V2] } {
   const corners = shapeCorners(shape);
   const withD = stage === 'parallelogram' && modes.includes('clamped');
   const xs = corners.map((c) => c[0]);
@@ -413,13 +454,32 @@ export function triangleFigure(p: TriParams, t: number, title = 'Triangle patter
       if (mode === 'clamped') {
         drawClamped(b, box, p, pat);
         const grid = pat.gridTriangleCount ?? pat.triangleCount;
-        c = p.stage === 'gap'
-          ? { mode, label: 'clamped grid (gap open)', vertices: pat.vertexCount, triangles: grid, degenerate: degenerateCount(pat, 0, grid) }
-          : { mode, label: TRI_MODE_LABEL[mode], vertices: pat.vertexCount, triangles: pat.triangleCount, degenerate: degenerateCount(pat) };
+        c =
+          p.stage === 'gap'
+            ? {
+                mode,
+                label: 'clamped grid (gap open)',
+                vertices: pat.vertexCount,
+                triangles: grid,
+                degenerate: degenerateCount(pat, 0, grid),
+              }
+            : {
+                mode,
+                label: TRI_MODE_LABEL[mode],
+                vertices: pat.vertexCount,
+                triangles: pat.triangleCount,
+                degenerate: degenerateCount(pat),
+              };
       } else {
         drawMesh(b, m, pat, 0, pat.triangleCount, 'fill', true, p.loops);
         outline(b, m);
-        c = { mode, label: TRI_MODE_LABEL[mode], vertices: pat.vertexCount, triangles: pat.triangleCount, degenerate: degenerateCount(pat) };
+        c = {
+          mode,
+          label: TRI_MODE_LABEL[mode],
+          vertices: pat.vertexCount,
+          triangles: pat.triangleCount,
+          degenerate: degenerateCount(pat),
+        };
       }
       if (p.points) drawVertices(b, m, pat, movingVertices(mode, p, fc, pat), pat.vertexCount > 400 ? 1.4 : 2);
     }
@@ -433,9 +493,7 @@ export function triangleFigure(p: TriParams, t: number, title = 'Triangle patter
     b.text(cx, bottom + 44, countsLine(c), 11.5, 'ink', { anchor: 'middle' });
   });
   const H = L.rows * cellH + 4;
-  const factors: FactorValue[] = [
-    ...fc.edges.map((value, i) => ({ name: `f${i}`, value, animated: isAnimated(p.factors[i]) })),
-  ];
+  const factors: FactorValue[] = [...fc.edges.map((value, i) => ({ name: `f${i}`, value, animated: isAnimated(p.factors[i]) }))];
   if (hasD3D) factors.push({ name: 'inside', value: fc.inside, animated: p.inside ? isAnimated(p.inside) : p.factors.some(isAnimated) });
   const desc = `factors ${fc.edges.map(fmtFactor).join(', ')}${hasD3D ? `, inside ${fmtFactor(fc.inside)}` : ''}: ${counts.map((c) => `${c.label} ${countsLine(c)}`).join('; ')}`;
   return { scene: b.build(TRI_WIDTH, H, title, desc), counts, factors };

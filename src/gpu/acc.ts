@@ -48,7 +48,8 @@ export const ACC_SURFACE_WGSL: string = surfaceWgsl;
  */
 export function accFaceParam(mesh: PreparedMesh, cage: Cage, t: number, w: readonly [number, number, number]): [number, number, number] {
   const face = mesh.triFace[t];
-  const start = cage.faceOffsets[face], m = cage.faceOffsets[face + 1] - start;
+  const start = cage.faceOffsets[face],
+    m = cage.faceOffsets[face + 1] - start;
   if (m === 4) {
     const fp = faceParam(mesh, cage, t, w);
     if (!('u' in fp)) throw new Error('quad without (u, v)');
@@ -79,13 +80,21 @@ export class AccPatches {
   private groupCage: GPUBuffer | undefined;
 
   /** Throws AccError (src/subdiv/acc.ts) for cages the schemes do not support (n-gons, boundaries). */
-  constructor(readonly device: GPUDevice, cage: Cage, readonly scheme: AccScheme, topology?: Topology) {
+  constructor(
+    readonly device: GPUDevice,
+    cage: Cage,
+    readonly scheme: AccScheme,
+    topology?: Topology,
+  ) {
     const T = (this.topology = buildAccTopology(cage, scheme, topology));
     const vt = valenceTable(T.maxValence);
     const sections = [T.corners, T.ringOffs, T.ringData, vt.offsets, new Uint32Array(vt.values.buffer)];
     const offs: number[] = [];
     let total = 0;
-    for (const s of sections) { offs.push(total); total += s.length; }
+    for (const s of sections) {
+      offs.push(total);
+      total += s.length;
+    }
     const words = new Uint32Array(Math.max(1, total));
     sections.forEach((s, i) => words.set(s, offs[i]));
     const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC;
@@ -95,7 +104,11 @@ export class AccPatches {
     device.queue.writeBuffer(this.patchBuffer, 0, T.patches);
     this.pointBuffer = device.createBuffer({ label: `acc ${scheme} control points`, size: Math.max(16, 16 * T.nPoints), usage: storage });
     const params = new Uint32Array([T.nPatches, ...offs, 0, 0]);
-    this.paramsBuffer = device.createBuffer({ label: `acc ${scheme} build params`, size: params.byteLength, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    this.paramsBuffer = device.createBuffer({
+      label: `acc ${scheme} build params`,
+      size: params.byteLength,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
     device.queue.writeBuffer(this.paramsBuffer, 0, params);
     let pipe = buildPipelines.get(device);
     if (!pipe) {
@@ -107,7 +120,9 @@ export class AccPatches {
   }
 
   /** Control points in all, and per patch kind (KIND_POINTS), for the stats. */
-  get pointCount(): number { return this.topology.nPoints; }
+  get pointCount(): number {
+    return this.topology.nPoints;
+  }
   static readonly pointsPerKind: readonly number[] = KIND_POINTS;
 
   /** Record the patch build from `cageBuffer` (xyz f32 per vertex at offset 0). */
@@ -146,7 +161,8 @@ export class AccPatches {
    * normals, 3 f32 each. Call after an encode() has been submitted.
    */
   async sample(points: ArrayLike<[number, number, number]>): Promise<{ pos: Float32Array; normal: Float32Array }> {
-    const device = this.device, n = points.length;
+    const device = this.device,
+      n = points.length;
     let pipe = samplePipelines.get(device);
     if (!pipe) {
       const code = accBindingsWgsl(0, 0, 1) + ACC_SURFACE_WGSL + SAMPLE_KERNEL;
@@ -155,11 +171,24 @@ export class AccPatches {
       samplePipelines.set(device, pipe);
     }
     const data = new ArrayBuffer(12 * Math.max(1, n));
-    const u32 = new Uint32Array(data), f32 = new Float32Array(data);
-    for (let i = 0; i < n; i++) { u32[3 * i] = points[i][0]; f32[3 * i + 1] = points[i][1]; f32[3 * i + 2] = points[i][2]; }
-    const input = device.createBuffer({ label: 'acc sample params', size: data.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    const u32 = new Uint32Array(data),
+      f32 = new Float32Array(data);
+    for (let i = 0; i < n; i++) {
+      u32[3 * i] = points[i][0];
+      f32[3 * i + 1] = points[i][1];
+      f32[3 * i + 2] = points[i][2];
+    }
+    const input = device.createBuffer({
+      label: 'acc sample params',
+      size: data.byteLength,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
     device.queue.writeBuffer(input, 0, data);
-    const output = device.createBuffer({ label: 'acc sample results', size: 24 * Math.max(1, n), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
+    const output = device.createBuffer({
+      label: 'acc sample results',
+      size: 24 * Math.max(1, n),
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC,
+    });
     const group = device.createBindGroup({
       label: 'acc samples',
       layout: pipe.getBindGroupLayout(0),
@@ -175,8 +204,12 @@ export class AccPatches {
     const r = new Float32Array(await readBuffer(device, output, 24 * n));
     input.destroy();
     output.destroy();
-    const pos = new Float32Array(3 * n), normal = new Float32Array(3 * n);
-    for (let i = 0; i < n; i++) { pos.set(r.subarray(6 * i, 6 * i + 3), 3 * i); normal.set(r.subarray(6 * i + 3, 6 * i + 6), 3 * i); }
+    const pos = new Float32Array(3 * n),
+      normal = new Float32Array(3 * n);
+    for (let i = 0; i < n; i++) {
+      pos.set(r.subarray(6 * i, 6 * i + 3), 3 * i);
+      normal.set(r.subarray(6 * i + 3, 6 * i + 6), 3 * i);
+    }
     return { pos, normal };
   }
 

@@ -54,9 +54,15 @@ export function triangulateCage(cage: Cage): TriangulatedCage {
       const tri = [cage.faceIndices[a], cage.faceIndices[a + k], cage.faceIndices[a + k + 1]];
       indices.set(tri, t * 3);
       const [i, j, l] = tri;
-      const ux = P[3 * j] - P[3 * i], uy = P[3 * j + 1] - P[3 * i + 1], uz = P[3 * j + 2] - P[3 * i + 2];
-      const vx = P[3 * l] - P[3 * i], vy = P[3 * l + 1] - P[3 * i + 1], vz = P[3 * l + 2] - P[3 * i + 2];
-      const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+      const ux = P[3 * j] - P[3 * i],
+        uy = P[3 * j + 1] - P[3 * i + 1],
+        uz = P[3 * j + 2] - P[3 * i + 2];
+      const vx = P[3 * l] - P[3 * i],
+        vy = P[3 * l + 1] - P[3 * i + 1],
+        vz = P[3 * l + 2] - P[3 * i + 2];
+      const nx = uy * vz - uz * vy,
+        ny = uz * vx - ux * vz,
+        nz = ux * vy - uy * vx;
       for (let c = 0; c < 3; c++) {
         const v = tri[c];
         acc[3 * v] += nx;

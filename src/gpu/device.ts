@@ -100,12 +100,18 @@ export async function createGpu(options: DeviceOptions): Promise<GpuContext> {
     (await gpu.requestAdapter({ powerPreference, featureLevel: options.featureLevel ?? 'core' })) ??
     (options.featureLevel === 'compatibility' ? null : await gpu.requestAdapter({ powerPreference, featureLevel: 'compatibility' }));
   if (!adapter) {
-    throw new GpuUnavailableError('no-adapter', 'requestAdapter() returned null: WebGPU is supported, but no suitable GPU adapter is available (it may be blocklisted).');
+    throw new GpuUnavailableError(
+      'no-adapter',
+      'requestAdapter() returned null: WebGPU is supported, but no suitable GPU adapter is available (it may be blocklisted).',
+    );
   }
 
   const missing = (options.requiredFeatures ?? []).filter((f) => !adapter.features.has(f));
   if (missing.length) {
-    throw new GpuUnavailableError('missing-feature', `This GPU lacks the WebGPU feature${missing.length > 1 ? 's' : ''} ${missing.join(', ')}.`);
+    throw new GpuUnavailableError(
+      'missing-feature',
+      `This GPU lacks the WebGPU feature${missing.length > 1 ? 's' : ''} ${missing.join(', ')}.`,
+    );
   }
   const { requiredLimits, clamps, short } = planLimits(
     adapter.limits,

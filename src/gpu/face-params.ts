@@ -17,15 +17,19 @@ export type FaceParam = { face: number; u: number; v: number } | { face: number;
 
 /** Inverse of the bilinear map P(s,t) = (1−s)(1−t)a + s(1−t)b + st·c + (1−s)t·d (2D), by Newton. */
 export function inverseBilinear(p: [number, number], a: number[], b: number[], c: number[], d: number[]): [number, number] {
-  let s = 0.5, t = 0.5;
+  let s = 0.5,
+    t = 0.5;
   for (let i = 0; i < 50; i++) {
     const fx = (1 - s) * (1 - t) * a[0] + s * (1 - t) * b[0] + s * t * c[0] + (1 - s) * t * d[0] - p[0];
     const fy = (1 - s) * (1 - t) * a[1] + s * (1 - t) * b[1] + s * t * c[1] + (1 - s) * t * d[1] - p[1];
-    const dsx = (1 - t) * (b[0] - a[0]) + t * (c[0] - d[0]), dsy = (1 - t) * (b[1] - a[1]) + t * (c[1] - d[1]);
-    const dtx = (1 - s) * (d[0] - a[0]) + s * (c[0] - b[0]), dty = (1 - s) * (d[1] - a[1]) + s * (c[1] - b[1]);
+    const dsx = (1 - t) * (b[0] - a[0]) + t * (c[0] - d[0]),
+      dsy = (1 - t) * (b[1] - a[1]) + t * (c[1] - d[1]);
+    const dtx = (1 - s) * (d[0] - a[0]) + s * (c[0] - b[0]),
+      dty = (1 - s) * (d[1] - a[1]) + s * (c[1] - b[1]);
     const det = dsx * dty - dsy * dtx;
     if (det === 0) break;
-    const ds = (fx * dty - fy * dtx) / det, dt = (dsx * fy - dsy * fx) / det;
+    const ds = (fx * dty - fy * dtx) / det,
+      dt = (dsx * fy - dsy * fx) / det;
     s -= ds;
     t -= dt;
     if (Math.abs(ds) + Math.abs(dt) < 1e-15) break;
@@ -45,8 +49,14 @@ export function faceParam(mesh: PreparedMesh, cage: Cage, t: number, w: readonly
     throw new Error(`triangle ${t} is not on face ${face}`);
   });
   if (n === 4) {
-    const uv = [[0, 0], [1, 0], [1, 1], [0, 1]];
-    let u = 0, v = 0;
+    const uv = [
+      [0, 0],
+      [1, 0],
+      [1, 1],
+      [0, 1],
+    ];
+    let u = 0,
+      v = 0;
     for (let i = 0; i < 3; i++) {
       u += w[i] * uv[local[i]][0];
       v += w[i] * uv[local[i]][1];
@@ -63,10 +73,11 @@ export function faceParam(mesh: PreparedMesh, cage: Cage, t: number, w: readonly
   }
   // Sub-face k: the kite around corner k, i.e. the sector whose angle is nearest corner k.
   const angle = Math.atan2(p[1], p[0]);
-  const k = (((Math.round((angle * n) / (2 * Math.PI)) % n) + n) % n);
+  const k = ((Math.round((angle * n) / (2 * Math.PI)) % n) + n) % n;
   if (Math.hypot(p[0], p[1]) < 1e-14) return { face, k: 0, s: 1, t: 1 };
   const mid = (a: number, b: number) => {
-    const ca = corner(a), cb = corner(b);
+    const ca = corner(a),
+      cb = corner(b);
     return [(ca[0] + cb[0]) / 2, (ca[1] + cb[1]) / 2];
   };
   const [s, tt] = inverseBilinear(p, corner(k), mid(k, (k + 1) % n), [0, 0], mid((k + n - 1) % n, k));

@@ -25,7 +25,8 @@ const sub = (a: Vec3, b: Vec3): Vec3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 /** Phong midpoint minus linear midpoint of an edge. */
 export function phongMidpointOffset(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3): Vec3 {
   const d = sub(p1, p0);
-  const a = dot(d, n1), b = dot(d, n0);
+  const a = dot(d, n1),
+    b = dot(d, n0);
   const s = PHONG_ALPHA / 4;
   return [s * (a * n1[0] - b * n0[0]), s * (a * n1[1] - b * n0[1]), s * (a * n1[2] - b * n0[2])];
 }
@@ -45,11 +46,17 @@ export interface FactorRule {
 /** Is a sphere entirely outside one of the six frustum planes of viewProj? */
 export function sphereOutsideFrustum(m: ArrayLike<number>, c: Vec3, r: number): boolean {
   const row = (i: number) => [m[i], m[4 + i], m[8 + i], m[12 + i]];
-  const r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
+  const r0 = row(0),
+    r1 = row(1),
+    r2 = row(2),
+    r3 = row(3);
   const planes = [
-    r3.map((v, i) => v + r0[i]), r3.map((v, i) => v - r0[i]),
-    r3.map((v, i) => v + r1[i]), r3.map((v, i) => v - r1[i]),
-    r2, r3.map((v, i) => v - r2[i]), // WebGPU: 0 ≤ z ≤ w
+    r3.map((v, i) => v + r0[i]),
+    r3.map((v, i) => v - r0[i]),
+    r3.map((v, i) => v + r1[i]),
+    r3.map((v, i) => v - r1[i]),
+    r2,
+    r3.map((v, i) => v - r2[i]), // WebGPU: 0 ≤ z ≤ w
   ];
   for (const p of planes) {
     const len = Math.hypot(p[0], p[1], p[2]);
@@ -67,7 +74,8 @@ export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorR
     const el = Math.hypot(e[0], e[1], e[2]);
     const mid: Vec3 = [(p0[0] + p1[0]) / 2 + e[0], (p0[1] + p1[1]) / 2 + e[1], (p0[2] + p1[2]) / 2 + e[2]];
     const radius = Math.hypot(...sub(p1, p0)) / 2 + el;
-    const toEye0 = sub(rule.eye, p0), toEye1 = sub(rule.eye, p1);
+    const toEye0 = sub(rule.eye, p0),
+      toEye1 = sub(rule.eye, p1);
     const away = dot(n0, toEye0) < -0.1 * Math.hypot(...toEye0) && dot(n1, toEye1) < -0.1 * Math.hypot(...toEye1);
     if (away || sphereOutsideFrustum(rule.viewProj, mid, radius)) {
       f = 1;

@@ -33,7 +33,8 @@ export interface HeadlessOptions {
 export function headlessCamera(mesh: PreparedMesh, o: HeadlessOptions): FactorParams {
   const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
   const target = o.target ?? centre;
-  const eye = o.eye ?? ([centre[0] + 0.55 * mesh.size, centre[1] + 0.45 * mesh.size, centre[2] + 1.1 * mesh.size] as [number, number, number]);
+  const eye =
+    o.eye ?? ([centre[0] + 0.55 * mesh.size, centre[1] + 0.45 * mesh.size, centre[2] + 1.1 * mesh.size] as [number, number, number]);
   const fovY = o.fovY ?? Math.PI / 4;
   const dist = Math.hypot(eye[0] - target[0], eye[1] - target[1], eye[2] - target[2]);
   const view = mat4.lookAt(mat4.create(), eye, target, [0, 1, 0]);
@@ -59,12 +60,23 @@ export interface HeadlessResult {
 /** `prepared`: the mesh and Catmull-Clark data made by the caller (e.g. to time the preparation),
  * instead of making them here. */
 export async function tessellateOnce(
-  device: GPUDevice, cage: Cage, o: HeadlessOptions, tess?: Tessellator, prepared?: { mesh: PreparedMesh; cc?: CatmullClarkData },
+  device: GPUDevice,
+  cage: Cage,
+  o: HeadlessOptions,
+  tess?: Tessellator,
+  prepared?: { mesh: PreparedMesh; cc?: CatmullClarkData },
 ): Promise<HeadlessResult> {
   const mesh = prepared?.mesh ?? prepareMesh(cage);
   const surface = o.surface ?? 'catmull-clark';
   const own = !tess;
-  const t = tess ?? Tessellator.create(device, bakeTables(64), { vertexCapacity: o.vertexCapacity, triangleCapacity: o.triangleCapacity, surface, flatBaseline: o.flatBaseline ?? false });
+  const t =
+    tess ??
+    Tessellator.create(device, bakeTables(64), {
+      vertexCapacity: o.vertexCapacity,
+      triangleCapacity: o.triangleCapacity,
+      surface,
+      flatBaseline: o.flatBaseline ?? false,
+    });
   try {
     t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined);
     device.pushErrorScope('validation');
@@ -87,7 +99,8 @@ export function vertexWeights(out: MeshReadback, v: number): [number, number, nu
   const packed = out.bary[v];
   if (packed === BARY_CORNER1) return [0, 1, 0];
   if (packed === BARY_CORNER2) return [0, 0, 1];
-  const w1 = (packed & 0xffff) / 65536, w2 = (packed >>> 16) / 65536;
+  const w1 = (packed & 0xffff) / 65536,
+    w2 = (packed >>> 16) / 65536;
   return [1 - w1 - w2, w1, w2];
 }
 
@@ -116,5 +129,9 @@ export function vertexParams(r: HeadlessResult, cage: Cage): (FaceParam | null)[
 
 /** One `f u v` or `f k s t` per line, the input format of `npm run subdiv -- --points`. */
 export function paramsToText(params: (FaceParam | null)[]): string {
-  return params.map((p) => (p === null ? '# unused cage vertex' : 'u' in p ? `${p.face} ${p.u} ${p.v}` : `${p.face} ${p.k} ${p.s} ${p.t}`)).join('\n') + '\n';
+  return (
+    params
+      .map((p) => (p === null ? '# unused cage vertex' : 'u' in p ? `${p.face} ${p.u} ${p.v}` : `${p.face} ${p.k} ${p.s} ${p.t}`))
+      .join('\n') + '\n'
+  );
 }

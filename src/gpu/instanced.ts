@@ -32,29 +32,62 @@ import { faceParam, type FaceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../mesh/types.ts';
 import {
-  packPatterns, snapVertex, edgePoint, POW2_LEVEL_COUNT, MAX_POW2_LEVEL, type PackedPatterns, type PatchDomain,
+  packPatterns,
+  snapVertex,
+  edgePoint,
+  POW2_LEVEL_COUNT,
+  MAX_POW2_LEVEL,
+  type PackedPatterns,
+  type PatchDomain,
 } from '../pattern/pow2.ts';
 
 export const INST_PARAMS = defineStruct('InstParams', [
   ['viewProj', 'mat4x4<f32>'],
   // x, y: viewport size in pixels (dynamic mode).
   ['viewport', 'vec4<f32>'],
-  ['nPatches', 'u32'], ['nQuads', 'u32'], ['nTris', 'u32'], ['nEdges', 'u32'],
-  ['mode', 'u32'], ['staticLevel', 'u32'], ['lodScale', 'f32'], ['targetPixels', 'f32'], ['pixelError', 'f32'],
+  ['nPatches', 'u32'],
+  ['nQuads', 'u32'],
+  ['nTris', 'u32'],
+  ['nEdges', 'u32'],
+  ['mode', 'u32'],
+  ['staticLevel', 'u32'],
+  ['lodScale', 'f32'],
+  ['targetPixels', 'f32'],
+  ['pixelError', 'f32'],
   // staticBuf word offsets (wgsl/instanced-common.wgsl), cageBuf float offset of the normals.
-  ['offTriVerts', 'u32'], ['offPatches', 'u32'], ['offEdgeOwner', 'u32'], ['offPatternIJ', 'u32'], ['offPatternIdx', 'u32'],
-  ['offEntries', 'u32'], ['offNormals', 'u32'],
+  ['offTriVerts', 'u32'],
+  ['offPatches', 'u32'],
+  ['offEdgeOwner', 'u32'],
+  ['offPatternIJ', 'u32'],
+  ['offPatternIdx', 'u32'],
+  ['offEntries', 'u32'],
+  ['offNormals', 'u32'],
   // work word offsets (wgsl/instanced-levels.wgsl).
-  ['offWanted', 'u32'], ['offEdgeCode', 'u32'], ['offPatchLevel', 'u32'], ['offCounts', 'u32'], ['offLists', 'u32'],
+  ['offWanted', 'u32'],
+  ['offEdgeCode', 'u32'],
+  ['offPatchLevel', 'u32'],
+  ['offCounts', 'u32'],
+  ['offLists', 'u32'],
 ] as const);
 
 export const INST_BUCKET = defineStruct('InstBucket', [
-  ['listBase', 'u32'], ['level', 'u32'], ['domain', 'u32'], ['baseVertex', 'u32'], ['firstIndex', 'u32'],
-  ['vertexCount', 'u32'], ['triangleCount', 'u32'], ['outVertexBase', 'u32'], ['outTriangleBase', 'u32'], ['instances', 'u32'],
+  ['listBase', 'u32'],
+  ['level', 'u32'],
+  ['domain', 'u32'],
+  ['baseVertex', 'u32'],
+  ['firstIndex', 'u32'],
+  ['vertexCount', 'u32'],
+  ['triangleCount', 'u32'],
+  ['outVertexBase', 'u32'],
+  ['outTriangleBase', 'u32'],
+  ['instances', 'u32'],
 ] as const);
 
 export const INST_FRAME = defineStruct('InstFrame', [
-  ['viewProj', 'mat4x4<f32>'], ['lightViewProj', 'mat4x4<f32>'], ['toLight', 'vec4<f32>'], ['eye', 'vec4<f32>'],
+  ['viewProj', 'mat4x4<f32>'],
+  ['lightViewProj', 'mat4x4<f32>'],
+  ['toLight', 'vec4<f32>'],
+  ['eye', 'vec4<f32>'],
 ] as const);
 
 /** Buckets: domain (0 quad, 1 triangle) · 7 + log2 level. */
@@ -107,10 +140,13 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
   let t = 0;
   for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
     if (holes.has(f)) continue;
-    const s = cage.faceOffsets[f], n = cage.faceOffsets[f + 1] - s;
+    const s = cage.faceOffsets[f],
+      n = cage.faceOffsets[f + 1] - s;
     if (n < 3) continue;
     if (n === 4) quads.push({ tri: t, face: f, c: Array.from(cage.faceIndices.subarray(s, s + 4)) });
-    else for (let k = 0; k < n - 2; k++) tris.push({ tri: t + k, face: f, c: Array.from(prepared.triVerts.subarray(3 * (t + k), 3 * (t + k) + 3)) });
+    else
+      for (let k = 0; k < n - 2; k++)
+        tris.push({ tri: t + k, face: f, c: Array.from(prepared.triVerts.subarray(3 * (t + k), 3 * (t + k) + 3)) });
     t += n - 2;
   }
   if (t !== prepared.triangleCount) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
@@ -127,7 +163,8 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
     const o = PATCH_WORDS * p;
     patches[o] = q.tri;
     for (let k = 0; k < n; k++) {
-      const a = q.c[k], b = q.c[(k + 1) % n];
+      const a = q.c[k],
+        b = q.c[(k + 1) % n];
       if (a < b) flags |= 1 << (1 + k);
       const key = Math.min(a, b) * nV + Math.max(a, b);
       let e = edgeIds.get(key);
@@ -144,8 +181,15 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
     patches[o + 6] = q.face;
   });
   return {
-    prepared, quadCount: quads.length, triCount: tris.length, patchCount: all.length, edgeCount: edgeVerts.length / 2,
-    patches, corners, edgeVerts: Uint32Array.from(edgeVerts), edgeOwner: Uint32Array.from(edgeOwner),
+    prepared,
+    quadCount: quads.length,
+    triCount: tris.length,
+    patchCount: all.length,
+    edgeCount: edgeVerts.length / 2,
+    patches,
+    corners,
+    edgeVerts: Uint32Array.from(edgeVerts),
+    edgeOwner: Uint32Array.from(edgeOwner),
   };
 }
 
@@ -179,14 +223,22 @@ export function cpuLevels(m: InstancedMesh, wanted: ArrayLike<number>, patterns:
 /** The cage triangle and 16.16 weights of pattern point (i, j) of patch p at level P
  * (wgsl/instanced-common.wgsl patchTriangle). */
 export function patchTriangle(m: InstancedMesh, p: number, P: number, i: number, j: number): { t: number; w: [number, number, number] } {
-  const s = 65536 / P, t0 = m.patches[PATCH_WORDS * p];
+  const s = 65536 / P,
+    t0 = m.patches[PATCH_WORDS * p];
   if (patchDomain(m, p) === 'tri') return { t: t0, w: [(P - i - j) * s, i * s, j * s] };
   if (i >= j) return { t: t0, w: [(P - i) * s, (i - j) * s, j * s] };
   return { t: t0 + 1, w: [(P - j) * s, i * s, (j - i) * s] };
 }
 
 /** Snapped (i, j) of pattern vertex (i, j) of patch p at level P, given every edge's level. */
-export function snapPatchVertex(m: InstancedMesh, p: number, P: number, i: number, j: number, edgeLevels: ArrayLike<number>): [number, number] {
+export function snapPatchVertex(
+  m: InstancedMesh,
+  p: number,
+  P: number,
+  i: number,
+  j: number,
+  edgeLevels: ArrayLike<number>,
+): [number, number] {
   const levels = patchEdgeIds(m, p).map((e) => Math.min(edgeLevels[e], P));
   return snapVertex(patchDomain(m, p), P, i, j, levels, patchCanonical(m, p));
 }
@@ -201,9 +253,14 @@ const LEVEL_DEFAULTS = { level: 4, lodScale: 1, targetPixels: 12, pixelError: 0.
  * lies within f32 noise of a power of two).
  */
 export function cpuDynamicEdgeLevel(
-  m: InstancedMesh, e: number, lp: LevelParams, surface: (t: number, w: [number, number, number]) => number[],
+  m: InstancedMesh,
+  e: number,
+  lp: LevelParams,
+  surface: (t: number, w: [number, number, number]) => number[],
 ): { level: number; n: number } {
-  const owner = m.edgeOwner[e], p = owner >> 2, k = owner & 3;
+  const owner = m.edgeOwner[e],
+    p = owner >> 2,
+    k = owner & 3;
   const dom = patchDomain(m, p);
   const vp = lp.viewProj ?? new Float32Array(16);
   const [W, H] = lp.viewport ?? [1, 1];
@@ -220,7 +277,9 @@ export function cpuDynamicEdgeLevel(
   if (behind) return { level: 1 << levelLog2(lp.level ?? LEVEL_DEFAULTS.level), n: NaN };
   const chord = Math.hypot(s[2][0] - s[0][0], s[2][1] - s[0][1]);
   const dev = Math.hypot(s[1][0] - 0.5 * (s[0][0] + s[2][0]), s[1][1] - 0.5 * (s[0][1] + s[2][1]));
-  const n = (lp.lodScale ?? LEVEL_DEFAULTS.lodScale) * Math.max(chord / (lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels), Math.sqrt(dev / (lp.pixelError ?? LEVEL_DEFAULTS.pixelError)));
+  const n =
+    (lp.lodScale ?? LEVEL_DEFAULTS.lodScale) *
+    Math.max(chord / (lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels), Math.sqrt(dev / (lp.pixelError ?? LEVEL_DEFAULTS.pixelError)));
   const c = Math.ceil(Math.min(Math.max(n, 1), MAX_POW2_LEVEL));
   return { level: c <= 1 ? 1 : 2 ** Math.ceil(Math.log2(c)), n };
 }
@@ -233,7 +292,8 @@ export function cpuDynamicEdgeLevel(
 export function instancedVertexParams(m: InstancedMesh, cage: Cage, out: HeadlessInstanced): FaceParam[] {
   const params: FaceParam[] = [];
   for (let v = 0; v < out.vertexCount; v++) {
-    const p = out.patch[v], P = out.patchLevels[p];
+    const p = out.patch[v],
+      P = out.patchLevels[p];
     const { t, w } = patchTriangle(m, p, P, Math.round(out.uv[2 * v] * P), Math.round(out.uv[2 * v + 1] * P));
     params.push(faceParam(m.prepared, cage, t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]));
   }
@@ -291,7 +351,14 @@ export interface LevelParams {
   pixelError?: number;
 }
 
-interface WorkLayout { wanted: number; edgeCode: number; patchLevel: number; counts: number; lists: number; words: number }
+interface WorkLayout {
+  wanted: number;
+  edgeCode: number;
+  patchLevel: number;
+  counts: number;
+  lists: number;
+  words: number;
+}
 
 export interface HeadlessInstanced {
   vertexCount: number;
@@ -335,19 +402,32 @@ export class InstancedTessellator {
   private readonly bucketGroup: GPUBindGroup;
   private readonly frameGroup: GPUBindGroup;
   private mesh?: {
-    m: InstancedMesh; staticBuf: GPUBuffer; cageBuf: GPUBuffer; work: GPUBuffer; layout: WorkLayout;
+    m: InstancedMesh;
+    staticBuf: GPUBuffer;
+    cageBuf: GPUBuffer;
+    work: GPUBuffer;
+    layout: WorkLayout;
     meshGroup: GPUBindGroup;
   };
 
-  constructor(readonly device: GPUDevice, opts: InstancedOptions = {}) {
+  constructor(
+    readonly device: GPUDevice,
+    opts: InstancedOptions = {},
+  ) {
     this.colorFormat = opts.colorFormat ?? 'rgba8unorm';
     this.depthFormat = opts.depthFormat ?? 'depth32float';
     this.sampleCount = opts.sampleCount ?? 1;
     const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
     const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
-    const pipeline = (entryPoint: string) => device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
-    this.levelPipelines = { patchEdges: pipeline('patchEdges'), edgeView: pipeline('edgeView'), bucketPatches: pipeline('bucketPatches'), records: pipeline('records') };
+    const pipeline = (entryPoint: string) =>
+      device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
+    this.levelPipelines = {
+      patchEdges: pipeline('patchEdges'),
+      edgeView: pipeline('edgeView'),
+      bucketPatches: pipeline('bucketPatches'),
+      records: pipeline('records'),
+    };
 
     // Explicit layouts: one bucket bind group with a dynamic offset, shared by the lit, shadow and
     // headless pipelines.
@@ -377,24 +457,55 @@ export class InstancedTessellator {
       }),
     };
     this.drawModule = device.createShaderModule({ label: 'instanced draw', code: code(drawWgsl) });
-    this.renderLayout = device.createPipelineLayout({ label: 'instanced render', bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.frame] });
+    this.renderLayout = device.createPipelineLayout({
+      label: 'instanced render',
+      bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.frame],
+    });
     this.headlessPipeline = device.createComputePipeline({
       label: 'instanced headless',
-      layout: device.createPipelineLayout({ label: 'instanced headless', bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out] }),
+      layout: device.createPipelineLayout({
+        label: 'instanced headless',
+        bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out],
+      }),
       compute: { module: this.drawModule, entryPoint: 'headless' },
     });
 
-    this.params = device.createBuffer({ label: 'instanced params', size: INST_PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-    this.drawArgs = device.createBuffer({ label: 'instanced draw records', size: 20 * BUCKETS, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT | GPUBufferUsage.COPY_SRC });
-    this.indexBuffer = device.createBuffer({ label: 'instanced pattern indices', size: this.patterns.indices.byteLength, usage: GPUBufferUsage.INDEX | GPUBufferUsage.COPY_DST });
+    this.params = device.createBuffer({
+      label: 'instanced params',
+      size: INST_PARAMS.size,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
+    this.drawArgs = device.createBuffer({
+      label: 'instanced draw records',
+      size: 20 * BUCKETS,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT | GPUBufferUsage.COPY_SRC,
+    });
+    this.indexBuffer = device.createBuffer({
+      label: 'instanced pattern indices',
+      size: this.patterns.indices.byteLength,
+      usage: GPUBufferUsage.INDEX | GPUBufferUsage.COPY_DST,
+    });
     device.queue.writeBuffer(this.indexBuffer, 0, this.patterns.indices);
-    this.bucketUniform = device.createBuffer({ label: 'instanced buckets', size: BUCKET_STRIDE * BUCKETS, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    this.bucketUniform = device.createBuffer({
+      label: 'instanced buckets',
+      size: BUCKET_STRIDE * BUCKETS,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
     this.bucketGroup = device.createBindGroup({
-      label: 'instanced bucket', layout: this.layouts.bucket,
+      label: 'instanced bucket',
+      layout: this.layouts.bucket,
       entries: [{ binding: 0, resource: { buffer: this.bucketUniform, size: INST_BUCKET.size } }],
     });
-    this.frame = device.createBuffer({ label: 'instanced frame', size: INST_FRAME.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-    this.frameGroup = device.createBindGroup({ label: 'instanced frame', layout: this.layouts.frame, entries: [{ binding: 0, resource: { buffer: this.frame } }] });
+    this.frame = device.createBuffer({
+      label: 'instanced frame',
+      size: INST_FRAME.size,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
+    this.frameGroup = device.createBindGroup({
+      label: 'instanced frame',
+      layout: this.layouts.frame,
+      entries: [{ binding: 0, resource: { buffer: this.frame } }],
+    });
   }
 
   get instancedMesh(): InstancedMesh | undefined {
@@ -417,12 +528,20 @@ export class InstancedTessellator {
     }
     const words = new Uint32Array(at);
     parts.forEach((p, i) => words.set(p, offsets[i]));
-    const staticBuf = device.createBuffer({ label: 'instanced topology + patterns', size: words.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    const staticBuf = device.createBuffer({
+      label: 'instanced topology + patterns',
+      size: words.byteLength,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
     device.queue.writeBuffer(staticBuf, 0, words);
     const cage = new Float32Array(6 * pr.vertexCount);
     cage.set(pr.positions, 0);
     cage.set(pr.normals, 3 * pr.vertexCount);
-    const cageBuf = device.createBuffer({ label: 'instanced cage', size: Math.max(16, cage.byteLength), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    const cageBuf = device.createBuffer({
+      label: 'instanced cage',
+      size: Math.max(16, cage.byteLength),
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
     device.queue.writeBuffer(cageBuf, 0, cage);
 
     let w = 0;
@@ -432,17 +551,37 @@ export class InstancedTessellator {
       return at;
     };
     const layout: WorkLayout = {
-      wanted: take(m.patchCount), edgeCode: take(m.edgeCount), patchLevel: take(m.patchCount), counts: take(BUCKETS),
-      lists: take(POW2_LEVEL_COUNT * m.patchCount), words: 0,
+      wanted: take(m.patchCount),
+      edgeCode: take(m.edgeCount),
+      patchLevel: take(m.patchCount),
+      counts: take(BUCKETS),
+      lists: take(POW2_LEVEL_COUNT * m.patchCount),
+      words: 0,
     };
     layout.words = w;
-    const work = device.createBuffer({ label: 'instanced work', size: 4 * layout.words, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC });
+    const work = device.createBuffer({
+      label: 'instanced work',
+      size: 4 * layout.words,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC,
+    });
 
     INST_PARAMS.write(new DataView(this.paramsBytes), {
-      nPatches: m.patchCount, nQuads: m.quadCount, nTris: m.triCount, nEdges: m.edgeCount,
-      offTriVerts: offsets[0], offPatches: offsets[1], offEdgeOwner: offsets[2], offPatternIJ: offsets[3], offPatternIdx: offsets[4],
-      offEntries: offsets[5], offNormals: 3 * pr.vertexCount,
-      offWanted: layout.wanted, offEdgeCode: layout.edgeCode, offPatchLevel: layout.patchLevel, offCounts: layout.counts, offLists: layout.lists,
+      nPatches: m.patchCount,
+      nQuads: m.quadCount,
+      nTris: m.triCount,
+      nEdges: m.edgeCount,
+      offTriVerts: offsets[0],
+      offPatches: offsets[1],
+      offEdgeOwner: offsets[2],
+      offPatternIJ: offsets[3],
+      offPatternIdx: offsets[4],
+      offEntries: offsets[5],
+      offNormals: 3 * pr.vertexCount,
+      offWanted: layout.wanted,
+      offEdgeCode: layout.edgeCode,
+      offPatchLevel: layout.patchLevel,
+      offCounts: layout.counts,
+      offLists: layout.lists,
     });
 
     // Each bucket's uniform: where its list starts and its pattern.
@@ -457,8 +596,13 @@ export class InstancedTessellator {
     const lists = this.listBases();
     this.patterns.entries.forEach((e, b) => {
       INST_BUCKET.write(new DataView(buckets, BUCKET_STRIDE * b), {
-        listBase: lists[b], level: e.level, domain: e.domain === 'tri' ? 1 : 0, baseVertex: e.baseVertex, firstIndex: e.firstIndex,
-        vertexCount: e.vertexCount, triangleCount: e.indexCount / 3,
+        listBase: lists[b],
+        level: e.level,
+        domain: e.domain === 'tri' ? 1 : 0,
+        baseVertex: e.baseVertex,
+        firstIndex: e.firstIndex,
+        vertexCount: e.vertexCount,
+        triangleCount: e.indexCount / 3,
       });
     });
     device.queue.writeBuffer(this.bucketUniform, 0, buckets);
@@ -484,8 +628,11 @@ export class InstancedTessellator {
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
       viewport: [lp.viewport?.[0] ?? 1, lp.viewport?.[1] ?? 1, 0, 0],
-      mode: MODE[lp.mode], staticLevel: lp.level ?? LEVEL_DEFAULTS.level, lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
-      targetPixels: lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels, pixelError: lp.pixelError ?? LEVEL_DEFAULTS.pixelError,
+      mode: MODE[lp.mode],
+      staticLevel: lp.level ?? LEVEL_DEFAULTS.level,
+      lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
+      targetPixels: lp.targetPixels ?? LEVEL_DEFAULTS.targetPixels,
+      pixelError: lp.pixelError ?? LEVEL_DEFAULTS.pixelError,
     });
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
     // Edge codes and bucket counts start at 0 (atomicMax / atomicAdd).
@@ -513,7 +660,12 @@ export class InstancedTessellator {
     let g = this.levelGroups.get(name);
     if (!g) {
       const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
-      const used: Record<string, number[]> = { patchEdges: [0, 1, 3], edgeView: [0, 1, 2, 3], bucketPatches: [0, 1, 3], records: [0, 1, 3, 4] };
+      const used: Record<string, number[]> = {
+        patchEdges: [0, 1, 3],
+        edgeView: [0, 1, 2, 3],
+        bucketPatches: [0, 1, 3],
+        records: [0, 1, 3, 4],
+      };
       g = this.device.createBindGroup({
         label: `instanced ${name}`,
         layout: this.levelPipelines[name].getBindGroupLayout(0),
@@ -526,13 +678,20 @@ export class InstancedTessellator {
 
   /** What the last encodeLevels left on the GPU (checks): records, per-edge and per-patch
    * levels, each bucket's list of patches. */
-  async readLevels(): Promise<{ records: Uint32Array; counts: Uint32Array; edgeLevels: Uint32Array; patchLevels: Uint32Array; lists: Uint32Array[] }> {
+  async readLevels(): Promise<{
+    records: Uint32Array;
+    counts: Uint32Array;
+    edgeLevels: Uint32Array;
+    patchLevels: Uint32Array;
+    lists: Uint32Array[];
+  }> {
     const m = this.requireMesh();
     const records = new Uint32Array(await readBuffer(this.device, this.drawArgs, 20 * BUCKETS));
     const w = new Uint32Array(await readBuffer(this.device, m.work, 4 * m.layout.words));
     const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => w[m.layout.counts + b]);
     return {
-      records, counts,
+      records,
+      counts,
       edgeLevels: Uint32Array.from(w.subarray(m.layout.edgeCode, m.layout.edgeCode + m.m.edgeCount), (c) => 1 << (POW2_LEVEL_COUNT - c)),
       patchLevels: Uint32Array.from(w.subarray(m.layout.patchLevel, m.layout.patchLevel + m.m.patchCount), (lg) => 1 << lg),
       lists: this.listBases().map((base, b) => w.slice(base, base + counts[b])),
@@ -540,13 +699,20 @@ export class InstancedTessellator {
   }
 
   /** The per-frame uniform of the lit and shadow passes. */
-  writeFrame(f: { viewProj: Float32Array; lightViewProj?: Float32Array; toLight?: [number, number, number]; eye: [number, number, number] }): void {
+  writeFrame(f: {
+    viewProj: Float32Array;
+    lightViewProj?: Float32Array;
+    toLight?: [number, number, number];
+    eye: [number, number, number];
+  }): void {
     const bytes = new ArrayBuffer(INST_FRAME.size);
     const l = f.toLight ?? [0.4, 0.8, 0.45];
     const n = Math.hypot(...l);
     INST_FRAME.write(new DataView(bytes), {
-      viewProj: f.viewProj, lightViewProj: f.lightViewProj ?? f.viewProj,
-      toLight: [l[0] / n, l[1] / n, l[2] / n, 0], eye: [...f.eye, 1],
+      viewProj: f.viewProj,
+      lightViewProj: f.lightViewProj ?? f.viewProj,
+      toLight: [l[0] / n, l[1] / n, l[2] / n, 0],
+      eye: [...f.eye, 1],
     });
     this.device.queue.writeBuffer(this.frame, 0, bytes);
   }
@@ -609,7 +775,8 @@ export class InstancedTessellator {
     const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => records[5 * b + 1]);
 
     const bases: { v: number; t: number }[] = [];
-    let nv = 0, nt = 0;
+    let nv = 0,
+      nt = 0;
     this.patterns.entries.forEach((e, b) => {
       bases.push({ v: nv, t: nt });
       nv += counts[b] * e.vertexCount;
@@ -617,7 +784,9 @@ export class InstancedTessellator {
     });
     const limit = device.limits.maxStorageBufferBindingSize;
     if (12 * nv > limit || 12 * nt > limit) {
-      throw new Error(`the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`);
+      throw new Error(
+        `the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`,
+      );
     }
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC;
     const out = {
@@ -628,18 +797,35 @@ export class InstancedTessellator {
       indices: device.createBuffer({ label: 'instanced headless indices', size: Math.max(16, 12 * nt), usage: S }),
     };
     const outGroup = device.createBindGroup({
-      label: 'instanced headless outputs', layout: this.layouts.out,
+      label: 'instanced headless outputs',
+      layout: this.layouts.out,
       entries: [out.positions, out.normals, out.patch, out.uv, out.indices].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
     });
     // This run's bucket uniforms: the draw's, plus where each bucket's output goes.
     const bytes = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
-    const uniform = device.createBuffer({ label: 'instanced headless buckets', size: bytes.byteLength, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-    const group = device.createBindGroup({ label: 'instanced headless bucket', layout: this.layouts.bucket, entries: [{ binding: 0, resource: { buffer: uniform, size: INST_BUCKET.size } }] });
+    const uniform = device.createBuffer({
+      label: 'instanced headless buckets',
+      size: bytes.byteLength,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
+    const group = device.createBindGroup({
+      label: 'instanced headless bucket',
+      layout: this.layouts.bucket,
+      entries: [{ binding: 0, resource: { buffer: uniform, size: INST_BUCKET.size } }],
+    });
     const lists = this.listBases();
     this.patterns.entries.forEach((e, b) => {
       INST_BUCKET.write(new DataView(bytes, BUCKET_STRIDE * b), {
-        listBase: lists[b], level: e.level, domain: e.domain === 'tri' ? 1 : 0, baseVertex: e.baseVertex, firstIndex: e.firstIndex,
-        vertexCount: e.vertexCount, triangleCount: e.indexCount / 3, outVertexBase: bases[b].v, outTriangleBase: bases[b].t, instances: counts[b],
+        listBase: lists[b],
+        level: e.level,
+        domain: e.domain === 'tri' ? 1 : 0,
+        baseVertex: e.baseVertex,
+        firstIndex: e.firstIndex,
+        vertexCount: e.vertexCount,
+        triangleCount: e.indexCount / 3,
+        outVertexBase: bases[b].v,
+        outTriangleBase: bases[b].t,
+        instances: counts[b],
       });
     });
     device.queue.writeBuffer(uniform, 0, bytes);
@@ -659,16 +845,26 @@ export class InstancedTessellator {
     const error = await device.popErrorScope();
     if (error) throw new Error(`WebGPU validation error: ${error.message}`);
     const [positions, normals, patch, uv, indices] = await Promise.all([
-      readBuffer(device, out.positions, 12 * nv), readBuffer(device, out.normals, 12 * nv), readBuffer(device, out.patch, 4 * nv),
-      readBuffer(device, out.uv, 8 * nv), readBuffer(device, out.indices, 12 * nt),
+      readBuffer(device, out.positions, 12 * nv),
+      readBuffer(device, out.normals, 12 * nv),
+      readBuffer(device, out.patch, 4 * nv),
+      readBuffer(device, out.uv, 8 * nv),
+      readBuffer(device, out.indices, 12 * nt),
     ]);
     const levels = await this.readLevels();
     for (const b of [...Object.values(out), uniform]) b.destroy();
     return {
-      vertexCount: nv, triangleCount: nt,
-      positions: new Float32Array(positions), normals: new Float32Array(normals), patch: new Uint32Array(patch),
-      uv: new Float32Array(uv), indices: new Uint32Array(indices), counts, records,
-      edgeLevels: levels.edgeLevels, patchLevels: levels.patchLevels,
+      vertexCount: nv,
+      triangleCount: nt,
+      positions: new Float32Array(positions),
+      normals: new Float32Array(normals),
+      patch: new Uint32Array(patch),
+      uv: new Float32Array(uv),
+      indices: new Uint32Array(indices),
+      counts,
+      records,
+      edgeLevels: levels.edgeLevels,
+      patchLevels: levels.patchLevels,
     };
   }
 
@@ -698,8 +894,6 @@ export class InstancedTessellator {
   }
 }
 
-
-
 /**
  * The CLI's entry point (`npm run tessellate -- --tessellator instanced --level L | --adaptive`):
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
@@ -708,7 +902,11 @@ export class InstancedTessellator {
  * compiled pipelines across calls.
  */
 export async function tessellateInstanced(
-  device: GPUDevice, cage: Cage, prepared: PreparedMesh, lp: LevelParams, tess?: InstancedTessellator,
+  device: GPUDevice,
+  cage: Cage,
+  prepared: PreparedMesh,
+  lp: LevelParams,
+  tess?: InstancedTessellator,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);

@@ -38,5 +38,8 @@ export async function createNodeDevice(dawnToggles: string[] = []): Promise<{ de
     requiredLimits,
   });
   const info = adapter.info;
-  return { device, adapterName: [info.vendor, info.architecture, info.device, info.description].filter(Boolean).join(' ') || 'unknown adapter' };
+  return {
+    device,
+    adapterName: [info.vendor, info.architecture, info.device, info.description].filter(Boolean).join(' ') || 'unknown adapter',
+  };
 }

@@ -6,7 +6,8 @@ import { PHONG_ALPHA } from './factors.ts';
 import type { PreparedMesh } from './prepare.ts';
 
 export function phongPoint(mesh: PreparedMesh, t: number, w: readonly [number, number, number]): { pos: number[]; normal: number[] } {
-  const P = mesh.positions, N = mesh.normals;
+  const P = mesh.positions,
+    N = mesh.normals;
   const v = [mesh.triVerts[3 * t], mesh.triVerts[3 * t + 1], mesh.triVerts[3 * t + 2]];
   const p = [0, 1, 2].map((c) => w[0] * P[3 * v[0] + c] + w[1] * P[3 * v[1] + c] + w[2] * P[3 * v[2] + c]);
   const phong = [0, 0, 0];

@@ -75,9 +75,12 @@ export function prepareMesh(cage: Cage): PreparedMesh {
     // Newell's method: robust for non-planar polygons, area-weighted.
     const s = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - s;
-    let nx = 0, ny = 0, nz = 0;
+    let nx = 0,
+      ny = 0,
+      nz = 0;
     for (let k = 0; k < n; k++) {
-      const a = cage.faceIndices[s + k], b = cage.faceIndices[s + ((k + 1) % n)];
+      const a = cage.faceIndices[s + k],
+        b = cage.faceIndices[s + ((k + 1) % n)];
       nx += (P[3 * a + 1] - P[3 * b + 1]) * (P[3 * a + 2] + P[3 * b + 2]);
       ny += (P[3 * a + 2] - P[3 * b + 2]) * (P[3 * a] + P[3 * b]);
       nz += (P[3 * a] - P[3 * b]) * (P[3 * a + 1] + P[3 * b + 1]);
@@ -105,8 +108,10 @@ export function prepareMesh(cage: Cage): PreparedMesh {
   for (let t = 0; t < nT; t++) {
     const reverse: boolean[] = [];
     for (let i = 0; i < 3; i++) {
-      const a = tris[3 * t + i], b = tris[3 * t + ((i + 1) % 3)];
-      const lo = Math.min(a, b), hi = Math.max(a, b);
+      const a = tris[3 * t + i],
+        b = tris[3 * t + ((i + 1) % 3)];
+      const lo = Math.min(a, b),
+        hi = Math.max(a, b);
       const key = lo * nV + hi;
       let e = edgeIds.get(key);
       if (e === undefined) {

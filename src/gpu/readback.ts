@@ -39,8 +39,14 @@ export async function readMesh(device: GPUDevice, out: TessellatedMesh): Promise
     readBuffer(device, out.indices, 12 * triangleCount),
   ]);
   return {
-    vertexCount, triangleCount, scale, attempt: counts[3],
-    positions: new Float32Array(positions), normals: new Float32Array(normals),
-    bary: new Uint32Array(bary), srcTri: new Uint32Array(srcTri), indices: new Uint32Array(indices),
+    vertexCount,
+    triangleCount,
+    scale,
+    attempt: counts[3],
+    positions: new Float32Array(positions),
+    normals: new Float32Array(normals),
+    bary: new Uint32Array(bary),
+    srcTri: new Uint32Array(srcTri),
+    indices: new Uint32Array(indices),
   };
 }

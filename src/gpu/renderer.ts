@@ -29,7 +29,12 @@ import type { TessellatedMesh } from './types.ts';
 import { CAGE_LINE_STRIDE, type CageLines } from './cage-mesh.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
 import {
-  RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS, SCENE_UNIFORMS, sceneWgsl, type RenderBindGroup, type RenderPipelineName,
+  RENDER_BIND_GROUPS,
+  RENDER_PIPELINE_GROUPS,
+  SCENE_UNIFORMS,
+  sceneWgsl,
+  type RenderBindGroup,
+  type RenderPipelineName,
 } from './contract.ts';
 
 /** The WGSL sources of each pipeline's shader module, in order (the two cage pipelines share one). */
@@ -170,7 +175,11 @@ export class Renderer {
     }
     this.#vertexStorageLayout = layouts.vertexStorage;
     this.#wireArgsLayout = layouts.wireArgs;
-    this.#patchKinds = device.createBuffer({ label: 'patch kinds (none)', size: 4, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    this.#patchKinds = device.createBuffer({
+      label: 'patch kinds (none)',
+      size: 4,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
     this.#sceneBindGroup = device.createBindGroup({
       label: 'scene bind group',
       layout: layouts.scene,
@@ -275,13 +284,15 @@ export class Renderer {
         vertex: {
           module: cageModule,
           entryPoint: 'cageVertex',
-          buffers: [{
-            arrayStride: CAGE_LINE_STRIDE,
-            attributes: [
-              { shaderLocation: 0, offset: 0, format: 'float32x3' },
-              { shaderLocation: 1, offset: 12, format: 'unorm8x4' },
-            ],
-          }],
+          buffers: [
+            {
+              arrayStride: CAGE_LINE_STRIDE,
+              attributes: [
+                { shaderLocation: 0, offset: 0, format: 'float32x3' },
+                { shaderLocation: 1, offset: 12, format: 'unorm8x4' },
+              ],
+            },
+          ],
         },
         fragment: { module: cageModule, entryPoint: 'cageFragment', targets: blendedTarget, constants: { OPACITY: opacity } },
         primitive: { topology: 'line-list' },
@@ -301,8 +312,16 @@ export class Renderer {
       const count = TIMED_PASSES.length * 2;
       this.#timing = {
         querySet: device.createQuerySet({ label: 'render timestamps', type: 'timestamp', count }),
-        resolve: device.createBuffer({ label: 'render timestamps resolve', size: count * 8, usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC }),
-        read: device.createBuffer({ label: 'render timestamps readback', size: count * 8, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST }),
+        resolve: device.createBuffer({
+          label: 'render timestamps resolve',
+          size: count * 8,
+          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
+        }),
+        read: device.createBuffer({
+          label: 'render timestamps readback',
+          size: count * 8,
+          usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
+        }),
         state: 'idle',
         last: {},
       };
@@ -351,7 +370,12 @@ export class Renderer {
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
     });
     // Kinds are offset by one on the GPU: 0 means "no kind", drawn in the usual colours.
-    if (kinds && n) this.device.queue.writeBuffer(this.#patchKinds, 0, Uint32Array.from(kinds, (k) => k + 1));
+    if (kinds && n)
+      this.device.queue.writeBuffer(
+        this.#patchKinds,
+        0,
+        Uint32Array.from(kinds, (k) => k + 1),
+      );
     this.#bindPatches();
   }
 
@@ -423,14 +447,16 @@ export class Renderer {
     const targetView = target.createView({ label: 'render target view', format: this.colorFormat });
     const pass = encoder.beginRenderPass({
       label: 'lit pass',
-      colorAttachments: [{
-        view: msaa ? this.#msaaTexture!.createView({ label: 'msaa colour view' }) : targetView,
-        resolveTarget: msaa ? targetView : undefined,
-        clearValue: [0, 0, 0, 1],
-        loadOp: 'clear',
-        // The multisampled colour is only needed until it is resolved.
-        storeOp: msaa ? 'discard' : 'store',
-      }],
+      colorAttachments: [
+        {
+          view: msaa ? this.#msaaTexture!.createView({ label: 'msaa colour view' }) : targetView,
+          resolveTarget: msaa ? targetView : undefined,
+          clearValue: [0, 0, 0, 1],
+          loadOp: 'clear',
+          // The multisampled colour is only needed until it is resolved.
+          storeOp: msaa ? 'discard' : 'store',
+        },
+      ],
       depthStencilAttachment: {
         view: this.#depthTexture!.createView({ label: 'depth view' }),
         depthClearValue: 1,
@@ -526,15 +552,16 @@ export class Renderer {
     if (depth && depth.width === width && depth.height === height) return;
     this.#msaaTexture?.destroy();
     this.#depthTexture?.destroy();
-    this.#msaaTexture = this.sampleCount > 1
-      ? this.device.createTexture({
-          label: 'msaa colour target',
-          size: [width, height],
-          format: this.colorFormat,
-          sampleCount: this.sampleCount,
-          usage: GPUTextureUsage.RENDER_ATTACHMENT,
-        })
-      : null;
+    this.#msaaTexture =
+      this.sampleCount > 1
+        ? this.device.createTexture({
+            label: 'msaa colour target',
+            size: [width, height],
+            format: this.colorFormat,
+            sampleCount: this.sampleCount,
+            usage: GPUTextureUsage.RENDER_ATTACHMENT,
+          })
+        : null;
     this.#depthTexture = this.device.createTexture({
       label: 'depth target',
       size: [width, height],

@@ -47,25 +47,67 @@ export { prepareMesh, type PreparedMesh } from './prepare.ts';
 
 export const PARAMS = defineStruct('Params', [
   ['viewProj', 'mat4x4<f32>'],
-  ['nVerts', 'u32'], ['nTris', 'u32'], ['nEdges', 'u32'], ['maxFactor', 'u32'],
-  ['offTriVerts', 'u32'], ['offTriEdges', 'u32'], ['offTriFrame', 'u32'], ['offEdgeVerts', 'u32'],
-  ['offEdgeOwner', 'u32'], ['offVertexOwner', 'u32'], ['offNormals', 'u32'],
-  ['offEdgeF', 'u32'], ['offEdgeState', 'u32'], ['offEdgeSegs', 'u32'], ['offEdgeInterior', 'u32'], ['offEdgeBase', 'u32'],
-  ['offTriVertCount', 'u32'], ['offTriVertBase', 'u32'], ['offTriTriCount', 'u32'], ['offTriTriBase', 'u32'],
-  ['offTriRowCount', 'u32'], ['offTriRowBase', 'u32'], ['offRows', 'u32'],
-  ['offBudget', 'u32'], ['vertexCapacity', 'u32'], ['triangleCapacity', 'u32'],
-  ['mode', 'u32'], ['fixedFactor', 'f32'], ['lodScale', 'f32'], ['pixelAngle', 'f32'],
+  ['nVerts', 'u32'],
+  ['nTris', 'u32'],
+  ['nEdges', 'u32'],
+  ['maxFactor', 'u32'],
+  ['offTriVerts', 'u32'],
+  ['offTriEdges', 'u32'],
+  ['offTriFrame', 'u32'],
+  ['offEdgeVerts', 'u32'],
+  ['offEdgeOwner', 'u32'],
+  ['offVertexOwner', 'u32'],
+  ['offNormals', 'u32'],
+  ['offEdgeF', 'u32'],
+  ['offEdgeState', 'u32'],
+  ['offEdgeSegs', 'u32'],
+  ['offEdgeInterior', 'u32'],
+  ['offEdgeBase', 'u32'],
+  ['offTriVertCount', 'u32'],
+  ['offTriVertBase', 'u32'],
+  ['offTriTriCount', 'u32'],
+  ['offTriTriBase', 'u32'],
+  ['offTriRowCount', 'u32'],
+  ['offTriRowBase', 'u32'],
+  ['offRows', 'u32'],
+  ['offBudget', 'u32'],
+  ['vertexCapacity', 'u32'],
+  ['triangleCapacity', 'u32'],
+  ['mode', 'u32'],
+  ['fixedFactor', 'f32'],
+  ['lodScale', 'f32'],
+  ['pixelAngle', 'f32'],
   ['eye', 'vec4<f32>'],
   // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
-  ['offFactorPos', 'u32'], ['offFactorNormal', 'u32'],
+  ['offFactorPos', 'u32'],
+  ['offFactorNormal', 'u32'],
   // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables; offCtrl: cageBuf
   // offset of the refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts)).
-  ['ccTri', 'u32'], ['ccPoly', 'u32'], ['ccRegions', 'u32'], ['ccPatchIdx', 'u32'], ['ccFans', 'u32'],
-  ['ccSectors', 'u32'], ['ccThreads', 'u32'], ['ccCos', 'u32'], ['ccRules', 'u32'], ['ccInputs', 'u32'],
-  ['ccVertexFan', 'u32'], ['nFans', 'u32'], ['ccSliceGroups', 'u32'], ['ccMaxDepth', 'u32'], ['offCtrl', 'u32'], ['ccFlat', 'u32'],
+  ['ccTri', 'u32'],
+  ['ccPoly', 'u32'],
+  ['ccRegions', 'u32'],
+  ['ccPatchIdx', 'u32'],
+  ['ccFans', 'u32'],
+  ['ccSectors', 'u32'],
+  ['ccThreads', 'u32'],
+  ['ccCos', 'u32'],
+  ['ccRules', 'u32'],
+  ['ccInputs', 'u32'],
+  ['ccVertexFan', 'u32'],
+  ['nFans', 'u32'],
+  ['ccSliceGroups', 'u32'],
+  ['ccMaxDepth', 'u32'],
+  ['offCtrl', 'u32'],
+  ['ccFlat', 'u32'],
 ] as const);
 
-const SCAN_PARAMS = defineStruct('ScanParams', [['inOff', 'u32'], ['outOff', 'u32'], ['n', 'u32'], ['sumsOff', 'u32'], ['skipOff', 'u32']] as const);
+const SCAN_PARAMS = defineStruct('ScanParams', [
+  ['inOff', 'u32'],
+  ['outOff', 'u32'],
+  ['n', 'u32'],
+  ['sumsOff', 'u32'],
+  ['skipOff', 'u32'],
+] as const);
 /** Values one scan workgroup covers (wgsl/scan.wgsl BLOCK). */
 const SCAN_BLOCK = 256 * 16;
 
@@ -80,10 +122,21 @@ export function grid2d(groups: number): [number, number] {
 }
 
 interface WorkLayout {
-  edgeF: number; edgeState: number; edgeSegs: number; edgeInterior: number; edgeBase: number;
-  triVertCount: number; triVertBase: number; triTriCount: number; triTriBase: number;
-  triRowCount: number; triRowBase: number; rows: number;
-  sums: number; budget: number; words: number;
+  edgeF: number;
+  edgeState: number;
+  edgeSegs: number;
+  edgeInterior: number;
+  edgeBase: number;
+  triVertCount: number;
+  triVertBase: number;
+  triTriCount: number;
+  triTriBase: number;
+  triRowCount: number;
+  triRowBase: number;
+  rows: number;
+  sums: number;
+  budget: number;
+  words: number;
 }
 
 const SCANS = 4;
@@ -99,14 +152,37 @@ function workLayout(nE: number, nT: number, maxFactor: number): WorkLayout {
   };
   const sumsPerScan = Math.ceil(Math.max(nE, nT, 1) / SCAN_BLOCK) + 1;
   return {
-    edgeF: take(nE), edgeState: take(nE), edgeSegs: take(nE), edgeInterior: take(nE), edgeBase: take(nE + 1),
-    triVertCount: take(nT), triVertBase: take(nT + 1), triTriCount: take(nT), triTriBase: take(nT + 1),
-    triRowCount: take(nT), triRowBase: take(nT + 1), rows: take(2 * (maxFactor + 1) * nT),
-    sums: take(SCANS * sumsPerScan), budget: take(4), words: at,
+    edgeF: take(nE),
+    edgeState: take(nE),
+    edgeSegs: take(nE),
+    edgeInterior: take(nE),
+    edgeBase: take(nE + 1),
+    triVertCount: take(nT),
+    triVertBase: take(nT + 1),
+    triTriCount: take(nT),
+    triTriBase: take(nT + 1),
+    triRowCount: take(nT),
+    triRowBase: take(nT + 1),
+    rows: take(2 * (maxFactor + 1) * nT),
+    sums: take(SCANS * sumsPerScan),
+    budget: take(4),
+    words: at,
   };
 }
 
-type PassName = 'factors' | 'count' | 'budget' | 'corners' | 'edges' | 'plan' | 'emitVertices' | 'emitTriangles' | 'ccPoints' | 'ccSlices' | 'ccLimits' | 'ccVertexLimits';
+type PassName =
+  | 'factors'
+  | 'count'
+  | 'budget'
+  | 'corners'
+  | 'edges'
+  | 'plan'
+  | 'emitVertices'
+  | 'emitTriangles'
+  | 'ccPoints'
+  | 'ccSlices'
+  | 'ccLimits'
+  | 'ccVertexLimits';
 /** Bindings each pass uses (its pipeline layout is derived from the WGSL: 'auto'). */
 const PASS_BINDINGS: Record<PassName, number[]> = {
   factors: [0, 1, 2, 3],
@@ -166,7 +242,11 @@ export class Tessellator {
     ccRanges: { group: GPUBindGroup; count: number }[];
   };
   private readonly timing?: {
-    set: GPUQuerySet; resolve: GPUBuffer; read: GPUBuffer; pending: boolean; stages: string[];
+    set: GPUQuerySet;
+    resolve: GPUBuffer;
+    read: GPUBuffer;
+    pending: boolean;
+    stages: string[];
     reading?: Promise<Record<string, number>>;
   };
 
@@ -200,7 +280,8 @@ export class Tessellator {
     this.paramsBytes = new ArrayBuffer(PARAMS.size);
     this.params = device.createBuffer({ label: 'tess params', size: PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
 
-    const module = (label: string, ...parts: string[]) => device.createShaderModule({ label, code: [PARAMS.wgsl, commonWgsl, ...parts].join('\n') });
+    const module = (label: string, ...parts: string[]) =>
+      device.createShaderModule({ label, code: [PARAMS.wgsl, commonWgsl, ...parts].join('\n') });
     const pipeline = (label: string, mod: GPUShaderModule, entryPoint = 'main') =>
       device.createComputePipeline({ label, layout: 'auto', compute: { module: mod, entryPoint } });
     const cc = this.surface === 'catmull-clark';
@@ -246,8 +327,16 @@ export class Tessellator {
       const count = 2 * 3 * ATTEMPTS + 6;
       this.timing = {
         set: device.createQuerySet({ label: 'tess timestamps', type: 'timestamp', count }),
-        resolve: device.createBuffer({ label: 'tess timestamps resolve', size: 8 * count, usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC }),
-        read: device.createBuffer({ label: 'tess timestamps read', size: 8 * count, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST }),
+        resolve: device.createBuffer({
+          label: 'tess timestamps resolve',
+          size: 8 * count,
+          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
+        }),
+        read: device.createBuffer({
+          label: 'tess timestamps read',
+          size: 8 * count,
+          usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
+        }),
         pending: false,
         stages: [],
       };
@@ -259,7 +348,8 @@ export class Tessellator {
   setMesh(prepared: PreparedMesh, cc?: CatmullClarkData): void {
     const device = this.device;
     if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
-    if (this.surface === 'catmull-clark' && !cc) throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
+    if (this.surface === 'catmull-clark' && !cc)
+      throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
     if (this.surface !== 'catmull-clark') cc = undefined;
     if (prepared.triangleCount > this.output.triangleCapacity || prepared.vertexCount + prepared.edgeCount > this.output.vertexCapacity) {
       throw new Error(
@@ -280,7 +370,11 @@ export class Tessellator {
     staticWords.set(this.tables, 0);
     parts.forEach((p, i) => staticWords.set(p, offsets[i]));
     if (cc) staticWords.set(cc.words, ccBase);
-    const staticBuf = device.createBuffer({ label: 'tess tables + topology', size: staticWords.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
+    const staticBuf = device.createBuffer({
+      label: 'tess tables + topology',
+      size: staticWords.byteLength,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+    });
     device.queue.writeBuffer(staticBuf, 0, staticWords);
 
     const nV = prepared.vertexCount;
@@ -291,30 +385,68 @@ export class Tessellator {
     const cageWords = new Float32Array(cc ? offLimits + 6 * nV : 6 * nV);
     cageWords.set(prepared.positions, 0);
     cageWords.set(prepared.normals, 3 * prepared.vertexCount);
-    const cageBuf = device.createBuffer({ label: 'tess cage', size: Math.max(16, cageWords.byteLength), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC });
+    const cageBuf = device.createBuffer({
+      label: 'tess cage',
+      size: Math.max(16, cageWords.byteLength),
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC,
+    });
     device.queue.writeBuffer(cageBuf, 0, cageWords);
 
     const layout = workLayout(prepared.edgeCount, prepared.triangleCount, this.maxFactor);
     if (4 * layout.words > device.limits.maxStorageBufferBindingSize) {
       throw new Error(`the cage is too large: its scratch buffer (${4 * layout.words} bytes) exceeds the device's storage binding limit`);
     }
-    const work = device.createBuffer({ label: 'tess work', size: 4 * layout.words, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST });
+    const work = device.createBuffer({
+      label: 'tess work',
+      size: 4 * layout.words,
+      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST,
+    });
 
     const view = new DataView(this.paramsBytes);
     PARAMS.write(view, {
-      nVerts: prepared.vertexCount, nTris: prepared.triangleCount, nEdges: prepared.edgeCount, maxFactor: this.maxFactor,
-      offTriVerts: offsets[0], offTriEdges: offsets[1], offTriFrame: offsets[2], offEdgeVerts: offsets[3],
-      offEdgeOwner: offsets[4], offVertexOwner: offsets[5], offNormals: 3 * prepared.vertexCount,
-      offEdgeF: layout.edgeF, offEdgeState: layout.edgeState, offEdgeSegs: layout.edgeSegs, offEdgeInterior: layout.edgeInterior, offEdgeBase: layout.edgeBase,
-      offTriVertCount: layout.triVertCount, offTriVertBase: layout.triVertBase, offTriTriCount: layout.triTriCount, offTriTriBase: layout.triTriBase,
-      offTriRowCount: layout.triRowCount, offTriRowBase: layout.triRowBase, offRows: layout.rows,
-      offBudget: layout.budget, vertexCapacity: this.output.vertexCapacity, triangleCapacity: this.output.triangleCapacity,
-      offFactorPos: cc ? offLimits : 0, offFactorNormal: cc ? offLimits + 3 * nV : 3 * nV,
-      ccTri: ccBase + (cc?.offTri ?? 0), ccPoly: ccBase + (cc?.offPoly ?? 0), ccRegions: ccBase + (cc?.offRegions ?? 0),
-      ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0), ccFans: ccBase + (cc?.offFans ?? 0), ccSectors: ccBase + (cc?.offSectors ?? 0),
-      ccThreads: ccBase + (cc?.offThreads ?? 0), ccCos: ccBase + (cc?.offCos ?? 0), ccRules: ccBase + (cc?.offRules ?? 0),
-      ccInputs: ccBase + (cc?.offInputs ?? 0), ccVertexFan: ccBase + (cc?.offVertexFan ?? 0), nFans: cc?.fanCount ?? 0,
-      ccSliceGroups: cc?.sliceWorkgroups ?? 0, ccMaxDepth: cc?.maxDepth ?? 0, offCtrl,
+      nVerts: prepared.vertexCount,
+      nTris: prepared.triangleCount,
+      nEdges: prepared.edgeCount,
+      maxFactor: this.maxFactor,
+      offTriVerts: offsets[0],
+      offTriEdges: offsets[1],
+      offTriFrame: offsets[2],
+      offEdgeVerts: offsets[3],
+      offEdgeOwner: offsets[4],
+      offVertexOwner: offsets[5],
+      offNormals: 3 * prepared.vertexCount,
+      offEdgeF: layout.edgeF,
+      offEdgeState: layout.edgeState,
+      offEdgeSegs: layout.edgeSegs,
+      offEdgeInterior: layout.edgeInterior,
+      offEdgeBase: layout.edgeBase,
+      offTriVertCount: layout.triVertCount,
+      offTriVertBase: layout.triVertBase,
+      offTriTriCount: layout.triTriCount,
+      offTriTriBase: layout.triTriBase,
+      offTriRowCount: layout.triRowCount,
+      offTriRowBase: layout.triRowBase,
+      offRows: layout.rows,
+      offBudget: layout.budget,
+      vertexCapacity: this.output.vertexCapacity,
+      triangleCapacity: this.output.triangleCapacity,
+      offFactorPos: cc ? offLimits : 0,
+      offFactorNormal: cc ? offLimits + 3 * nV : 3 * nV,
+      ccTri: ccBase + (cc?.offTri ?? 0),
+      ccPoly: ccBase + (cc?.offPoly ?? 0),
+      ccRegions: ccBase + (cc?.offRegions ?? 0),
+      ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0),
+      ccFans: ccBase + (cc?.offFans ?? 0),
+      ccSectors: ccBase + (cc?.offSectors ?? 0),
+      ccThreads: ccBase + (cc?.offThreads ?? 0),
+      ccCos: ccBase + (cc?.offCos ?? 0),
+      ccRules: ccBase + (cc?.offRules ?? 0),
+      ccInputs: ccBase + (cc?.offInputs ?? 0),
+      ccVertexFan: ccBase + (cc?.offVertexFan ?? 0),
+      nFans: cc?.fanCount ?? 0,
+      ccSliceGroups: cc?.sliceWorkgroups ?? 0,
+      ccMaxDepth: cc?.maxDepth ?? 0,
+      offCtrl,
     });
 
     const resources: Record<number, GPUBindingResource> = {
@@ -351,12 +483,19 @@ export class Tessellator {
       const bytes = new ArrayBuffer(SCAN_PARAMS.size);
       // Skip the scan once the budget has accepted an attempt (its "accepted" word).
       SCAN_PARAMS.write(new DataView(bytes), { ...s, sumsOff: layout.sums + i * sumsPerScan, skipOff: layout.budget });
-      const uniform = device.createBuffer({ label: `scan params ${i}`, size: SCAN_PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      const uniform = device.createBuffer({
+        label: `scan params ${i}`,
+        size: SCAN_PARAMS.size,
+        usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+      });
       device.queue.writeBuffer(uniform, 0, bytes);
       const group = device.createBindGroup({
         label: `scan ${i}`,
         layout: this.scanLayout,
-        entries: [{ binding: 0, resource: { buffer: uniform } }, { binding: 1, resource: { buffer: work } }],
+        entries: [
+          { binding: 0, resource: { buffer: uniform } },
+          { binding: 1, resource: { buffer: work } },
+        ],
       });
       return { group, n: s.n, uniform };
     });
@@ -365,7 +504,10 @@ export class Tessellator {
     const ccRanges: { group: GPUBindGroup; count: number }[] = [];
     const rangeUniforms: GPUBuffer[] = [];
     for (const [ff, fc, vf, vc] of cc?.levelRanges ?? []) {
-      for (const [first, count] of [[ff, fc], [vf, vc]]) {
+      for (const [first, count] of [
+        [ff, fc],
+        [vf, vc],
+      ]) {
         const u = device.createBuffer({ label: 'cc level range', size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
         device.queue.writeBuffer(u, 0, Uint32Array.of(first, count, 0, 0));
         rangeUniforms.push(u);
@@ -374,7 +516,9 @@ export class Tessellator {
           group: device.createBindGroup({
             label: 'cc level points',
             layout: this.pipelines.ccPoints.getBindGroupLayout(0),
-            entries: [resources[0], resources[1], resources[2]].map((resource, binding) => ({ binding, resource })).concat([{ binding: 3, resource: { buffer: u } }]),
+            entries: [resources[0], resources[1], resources[2]]
+              .map((resource, binding) => ({ binding, resource }))
+              .concat([{ binding: 3, resource: { buffer: u } }]),
           }),
         });
       }
@@ -460,7 +604,9 @@ export class Tessellator {
       }
       return encoder.beginComputePass(desc);
     };
-    const nE = m.prepared.edgeCount, nT = m.prepared.triangleCount, nV = m.prepared.vertexCount;
+    const nE = m.prepared.edgeCount,
+      nT = m.prepared.triangleCount,
+      nV = m.prepared.vertexCount;
     const run = (cp: GPUComputePassEncoder, name: PassName, groups: number) => {
       cp.setPipeline(this.pipelines[name]);
       cp.setBindGroup(0, m.groups[name]);
@@ -583,7 +729,18 @@ export class Tessellator {
 
   destroy(): void {
     this.releaseMesh();
-    for (const b of [this.output.positions, this.output.normals, this.output.bary, this.output.srcTri, this.output.indices, this.output.drawArgs, this.output.counts, this.params, this.emitArgs]) b.destroy();
+    for (const b of [
+      this.output.positions,
+      this.output.normals,
+      this.output.bary,
+      this.output.srcTri,
+      this.output.indices,
+      this.output.drawArgs,
+      this.output.counts,
+      this.params,
+      this.emitArgs,
+    ])
+      b.destroy();
     this.timing?.set.destroy();
     this.timing?.resolve.destroy();
     this.timing?.read.destroy();

@@ -54,5 +54,7 @@ export function encodeHeightPng(map: HeightMap): Uint8Array {
   } else {
     png.data = Buffer.from(Uint8Array.from(map.data)) as typeof png.data;
   }
-  return new Uint8Array(PNG.sync.write(png, { colorType: 0, inputColorType: 0, bitDepth: map.bits, inputHasAlpha: false, deflateLevel: 9 }));
+  return new Uint8Array(
+    PNG.sync.write(png, { colorType: 0, inputColorType: 0, bitDepth: map.bits, inputHasAlpha: false, deflateLevel: 9 }),
+  );
 }

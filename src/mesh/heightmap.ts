@@ -36,7 +36,8 @@ export interface HeightSample {
 }
 
 export function makeHeightMap(width: number, height: number, data: Uint16Array, bits: 8 | 16): HeightMap {
-  if (!(Number.isInteger(width) && width > 0 && Number.isInteger(height) && height > 0)) throw new RangeError(`height map size ${width}x${height} is not positive`);
+  if (!(Number.isInteger(width) && width > 0 && Number.isInteger(height) && height > 0))
+    throw new RangeError(`height map size ${width}x${height} is not positive`);
   if (data.length !== width * height) throw new RangeError(`height map has ${data.length} texels, expected ${width}x${height}`);
   const max = (1 << bits) - 1;
   for (let i = 0; i < data.length; i++) if (data[i] > max) throw new RangeError(`texel ${i} = ${data[i]} exceeds ${bits}-bit range`);
@@ -47,10 +48,11 @@ export function makeHeightMap(width: number, height: number, data: Uint16Array, 
 export function heightMapFromFunction(width: number, height: number, bits: 8 | 16, fn: (u: number, v: number) => number): HeightMap {
   const max = (1 << bits) - 1;
   const data = new Uint16Array(width * height);
-  for (let j = 0; j < height; j++) for (let i = 0; i < width; i++) {
-    const x = fn((i + 0.5) / width, 1 - (j + 0.5) / height);
-    data[j * width + i] = Math.round(Math.min(1, Math.max(0, x)) * max);
-  }
+  for (let j = 0; j < height; j++)
+    for (let i = 0; i < width; i++) {
+      const x = fn((i + 0.5) / width, 1 - (j + 0.5) / height);
+      data[j * width + i] = Math.round(Math.min(1, Math.max(0, x)) * max);
+    }
   return { width, height, data, bits };
 }
 
@@ -62,15 +64,24 @@ function wrapIndex(i: number, n: number, wrap: HeightWrap): number {
 /** Bilinear value and gradient at texture coordinates (u, v). */
 export function sampleHeight(map: HeightMap, u: number, v: number, wrap: HeightWrap = 'repeat'): HeightSample {
   if (!Number.isFinite(u) || !Number.isFinite(v)) throw new RangeError(`texture coordinate (${u}, ${v}) is not finite`);
-  const W = map.width, H = map.height;
-  const x = u * W - 0.5, y = (1 - v) * H - 0.5;
-  const x0 = Math.floor(x), y0 = Math.floor(y);
-  const fx = x - x0, fy = y - y0;
-  const i0 = wrapIndex(x0, W, wrap), i1 = wrapIndex(x0 + 1, W, wrap);
-  const j0 = wrapIndex(y0, H, wrap), j1 = wrapIndex(y0 + 1, H, wrap);
+  const W = map.width,
+    H = map.height;
+  const x = u * W - 0.5,
+    y = (1 - v) * H - 0.5;
+  const x0 = Math.floor(x),
+    y0 = Math.floor(y);
+  const fx = x - x0,
+    fy = y - y0;
+  const i0 = wrapIndex(x0, W, wrap),
+    i1 = wrapIndex(x0 + 1, W, wrap);
+  const j0 = wrapIndex(y0, H, wrap),
+    j1 = wrapIndex(y0 + 1, H, wrap);
   const inv = 1 / ((1 << map.bits) - 1);
   const d = map.data;
-  const t00 = d[j0 * W + i0] * inv, t10 = d[j0 * W + i1] * inv, t01 = d[j1 * W + i0] * inv, t11 = d[j1 * W + i1] * inv;
+  const t00 = d[j0 * W + i0] * inv,
+    t10 = d[j0 * W + i1] * inv,
+    t01 = d[j1 * W + i0] * inv,
+    t11 = d[j1 * W + i1] * inv;
   const value = (1 - fy) * ((1 - fx) * t00 + fx * t10) + fy * ((1 - fx) * t01 + fx * t11);
   // Gradient of the bilinear patch in texel units; on a texel line (fx or fy = 0) this is the
   // one-sided derivative from the cell the point belongs to (the floor cell).
@@ -88,7 +99,8 @@ export function sampleHeight(map: HeightMap, u: number, v: number, wrap: HeightW
  * arrives cut to 8 bits on that path.)
  */
 export function heightMapFromRgba(width: number, height: number, rgba: ArrayLike<number>): HeightMap {
-  if (rgba.length !== 4 * width * height) throw new RangeError(`expected ${4 * width * height} RGBA bytes for ${width}x${height}, got ${rgba.length}`);
+  if (rgba.length !== 4 * width * height)
+    throw new RangeError(`expected ${4 * width * height} RGBA bytes for ${width}x${height}, got ${rgba.length}`);
   const data = new Uint16Array(width * height);
   for (let p = 0; p < data.length; p++) data[p] = rgba[4 * p];
   return makeHeightMap(width, height, data, 8);

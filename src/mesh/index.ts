@@ -36,7 +36,10 @@ export function loadCage(text: string): LoadedCage {
         for (let h = cage.faceOffsets[f]; h < cage.faceOffsets[f + 1]; h++) if (cage.faceUvIndices[h] < 0) miss = true;
         if (miss) break;
       }
-      warnings.push({ line: cage.faceLines[f] ?? 0, message: `face ${f + 1} (and maybe others) lacks texture coordinates on some corners: the UVs are kept but cannot be used for displacement` });
+      warnings.push({
+        line: cage.faceLines[f] ?? 0,
+        message: `face ${f + 1} (and maybe others) lacks texture coordinates on some corners: the UVs are kept but cannot be used for displacement`,
+      });
     }
     return { cage, topology, warnings };
   } catch (e) {

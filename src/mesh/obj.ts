@@ -2,8 +2,13 @@
 // regression-shape tag lines (`t crease 2/1/0 v0 v1 s`, 0-based indices).
 import { CageError, type CageIssue } from './errors.ts';
 import {
-  type Cage, type CornerTag, type CreaseTag, type RawTag, type SubdivOptions,
-  SHARPNESS_INFINITE, normaliseSharpness,
+  type Cage,
+  type CornerTag,
+  type CreaseTag,
+  type RawTag,
+  type SubdivOptions,
+  SHARPNESS_INFINITE,
+  normaliseSharpness,
 } from './types.ts';
 
 export interface ParseResult {
@@ -14,9 +19,41 @@ export interface ParseResult {
 
 const FLOAT_RE = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
 const INT_RE = /^[+-]?\d+$/;
-const IGNORED = new Set(['o', 'g', 's', 'usemtl', 'mtllib', 'l', 'p', 'vp', 'cstype', 'deg', 'bmat', 'step',
-  'curv', 'curv2', 'surf', 'parm', 'trim', 'hole', 'scrv', 'sp', 'end', 'con', 'mg', 'bevel', 'c_interp',
-  'd_interp', 'lod', 'maplib', 'usemap', 'shadow_obj', 'trace_obj', 'ctech', 'stech']);
+const IGNORED = new Set([
+  'o',
+  'g',
+  's',
+  'usemtl',
+  'mtllib',
+  'l',
+  'p',
+  'vp',
+  'cstype',
+  'deg',
+  'bmat',
+  'step',
+  'curv',
+  'curv2',
+  'surf',
+  'parm',
+  'trim',
+  'hole',
+  'scrv',
+  'sp',
+  'end',
+  'con',
+  'mg',
+  'bevel',
+  'c_interp',
+  'd_interp',
+  'lod',
+  'maplib',
+  'usemap',
+  'shadow_obj',
+  'trace_obj',
+  'ctech',
+  'stech',
+]);
 /** OBJ statements that only matter for rendering, silently accepted. */
 const SILENT = new Set(['o', 'g', 's', 'usemtl', 'mtllib']);
 
@@ -85,13 +122,23 @@ export function parseObj(text: string): ParseResult {
     const args = toks.slice(1);
     switch (kw) {
       case 'v': {
-        if (args.length < 3) { err(lineNo, `vertex needs 3 coordinates, got ${args.length}`); break; }
-        if (args.length > 7) { err(lineNo, `vertex has ${args.length} values (expected 3, 4 or 6/7 with colour)`); break; }
+        if (args.length < 3) {
+          err(lineNo, `vertex needs 3 coordinates, got ${args.length}`);
+          break;
+        }
+        if (args.length > 7) {
+          err(lineNo, `vertex has ${args.length} values (expected 3, 4 or 6/7 with colour)`);
+          break;
+        }
         const xyz: number[] = [];
         let ok = true;
         for (let k = 0; k < args.length; k++) {
           const x = parseFloatTok(args[k]);
-          if (typeof x === 'string') { err(lineNo, `vertex coordinate ${k + 1}: ${x}`); ok = false; break; }
+          if (typeof x === 'string') {
+            err(lineNo, `vertex coordinate ${k + 1}: ${x}`);
+            ok = false;
+            break;
+          }
           if (k < 3) xyz.push(x);
         }
         // Keep the vertex (possibly as 0,0,0) so later indices still line up.
@@ -100,7 +147,11 @@ export function parseObj(text: string): ParseResult {
         break;
       }
       case 'vt': {
-        if (args.length < 1 || args.length > 3) { err(lineNo, `texture coordinate needs 1-3 values, got ${args.length}`); uvs.push(0, 0); break; }
+        if (args.length < 1 || args.length > 3) {
+          err(lineNo, `texture coordinate needs 1-3 values, got ${args.length}`);
+          uvs.push(0, 0);
+          break;
+        }
         const u = parseFloatTok(args[0]);
         const v = args.length > 1 ? parseFloatTok(args[1]) : 0;
         if (typeof u === 'string') err(lineNo, `texture coordinate: ${u}`);
@@ -109,35 +160,67 @@ export function parseObj(text: string): ParseResult {
         break;
       }
       case 'vn': {
-        if (args.length !== 3) { err(lineNo, `normal needs 3 values, got ${args.length}`); nrm.push(0, 0, 0); break; }
+        if (args.length !== 3) {
+          err(lineNo, `normal needs 3 values, got ${args.length}`);
+          nrm.push(0, 0, 0);
+          break;
+        }
         for (const a of args) {
           const x = parseFloatTok(a);
-          if (typeof x === 'string') { err(lineNo, `normal: ${x}`); nrm.push(0); } else nrm.push(x);
+          if (typeof x === 'string') {
+            err(lineNo, `normal: ${x}`);
+            nrm.push(0);
+          } else nrm.push(x);
         }
         break;
       }
       case 'f': {
-        if (args.length < 3) { err(lineNo, `face needs at least 3 corners, got ${args.length}`); break; }
+        if (args.length < 3) {
+          err(lineNo, `face needs at least 3 corners, got ${args.length}`);
+          break;
+        }
         const face: PendingFace = { v: [], vt: [], vn: [], line: lineNo };
         let ok = true;
-        const nv = pos.length / 3, nt = uvs.length / 2, nn = nrm.length / 3;
+        const nv = pos.length / 3,
+          nt = uvs.length / 2,
+          nn = nrm.length / 3;
         for (const a of args) {
           const parts = a.split('/');
-          if (parts.length > 3 || parts[0] === '') { err(lineNo, `malformed face corner "${clip(a)}" (expected v, v/vt, v//vn or v/vt/vn)`); ok = false; break; }
+          if (parts.length > 3 || parts[0] === '') {
+            err(lineNo, `malformed face corner "${clip(a)}" (expected v, v/vt, v//vn or v/vt/vn)`);
+            ok = false;
+            break;
+          }
           const idx = [-1, -1, -1];
           for (let p = 0; p < parts.length; p++) {
             const s = parts[p];
             if (s === '' && p > 0) continue;
-            if (!INT_RE.test(s)) { err(lineNo, `malformed face corner "${clip(a)}": "${clip(s)}" is not an integer index`); ok = false; break; }
+            if (!INT_RE.test(s)) {
+              err(lineNo, `malformed face corner "${clip(a)}": "${clip(s)}" is not an integer index`);
+              ok = false;
+              break;
+            }
             const n = Number(s);
             const count = p === 0 ? nv : p === 1 ? nt : nn;
             const what = p === 0 ? 'vertex' : p === 1 ? 'texture coordinate' : 'normal';
-            if (n === 0) { err(lineNo, `${what} index 0 is invalid (OBJ indices start at 1)`); ok = false; break; }
+            if (n === 0) {
+              err(lineNo, `${what} index 0 is invalid (OBJ indices start at 1)`);
+              ok = false;
+              break;
+            }
             if (n < 0) {
-              if (-n > count) { err(lineNo, `relative ${what} index ${n} is out of range (only ${count} defined so far)`); ok = false; break; }
+              if (-n > count) {
+                err(lineNo, `relative ${what} index ${n} is out of range (only ${count} defined so far)`);
+                ok = false;
+                break;
+              }
               idx[p] = count + n;
             } else {
-              if (!Number.isSafeInteger(n)) { err(lineNo, `${what} index ${clip(s)} is out of range`); ok = false; break; }
+              if (!Number.isSafeInteger(n)) {
+                err(lineNo, `${what} index ${clip(s)} is out of range`);
+                ok = false;
+                break;
+              }
               idx[p] = n - 1; // range checked at the end (forward references allowed)
             }
           }
@@ -164,7 +247,9 @@ export function parseObj(text: string): ParseResult {
     }
   }
 
-  const nv = pos.length / 3, nt = uvs.length / 2, nn = nrm.length / 3;
+  const nv = pos.length / 3,
+    nt = uvs.length / 2,
+    nn = nrm.length / 3;
   for (const f of faces) {
     for (let j = 0; j < f.v.length; j++) {
       if (f.v[j] >= nv) err(f.line, `vertex index ${f.v[j] + 1} is out of range (${nv} vertices)`);
@@ -173,7 +258,10 @@ export function parseObj(text: string): ParseResult {
     }
     const seen = new Set<number>();
     for (const v of f.v) {
-      if (seen.has(v)) { err(f.line, `degenerate face: vertex ${v + 1} appears more than once`); break; }
+      if (seen.has(v)) {
+        err(f.line, `degenerate face: vertex ${v + 1} appears more than once`);
+        break;
+      }
       seen.add(v);
     }
   }
@@ -182,7 +270,8 @@ export function parseObj(text: string): ParseResult {
     else if (c.v0 === c.v1) err(c.line, `crease from vertex ${c.v0} to itself`);
   }
   for (const c of corners) if (c.v >= nv) err(c.line, `corner vertex index ${c.v} out of range (0-based, ${nv} vertices)`);
-  for (let k = 0; k < holes.length; k++) if (holes[k] >= faces.length) err(holeLines[k], `hole face index ${holes[k]} out of range (0-based, ${faces.length} faces)`);
+  for (let k = 0; k < holes.length; k++)
+    if (holes[k] >= faces.length) err(holeLines[k], `hole face index ${holes[k]} out of range (0-based, ${faces.length} faces)`);
   if (faces.length === 0 && errors.length === 0) err(0, pos.length === 0 ? 'empty file: no vertices and no faces' : 'no faces');
   if (errors.length > 0) {
     errors.sort((a, b) => a.line - b.line);
@@ -210,10 +299,19 @@ export function parseObj(text: string): ParseResult {
   return {
     cage: {
       positions: Float64Array.from(pos),
-      faceOffsets, faceIndices,
-      uvs: Float64Array.from(uvs), faceUvIndices: faceUv,
-      normals: Float64Array.from(nrm), faceNormalIndices: faceNrm,
-      creases, corners, holes, holeLines, fileOptions, rawTags, faceLines,
+      faceOffsets,
+      faceIndices,
+      uvs: Float64Array.from(uvs),
+      faceUvIndices: faceUv,
+      normals: Float64Array.from(nrm),
+      faceNormalIndices: faceNrm,
+      creases,
+      corners,
+      holes,
+      holeLines,
+      fileOptions,
+      rawTags,
+      faceLines,
       vertexLines: Int32Array.from(vLines),
     },
     warnings,
@@ -230,13 +328,26 @@ interface TagSink {
 }
 
 function parseTag(
-  args: string[], line: number, err: (l: number, m: string) => void, warnings: CageIssue[], sink: TagSink, text: string,
+  args: string[],
+  line: number,
+  err: (l: number, m: string) => void,
+  warnings: CageIssue[],
+  sink: TagSink,
+  text: string,
 ): void {
-  if (args.length < 2) { err(line, 'tag needs a name and counts "nInt/nFloat/nString"'); return; }
+  if (args.length < 2) {
+    err(line, 'tag needs a name and counts "nInt/nFloat/nString"');
+    return;
+  }
   const name = args[0];
   const m = /^(\d+)\/(\d+)\/(\d+)$/.exec(args[1]);
-  if (!m) { err(line, `tag "${clip(name)}": counts "${clip(args[1])}" are not of the form nInt/nFloat/nString`); return; }
-  const ni = Number(m[1]), nf = Number(m[2]), ns = Number(m[3]);
+  if (!m) {
+    err(line, `tag "${clip(name)}": counts "${clip(args[1])}" are not of the form nInt/nFloat/nString`);
+    return;
+  }
+  const ni = Number(m[1]),
+    nf = Number(m[2]),
+    ns = Number(m[3]);
   const rest = args.slice(2);
   if (ni + nf + ns !== rest.length) {
     err(line, `tag "${clip(name)}": counts ${args[1]} announce ${ni + nf + ns} values but ${rest.length} follow`);
@@ -245,51 +356,90 @@ function parseTag(
   const ints: number[] = [];
   for (let k = 0; k < ni; k++) {
     const s = rest[k];
-    if (!INT_RE.test(s)) { err(line, `tag "${clip(name)}": "${clip(s)}" is not an integer`); return; }
+    if (!INT_RE.test(s)) {
+      err(line, `tag "${clip(name)}": "${clip(s)}" is not an integer`);
+      return;
+    }
     const n = Number(s);
-    if (n < 0 || !Number.isSafeInteger(n)) { err(line, `tag "${clip(name)}": index ${clip(s)} is negative or too large (tag indices are 0-based)`); return; }
+    if (n < 0 || !Number.isSafeInteger(n)) {
+      err(line, `tag "${clip(name)}": index ${clip(s)} is negative or too large (tag indices are 0-based)`);
+      return;
+    }
     ints.push(n);
   }
   const floats: number[] = [];
   for (let k = 0; k < nf; k++) {
     const x = parseFloatTok(rest[ni + k]);
-    if (typeof x === 'string') { err(line, `tag "${clip(name)}": ${x}`); return; }
+    if (typeof x === 'string') {
+      err(line, `tag "${clip(name)}": ${x}`);
+      return;
+    }
     floats.push(x);
   }
   const strs = rest.slice(ni + nf);
   switch (name) {
     case 'crease': {
-      if (ni < 2 || ni % 2 !== 0) { err(line, `crease tag needs pairs of vertex indices, got ${ni} integers`); return; }
-      if (nf !== 1 && nf !== ni / 2) { err(line, `crease tag needs 1 sharpness or one per edge, got ${nf}`); return; }
+      if (ni < 2 || ni % 2 !== 0) {
+        err(line, `crease tag needs pairs of vertex indices, got ${ni} integers`);
+        return;
+      }
+      if (nf !== 1 && nf !== ni / 2) {
+        err(line, `crease tag needs 1 sharpness or one per edge, got ${nf}`);
+        return;
+      }
       for (let k = 0; k < ni; k += 2) {
         const s = nf === 1 ? floats[0] : floats[k / 2];
-        if (s < 0) { err(line, `crease sharpness ${s} is negative`); return; }
+        if (s < 0) {
+          err(line, `crease sharpness ${s} is negative`);
+          return;
+        }
         sink.creases.push({ v0: ints[k], v1: ints[k + 1], sharpness: normaliseSharpness(s), line });
       }
       return;
     }
     case 'corner': {
-      if (ni < 1) { err(line, 'corner tag needs at least one vertex index'); return; }
-      if (nf !== 1 && nf !== ni) { err(line, `corner tag needs 1 sharpness or one per vertex, got ${nf}`); return; }
+      if (ni < 1) {
+        err(line, 'corner tag needs at least one vertex index');
+        return;
+      }
+      if (nf !== 1 && nf !== ni) {
+        err(line, `corner tag needs 1 sharpness or one per vertex, got ${nf}`);
+        return;
+      }
       for (let k = 0; k < ni; k++) {
         const s = nf === 1 ? floats[0] : floats[k];
-        if (s < 0) { err(line, `corner sharpness ${s} is negative`); return; }
+        if (s < 0) {
+          err(line, `corner sharpness ${s} is negative`);
+          return;
+        }
         sink.corners.push({ v: ints[k], sharpness: normaliseSharpness(s), line });
       }
       return;
     }
     case 'hole':
-      if (ni < 1) { err(line, 'hole tag needs at least one face index'); return; }
-      for (const f of ints) { sink.holes.push(f); sink.holeLines.push(line); }
+      if (ni < 1) {
+        err(line, 'hole tag needs at least one face index');
+        return;
+      }
+      for (const f of ints) {
+        sink.holes.push(f);
+        sink.holeLines.push(line);
+      }
       return;
     case 'interpolateboundary': {
-      if (ni !== 1 || ints[0] > 2) { err(line, 'interpolateboundary tag needs one integer: 0 none, 1 edge-and-corner, 2 edge-only'); return; }
+      if (ni !== 1 || ints[0] > 2) {
+        err(line, 'interpolateboundary tag needs one integer: 0 none, 1 edge-and-corner, 2 edge-only');
+        return;
+      }
       sink.fileOptions.boundary = (['none', 'edge-and-corner', 'edge-only'] as const)[ints[0]];
       return;
     }
     case 'creasemethod': {
       const s = strs[0];
-      if (ns !== 1 || (s !== 'normal' && s !== 'uniform' && s !== 'chaikin')) { err(line, 'creasemethod tag needs one string: normal or chaikin'); return; }
+      if (ns !== 1 || (s !== 'normal' && s !== 'uniform' && s !== 'chaikin')) {
+        err(line, 'creasemethod tag needs one string: normal or chaikin');
+        return;
+      }
       sink.fileOptions.creasing = s === 'chaikin' ? 'chaikin' : 'uniform';
       return;
     }
@@ -317,7 +467,8 @@ export function writeObj(c: Cage, header?: string): string {
     const parts: string[] = [];
     for (let k = c.faceOffsets[f]; k < c.faceOffsets[f + 1]; k++) {
       const v = c.faceIndices[k] + 1;
-      const t = c.faceUvIndices[k], n = c.faceNormalIndices[k];
+      const t = c.faceUvIndices[k],
+        n = c.faceNormalIndices[k];
       if (t < 0 && n < 0) parts.push(`${v}`);
       else if (n < 0) parts.push(`${v}/${t + 1}`);
       else if (t < 0) parts.push(`${v}//${n + 1}`);

@@ -42,7 +42,11 @@ export interface HalfEdgeProblem {
 }
 
 /** Build half-edge adjacency. Never throws on bad topology: problems are returned. */
-export function buildHalfEdges(nVerts: number, faceOffsets: Int32Array, faceIndices: Int32Array): { he: HalfEdges; problems: HalfEdgeProblem[] } {
+export function buildHalfEdges(
+  nVerts: number,
+  faceOffsets: Int32Array,
+  faceIndices: Int32Array,
+): { he: HalfEdges; problems: HalfEdgeProblem[] } {
   const nFaces = faceOffsets.length - 1;
   const nHe = faceIndices.length;
   const heFace = new Int32Array(nHe);
@@ -51,7 +55,9 @@ export function buildHalfEdges(nVerts: number, faceOffsets: Int32Array, faceIndi
   const heTwin = new Int32Array(nHe).fill(-1);
   const heEdge = new Int32Array(nHe);
   for (let f = 0; f < nFaces; f++) {
-    const a = faceOffsets[f], b = faceOffsets[f + 1], n = b - a;
+    const a = faceOffsets[f],
+      b = faceOffsets[f + 1],
+      n = b - a;
     for (let j = 0; j < n; j++) {
       heFace[a + j] = f;
       heNext[a + j] = a + ((j + 1) % n);
@@ -65,7 +71,8 @@ export function buildHalfEdges(nVerts: number, faceOffsets: Int32Array, faceIndi
   const extra = new Map<number, number[]>();
   const problems: HalfEdgeProblem[] = [];
   for (let h = 0; h < nHe; h++) {
-    const a = faceIndices[h], b = faceIndices[heNext[h]];
+    const a = faceIndices[h],
+      b = faceIndices[heNext[h]];
     const key = a < b ? a * nVerts + b : b * nVerts + a;
     let e = map.get(key);
     if (e === undefined) {
@@ -114,7 +121,10 @@ export function buildHalfEdges(nVerts: number, faceOffsets: Int32Array, faceIndi
   const fill = vertHeOffsets.slice(0, nVerts);
   for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
   const vertEdgeOffsets = new Int32Array(nVerts + 1);
-  for (let e = 0; e < nEdges; e++) { vertEdgeOffsets[edgeVerts[2 * e] + 1]++; vertEdgeOffsets[edgeVerts[2 * e + 1] + 1]++; }
+  for (let e = 0; e < nEdges; e++) {
+    vertEdgeOffsets[edgeVerts[2 * e] + 1]++;
+    vertEdgeOffsets[edgeVerts[2 * e + 1] + 1]++;
+  }
   for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
   const vertEdges = new Int32Array(2 * nEdges);
   const fill2 = vertEdgeOffsets.slice(0, nVerts);
@@ -124,9 +134,23 @@ export function buildHalfEdges(nVerts: number, faceOffsets: Int32Array, faceIndi
   }
   return {
     he: {
-      nVerts, nFaces, nEdges, faceOffsets, faceIndices, heFace, heNext, hePrev, heTwin, heEdge,
-      edgeVerts, edgeFaceCount: Int32Array.from(edgeCount), edgeHe: Int32Array.from(edgeHeA),
-      vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges,
+      nVerts,
+      nFaces,
+      nEdges,
+      faceOffsets,
+      faceIndices,
+      heFace,
+      heNext,
+      hePrev,
+      heTwin,
+      heEdge,
+      edgeVerts,
+      edgeFaceCount: Int32Array.from(edgeCount),
+      edgeHe: Int32Array.from(edgeHeA),
+      vertHeOffsets,
+      vertHe,
+      vertEdgeOffsets,
+      vertEdges,
     },
     problems,
   };
@@ -139,12 +163,17 @@ export function buildHalfEdges(nVerts: number, faceOffsets: Int32Array, faceIndi
  * Returns null if the faces around v do not form a single fan (non-manifold).
  */
 export function vertexRing(m: HalfEdges, v: number, startHe = -1): { he: number[]; boundary: boolean } | null {
-  const a = m.vertHeOffsets[v], b = m.vertHeOffsets[v + 1];
+  const a = m.vertHeOffsets[v],
+    b = m.vertHeOffsets[v + 1];
   const n = b - a;
   if (n === 0) return { he: [], boundary: false };
   let nb = 0;
   let start = startHe;
-  for (let k = a; k < b; k++) if (m.heTwin[m.vertHe[k]] < 0) { nb++; start = m.vertHe[k]; }
+  for (let k = a; k < b; k++)
+    if (m.heTwin[m.vertHe[k]] < 0) {
+      nb++;
+      start = m.vertHe[k];
+    }
   if (nb > 1) return null;
   const boundary = nb === 1;
   if (start < 0) start = m.vertHe[a];
@@ -197,28 +226,46 @@ export function buildTopology(cage: Cage): Topology {
   const issues: CageIssue[] = [];
   const fl = (f: number): number => cage.faceLines[f] ?? 0;
   for (const p of problems) {
-    const a = he.edgeVerts[2 * p.edge], b = he.edgeVerts[2 * p.edge + 1];
-    const faceList = p.faces.slice(0, 4).map((f) => `face ${f + 1}${fl(f) ? ` (line ${fl(f)})` : ''}`).join(', ') + (p.faces.length > 4 ? `, ... (${p.faces.length - 4} more)` : '');
+    const a = he.edgeVerts[2 * p.edge],
+      b = he.edgeVerts[2 * p.edge + 1];
+    const faceList =
+      p.faces
+        .slice(0, 4)
+        .map((f) => `face ${f + 1}${fl(f) ? ` (line ${fl(f)})` : ''}`)
+        .join(', ') + (p.faces.length > 4 ? `, ... (${p.faces.length - 4} more)` : '');
     if (p.kind === 'non-manifold-edge') {
-      issues.push({ line: fl(p.faces[p.faces.length - 1]), message: `non-manifold edge ${a + 1}-${b + 1}: shared by ${p.faces.length} faces: ${faceList}` });
+      issues.push({
+        line: fl(p.faces[p.faces.length - 1]),
+        message: `non-manifold edge ${a + 1}-${b + 1}: shared by ${p.faces.length} faces: ${faceList}`,
+      });
     } else {
-      issues.push({ line: fl(p.faces[1]), message: `inconsistent winding: edge ${a + 1}-${b + 1} is used in the same direction by ${faceList} (flip one of them)` });
+      issues.push({
+        line: fl(p.faces[1]),
+        message: `inconsistent winding: edge ${a + 1}-${b + 1} is used in the same direction by ${faceList} (flip one of them)`,
+      });
     }
   }
   const vertRingStart = new Int32Array(nVerts).fill(-1);
   const vertBoundary = new Uint8Array(nVerts);
   const valence = new Int32Array(nVerts);
   const badEdgeVerts = new Set<number>();
-  for (const p of problems) { badEdgeVerts.add(he.edgeVerts[2 * p.edge]); badEdgeVerts.add(he.edgeVerts[2 * p.edge + 1]); }
+  for (const p of problems) {
+    badEdgeVerts.add(he.edgeVerts[2 * p.edge]);
+    badEdgeVerts.add(he.edgeVerts[2 * p.edge + 1]);
+  }
   for (let v = 0; v < nVerts; v++) {
     valence[v] = he.vertEdgeOffsets[v + 1] - he.vertEdgeOffsets[v];
-    for (let k = he.vertEdgeOffsets[v]; k < he.vertEdgeOffsets[v + 1]; k++) if (he.edgeFaceCount[he.vertEdges[k]] === 1) vertBoundary[v] = 1;
+    for (let k = he.vertEdgeOffsets[v]; k < he.vertEdgeOffsets[v + 1]; k++)
+      if (he.edgeFaceCount[he.vertEdges[k]] === 1) vertBoundary[v] = 1;
     if (he.vertHeOffsets[v + 1] === he.vertHeOffsets[v]) continue;
     if (badEdgeVerts.has(v)) continue;
     const ring = vertexRing(he, v);
     if (!ring) {
       const f = he.heFace[he.vertHe[he.vertHeOffsets[v]]];
-      issues.push({ line: cage.vertexLines[v] ?? 0, message: `non-manifold vertex ${v + 1}: its faces (e.g. face ${f + 1}${fl(f) ? ` on line ${fl(f)}` : ''}) do not form a single fan` });
+      issues.push({
+        line: cage.vertexLines[v] ?? 0,
+        message: `non-manifold vertex ${v + 1}: its faces (e.g. face ${f + 1}${fl(f) ? ` on line ${fl(f)}` : ''}) do not form a single fan`,
+      });
     } else vertRingStart[v] = ring.he[0];
   }
   // Creases must be edges.
@@ -298,10 +345,15 @@ export function computeSharpness(cage: Cage, topo: Topology, options: SubdivOpti
 
 /** Is vertex v a regular corner of a B-spline patch (OpenSubdiv's isRegular test)? */
 export function isRegularVertex(
-  m: HalfEdges, v: number, edgeSharp: ArrayLike<number>, vertSharp: ArrayLike<number>, boundary: boolean,
+  m: HalfEdges,
+  v: number,
+  edgeSharp: ArrayLike<number>,
+  vertSharp: ArrayLike<number>,
+  boundary: boolean,
 ): boolean {
   const nf = m.vertHeOffsets[v + 1] - m.vertHeOffsets[v];
-  const a = m.vertEdgeOffsets[v], b = m.vertEdgeOffsets[v + 1];
+  const a = m.vertEdgeOffsets[v],
+    b = m.vertEdgeOffsets[v + 1];
   const ne = b - a;
   const vs = vertSharp[v];
   for (let k = m.vertHeOffsets[v]; k < m.vertHeOffsets[v + 1]; k++) {
@@ -327,7 +379,8 @@ export function isRegularVertex(
   // The two sharp edges must be opposite: walk the ring.
   const ring = vertexRing(m, v);
   if (!ring) return false;
-  const s0 = edgeSharp[m.heEdge[ring.he[0]]] > 0, s1 = edgeSharp[m.heEdge[ring.he[1]]] > 0;
+  const s0 = edgeSharp[m.heEdge[ring.he[0]]] > 0,
+    s1 = edgeSharp[m.heEdge[ring.he[1]]] > 0;
   const s2 = edgeSharp[m.heEdge[ring.he[2]]] > 0;
   return (s0 && s2) || (s1 && !s0 && !s2);
 }
@@ -343,7 +396,8 @@ export interface Classification {
 
 /** Classify faces for the GPU path (regular / quad near an irregular vertex / quad near a non-quad / non-quad). */
 export function classify(topo: Topology, sharp: Sharpness): Classification {
-  const nv = topo.nVerts, nf = topo.nFaces;
+  const nv = topo.nVerts,
+    nf = topo.nFaces;
   const vertexRegular = new Uint8Array(nv);
   const vertexExtraordinary = new Uint8Array(nv);
   const nearNonQuad = new Uint8Array(nv);
@@ -373,9 +427,11 @@ export function classify(topo: Topology, sharp: Sharpness): Classification {
   const faceKind = new Uint8Array(nf);
   const faceFlags = new Uint8Array(nf);
   for (let f = 0; f < nf; f++) {
-    const a = topo.faceOffsets[f], b = topo.faceOffsets[f + 1];
+    const a = topo.faceOffsets[f],
+      b = topo.faceOffsets[f + 1];
     let flags = sharp.hole[f] ? FACE_FLAG_HOLE : 0;
-    let allReg = true, nearNQ = false;
+    let allReg = true,
+      nearNQ = false;
     for (let h = a; h < b; h++) {
       const v = topo.faceIndices[h];
       flags |= creasedV[v];

@@ -32,7 +32,8 @@ export interface UvPoint {
 
 /** 'none': no corner has a uv; 'complete': every corner of every face has one; 'partial': some do. */
 export function uvCoverage(cage: Cage): 'none' | 'complete' | 'partial' {
-  let some = false, all = true;
+  let some = false,
+    all = true;
   for (let h = 0; h < cage.faceUvIndices.length; h++) {
     if (cage.faceUvIndices[h] >= 0) some = true;
     else all = false;
@@ -51,7 +52,12 @@ export function requireUvs(cage: Cage): void {
     for (let h = cage.faceOffsets[f]; h < cage.faceOffsets[f + 1]; h++) {
       if (!(cage.faceUvIndices[h] >= 0)) {
         const line = cage.faceLines[f] ?? 0;
-        throw new CageError([{ line, message: `face ${f + 1}${line ? ` (line ${line})` : ''} has no texture coordinate on corner ${h - cage.faceOffsets[f] + 1}: UVs (f v/vt) are needed on every face corner for displacement` }]);
+        throw new CageError([
+          {
+            line,
+            message: `face ${f + 1}${line ? ` (line ${line})` : ''} has no texture coordinate on corner ${h - cage.faceOffsets[f] + 1}: UVs (f v/vt) are needed on every face corner for displacement`,
+          },
+        ]);
       }
     }
   }
@@ -65,7 +71,9 @@ export function cornerUv(cage: Cage, f: number, j: number): [number, number] {
 }
 
 function bilinear(a: number[], b: number[], c: number[], d: number[], s: number, t: number): UvPoint {
-  const uv: [number, number] = [0, 0], du: [number, number] = [0, 0], dv: [number, number] = [0, 0];
+  const uv: [number, number] = [0, 0],
+    du: [number, number] = [0, 0],
+    dv: [number, number] = [0, 0];
   for (let i = 0; i < 2; i++) {
     uv[i] = (1 - s) * (1 - t) * a[i] + s * (1 - t) * b[i] + s * t * c[i] + (1 - s) * t * d[i];
     du[i] = (1 - t) * (b[i] - a[i]) + t * (c[i] - d[i]);
@@ -97,8 +105,14 @@ export function uvAtSubFace(cage: Cage, f: number, k: number, s: number, t: numb
   checkParam(s, t);
   const c = (j: number): [number, number] => cornerUv(cage, f, ((j % n) + n) % n);
   const centre = [0, 0];
-  for (let j = 0; j < n; j++) { const q = c(j); centre[0] += q[0] / n; centre[1] += q[1] / n; }
-  const a = c(k), next = c(k + 1), prev = c(k - 1);
+  for (let j = 0; j < n; j++) {
+    const q = c(j);
+    centre[0] += q[0] / n;
+    centre[1] += q[1] / n;
+  }
+  const a = c(k),
+    next = c(k + 1),
+    prev = c(k - 1);
   return bilinear(a, [(a[0] + next[0]) / 2, (a[1] + next[1]) / 2], centre, [(prev[0] + a[0]) / 2, (prev[1] + a[1]) / 2], s, t);
 }
 
@@ -121,8 +135,13 @@ export function uvSeams(cage: Cage, topo: Topology): { edge: Uint8Array; vertex:
     if (uvOf(h) !== uvOf(topo.heNext[tw]) || uvOf(topo.heNext[h]) !== uvOf(tw)) edge[topo.heEdge[h]] = 1;
   }
   for (let v = 0; v < topo.nVerts; v++) {
-    const a = topo.vertHeOffsets[v], b = topo.vertHeOffsets[v + 1];
-    for (let k = a + 1; k < b; k++) if (uvOf(topo.vertHe[k]) !== uvOf(topo.vertHe[a])) { vertex[v] = 1; break; }
+    const a = topo.vertHeOffsets[v],
+      b = topo.vertHeOffsets[v + 1];
+    for (let k = a + 1; k < b; k++)
+      if (uvOf(topo.vertHe[k]) !== uvOf(topo.vertHe[a])) {
+        vertex[v] = 1;
+        break;
+      }
   }
   return { edge, vertex };
 }
@@ -133,7 +152,12 @@ export function uvSeams(cage: Cage, topo: Topology): { edge: Uint8Array; vertex:
  * outside [0, 1] back into the map; 'clamp' ignores texels outside it. Returns a mask
  * (row-major from the top row, as heightmap.ts) and the covered count.
  */
-export function uvTexelCoverage(cage: Cage, width: number, height: number, wrap: 'repeat' | 'clamp' = 'repeat'): { mask: Uint8Array; covered: number } {
+export function uvTexelCoverage(
+  cage: Cage,
+  width: number,
+  height: number,
+  wrap: 'repeat' | 'clamp' = 'repeat',
+): { mask: Uint8Array; covered: number } {
   requireUvs(cage);
   const mask = new Uint8Array(width * height);
   let covered = 0;
@@ -141,26 +165,36 @@ export function uvTexelCoverage(cage: Cage, width: number, height: number, wrap:
   for (let f = 0; f < nf; f++) {
     const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
     // Polygon in continuous texel coordinates (x = u·W − ½, y = (1 − v)·H − ½): centres are integers.
-    const px: number[] = [], py: number[] = [];
+    const px: number[] = [],
+      py: number[] = [];
     for (let j = 0; j < n; j++) {
       const [u, v] = cornerUv(cage, f, j);
       px.push(u * width - 0.5);
       py.push((1 - v) * height - 0.5);
     }
-    const x0 = Math.ceil(Math.min(...px)), x1 = Math.floor(Math.max(...px));
-    const y0 = Math.ceil(Math.min(...py)), y1 = Math.floor(Math.max(...py));
-    for (let y = y0; y <= y1; y++) for (let x = x0; x <= x1; x++) {
-      // Even-odd crossing test (the polygons are simple; orientation does not matter).
-      let inside = false;
-      for (let a = 0, b = n - 1; a < n; b = a++) {
-        if ((py[a] > y) !== (py[b] > y) && x < px[b] + ((y - py[b]) * (px[a] - px[b])) / (py[a] - py[b])) inside = !inside;
+    const x0 = Math.ceil(Math.min(...px)),
+      x1 = Math.floor(Math.max(...px));
+    const y0 = Math.ceil(Math.min(...py)),
+      y1 = Math.floor(Math.max(...py));
+    for (let y = y0; y <= y1; y++)
+      for (let x = x0; x <= x1; x++) {
+        // Even-odd crossing test (the polygons are simple; orientation does not matter).
+        let inside = false;
+        for (let a = 0, b = n - 1; a < n; b = a++) {
+          if (py[a] > y !== py[b] > y && x < px[b] + ((y - py[b]) * (px[a] - px[b])) / (py[a] - py[b])) inside = !inside;
+        }
+        if (!inside) continue;
+        let i = x,
+          j = y;
+        if (wrap === 'repeat') {
+          i = ((i % width) + width) % width;
+          j = ((j % height) + height) % height;
+        } else if (i < 0 || i >= width || j < 0 || j >= height) continue;
+        if (!mask[j * width + i]) {
+          mask[j * width + i] = 1;
+          covered++;
+        }
       }
-      if (!inside) continue;
-      let i = x, j = y;
-      if (wrap === 'repeat') { i = ((i % width) + width) % width; j = ((j % height) + height) % height; }
-      else if (i < 0 || i >= width || j < 0 || j >= height) continue;
-      if (!mask[j * width + i]) { mask[j * width + i] = 1; covered++; }
-    }
   }
   return { mask, covered };
 }
@@ -193,20 +227,43 @@ export function faceSampleRange(cage: Cage, map: HeightMap, wrap: HeightWrap = '
   const nf = cage.faceOffsets.length - 1;
   const out = new Float64Array(2 * nf);
   const inv = 1 / ((1 << map.bits) - 1);
-  const W = map.width, H = map.height;
+  const W = map.width,
+    H = map.height;
   for (let f = 0; f < nf; f++) {
-    let x0 = Infinity, x1 = -Infinity, y0 = Infinity, y1 = -Infinity;
+    let x0 = Infinity,
+      x1 = -Infinity,
+      y0 = Infinity,
+      y1 = -Infinity;
     for (let j = 0; j < cage.faceOffsets[f + 1] - cage.faceOffsets[f]; j++) {
       const [u, v] = cornerUv(cage, f, j);
-      const x = u * W - 0.5, y = (1 - v) * H - 0.5;
-      x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+      const x = u * W - 0.5,
+        y = (1 - v) * H - 0.5;
+      x0 = Math.min(x0, x);
+      x1 = Math.max(x1, x);
+      y0 = Math.min(y0, y);
+      y1 = Math.max(y1, y);
     }
     // Texels floor(x) and floor(x) + 1 for every x in [x0, x1]; a repeat range wider than the map is all of it.
-    let i0 = Math.floor(x0), i1 = Math.floor(x1) + 1, j0 = Math.floor(y0), j1 = Math.floor(y1) + 1;
-    if (wrap === 'clamp') { i0 = Math.max(0, Math.min(W - 1, i0)); i1 = Math.max(0, Math.min(W - 1, i1)); j0 = Math.max(0, Math.min(H - 1, j0)); j1 = Math.max(0, Math.min(H - 1, j1)); }
-    if (i1 - i0 >= W) { i0 = 0; i1 = W - 1; }
-    if (j1 - j0 >= H) { j0 = 0; j1 = H - 1; }
-    let lo = Infinity, hi = -Infinity;
+    let i0 = Math.floor(x0),
+      i1 = Math.floor(x1) + 1,
+      j0 = Math.floor(y0),
+      j1 = Math.floor(y1) + 1;
+    if (wrap === 'clamp') {
+      i0 = Math.max(0, Math.min(W - 1, i0));
+      i1 = Math.max(0, Math.min(W - 1, i1));
+      j0 = Math.max(0, Math.min(H - 1, j0));
+      j1 = Math.max(0, Math.min(H - 1, j1));
+    }
+    if (i1 - i0 >= W) {
+      i0 = 0;
+      i1 = W - 1;
+    }
+    if (j1 - j0 >= H) {
+      j0 = 0;
+      j1 = H - 1;
+    }
+    let lo = Infinity,
+      hi = -Infinity;
     for (let j = j0; j <= j1; j++) {
       const jj = ((j % H) + H) % H;
       for (let i = i0; i <= i1; i++) {

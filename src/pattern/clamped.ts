@@ -110,9 +110,15 @@ function makeFrame(a: number, b: number, c: number, reverse: Reverse, mirrored: 
   const left = edgeFrom(a, c, reverse);
   const right = edgeFrom(b, c, reverse);
   return {
-    a, b, c,
-    bottomEdge: bottom.edge, leftEdge: left.edge, rightEdge: right.edge,
-    flipBottom: bottom.flip, flipLeft: left.flip, flipRight: right.flip,
+    a,
+    b,
+    c,
+    bottomEdge: bottom.edge,
+    leftEdge: left.edge,
+    rightEdge: right.edge,
+    flipBottom: bottom.flip,
+    flipLeft: left.flip,
+    flipRight: right.flip,
     mirrored,
   };
 }
@@ -133,7 +139,8 @@ export type FramePoint = readonly [number, number];
 
 /** Twice-squared distance halved (|Δ|/2 per axis, squared): exact in u32 on the GPU. */
 function halfDist2(p: FramePoint, q: FramePoint): number {
-  const du = (q[0] - p[0]) >> 1, dv = (q[1] - p[1]) >> 1;
+  const du = (q[0] - p[0]) >> 1,
+    dv = (q[1] - p[1]) >> 1;
   return du * du + dv * dv;
 }
 
@@ -204,7 +211,13 @@ export function gapMergeSteps(inner: readonly FramePoint[], outer: readonly Fram
 }
 
 /** May the gap matching advance the inner (or outer) chain from front edge I_a–O_b? */
-export function gapMoveOk(inner: readonly FramePoint[], outer: readonly FramePoint[], a: number, b: number, advanceInner: boolean): boolean {
+export function gapMoveOk(
+  inner: readonly FramePoint[],
+  outer: readonly FramePoint[],
+  a: number,
+  b: number,
+  advanceInner: boolean,
+): boolean {
   const nI = inner.length - 1;
   const nO = outer.length - 1;
   if (advanceInner) {

@@ -37,7 +37,8 @@ const BOOLEAN = new Set(['--json', '--fixed']);
 
 function parseArgs(argv: string[]): Args {
   const [command, ...rest] = argv;
-  if (command !== 'line' && command !== 'tri') throw new UsageError(command ? `unknown command '${command}' (expected 'line' or 'tri')` : 'missing command');
+  if (command !== 'line' && command !== 'tri')
+    throw new UsageError(command ? `unknown command '${command}' (expected 'line' or 'tri')` : 'missing command');
   const flags = new Map<string, string | true>();
   for (let i = 0; i < rest.length; i++) {
     const a = rest[i];
@@ -68,7 +69,8 @@ function numbers(text: string, count: number, what: string): number[] {
 
 function flagsList(text: string, what: string): Reverse {
   const parts = text.split(',').map((s) => s.trim());
-  if (parts.length !== 3 || parts.some((p) => p !== '0' && p !== '1')) throw new UsageError(`${what}: expected three 0/1 flags like 0,1,0, got '${text}'`);
+  if (parts.length !== 3 || parts.some((p) => p !== '0' && p !== '1'))
+    throw new UsageError(`${what}: expected three 0/1 flags like 0,1,0, got '${text}'`);
   return parts.map((p) => p === '1') as unknown as Reverse;
 }
 
@@ -101,7 +103,13 @@ function triJson(p: TriPattern, fixed: boolean, extra: object): object {
   return { ...extra, points, triangles, vertexCount: p.vertexCount, triangleCount: p.triangleCount };
 }
 
-function triangle(mode: TriMode, factors: [number, number, number], reverse: Reverse | undefined, inside: number | undefined, maxFactor: number): TriPattern {
+function triangle(
+  mode: TriMode,
+  factors: [number, number, number],
+  reverse: Reverse | undefined,
+  inside: number | undefined,
+  maxFactor: number,
+): TriPattern {
   if (mode === 'clamped') {
     if (inside !== undefined) throw new UsageError('--inside applies to the D3D11 modes only: the clamped pattern has no inside factor');
     return clampedTriangle(factors, reverse, { maxFactor });
@@ -132,7 +140,8 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
     }
 
     if (command === 'line') {
-      if (!(LINE_MODES as readonly string[]).includes(mode)) throw new UsageError(`unknown line mode '${mode}' (one of ${LINE_MODES.join(', ')})`);
+      if (!(LINE_MODES as readonly string[]).includes(mode))
+        throw new UsageError(`unknown line mode '${mode}' (one of ${LINE_MODES.join(', ')})`);
       const m = mode as LineMode;
       const factor = flags.get('--factor');
       const sweep = flags.get('--sweep');
@@ -156,11 +165,13 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
       return { stdout: out.join('\n') + '\n', stderr: '', code: 0 };
     }
 
-    if (!(TRI_MODES as readonly string[]).includes(mode)) throw new UsageError(`unknown triangle mode '${mode}' (one of ${TRI_MODES.join(', ')})`);
+    if (!(TRI_MODES as readonly string[]).includes(mode))
+      throw new UsageError(`unknown triangle mode '${mode}' (one of ${TRI_MODES.join(', ')})`);
     const m = mode as TriMode;
     const single = flags.get('--factors');
     const file = flags.get('--factors-file');
-    if ((single === undefined) === (file === undefined)) throw new UsageError('give exactly one of --factors F0,F1,F2 or --factors-file FILE');
+    if ((single === undefined) === (file === undefined))
+      throw new UsageError('give exactly one of --factors F0,F1,F2 or --factors-file FILE');
     if (typeof single === 'string') {
       const f = numbers(single, 3, '--factors').map((v) => positiveFactor(v, '--factors')) as [number, number, number];
       const reverse = typeof flags.get('--reverse') === 'string' ? flagsList(flags.get('--reverse') as string, '--reverse') : undefined;
@@ -168,7 +179,8 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
       const o = triJson(triangle(m, f, reverse, inside, maxFactor), fixed, {}) as { vertexCount: number; triangleCount: number };
       return { stdout: json ? JSON.stringify(o) + '\n' : humanTri(m, f.join(','), o), stderr: '', code: 0 };
     }
-    if (flags.has('--reverse') || flags.has('--inside')) throw new UsageError('with --factors-file, give inside factors and reverse flags per line');
+    if (flags.has('--reverse') || flags.has('--inside'))
+      throw new UsageError('with --factors-file, give inside factors and reverse flags per line');
     let text: string;
     try {
       text = readFile(file as string);

@@ -60,9 +60,7 @@ const TWO_THIRDS = Math.floor((2 * ONE) / 3); // 0xaaaa
 const MAX_FACTOR = 64;
 
 /** Fixed-point reciprocals 1/n for n = 1…64, as round(2^16 / n) (no ties occur). */
-const RECIPROCAL: readonly number[] = Array.from({ length: MAX_FACTOR + 1 }, (_, n) =>
-  n === 0 ? 0 : Math.round(ONE / n),
-);
+const RECIPROCAL: readonly number[] = Array.from({ length: MAX_FACTOR + 1 }, (_, n) => (n === 0 ? 0 : Math.round(ONE / n)));
 
 /**
  * Ruler-function birth order of the 33 slots of a fully refined half-edge (32 segments):
@@ -116,15 +114,14 @@ function makeSpacing(fixed: number, parity: Parity): Spacing {
   const loInt = lo / ONE;
   const hiInt = hi / ONE;
   let split: number;
-  if (lo === hi) split = hiInt + 1; // never reached: no split in progress
+  if (lo === hi)
+    split = hiInt + 1; // never reached: no split in progress
   else if (odd) split = loInt === 1 ? 0 : 2 * clearTopBit(loInt - 1) + 1;
   else split = 2 * clearTopBit(loInt) + 1;
   const segLo = 2 * loInt - (odd ? 1 : 0);
   const segHi = 2 * hiInt - (odd ? 1 : 0);
   const halfFactor = Math.floor((fixed + 1) / 2);
-  const points = odd
-    ? 2 * Math.ceil((HALF + halfFactor) / ONE)
-    : 2 * Math.ceil(halfFactor / ONE) + 1;
+  const points = odd ? 2 * Math.ceil((HALF + halfFactor) / ONE) : 2 * Math.ceil(halfFactor / ONE) + 1;
   return {
     parity,
     halfPoints: hiInt,
@@ -215,11 +212,7 @@ interface TriFactors {
 }
 
 /** Hardware factor processing for the triangle domain (null when culled). */
-function processTri(
-  p: D3D11Partitioning,
-  factors: readonly [number, number, number],
-  inside: number,
-): TriFactors | null {
+function processTri(p: D3D11Partitioning, factors: readonly [number, number, number], inside: number): TriFactors | null {
   const e0 = processEdge(p, factors[0]);
   const e1 = processEdge(p, factors[1]);
   const e2 = processEdge(p, factors[2]);
@@ -242,10 +235,7 @@ function processTri(
   }
   const insideFactor: EdgeFactor = { fixed: factorToFixed(f), parity };
   const edges: [EdgeFactor, EdgeFactor, EdgeFactor] = [e0, e1, e2];
-  const single =
-    p !== 'fractional_even' &&
-    insideFactor.fixed === ONE &&
-    edges.every((e) => e.fixed === ONE);
+  const single = p !== 'fractional_even' && insideFactor.fixed === ONE && edges.every((e) => e.fixed === ONE);
   return { edges, inside: insideFactor, single };
 }
 
@@ -309,9 +299,7 @@ export function d3d11Line(partitioning: D3D11Partitioning, factor: number): Line
     x.push(placePoint(sp, q));
     const { k } = halfEdgeIndex(sp, q);
     const fixedPoint = k === 0 || (sp.parity === 'even' && k === sp.halfPoints);
-    moving.push(
-      fractional && sp.frac !== 0 && !fixedPoint && (k === sp.split || k === sp.split + 1),
-    );
+    moving.push(fractional && sp.frac !== 0 && !fixedPoint && (k === sp.split || k === sp.split + 1));
   }
   return { x, moving };
 }
@@ -419,11 +407,7 @@ function stitchRegular(
  * reference's points (as u, v, w fixed-point triples) and triangles, in its order. pow2 rounds
  * the edges and the inside factor up to powers of two first and is then integer.
  */
-export function d3d11Triangle(
-  partitioning: D3D11Partitioning,
-  factors: [number, number, number],
-  inside: number,
-): TriPattern {
+export function d3d11Triangle(partitioning: D3D11Partitioning, factors: [number, number, number], inside: number): TriPattern {
   const tri = processTri(partitioning, factors, inside);
   if (!tri) return { bary: [], triangles: [], vertexCount: 0, triangleCount: 0 };
   const bary: number[] = [];

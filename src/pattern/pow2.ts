@@ -94,11 +94,13 @@ export function quadPattern(L: number): Pow2Pattern {
   const h = L / 2;
   for (let j = 0; j < L; j++) {
     for (let i = 0; i < L; i++) {
-      const a = quadVertexIndex(L, i, j), b = quadVertexIndex(L, i + 1, j);
-      const c = quadVertexIndex(L, i + 1, j + 1), d = quadVertexIndex(L, i, j + 1);
+      const a = quadVertexIndex(L, i, j),
+        b = quadVertexIndex(L, i + 1, j);
+      const c = quadVertexIndex(L, i + 1, j + 1),
+        d = quadVertexIndex(L, i, j + 1);
       // Union jack: the diagonal a–c in the (0,0) and (1,1) quadrants, b–d in the other two
       // (at L = 1 the single cell takes a–c, along u = v).
-      const main = L === 1 || (i < h) === (j < h);
+      const main = L === 1 || i < h === j < h;
       if (main) indices.set([a, b, c, a, c, d], k);
       else indices.set([a, b, d, b, c, d], k);
       k += 6;
@@ -114,8 +116,17 @@ export function triPattern(L: number): Pow2Pattern {
   const tris: [number, number][][] = [];
   for (let j = 0; j < L; j++) {
     for (let i = 0; i + j < L; i++) {
-      tris.push([[i, j], [i + 1, j], [i, j + 1]]);
-      if (i + j + 1 < L) tris.push([[i + 1, j], [i + 1, j + 1], [i, j + 1]]);
+      tris.push([
+        [i, j],
+        [i + 1, j],
+        [i, j + 1],
+      ]);
+      if (i + j + 1 < L)
+        tris.push([
+          [i + 1, j],
+          [i + 1, j + 1],
+          [i, j + 1],
+        ]);
     }
   }
   // At L ≥ 4 the grid has, at each corner, an inverted triangle with vertices on both edges of
@@ -129,9 +140,72 @@ export function triPattern(L: number): Pow2Pattern {
       tris[at(corner)] = a;
       tris[at(inverted)] = b;
     };
-    flip([[0, 0], [1, 0], [0, 1]], [[1, 0], [1, 1], [0, 1]], [[0, 0], [1, 0], [1, 1]], [[0, 0], [1, 1], [0, 1]]);
-    flip([[L - 1, 0], [L, 0], [L - 1, 1]], [[L - 1, 0], [L - 1, 1], [L - 2, 1]], [[L - 1, 0], [L, 0], [L - 2, 1]], [[L, 0], [L - 1, 1], [L - 2, 1]]);
-    flip([[0, L - 1], [1, L - 1], [0, L]], [[1, L - 2], [1, L - 1], [0, L - 1]], [[1, L - 2], [1, L - 1], [0, L]], [[1, L - 2], [0, L], [0, L - 1]]);
+    flip(
+      [
+        [0, 0],
+        [1, 0],
+        [0, 1],
+      ],
+      [
+        [1, 0],
+        [1, 1],
+        [0, 1],
+      ],
+      [
+        [0, 0],
+        [1, 0],
+        [1, 1],
+      ],
+      [
+        [0, 0],
+        [1, 1],
+        [0, 1],
+      ],
+    );
+    flip(
+      [
+        [L - 1, 0],
+        [L, 0],
+        [L - 1, 1],
+      ],
+      [
+        [L - 1, 0],
+        [L - 1, 1],
+        [L - 2, 1],
+      ],
+      [
+        [L - 1, 0],
+        [L, 0],
+        [L - 2, 1],
+      ],
+      [
+        [L, 0],
+        [L - 1, 1],
+        [L - 2, 1],
+      ],
+    );
+    flip(
+      [
+        [0, L - 1],
+        [1, L - 1],
+        [0, L],
+      ],
+      [
+        [1, L - 2],
+        [1, L - 1],
+        [0, L - 1],
+      ],
+      [
+        [1, L - 2],
+        [1, L - 1],
+        [0, L],
+      ],
+      [
+        [1, L - 2],
+        [0, L],
+        [0, L - 1],
+      ],
+    );
   }
   const indices = Uint32Array.from(tris.flatMap((t) => t.map(([x, y]) => triVertexIndex(L, x, y))));
   return { domain: 'tri', level: L, ij, uv: Float32Array.from(ij, (x) => x / L), indices };
@@ -173,8 +247,22 @@ export function vertexEdges(domain: PatchDomain, P: number, i: number, j: number
 
 /** (i, j) of the point at parameter t on edge k of a level-P pattern. */
 export function edgePoint(domain: PatchDomain, P: number, edge: number, t: number): [number, number] {
-  if (domain === 'quad') return ([[t, 0], [P, t], [P - t, P], [0, P - t]] as [number, number][])[edge];
-  return ([[t, 0], [P - t, t], [0, P - t]] as [number, number][])[edge];
+  if (domain === 'quad')
+    return (
+      [
+        [t, 0],
+        [P, t],
+        [P - t, P],
+        [0, P - t],
+      ] as [number, number][]
+    )[edge];
+  return (
+    [
+      [t, 0],
+      [P - t, t],
+      [0, P - t],
+    ] as [number, number][]
+  )[edge];
 }
 
 /**
@@ -184,7 +272,12 @@ export function edgePoint(domain: PatchDomain, P: number, edge: number, t: numbe
  * a vertex on one edge slides along it; corners are fixed points of every snap.
  */
 export function snapVertex(
-  domain: PatchDomain, P: number, i: number, j: number, levels: ArrayLike<number>, canonical: ArrayLike<boolean>,
+  domain: PatchDomain,
+  P: number,
+  i: number,
+  j: number,
+  levels: ArrayLike<number>,
+  canonical: ArrayLike<boolean>,
 ): [number, number] {
   const on = vertexEdges(domain, P, i, j);
   if (on.length !== 1) return [i, j]; // interior, or a corner
@@ -224,7 +317,14 @@ export function packPatterns(): PackedPatterns {
   for (const domain of ['quad', 'tri'] as const) {
     for (const L of POW2_LEVELS) {
       const p = pow2Pattern(domain, L);
-      entries.push({ domain, level: L, baseVertex: ij.length, firstIndex: idx.length, vertexCount: p.ij.length / 2, indexCount: p.indices.length });
+      entries.push({
+        domain,
+        level: L,
+        baseVertex: ij.length,
+        firstIndex: idx.length,
+        vertexCount: p.ij.length / 2,
+        indexCount: p.indices.length,
+      });
       for (let v = 0; v < p.ij.length / 2; v++) ij.push(p.ij[2 * v] | (p.ij[2 * v + 1] << 16));
       for (const x of p.indices) idx.push(x);
     }

@@ -63,7 +63,20 @@ export function bakeTables(maxFactor = 64): Uint32Array {
   const stateListOffset = stateIndexOffset + 2 * T;
   const totalWords = stateListOffset + listWords;
   const out = new Uint32Array(totalWords);
-  out.set([TABLE_MAGIC, TABLE_VERSION, maxFactor, S, T, slotsOffset, stateStartOffset, stateIndexOffset, stateListOffset, 0, 0, totalWords]);
+  out.set([
+    TABLE_MAGIC,
+    TABLE_VERSION,
+    maxFactor,
+    S,
+    T,
+    slotsOffset,
+    stateStartOffset,
+    stateIndexOffset,
+    stateListOffset,
+    0,
+    0,
+    totalWords,
+  ]);
 
   slots.forEach((s, i) => {
     out.set([s.x0, s.x1, s.f0 === ALWAYS ? 0 : s.f0, s.w, s.death], slotsOffset + SLOT_WORDS * i);

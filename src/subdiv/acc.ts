@@ -117,10 +117,14 @@ const valenceCache = new Map<number, ValenceConstants>();
 export function valenceConstants(n: number): ValenceConstants {
   let k = valenceCache.get(n);
   if (k) return k;
-  const c = Math.cos((2 * Math.PI) / n), s = Math.sin((2 * Math.PI) / n), ch = Math.cos(Math.PI / n);
+  const c = Math.cos((2 * Math.PI) / n),
+    s = Math.sin((2 * Math.PI) / n),
+    ch = Math.cos(Math.PI / n);
   const sigma = 1 / Math.sqrt(4 + ch * ch);
   const lambda = (5 + c + ch * Math.sqrt(18 + 2 * c)) / 16;
-  const alpha: number[] = [], beta: number[] = [], cosk: number[] = [];
+  const alpha: number[] = [],
+    beta: number[] = [],
+    cosk: number[] = [];
   for (let i = 0; i < n; i++) {
     cosk.push(Math.cos((2 * Math.PI * i) / n));
     alpha.push(((1 + sigma * ch) / n) * Math.cos((2 * Math.PI * i) / n));
@@ -166,18 +170,26 @@ export interface AccOptions {
  */
 export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topology, options: AccOptions = {}): AccTopology {
   const topo = topology ?? buildTopology(cage);
-  const nV = topo.nVerts, nF = topo.nFaces;
+  const nV = topo.nVerts,
+    nF = topo.nFaces;
   const problems: string[] = [];
   for (let f = 0; f < nF; f++) {
     const n = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
     if (n > 4) problems.push(`face ${f + 1} has ${n} corners (ACC patches are quads and triangles only)`);
   }
-  for (let v = 0; v < nV; v++) if (topo.vertBoundary[v]) { problems.push(`vertex ${v + 1} is on a boundary (ACC boundaries are not supported)`); break; }
+  for (let v = 0; v < nV; v++)
+    if (topo.vertBoundary[v]) {
+      problems.push(`vertex ${v + 1} is on a boundary (ACC boundaries are not supported)`);
+      break;
+    }
   if (cage.holes.length) problems.push(`face ${cage.holes[0] + 1} is a hole (not supported)`);
-  if (problems.length) throw new AccError(`${scheme}: ${problems.slice(0, 3).join('; ')}${problems.length > 3 ? `; … (${problems.length - 3} more)` : ''}`);
+  if (problems.length)
+    throw new AccError(`${scheme}: ${problems.slice(0, 3).join('; ')}${problems.length > 3 ? `; … (${problems.length - 3} more)` : ''}`);
   const warnings: string[] = [];
   if (cage.creases.length || cage.corners.length) {
-    warnings.push(`${cage.creases.length} crease and ${cage.corners.length} corner tags ignored: ${scheme} has no creases (the surface is built smooth)`);
+    warnings.push(
+      `${cage.creases.length} crease and ${cage.corners.length} corner tags ignored: ${scheme} has no creases (the surface is built smooth)`,
+    );
   }
 
   // Rings: e_i and d_i per vertex, and the rotation of every half-edge (face corner) in its ring.
@@ -215,7 +227,8 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
   const faceSize = new Uint8Array(nF);
   let nPoints = 0;
   for (let f = 0; f < nF; f++) {
-    const a = topo.faceOffsets[f], n = topo.faceOffsets[f + 1] - a;
+    const a = topo.faceOffsets[f],
+      n = topo.faceOffsets[f + 1] - a;
     faceSize[f] = n;
     let regular = n === 4 && !options.noRegular;
     for (let k = 0; k < n; k++) {
@@ -224,9 +237,19 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
       corners[8 * f + 2 * k + 1] = heRot[a + k];
       if (!regularVertex[v]) regular = false;
     }
-    const kind = regular ? KIND_REGULAR
-      : n === 4 ? (scheme === 'bezier-acc' ? KIND_BEZIER : scheme === 'gregory-acc' ? KIND_GREGORY_QUAD : KIND_PM_QUAD)
-        : (scheme === 'bezier-acc' ? KIND_PM_TRI_LS : scheme === 'gregory-acc' ? KIND_GREGORY_TRI : KIND_PM_TRI);
+    const kind = regular
+      ? KIND_REGULAR
+      : n === 4
+        ? scheme === 'bezier-acc'
+          ? KIND_BEZIER
+          : scheme === 'gregory-acc'
+            ? KIND_GREGORY_QUAD
+            : KIND_PM_QUAD
+        : scheme === 'bezier-acc'
+          ? KIND_PM_TRI_LS
+          : scheme === 'gregory-acc'
+            ? KIND_GREGORY_TRI
+            : KIND_PM_TRI;
     patches[2 * f] = kind;
     patches[2 * f + 1] = nPoints;
     nPoints += KIND_POINTS[kind];
@@ -244,11 +267,18 @@ const mul = (a: V3, s: number): V3 => [a[0] * s, a[1] * s, a[2] * s];
 /** Σ w_i·p_i. */
 const comb = (...terms: [number, V3][]): V3 => {
   const r: V3 = [0, 0, 0];
-  for (const [w, p] of terms) { r[0] += w * p[0]; r[1] += w * p[1]; r[2] += w * p[2]; }
+  for (const [w, p] of terms) {
+    r[0] += w * p[0];
+    r[1] += w * p[1];
+    r[2] += w * p[2];
+  }
   return r;
 };
 export const cross3 = (a: V3, b: V3): V3 => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-const normalize3 = (a: V3): V3 => { const l = Math.hypot(a[0], a[1], a[2]); return l > 0 ? mul(a, 1 / l) : [NaN, NaN, NaN]; };
+const normalize3 = (a: V3): V3 => {
+  const l = Math.hypot(a[0], a[1], a[2]);
+  return l > 0 ? mul(a, 1 / l) : [NaN, NaN, NaN];
+};
 
 /** Everything a patch needs from one of its corners (notes §0, §2.1–2.2, §3.1, §4.1). */
 export interface CornerInfo {
@@ -283,21 +313,28 @@ export interface CornerInfo {
  * diagonal D is the midpoint of its other two vertices (Pm, nvmesh) instead of its centroid.
  */
 export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, rot: number, midpointRule: boolean): CornerInfo {
-  const o = T.ringOffs[vert], n = (T.ringOffs[vert + 1] - o) / 2;
+  const o = T.ringOffs[vert],
+    n = (T.ringOffs[vert + 1] - o) / 2;
   const pt = (i: number): V3 => [P[3 * i], P[3 * i + 1], P[3 * i + 2]];
   const v = pt(vert);
-  const e: V3[] = [], D: V3[] = [];
+  const e: V3[] = [],
+    D: V3[] = [];
   const isQuad = (j: number) => T.ringData[o + n + ((rot + j) % n)] !== TRI_FACE;
   for (let j = 0; j < n; j++) e.push(pt(T.ringData[o + ((rot + j) % n)]));
   for (let j = 0; j < n; j++) {
     const d = T.ringData[o + n + ((rot + j) % n)];
-    const a = e[j], b = e[(j + 1) % n];
+    const a = e[j],
+      b = e[(j + 1) % n];
     D.push(d !== TRI_FACE ? pt(d) : midpointRule ? comb([0.5, a], [0.5, b]) : comb([1 / 3, v], [1 / 3, a], [1 / 3, b]));
   }
   const k = valenceConstants(n);
   // Limit position p = (n²v + 4Σe + ΣD) / (n(n+5)).
-  let se: V3 = [0, 0, 0], sd: V3 = [0, 0, 0];
-  for (let j = 0; j < n; j++) { se = add(se, e[j]); sd = add(sd, D[j]); }
+  let se: V3 = [0, 0, 0],
+    sd: V3 = [0, 0, 0];
+  for (let j = 0; j < n; j++) {
+    se = add(se, e[j]);
+    sd = add(sd, D[j]);
+  }
   const p = mul(add(add(mul(v, n * n), mul(se, 4)), sd), 1 / (n * (n + 5)));
   const tan = (jj: number): V3 => {
     const r: V3 = [0, 0, 0];
@@ -307,10 +344,17 @@ export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, r
     }
     return r;
   };
-  const f = (i: number): V3 => { const j = ((i % n) + n) % n; return mul(add(add(mul(v, n), mul(add(e[j], e[(j + 1) % n]), 2)), D[j]), 1 / (n + 5)); };
-  const fm = f(-1), f0 = f(0), f1 = f(1);
+  const f = (i: number): V3 => {
+    const j = ((i % n) + n) % n;
+    return mul(add(add(mul(v, n), mul(add(e[j], e[(j + 1) % n]), 2)), D[j]), 1 / (n + 5));
+  };
+  const fm = f(-1),
+    f0 = f(0),
+    f1 = f(1);
   const eh = (i: number): V3 => {
-    const j = ((i % n) + n) % n, jm = (j + n - 1) % n, jp = (j + 1) % n;
+    const j = ((i % n) + n) % n,
+      jm = (j + n - 1) % n,
+      jp = (j + 1) % n;
     return comb([8 / 18, v], [4 / 18, e[j]], [2 / 18, e[jm]], [2 / 18, e[jp]], [1 / 18, D[jm]], [1 / 18, D[j]]);
   };
   // Pm tangent points t^(j) = p + (1/(nλ)) Σ_i cos(2π(j−i)/n) ê_i (Σ cos = 0: affine).
@@ -322,10 +366,23 @@ export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, r
     return add(p, mul(r, 1 / (n * k.lambda)));
   };
   return {
-    n, k, v, p, t0: tan(0), t1: tan(1), f0, m0: mul(add(fm, f0), 0.5), m1: mul(add(f0, f1), 0.5),
+    n,
+    k,
+    v,
+    p,
+    t0: tan(0),
+    t1: tan(1),
+    f0,
+    m0: mul(add(fm, f0), 0.5),
+    m1: mul(add(f0, f1), 0.5),
     rp: add(mul(subv(e[1], e[n - 1]), 1 / 3), mul(subv(D[0], D[n - 1]), 1 / 6)),
     rm: add(mul(subv(e[0], e[2 % n]), 1 / 3), mul(subv(D[0], D[1]), 1 / 6)),
-    eh0: ehs[0], eh1: ehs[1], tp0: tpm(0), tp1: tpm(1), quadNext: isQuad(n - 1), quadPrev: isQuad(1),
+    eh0: ehs[0],
+    eh1: ehs[1],
+    tp0: tpm(0),
+    tp1: tpm(1),
+    quadNext: isQuad(n - 1),
+    quadPrev: isQuad(1),
   };
 }
 
@@ -341,7 +398,8 @@ const QUAD_GRID: { c: [number, number]; nx: [number, number]; pv: [number, numbe
 function geometryPatch(C: CornerInfo[]): V3[] {
   const b: V3[] = new Array(16);
   for (let k = 0; k < 4; k++) {
-    const g = QUAD_GRID[k], ci = C[k];
+    const g = QUAD_GRID[k],
+      ci = C[k];
     const at = (di: number, dj: number): number => g.c[0] + di + 4 * (g.c[1] + dj);
     b[at(0, 0)] = ci.p;
     b[at(g.nx[0], g.nx[1])] = ci.m0;
@@ -370,31 +428,45 @@ function bezierPatch(C: CornerInfo[]): V3[] {
   // ∂u, ∂v at the corners (notes §2.2 table).
   const du = [C[0].t0, mul(C[1].t1, -1), mul(C[2].t0, -1), C[3].t1];
   const dv = [C[0].t1, C[1].t0, mul(C[2].t1, -1), mul(C[3].t0, -1)];
-  const U: V3[] = new Array(8), V: V3[] = new Array(8); // U[a/2·4 + c], V[a/2·4 + c]
-  U[0] = du[0]; U[4] = du[1]; U[7] = du[2]; U[3] = du[3];
-  V[0] = dv[0]; V[3] = dv[1]; V[7] = dv[2]; V[4] = dv[3];
+  const U: V3[] = new Array(8),
+    V: V3[] = new Array(8); // U[a/2·4 + c], V[a/2·4 + c]
+  U[0] = du[0];
+  U[4] = du[1];
+  U[7] = du[2];
+  U[3] = du[3];
+  V[0] = dv[0];
+  V[3] = dv[1];
+  V[7] = dv[2];
+  V[4] = dv[3];
   // Edge u = 0: A = P0, B = P3.
   let [x1, x2] = crossRow(c[0], c[3], C[0].t1, mul(C[3].t0, -1), B(0, 1), B(0, 2), B(1, 1), B(1, 2));
-  U[1] = x1; U[2] = x2;
+  U[1] = x1;
+  U[2] = x2;
   // Edge u = 1: A = P1, B = P2, into the face is −u.
   [x1, x2] = crossRow(c[1], c[2], C[1].t0, mul(C[2].t1, -1), B(3, 1), B(3, 2), B(2, 1), B(2, 2));
-  U[5] = mul(x1, -1); U[6] = mul(x2, -1);
+  U[5] = mul(x1, -1);
+  U[6] = mul(x2, -1);
   // Edge v = 0: A = P0, B = P1.
   [x1, x2] = crossRow(c[0], c[1], C[0].t0, mul(C[1].t1, -1), B(1, 0), B(2, 0), B(1, 1), B(2, 1));
-  V[1] = x1; V[2] = x2;
+  V[1] = x1;
+  V[2] = x2;
   // Edge v = 1: A = P3, B = P2, into the face is −v.
   [x1, x2] = crossRow(c[3], c[2], C[3].t1, mul(C[2].t0, -1), B(1, 3), B(2, 3), B(1, 2), B(2, 2));
-  V[5] = mul(x1, -1); V[6] = mul(x2, -1);
+  V[5] = mul(x1, -1);
+  V[6] = mul(x2, -1);
   return [...b, ...U, ...V];
 }
 
 /** Gregory quad (m = 4, denominators 3) or triangle (m = 3, denominators 4): notes §3.1–3.2. */
 function gregoryPatch(C: CornerInfo[]): V3[] {
-  const m = C.length, den = m === 4 ? 3 : 4;
+  const m = C.length,
+    den = m === 4 ? 3 : 4;
   const E = C.map((ci) => ({ p: add(ci.p, mul(ci.t0, ci.k.sn / 3)), m: add(ci.p, mul(ci.t1, ci.k.sn / 3)) }));
   const out: V3[] = [];
   for (let k = 0; k < m; k++) {
-    const kn = (k + 1) % m, kp = (k + m - 1) % m, ck = C[k].k.c;
+    const kn = (k + 1) % m,
+      kp = (k + m - 1) % m,
+      ck = C[k].k.c;
     const Fp = mul(comb([C[kn].k.c, C[k].p], [den - 2 * ck - C[kn].k.c, E[k].p], [2 * ck, E[kn].m], [1, C[k].rp]), 1 / den);
     const Fm = mul(comb([C[kp].k.c, C[k].p], [den - 2 * ck - C[kp].k.c, E[k].m], [2 * ck, E[kp].p], [1, C[k].rm]), 1 / den);
     out.push(C[k].p, E[k].p, E[k].m, Fp, Fm);
@@ -407,21 +479,46 @@ function gregoryPatch(C: CornerInfo[]): V3[] {
  * tangent points are the Loop–Schaefer limit and edge points (Bezier-ACC triangles).
  */
 function pmPatch(C: CornerInfo[], face: V3[], loopSchaefer: boolean): V3[] {
-  const m = C.length, mu = m === 4 ? 1 : 1.5;
+  const m = C.length,
+    mu = m === 4 ? 1 : 1.5;
   const cc = C.map((ci) => ci.p);
   // Bezier-ACC triangles: the Loop–Schaefer edge points on edges shared with a (Bezier) quad, so the
   // boundary curves agree; the Pm tangent points on triangle–triangle edges (coplanar round a vertex).
-  const tp = C.map((ci) => (loopSchaefer && ci.quadNext ? ci.m0 : ci.tp0)), tm = C.map((ci) => (loopSchaefer && ci.quadPrev ? ci.m1 : ci.tp1));
-  const phi = face.map((P, k) => m === 4
-    ? comb([4 / 9, P], [2 / 9, face[(k + 1) % 4]], [2 / 9, face[(k + 3) % 4]], [1 / 9, face[(k + 2) % 4]])
-    : comb([4 / 9, P], [2.5 / 9, face[(k + 1) % 3]], [2.5 / 9, face[(k + 2) % 3]]));
-  const b211: V3[] = [], b121: V3[] = [];
+  const tp = C.map((ci) => (loopSchaefer && ci.quadNext ? ci.m0 : ci.tp0)),
+    tm = C.map((ci) => (loopSchaefer && ci.quadPrev ? ci.m1 : ci.tp1));
+  const phi = face.map((P, k) =>
+    m === 4
+      ? comb([4 / 9, P], [2 / 9, face[(k + 1) % 4]], [2 / 9, face[(k + 3) % 4]], [1 / 9, face[(k + 2) % 4]])
+      : comb([4 / 9, P], [2.5 / 9, face[(k + 1) % 3]], [2.5 / 9, face[(k + 2) % 3]]),
+  );
+  const b211: V3[] = [],
+    b121: V3[] = [];
   for (let k = 0; k < m; k++) {
-    const k1 = (k + 1) % m, K0 = C[k].k, K1 = C[k1].k;
-    const U0 = subv(tp[k], cc[k]), U1 = subv(tm[k1], tp[k]), U2 = subv(cc[k1], tm[k1]);
+    const k1 = (k + 1) % m,
+      K0 = C[k].k,
+      K1 = C[k1].k;
+    const U0 = subv(tp[k], cc[k]),
+      U1 = subv(tm[k1], tp[k]),
+      U2 = subv(cc[k1], tm[k1]);
     const S = 4 * mu * (K0.s + K1.s);
-    b211.push(comb([0.25, cc[k]], [0.75, tp[k]], [(1 + K0.c) / (4 * mu), U1], [(2 * mu - 1 - K1.c) / (8 * mu), U0], [3 / S, subv(phi[k], C[k].eh0)]));
-    b121.push(comb([0.25, cc[k1]], [0.75, tm[k1]], [-(1 + K1.c) / (4 * mu), U1], [-(2 * mu - 1 - K0.c) / (8 * mu), U2], [3 / S, subv(phi[k1], C[k1].eh1)]));
+    b211.push(
+      comb(
+        [0.25, cc[k]],
+        [0.75, tp[k]],
+        [(1 + K0.c) / (4 * mu), U1],
+        [(2 * mu - 1 - K1.c) / (8 * mu), U0],
+        [3 / S, subv(phi[k], C[k].eh0)],
+      ),
+    );
+    b121.push(
+      comb(
+        [0.25, cc[k1]],
+        [0.75, tm[k1]],
+        [-(1 + K1.c) / (4 * mu), U1],
+        [-(2 * mu - 1 - K0.c) / (8 * mu), U2],
+        [3 / S, subv(phi[k1], C[k1].eh1)],
+      ),
+    );
   }
   let centre: V3 = [0, 0, 0];
   for (let k = 0; k < m; k++) {
@@ -449,31 +546,43 @@ function pmPatch(C: CornerInfo[], face: V3[], loopSchaefer: boolean): V3[] {
 
 /** The control points of patch f (xyz, KIND_POINTS[kind] of them) from cage positions P. */
 export function buildPatch(T: AccTopology, P: ArrayLike<number>, f: number): V3[] {
-  const kind = T.patches[2 * f], m = T.faceSize[f];
+  const kind = T.patches[2 * f],
+    m = T.faceSize[f];
   const mid = kind === KIND_PM_QUAD || kind === KIND_PM_TRI;
   const C: CornerInfo[] = [];
   const face: V3[] = [];
   for (let k = 0; k < m; k++) {
-    const v = T.corners[8 * f + 2 * k], rot = T.corners[8 * f + 2 * k + 1];
+    const v = T.corners[8 * f + 2 * k],
+      rot = T.corners[8 * f + 2 * k + 1];
     const ci = cornerInfo(T, P, v, rot, mid);
     if (kind === KIND_PM_TRI_LS) {
       // Exact corner and Loop–Schaefer points (centroid rule), but the Pm edge and tangent points
       // of the midpoint rule: its twist terms 3(φ − ê)/S cancel across triangle–triangle edges
       // only with the ê that match the Pm face points φ (with centroid-rule ê: 4.6° kinks).
       const cm = cornerInfo(T, P, v, rot, true);
-      ci.eh0 = cm.eh0; ci.eh1 = cm.eh1;
-      ci.tp0 = add(ci.p, subv(cm.tp0, cm.p)); ci.tp1 = add(ci.p, subv(cm.tp1, cm.p));
+      ci.eh0 = cm.eh0;
+      ci.eh1 = cm.eh1;
+      ci.tp0 = add(ci.p, subv(cm.tp0, cm.p));
+      ci.tp1 = add(ci.p, subv(cm.tp1, cm.p));
     }
     C.push(ci);
     face.push([P[3 * v], P[3 * v + 1], P[3 * v + 2]]);
   }
   switch (kind) {
-    case KIND_REGULAR: return geometryPatch(C);
-    case KIND_BEZIER: return bezierPatch(C);
-    case KIND_GREGORY_QUAD: case KIND_GREGORY_TRI: return gregoryPatch(C);
-    case KIND_PM_QUAD: case KIND_PM_TRI: return pmPatch(C, face, false);
-    case KIND_PM_TRI_LS: return pmPatch(C, face, true);
-    default: throw new AccError(`unknown patch kind ${kind}`);
+    case KIND_REGULAR:
+      return geometryPatch(C);
+    case KIND_BEZIER:
+      return bezierPatch(C);
+    case KIND_GREGORY_QUAD:
+    case KIND_GREGORY_TRI:
+      return gregoryPatch(C);
+    case KIND_PM_QUAD:
+    case KIND_PM_TRI:
+      return pmPatch(C, face, false);
+    case KIND_PM_TRI_LS:
+      return pmPatch(C, face, true);
+    default:
+      throw new AccError(`unknown patch kind ${kind}`);
   }
 }
 
@@ -497,18 +606,37 @@ export interface AccPoint {
   N: V3;
 }
 
-const bern3 = (t: number): number[] => { const s = 1 - t; return [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t]; };
-const bern3d = (t: number): number[] => { const s = 1 - t; return [-3 * s * s, 3 * s * s - 6 * s * t, 6 * s * t - 3 * t * t, 3 * t * t]; };
-const bern2 = (t: number): number[] => { const s = 1 - t; return [s * s, 2 * s * t, t * t]; };
+const bern3 = (t: number): number[] => {
+  const s = 1 - t;
+  return [s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t];
+};
+const bern3d = (t: number): number[] => {
+  const s = 1 - t;
+  return [-3 * s * s, 3 * s * s - 6 * s * t, 6 * s * t - 3 * t * t, 3 * t * t];
+};
+const bern2 = (t: number): number[] => {
+  const s = 1 - t;
+  return [s * s, 2 * s * t, t * t];
+};
 
 /** Bicubic b_ij (i + 4j): position and the two partial derivatives. */
 export function evalBicubic(b: V3[], u: number, v: number): { P: V3; Pu: V3; Pv: V3 } {
-  const bu = bern3(u), bv = bern3(v), du = bern3d(u), dv = bern3d(v);
-  const P: V3 = [0, 0, 0], Pu: V3 = [0, 0, 0], Pv: V3 = [0, 0, 0];
-  for (let j = 0; j < 4; j++) for (let i = 0; i < 4; i++) {
-    const q = b[i + 4 * j];
-    for (let c = 0; c < 3; c++) { P[c] += bu[i] * bv[j] * q[c]; Pu[c] += du[i] * bv[j] * q[c]; Pv[c] += bu[i] * dv[j] * q[c]; }
-  }
+  const bu = bern3(u),
+    bv = bern3(v),
+    du = bern3d(u),
+    dv = bern3d(v);
+  const P: V3 = [0, 0, 0],
+    Pu: V3 = [0, 0, 0],
+    Pv: V3 = [0, 0, 0];
+  for (let j = 0; j < 4; j++)
+    for (let i = 0; i < 4; i++) {
+      const q = b[i + 4 * j];
+      for (let c = 0; c < 3; c++) {
+        P[c] += bu[i] * bv[j] * q[c];
+        Pu[c] += du[i] * bv[j] * q[c];
+        Pv[c] += bu[i] * dv[j] * q[c];
+      }
+    }
   return { P, Pu, Pv };
 }
 
@@ -517,12 +645,21 @@ export function evalTangentPatches(q: V3[], u: number, v: number): { Tu: V3; Tv:
   const b = (i: number, j: number): V3 => q[i + 4 * j];
   const Ua = (a: number, c: number): V3 => (a === 1 ? mul(subv(b(2, c), b(1, c)), 3) : q[16 + 2 * a + c]);
   const Va = (c: number, a: number): V3 => (a === 1 ? mul(subv(b(c, 2), b(c, 1)), 3) : q[24 + 2 * a + c]);
-  const b2u = bern2(u), b2v = bern2(v), b3u = bern3(u), b3v = bern3(v);
-  const Tu: V3 = [0, 0, 0], Tv: V3 = [0, 0, 0];
-  for (let a = 0; a < 3; a++) for (let c = 0; c < 4; c++) {
-    const x = Ua(a, c), y = Va(c, a);
-    for (let d = 0; d < 3; d++) { Tu[d] += b2u[a] * b3v[c] * x[d]; Tv[d] += b3u[c] * b2v[a] * y[d]; }
-  }
+  const b2u = bern2(u),
+    b2v = bern2(v),
+    b3u = bern3(u),
+    b3v = bern3(v);
+  const Tu: V3 = [0, 0, 0],
+    Tv: V3 = [0, 0, 0];
+  for (let a = 0; a < 3; a++)
+    for (let c = 0; c < 4; c++) {
+      const x = Ua(a, c),
+        y = Va(c, a);
+      for (let d = 0; d < 3; d++) {
+        Tu[d] += b2u[a] * b3v[c] * x[d];
+        Tv[d] += b3u[c] * b2v[a] * y[d];
+      }
+    }
   return { Tu, Tv };
 }
 
@@ -531,11 +668,21 @@ export function gregoryQuadBezier(q: V3[], u: number, v: number): V3[] {
   const G = (k: number, i: number): V3 => q[5 * k + i]; // i: 0 P, 1 E⁺, 2 E⁻, 3 F⁺, 4 F⁻
   const blend = (F1: V3, w1: number, F2: V3, w2: number): V3 => (w1 + w2 > 0 ? mul(add(mul(F1, w1), mul(F2, w2)), 1 / (w1 + w2)) : F1);
   const b: V3[] = new Array(16);
-  const set = (i: number, j: number, p: V3) => { b[i + 4 * j] = p; };
-  set(0, 0, G(0, 0)); set(1, 0, G(0, 1)); set(0, 1, G(0, 2));
-  set(3, 0, G(1, 0)); set(2, 0, G(1, 2)); set(3, 1, G(1, 1));
-  set(3, 3, G(2, 0)); set(2, 3, G(2, 1)); set(3, 2, G(2, 2));
-  set(0, 3, G(3, 0)); set(0, 2, G(3, 1)); set(1, 3, G(3, 2));
+  const set = (i: number, j: number, p: V3) => {
+    b[i + 4 * j] = p;
+  };
+  set(0, 0, G(0, 0));
+  set(1, 0, G(0, 1));
+  set(0, 1, G(0, 2));
+  set(3, 0, G(1, 0));
+  set(2, 0, G(1, 2));
+  set(3, 1, G(1, 1));
+  set(3, 3, G(2, 0));
+  set(2, 3, G(2, 1));
+  set(3, 2, G(2, 2));
+  set(0, 3, G(3, 0));
+  set(0, 2, G(3, 1));
+  set(1, 3, G(3, 2));
   set(1, 1, blend(G(0, 3), u, G(0, 4), v));
   set(2, 1, blend(G(1, 3), v, G(1, 4), 1 - u));
   set(2, 2, blend(G(2, 3), 1 - u, G(2, 4), 1 - v));
@@ -551,19 +698,23 @@ export const qi = (_a: number, b: number, c: number): number => c * 5 - (c * (c 
  * a·R_a + b·R_b + c·R_c and the homogeneous partials are ∂/∂a = 4R_a, ∂/∂b = 4R_b, ∂/∂c = 4R_c.
  */
 export function evalQuartic(Q: V3[], a: number, b: number, c: number): { P: V3; Da: V3; Db: V3; Dc: V3 } {
-  let cur = Q, deg = 4;
+  let cur = Q,
+    deg = 4;
   while (deg > 1) {
     const next: V3[] = [];
     const d = deg - 1;
     const idx = (bb: number, cc: number, dd: number) => cc * (dd + 1) - (cc * (cc - 1)) / 2 + bb;
-    for (let cc = 0; cc <= d; cc++) for (let bb = 0; bb + cc <= d; bb++) {
-      next[idx(bb, cc, d)] = comb([a, cur[idx(bb, cc, deg)]], [b, cur[idx(bb + 1, cc, deg)]], [c, cur[idx(bb, cc + 1, deg)]]);
-    }
+    for (let cc = 0; cc <= d; cc++)
+      for (let bb = 0; bb + cc <= d; bb++) {
+        next[idx(bb, cc, d)] = comb([a, cur[idx(bb, cc, deg)]], [b, cur[idx(bb + 1, cc, deg)]], [c, cur[idx(bb, cc + 1, deg)]]);
+      }
     cur = next;
     deg = d;
   }
   // Degree 1: index (b=0,c=0) → R_a = 0, (1,0) → R_b = 1, (0,1) → R_c = 2.
-  const Ra = cur[0], Rb = cur[1], Rc = cur[2];
+  const Ra = cur[0],
+    Rb = cur[1],
+    Rc = cur[2];
   return { P: comb([a, Ra], [b, Rb], [c, Rc]), Da: mul(Ra, 4), Db: mul(Rb, 4), Dc: mul(Rc, 4) };
 }
 
@@ -571,18 +722,25 @@ export function evalQuartic(Q: V3[], a: number, b: number, c: number): { P: V3; 
 export function gregoryTriQuartic(q: V3[], l: [number, number, number]): V3[] {
   const G = (k: number, i: number): V3 => q[5 * k + i];
   const Q: V3[] = new Array(15);
-  const set = (a: number, b: number, c: number, p: V3) => { Q[qi(a, b, c)] = p; };
+  const set = (a: number, b: number, c: number, p: V3) => {
+    Q[qi(a, b, c)] = p;
+  };
   // Quartic index (a, b, c) ↔ powers of λ0, λ1, λ2; corner k = 4 on slot k.
   const slot = (k: number, x: number, y: number): [number, number, number] => {
     // x on corner k, y on corner k+1, rest on corner k+2.
     const r: [number, number, number] = [0, 0, 0];
-    r[k] = x; r[(k + 1) % 3] = y; r[(k + 2) % 3] = 4 - x - y;
+    r[k] = x;
+    r[(k + 1) % 3] = y;
+    r[(k + 2) % 3] = 4 - x - y;
     return r;
   };
   const blend = (F1: V3, w1: number, F2: V3, w2: number): V3 => (w1 + w2 > 0 ? mul(add(mul(F1, w1), mul(F2, w2)), 1 / (w1 + w2)) : F1);
   for (let k = 0; k < 3; k++) {
-    const k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-    const Pk = G(k, 0), Ep = G(k, 1), Em1 = G(k1, 2);
+    const k1 = (k + 1) % 3,
+      k2 = (k + 2) % 3;
+    const Pk = G(k, 0),
+      Ep = G(k, 1),
+      Em1 = G(k1, 2);
     set(...slot(k, 4, 0), Pk);
     set(...slot(k, 3, 1), comb([0.25, Pk], [0.75, Ep]));
     set(...slot(k, 2, 2), comb([0.5, Ep], [0.5, Em1]));
@@ -597,11 +755,21 @@ export function gregoryTriQuartic(q: V3[], l: [number, number, number]): V3[] {
 export function pmSectorQuartic(q: V3[], m: number, k: number): V3[] {
   const S = (j: number, i: number): V3 => q[6 * (((j % m) + m) % m) + i]; // 0 c, 1 t⁺, 2 t⁻(next corner), 3 b211, 4 b121, 5 b112
   const Q: V3[] = new Array(15);
-  const set = (a: number, b: number, c: number, p: V3) => { Q[qi(a, b, c)] = p; };
-  const ck = S(k, 0), tk = S(k, 1), tk1 = S(k, 2), ck1 = S(k + 1, 0);
-  set(4, 0, 0, ck); set(3, 1, 0, comb([0.25, ck], [0.75, tk])); set(2, 2, 0, comb([0.5, tk], [0.5, tk1]));
-  set(1, 3, 0, comb([0.75, tk1], [0.25, ck1])); set(0, 4, 0, ck1);
-  set(2, 1, 1, S(k, 3)); set(1, 2, 1, S(k, 4)); set(1, 1, 2, S(k, 5));
+  const set = (a: number, b: number, c: number, p: V3) => {
+    Q[qi(a, b, c)] = p;
+  };
+  const ck = S(k, 0),
+    tk = S(k, 1),
+    tk1 = S(k, 2),
+    ck1 = S(k + 1, 0);
+  set(4, 0, 0, ck);
+  set(3, 1, 0, comb([0.25, ck], [0.75, tk]));
+  set(2, 2, 0, comb([0.5, tk], [0.5, tk1]));
+  set(1, 3, 0, comb([0.75, tk1], [0.25, ck1]));
+  set(0, 4, 0, ck1);
+  set(2, 1, 1, S(k, 3));
+  set(1, 2, 1, S(k, 4));
+  set(1, 1, 2, S(k, 5));
   // The neighbouring sectors' boundary points next to corners k and k+1.
   const prevNear = comb([0.25, ck], [0.75, S(k - 1, 2)]); // (c_k + 3 t_k⁻)/4
   const nextNear = comb([0.25, ck1], [0.75, S(k + 1, 1)]); // (c_{k+1} + 3 t_{k+1}⁺)/4
@@ -640,7 +808,9 @@ export function pmQuadSector(u: number, v: number): { k: number; stw: V3; du: V3
 
 /** Sector of a Pm triangle at (u, v) = (λ1, λ2) and derivatives of (s, t, w) (notes §4.3 table). */
 export function pmTriSector(u: number, v: number): { k: number; stw: V3; du: V3; dv: V3 } {
-  const l0 = 1 - u - v, l1 = u, l2 = v;
+  const l0 = 1 - u - v,
+    l1 = u,
+    l2 = v;
   if (l0 >= l2 && l1 >= l2) return { k: 0, stw: [l0 - l2, l1 - l2, 3 * l2], du: [-1, 1, 0], dv: [-2, -1, 3] };
   if (l2 > l0 && l1 >= l0) return { k: 1, stw: [l1 - l0, l2 - l0, 3 * l0], du: [2, 1, -3], dv: [1, 2, -3] };
   return { k: 2, stw: [l2 - l1, l0 - l1, 3 * l1], du: [-1, -2, 3], dv: [1, -1, 0] };
@@ -668,17 +838,22 @@ export function evalPatchPoints(kind: number, q: V3[], u: number, v: number): { 
     case KIND_GREGORY_TRI: {
       const l: V3 = [1 - u - v, u, v];
       const e = evalQuartic(gregoryTriQuartic(q, l), l[0], l[1], l[2]);
-      const Pu = subv(e.Db, e.Da), Pv = subv(e.Dc, e.Da);
+      const Pu = subv(e.Db, e.Da),
+        Pv = subv(e.Dc, e.Da);
       return { P: e.P, Pu, Pv, n: cross3(Pu, Pv) };
     }
-    case KIND_PM_QUAD: case KIND_PM_TRI: case KIND_PM_TRI_LS: {
+    case KIND_PM_QUAD:
+    case KIND_PM_TRI:
+    case KIND_PM_TRI_LS: {
       const m = kind === KIND_PM_QUAD ? 4 : 3;
       const s = m === 4 ? pmQuadSector(u, v) : pmTriSector(u, v);
       const e = evalQuartic(pmSectorQuartic(q, m, s.k), s.stw[0], s.stw[1], s.stw[2]);
-      const Pu = dirDeriv(e, s.du), Pv = dirDeriv(e, s.dv);
+      const Pu = dirDeriv(e, s.du),
+        Pv = dirDeriv(e, s.dv);
       return { P: e.P, Pu, Pv, n: cross3(Pu, Pv) };
     }
-    default: throw new AccError(`unknown patch kind ${kind}`);
+    default:
+      throw new AccError(`unknown patch kind ${kind}`);
   }
 }
 
@@ -686,7 +861,12 @@ export function evalPatchPoints(kind: number, q: V3[], u: number, v: number): { 
 export class AccSurface {
   readonly topology: AccTopology;
   points: Float64Array;
-  constructor(readonly cage: Cage, readonly scheme: AccScheme, topology?: Topology, options: AccOptions = {}) {
+  constructor(
+    readonly cage: Cage,
+    readonly scheme: AccScheme,
+    topology?: Topology,
+    options: AccOptions = {},
+  ) {
     this.topology = buildAccTopology(cage, scheme, topology, options);
     this.points = buildAccPoints(this.topology, cage.positions);
   }
@@ -696,13 +876,17 @@ export class AccSurface {
     this.points = buildAccPoints(this.topology, positions);
   }
 
-  kind(face: number): number { return this.topology.patches[2 * face]; }
+  kind(face: number): number {
+    return this.topology.patches[2 * face];
+  }
 
   /** The control points of a patch. */
   patch(face: number): V3[] {
-    const kind = this.topology.patches[2 * face], o = this.topology.patches[2 * face + 1];
+    const kind = this.topology.patches[2 * face],
+      o = this.topology.patches[2 * face + 1];
     const out: V3[] = [];
-    for (let i = 0; i < KIND_POINTS[kind]; i++) out.push([this.points[3 * (o + i)], this.points[3 * (o + i) + 1], this.points[3 * (o + i) + 2]]);
+    for (let i = 0; i < KIND_POINTS[kind]; i++)
+      out.push([this.points[3 * (o + i)], this.points[3 * (o + i) + 1], this.points[3 * (o + i) + 2]]);
     return out;
   }
 

@@ -5,7 +5,9 @@ import { type Level, isInf } from './level.ts';
 
 /** Cubic B-spline basis and derivative at t. */
 export function bsplineBasis(t: number, b: Float64Array | number[], d: Float64Array | number[]): void {
-  const s = 1 - t, t2 = t * t, t3 = t2 * t;
+  const s = 1 - t,
+    t2 = t * t,
+    t3 = t2 * t;
   b[0] = (s * s * s) / 6;
   b[1] = (3 * t3 - 6 * t2 + 4) / 6;
   b[2] = (-3 * t3 + 3 * t2 + 3 * t + 1) / 6;
@@ -21,21 +23,39 @@ export function bsplineBasis(t: number, b: Float64Array | number[], d: Float64Ar
  * corner c0 at grid (1,1). Writes P, dP/du, dP/dv into out[0..9).
  */
 export function evalBSplinePatch(cp: Float64Array, u: number, v: number, out: Float64Array | number[]): void {
-  const bu = [0, 0, 0, 0], du = [0, 0, 0, 0], bv = [0, 0, 0, 0], dv = [0, 0, 0, 0];
+  const bu = [0, 0, 0, 0],
+    du = [0, 0, 0, 0],
+    bv = [0, 0, 0, 0],
+    dv = [0, 0, 0, 0];
   bsplineBasis(u, bu, du);
   bsplineBasis(v, bv, dv);
   for (let c = 0; c < 9; c++) out[c] = 0;
   for (let r = 0; r < 4; r++) {
     // Reduce row r in u first (separable).
-    let px = 0, py = 0, pz = 0, qx = 0, qy = 0, qz = 0;
+    let px = 0,
+      py = 0,
+      pz = 0,
+      qx = 0,
+      qy = 0,
+      qz = 0;
     for (let c = 0; c < 4; c++) {
       const o = 3 * (4 * r + c);
-      px += bu[c] * cp[o]; py += bu[c] * cp[o + 1]; pz += bu[c] * cp[o + 2];
-      qx += du[c] * cp[o]; qy += du[c] * cp[o + 1]; qz += du[c] * cp[o + 2];
+      px += bu[c] * cp[o];
+      py += bu[c] * cp[o + 1];
+      pz += bu[c] * cp[o + 2];
+      qx += du[c] * cp[o];
+      qy += du[c] * cp[o + 1];
+      qz += du[c] * cp[o + 2];
     }
-    out[0] += bv[r] * px; out[1] += bv[r] * py; out[2] += bv[r] * pz;
-    out[3] += bv[r] * qx; out[4] += bv[r] * qy; out[5] += bv[r] * qz;
-    out[6] += dv[r] * px; out[7] += dv[r] * py; out[8] += dv[r] * pz;
+    out[0] += bv[r] * px;
+    out[1] += bv[r] * py;
+    out[2] += bv[r] * pz;
+    out[3] += bv[r] * qx;
+    out[4] += bv[r] * qy;
+    out[5] += bv[r] * qz;
+    out[6] += dv[r] * px;
+    out[7] += dv[r] * py;
+    out[8] += dv[r] * pz;
   }
 }
 
@@ -57,9 +77,24 @@ export function isRegularFace(L: Level, f: number): boolean {
 }
 
 // Corner frames: grid position g and local axes a (towards c_{j+1}), b (towards c_{j-1}).
-const G = [[1, 1], [2, 1], [2, 2], [1, 2]];
-const A = [[1, 0], [0, 1], [-1, 0], [0, -1]];
-const B = [[0, 1], [-1, 0], [0, -1], [1, 0]];
+const G = [
+  [1, 1],
+  [2, 1],
+  [2, 2],
+  [1, 2],
+];
+const A = [
+  [1, 0],
+  [0, 1],
+  [-1, 0],
+  [0, -1],
+];
+const B = [
+  [0, 1],
+  [-1, 0],
+  [0, -1],
+  [1, 0],
+];
 
 /**
  * Gather the 16 control points of regular quad f (caller checked isRegularFace),
@@ -73,7 +108,9 @@ export function gatherPatch(L: Level, f: number): Float64Array | null {
   const put = (col: number, row: number, v: number): void => {
     if (v < 0 || col < 0 || col > 3 || row < 0 || row > 3) return;
     const o = 3 * (4 * row + col);
-    cp[o] = P[3 * v]; cp[o + 1] = P[3 * v + 1]; cp[o + 2] = P[3 * v + 2];
+    cp[o] = P[3 * v];
+    cp[o + 1] = P[3 * v + 1];
+    cp[o + 2] = P[3 * v + 2];
   };
   const a0 = m.faceOffsets[f];
   const dest = (h: number): number => m.faceIndices[m.heNext[h]];
@@ -83,7 +120,8 @@ export function gatherPatch(L: Level, f: number): Float64Array | null {
     const v = m.faceIndices[h];
     const ring = vertexRing(m, v, h);
     if (!ring) return null;
-    const R = ring.he, n = R.length;
+    const R = ring.he,
+      n = R.length;
     const r = R.indexOf(h);
     if (r < 0) return null;
     const face = (i: number): number => {
@@ -91,8 +129,12 @@ export function gatherPatch(L: Level, f: number): Float64Array | null {
       const k = r + i;
       return k >= 0 && k < n ? R[k] : -1;
     };
-    const f1 = face(1), f3 = ring.boundary ? face(-1) : face(3), f2 = ring.boundary ? -1 : face(2);
-    const g = G[j], ax = A[j], bx = B[j];
+    const f1 = face(1),
+      f3 = ring.boundary ? face(-1) : face(3),
+      f2 = ring.boundary ? -1 : face(2);
+    const g = G[j],
+      ax = A[j],
+      bx = B[j];
     put(g[0], g[1], v);
     if (f1 >= 0) {
       put(g[0] - ax[0] + bx[0], g[1] - ax[1] + bx[1], opp(f1)); // d1

@@ -31,13 +31,20 @@ export function creaseWeights(): CreaseWeights {
 }
 
 // Scratch for the basis (the module is single-threaded; no re-entrancy between calls).
-const Bt = new Float64Array(4), Dt = new Float64Array(4);
+const Bt = new Float64Array(4),
+  Dt = new Float64Array(4);
 
 /** C(phantom, u) with phantom = (2b1 − b2, b1, b2, b3): the infinitely sharp row (notes §3.3). */
 function phantomWeights(u: number, w: Float64Array, d: Float64Array): void {
   bsplineBasis(u, Bt, Dt);
-  w[0] = 0; w[1] = 2 * Bt[0] + Bt[1]; w[2] = Bt[2] - Bt[0]; w[3] = Bt[3];
-  d[0] = 0; d[1] = 2 * Dt[0] + Dt[1]; d[2] = Dt[2] - Dt[0]; d[3] = Dt[3];
+  w[0] = 0;
+  w[1] = 2 * Bt[0] + Bt[1];
+  w[2] = Bt[2] - Bt[0];
+  w[3] = Bt[3];
+  d[0] = 0;
+  d[1] = 2 * Dt[0] + Dt[1];
+  d[2] = Dt[2] - Dt[0];
+  d[3] = Dt[3];
 }
 
 /**
@@ -49,7 +56,9 @@ function phantomWeights(u: number, w: Float64Array, d: Float64Array): void {
  */
 function levelWeights(r: number, u: number, w: Float64Array, d: Float64Array): void {
   bsplineBasis(u / r, Bt, Dt); // u/r = u·2^k is exact
-  const r2 = r * r, r3 = r2 * r, q = 1 - r;
+  const r2 = r * r,
+    r3 = r2 * r,
+    q = 1 - r;
   w[0] = r * Bt[0];
   w[1] = q * Bt[0] + Bt[1] + q * Bt[2] + (1 - 2 * r + r3) * Bt[3]; // all terms ≥ 0: no cancellation
   w[2] = r * Bt[2] + (2 * r - 2 * r3) * Bt[3];
@@ -60,7 +69,8 @@ function levelWeights(r: number, u: number, w: Float64Array, d: Float64Array): v
   d[1] = -(d[0] + d[2] + d[3]);
 }
 
-const Pw = new Float64Array(4), Pd = new Float64Array(4);
+const Pw = new Float64Array(4),
+  Pd = new Float64Array(4);
 
 /**
  * Weights of one row across a crease of sharpness `sigma` at u ∈ [0,1] (notes §3.4).
@@ -74,7 +84,8 @@ const Pw = new Float64Array(4), Pd = new Float64Array(4);
  */
 export function creaseRowWeights(sigma: number, u: number, out: CreaseWeights = creaseWeights()): CreaseWeights {
   const s = Math.fround(sigma);
-  const w = out.value, d = out.du;
+  const w = out.value,
+    d = out.du;
   if (!(s > 0)) {
     bsplineBasis(u, w, d);
     return out;
@@ -83,7 +94,8 @@ export function creaseRowWeights(sigma: number, u: number, out: CreaseWeights = 
     phantomWeights(u, w, d);
     return out;
   }
-  const k = Math.floor(s), f = s - k;
+  const k = Math.floor(s),
+    f = s - k;
   const r = 2 ** -k;
   if (u >= r) {
     phantomWeights(u, w, d);
@@ -113,7 +125,8 @@ export function evalCreaseRow(sigma: number, u: number, row: ArrayLike<number>):
   if (row.length % 4 !== 0) throw new RangeError(`a row is 4 points: got ${row.length} numbers`);
   const dim = row.length / 4;
   const { value, du } = creaseRowWeights(sigma, u);
-  const P = new Array<number>(dim).fill(0), dPdu = new Array<number>(dim).fill(0);
+  const P = new Array<number>(dim).fill(0),
+    dPdu = new Array<number>(dim).fill(0);
   for (let i = 0; i < 4; i++) {
     for (let c = 0; c < dim; c++) {
       P[c] += value[i] * row[dim * i + c];
@@ -141,7 +154,8 @@ export interface CreasePatchPoint {
 export function evalCreasePatch(cp: ArrayLike<number>, sigma: number, u: number, v: number): CreasePatchPoint {
   if (cp.length !== 48) throw new RangeError(`a patch is 16 xyz points: got ${cp.length} numbers`);
   const { value: wu, du: wd } = creaseRowWeights(sigma, u);
-  const bv = new Float64Array(4), dv = new Float64Array(4);
+  const bv = new Float64Array(4),
+    dv = new Float64Array(4);
   bsplineBasis(v, bv, dv);
   const P: [number, number, number] = [0, 0, 0];
   const Pu: [number, number, number] = [0, 0, 0];
@@ -149,7 +163,8 @@ export function evalCreasePatch(cp: ArrayLike<number>, sigma: number, u: number,
   for (let c = 0; c < 4; c++) {
     // Column c reduced in v first (value and d/dv), then weighted in u.
     for (let x = 0; x < 3; x++) {
-      let col = 0, colV = 0;
+      let col = 0,
+        colV = 0;
       for (let r = 0; r < 4; r++) {
         const p = cp[3 * (4 * r + c) + x];
         col += bv[r] * p;
@@ -160,11 +175,7 @@ export function evalCreasePatch(cp: ArrayLike<number>, sigma: number, u: number,
       Pv[x] += wu[c] * colV;
     }
   }
-  const n: [number, number, number] = [
-    Pu[1] * Pv[2] - Pu[2] * Pv[1],
-    Pu[2] * Pv[0] - Pu[0] * Pv[2],
-    Pu[0] * Pv[1] - Pu[1] * Pv[0],
-  ];
+  const n: [number, number, number] = [Pu[1] * Pv[2] - Pu[2] * Pv[1], Pu[2] * Pv[0] - Pu[0] * Pv[2], Pu[0] * Pv[1] - Pu[1] * Pv[0]];
   const l = Math.hypot(n[0], n[1], n[2]);
   const N: [number, number, number] = l > 0 ? [n[0] / l, n[1] / l, n[2] / l] : [NaN, NaN, NaN];
   return { P, dPdu: Pu, dPdv: Pv, N };

@@ -101,10 +101,14 @@ export function faceEdgeParam(cage: Cage, f: number, j: number, tau: number): Su
   const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
   if (n === 4) {
     switch (j) {
-      case 0: return { face: f, u: tau, v: 0 };
-      case 1: return { face: f, u: 1, v: tau };
-      case 2: return { face: f, u: 1 - tau, v: 1 };
-      default: return { face: f, u: 0, v: 1 - tau };
+      case 0:
+        return { face: f, u: tau, v: 0 };
+      case 1:
+        return { face: f, u: 1, v: tau };
+      case 2:
+        return { face: f, u: 1 - tau, v: 1 };
+      default:
+        return { face: f, u: 0, v: 1 - tau };
     }
   }
   // Sub-face j spans vertex j (s = 0) to the edge midpoint (s = 1) along t = 0; sub-face j+1
@@ -124,7 +128,8 @@ export class DisplacedSurface {
 
   constructor(surface: Surface, map: HeightMap, options: DisplacementOptions) {
     requireUvs(surface.cage);
-    if (!Number.isFinite(options.scale) || !Number.isFinite(options.midLevel)) throw new RangeError('displacement scale and mid-level must be finite');
+    if (!Number.isFinite(options.scale) || !Number.isFinite(options.midLevel))
+      throw new RangeError('displacement scale and mid-level must be finite');
     this.surface = surface;
     this.cage = surface.cage;
     this.map = map;
@@ -139,7 +144,8 @@ export class DisplacedSurface {
     const f = p.face;
     const n = this.surface.faceSize(f);
     const k = 'k' in p ? p.k : 0;
-    const s = 'k' in p ? p.s : p.u, t = 'k' in p ? p.t : p.v;
+    const s = 'k' in p ? p.s : p.u,
+      t = 'k' in p ? p.t : p.v;
     if (n === 4 && k !== 0) throw new RangeError(`sub-face ${k} does not exist on a quad`);
     const base = this.surface.evaluateSubFace(f, k, s, t);
     const uvp = uvAtSubFace(this.cage, f, k, s, t);
@@ -155,7 +161,8 @@ export class DisplacedSurface {
       N = [NaN, NaN, NaN];
     } else {
       P = [base.P[0] + h * N0[0], base.P[1] + h * N0[1], base.P[2] + h * N0[2]];
-      const Pu: V3 = [0, 0, 0], Pv: V3 = [0, 0, 0];
+      const Pu: V3 = [0, 0, 0],
+        Pv: V3 = [0, 0, 0];
       for (let c = 0; c < 3; c++) {
         Pu[c] = base.dPdu[c] + dhdu * N0[c];
         Pv[c] = base.dPdv[c] + dhdv * N0[c];
@@ -193,7 +200,8 @@ export class DisplacedSurface {
     const start = this.cage.faceOffsets[f];
     let j = 0;
     for (; j < n; j++) {
-      const p = this.cage.faceIndices[start + j], q = this.cage.faceIndices[start + ((j + 1) % n)];
+      const p = this.cage.faceIndices[start + j],
+        q = this.cage.faceIndices[start + ((j + 1) % n)];
       if ((p === a && q === b) || (p === b && q === a)) break;
     }
     // tau runs along the face's own edge j → j+1.
@@ -214,40 +222,69 @@ export class DisplacedSurface {
     const start = this.cage.faceOffsets[f];
     const vid = (j: number): number => this.cage.faceIndices[start + (((j % n) + n) % n)];
     // Locate the point on the face boundary: corner j, or edge j → j+1 at tau.
-    let corner = -1, edge = -1, tau = 0;
+    let corner = -1,
+      edge = -1,
+      tau = 0;
     if ('k' in p && n !== 4) {
       const { k, s, t } = p;
       if (s === 0 && t === 0) corner = k;
-      else if (t === 0 && s < 1) { edge = k; tau = s / 2; }
-      else if (s === 0 && t < 1) { edge = (k + n - 1) % n; tau = 1 - t / 2; }
+      else if (t === 0 && s < 1) {
+        edge = k;
+        tau = s / 2;
+      } else if (s === 0 && t < 1) {
+        edge = (k + n - 1) % n;
+        tau = 1 - t / 2;
+      }
     } else {
-      const u = 'k' in p ? p.s : p.u, v = 'k' in p ? p.t : p.v;
-      const c = [[0, 0], [1, 0], [1, 1], [0, 1]].findIndex(([cu, cv]) => u === cu && v === cv);
+      const u = 'k' in p ? p.s : p.u,
+        v = 'k' in p ? p.t : p.v;
+      const c = [
+        [0, 0],
+        [1, 0],
+        [1, 1],
+        [0, 1],
+      ].findIndex(([cu, cv]) => u === cu && v === cv);
       if (c >= 0) corner = c;
-      else if (v === 0) { edge = 0; tau = u; }
-      else if (u === 1) { edge = 1; tau = v; }
-      else if (v === 1) { edge = 2; tau = 1 - u; }
-      else if (u === 0) { edge = 3; tau = 1 - v; }
+      else if (v === 0) {
+        edge = 0;
+        tau = u;
+      } else if (u === 1) {
+        edge = 1;
+        tau = v;
+      } else if (v === 1) {
+        edge = 2;
+        tau = 1 - u;
+      } else if (u === 0) {
+        edge = 3;
+        tau = 1 - v;
+      }
     }
     if (corner >= 0) return this.vertex(vid(corner));
     if (edge >= 0) {
       // Always through the canonical x, even when this face is the owner: x is the one quantity
       // both sides (and the GPU weld) share, so equal x gives bit-identical results.
-      const a = vid(edge), b = vid(edge + 1);
+      const a = vid(edge),
+        b = vid(edge + 1);
       return this.edgePoint(a, b, a < b ? tau : 1 - tau);
     }
     return this.evaluateLocal(p);
   }
 
   private cornerOf(f: number, v: number): number {
-    const start = this.cage.faceOffsets[f], n = this.surface.faceSize(f);
+    const start = this.cage.faceOffsets[f],
+      n = this.surface.faceSize(f);
     for (let j = 0; j < n; j++) if (this.cage.faceIndices[start + j] === v) return j;
     throw new Error(`vertex ${v} is not on face ${f}`);
   }
 
   private cornerParam(f: number, j: number): SurfaceParam {
     if (this.surface.faceSize(f) !== 4) return { face: f, k: j, s: 0, t: 0 };
-    const [u, v] = [[0, 0], [1, 0], [1, 1], [0, 1]][j];
+    const [u, v] = [
+      [0, 0],
+      [1, 0],
+      [1, 1],
+      [0, 1],
+    ][j];
     return { face: f, u, v };
   }
 }

@@ -83,19 +83,26 @@ export class FaceEvaluator {
   /** Evaluate sub-face k (k = 0 for quads) at (s,t) in [0,1]^2. */
   evaluate(k: number, s: number, t: number): SurfacePoint {
     if (!(s >= 0 && s <= 1 && t >= 0 && t <= 1)) throw new RangeError(`parameter (${s}, ${t}) outside [0,1]^2`);
-    if (!(Number.isInteger(k) && k >= 0 && k < (this.size === 4 ? 1 : this.size))) throw new RangeError(`sub-face ${k} does not exist on a face with ${this.size} corners`);
+    if (!(Number.isInteger(k) && k >= 0 && k < (this.size === 4 ? 1 : this.size)))
+      throw new RangeError(`sub-face ${k} does not exist on a face with ${this.size} corners`);
     let node = this.root(this.size === 4 ? 0 : k);
-    let x = s, y = t;
+    let x = s,
+      y = t;
     // J = d(s,t)/d(x,y), row-major [ds/dx, ds/dy, dt/dx, dt/dy].
-    let j00 = 1, j01 = 0, j10 = 0, j11 = 1;
+    let j00 = 1,
+      j01 = 0,
+      j10 = 0,
+      j11 = 1;
     const out = [0, 0, 0, 0, 0, 0, 0, 0, 0];
     for (let depth = 0; ; depth++) {
       if (node.regular && node.cp) {
         evalBSplinePatch(node.cp, x, y, out);
         const det = j00 * j11 - j01 * j10;
-        const Pu: [number, number, number] = [0, 0, 0], Pv: [number, number, number] = [0, 0, 0];
+        const Pu: [number, number, number] = [0, 0, 0],
+          Pv: [number, number, number] = [0, 0, 0];
         for (let c = 0; c < 3; c++) {
-          const px = out[3 + c], py = out[6 + c];
+          const px = out[3 + c],
+            py = out[6 + c];
           Pu[c] = (px * j11 - py * j10) / det;
           Pv[c] = (py * j00 - px * j01) / det;
         }
@@ -107,29 +114,68 @@ export class FaceEvaluator {
         // Nearest corner (for the depth cap: the irregular one nearest the point).
         let corner = atCorner ? (x === 0 ? (y === 0 ? 0 : 3) : y === 0 ? 1 : 2) : -1;
         if (corner < 0) {
-          const cx = [0, 1, 1, 0], cy = [0, 0, 1, 1];
+          const cx = [0, 1, 1, 0],
+            cy = [0, 0, 1, 1];
           let best = Infinity;
           for (let c = 0; c < 4; c++) {
             const d = Math.max(Math.abs(x - cx[c]), Math.abs(y - cy[c]));
-            if (d < best) { best = d; corner = c; }
+            if (d < best) {
+              best = d;
+              corner = c;
+            }
           }
         }
         return this.cornerLimit(node.lvl, corner, j00, j01, j10, j11);
       }
-      const i = x >= 0.5 ? 1 : 0, jj = y >= 0.5 ? 1 : 0;
+      const i = x >= 0.5 ? 1 : 0,
+        jj = y >= 0.5 ? 1 : 0;
       const c = i === 0 ? (jj === 0 ? 0 : 3) : jj === 0 ? 1 : 2;
       let nx: number, ny: number, d00: number, d01: number, d10: number, d11: number;
       switch (c) {
-        case 0: nx = 2 * x; ny = 2 * y; d00 = 0.5; d01 = 0; d10 = 0; d11 = 0.5; break;
-        case 1: nx = 2 * y; ny = 2 * (1 - x); d00 = 0; d01 = -0.5; d10 = 0.5; d11 = 0; break;
-        case 2: nx = 2 * (1 - x); ny = 2 * (1 - y); d00 = -0.5; d01 = 0; d10 = 0; d11 = -0.5; break;
-        default: nx = 2 * (1 - y); ny = 2 * x; d00 = 0; d01 = 0.5; d10 = -0.5; d11 = 0; break;
+        case 0:
+          nx = 2 * x;
+          ny = 2 * y;
+          d00 = 0.5;
+          d01 = 0;
+          d10 = 0;
+          d11 = 0.5;
+          break;
+        case 1:
+          nx = 2 * y;
+          ny = 2 * (1 - x);
+          d00 = 0;
+          d01 = -0.5;
+          d10 = 0.5;
+          d11 = 0;
+          break;
+        case 2:
+          nx = 2 * (1 - x);
+          ny = 2 * (1 - y);
+          d00 = -0.5;
+          d01 = 0;
+          d10 = 0;
+          d11 = -0.5;
+          break;
+        default:
+          nx = 2 * (1 - y);
+          ny = 2 * x;
+          d00 = 0;
+          d01 = 0.5;
+          d10 = -0.5;
+          d11 = 0;
+          break;
       }
       // (x,y) = f(nx,ny): d(x,y)/d(nx,ny) = D; J <- J D.
-      const a00 = j00 * d00 + j01 * d10, a01 = j00 * d01 + j01 * d11;
-      const a10 = j10 * d00 + j11 * d10, a11 = j10 * d01 + j11 * d11;
-      j00 = a00; j01 = a01; j10 = a10; j11 = a11;
-      x = nx; y = ny;
+      const a00 = j00 * d00 + j01 * d10,
+        a01 = j00 * d01 + j01 * d11;
+      const a10 = j10 * d00 + j11 * d10,
+        a11 = j10 * d01 + j11 * d11;
+      j00 = a00;
+      j01 = a01;
+      j10 = a10;
+      j11 = a11;
+      x = nx;
+      y = ny;
       node = childNode(node, c);
     }
   }
@@ -138,18 +184,30 @@ export class FaceEvaluator {
     const v = lvl.he.faceIndices[lvl.he.faceOffsets[0] + corner];
     const r = vertexLimit(lvl, v, 0);
     // Local (x,y) directions of the lead / trail edges at this corner.
-    const ax = [[1, 0], [0, 1], [-1, 0], [0, -1]][corner];
-    const bx = [[0, 1], [-1, 0], [0, -1], [1, 0]][corner];
+    const ax = [
+      [1, 0],
+      [0, 1],
+      [-1, 0],
+      [0, -1],
+    ][corner];
+    const bx = [
+      [0, 1],
+      [-1, 0],
+      [0, -1],
+      [1, 0],
+    ][corner];
     // d/dx and d/dy in local coordinates: lead = a.(Px,Py), trail = b.(Px,Py)
     // Solve [a; b] [Px; Py] = [lead; trail].
     const det = ax[0] * bx[1] - ax[1] * bx[0];
-    const Px: number[] = [0, 0, 0], Py: number[] = [0, 0, 0];
+    const Px: number[] = [0, 0, 0],
+      Py: number[] = [0, 0, 0];
     for (let c = 0; c < 3; c++) {
       Px[c] = (r.lead[c] * bx[1] - r.trail[c] * ax[1]) / det;
       Py[c] = (r.trail[c] * ax[0] - r.lead[c] * bx[0]) / det;
     }
     const dj = j00 * j11 - j01 * j10;
-    const Pu: [number, number, number] = [0, 0, 0], Pv: [number, number, number] = [0, 0, 0];
+    const Pu: [number, number, number] = [0, 0, 0],
+      Pv: [number, number, number] = [0, 0, 0];
     for (let c = 0; c < 3; c++) {
       Pu[c] = (Px[c] * j11 - Py[c] * j10) / dj;
       Pv[c] = (Py[c] * j00 - Px[c] * j01) / dj;
@@ -174,10 +232,16 @@ export class Surface {
     this.level0 = levelFromCage(cage, this.topology, options);
   }
 
-  get faceCount(): number { return this.topology.nFaces; }
-  faceSize(f: number): number { return this.topology.faceOffsets[f + 1] - this.topology.faceOffsets[f]; }
+  get faceCount(): number {
+    return this.topology.nFaces;
+  }
+  faceSize(f: number): number {
+    return this.topology.faceOffsets[f + 1] - this.topology.faceOffsets[f];
+  }
   /** false for hole faces (tagged, or made holes by boundary mode 'none'). */
-  hasLimitSurface(f: number): boolean { return !this.level0.hole[f]; }
+  hasLimitSurface(f: number): boolean {
+    return !this.level0.hole[f];
+  }
 
   faceEvaluator(f: number): FaceEvaluator {
     if (!(Number.isInteger(f) && f >= 0 && f < this.topology.nFaces)) throw new RangeError(`face ${f} does not exist`);

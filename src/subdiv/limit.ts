@@ -32,9 +32,15 @@ export function creaseCrossMask(k: number): Float64Array {
   const hit = crossTangentCache.get(k);
   if (hit) return hit;
   const np = 2 * k + 2;
-  const iv = 0, ie = (i: number): number => 1 + i, id = (i: number): number => k + 2 + i;
+  const iv = 0,
+    ie = (i: number): number => 1 + i,
+    id = (i: number): number => k + 2 + i;
   let rows: Float64Array[] = [];
-  for (let p = 0; p < np; p++) { const r = new Float64Array(np); r[p] = 1; rows.push(r); }
+  for (let p = 0; p < np; p++) {
+    const r = new Float64Array(np);
+    r[p] = 1;
+    rows.push(r);
+  }
   const comb = (terms: [number, Float64Array][]): Float64Array => {
     const r = new Float64Array(np);
     for (const [w, x] of terms) for (let i = 0; i < np; i++) r[i] += w * x[i];
@@ -45,12 +51,36 @@ export function creaseCrossMask(k: number): Float64Array {
     const e = (i: number): Float64Array => rows[ie(i)];
     const d = (i: number): Float64Array => rows[id(i)];
     const Fc: Float64Array[] = [];
-    for (let i = 0; i < k; i++) Fc.push(comb([[0.25, v], [0.25, e(i)], [0.25, d(i)], [0.25, e(i + 1)]]));
+    for (let i = 0; i < k; i++)
+      Fc.push(
+        comb([
+          [0.25, v],
+          [0.25, e(i)],
+          [0.25, d(i)],
+          [0.25, e(i + 1)],
+        ]),
+      );
     const next: Float64Array[] = new Array(np);
-    next[iv] = comb([[0.75, v], [0.125, e(0)], [0.125, e(k)]]);
-    next[ie(0)] = comb([[0.5, v], [0.5, e(0)]]);
-    next[ie(k)] = comb([[0.5, v], [0.5, e(k)]]);
-    for (let i = 1; i < k; i++) next[ie(i)] = comb([[0.25, v], [0.25, e(i)], [0.25, Fc[i - 1]], [0.25, Fc[i]]]);
+    next[iv] = comb([
+      [0.75, v],
+      [0.125, e(0)],
+      [0.125, e(k)],
+    ]);
+    next[ie(0)] = comb([
+      [0.5, v],
+      [0.5, e(0)],
+    ]);
+    next[ie(k)] = comb([
+      [0.5, v],
+      [0.5, e(k)],
+    ]);
+    for (let i = 1; i < k; i++)
+      next[ie(i)] = comb([
+        [0.25, v],
+        [0.25, e(i)],
+        [0.25, Fc[i - 1]],
+        [0.25, Fc[i]],
+      ]);
     for (let i = 0; i < k; i++) next[id(i)] = Fc[i];
     // Translate so the centre is the origin and rescale (subdivision is affine-invariant).
     const c = next[iv];
@@ -58,7 +88,10 @@ export function creaseCrossMask(k: number): Float64Array {
     for (let p = 0; p < np; p++) {
       if (p === iv) continue;
       const r = next[p];
-      for (let i = 0; i < np; i++) { r[i] -= c[i]; mx = Math.max(mx, Math.abs(r[i])); }
+      for (let i = 0; i < np; i++) {
+        r[i] -= c[i];
+        mx = Math.max(mx, Math.abs(r[i]));
+      }
     }
     next[iv] = new Float64Array(np);
     for (let p = 0; p < np; p++) if (p !== iv) for (let i = 0; i < np; i++) next[p][i] /= mx;
@@ -76,7 +109,8 @@ function smoothLimit(m: HalfEdges, P: Float64Array, v: number, ring: number[]): 
   const n = ring.length;
   const out: V3 = [n * n * P[3 * v], n * n * P[3 * v + 1], n * n * P[3 * v + 2]];
   for (const h of ring) {
-    const e = m.faceIndices[m.heNext[h]], d = m.faceIndices[m.heNext[m.heNext[h]]];
+    const e = m.faceIndices[m.heNext[h]],
+      d = m.faceIndices[m.heNext[m.heNext[h]]];
     for (let c = 0; c < 3; c++) out[c] += 4 * P[3 * e + c] + P[3 * d + c];
   }
   const s = n * (n + 5);
@@ -88,12 +122,16 @@ function smoothTangents(m: HalfEdges, P: Float64Array, ring: number[]): [V3, V3]
   const n = ring.length;
   const th = (2 * Math.PI) / n;
   const lam = (5 + Math.cos(th) + Math.cos(th / 2) * Math.sqrt(2 * (9 + Math.cos(th)))) / 16;
-  const T1: V3 = [0, 0, 0], T2: V3 = [0, 0, 0];
+  const T1: V3 = [0, 0, 0],
+    T2: V3 = [0, 0, 0];
   for (let i = 0; i < n; i++) {
     const h = ring[i];
-    const e = m.faceIndices[m.heNext[h]], d = m.faceIndices[m.heNext[m.heNext[h]]];
-    const we1 = 4 * Math.cos(i * th), wd1 = (Math.cos(i * th) + Math.cos((i + 1) * th)) / (4 * lam - 1);
-    const we2 = 4 * Math.cos((i - 1) * th), wd2 = (Math.cos((i - 1) * th) + Math.cos(i * th)) / (4 * lam - 1);
+    const e = m.faceIndices[m.heNext[h]],
+      d = m.faceIndices[m.heNext[m.heNext[h]]];
+    const we1 = 4 * Math.cos(i * th),
+      wd1 = (Math.cos(i * th) + Math.cos((i + 1) * th)) / (4 * lam - 1);
+    const we2 = 4 * Math.cos((i - 1) * th),
+      wd2 = (Math.cos((i - 1) * th) + Math.cos(i * th)) / (4 * lam - 1);
     for (let c = 0; c < 3; c++) {
       T1[c] += we1 * P[3 * e + c] + wd1 * P[3 * d + c];
       T2[c] += we2 * P[3 * e + c] + wd2 * P[3 * d + c];
@@ -117,15 +155,24 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
   while (ex.vmap[lv] !== v) lv++;
   let sec = 0; // sector face is local face 0
   const anchor: V3 = [L.pos[3 * v], L.pos[3 * v + 1], L.pos[3 * v + 2]];
-  for (let i = 0; i < cur.pos.length; i += 3) { cur.pos[i] -= anchor[0]; cur.pos[i + 1] -= anchor[1]; cur.pos[i + 2] -= anchor[2]; }
+  for (let i = 0; i < cur.pos.length; i += 3) {
+    cur.pos[i] -= anchor[0];
+    cur.pos[i + 1] -= anchor[1];
+    cur.pos[i + 2] -= anchor[2];
+  }
   const done = (p: V3, lead: V3, trail: V3, nd: boolean, levels: number): VertexLimit => ({
-    P: [p[0] + anchor[0], p[1] + anchor[1], p[2] + anchor[2]], lead, trail, normalDefined: nd, levels,
+    P: [p[0] + anchor[0], p[1] + anchor[1], p[2] + anchor[2]],
+    lead,
+    trail,
+    normalDefined: nd,
+    levels,
   });
   let prev: V3 | null = null;
   let scale0 = 0;
   for (let i = 0; i < cur.pos.length; i++) scale0 = Math.max(scale0, Math.abs(cur.pos[i]));
   for (let level = 0; ; level++) {
-    const m = cur.he, P = cur.pos;
+    const m = cur.he,
+      P = cur.pos;
     let secHe = -1;
     for (let h = m.faceOffsets[sec]; h < m.faceOffsets[sec + 1]; h++) if (m.faceIndices[h] === lv) secHe = h;
     const ring = vertexRing(m, lv, secHe);
@@ -141,23 +188,38 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
       if (isInf(s)) nInf++;
     }
     const last = level >= MAX_LIMIT_LEVELS;
-    if (ring && (allQuads && !semi || last)) {
+    if (ring && ((allQuads && !semi) || last)) {
       const R = ring.he;
       const nE = m.vertEdgeOffsets[lv + 1] - m.vertEdgeOffsets[lv];
-      const leadE = m.faceIndices[m.heNext[secHe]], trailE = m.faceIndices[m.hePrev[secHe]];
+      const leadE = m.faceIndices[m.heNext[secHe]],
+        trailE = m.faceIndices[m.hePrev[secHe]];
       if (isInf(vs) || nInf > 2) {
         // Corner: the vertex itself; tangents along the sector face's edges.
-        return done([P[3 * lv], P[3 * lv + 1], P[3 * lv + 2]], sub(P, leadE, lv), sub(P, trailE, lv),
-          isInf(cur.edgeSharp[m.heEdge[secHe]]) && isInf(cur.edgeSharp[m.heEdge[m.hePrev[secHe]]]), level);
+        return done(
+          [P[3 * lv], P[3 * lv + 1], P[3 * lv + 2]],
+          sub(P, leadE, lv),
+          sub(P, trailE, lv),
+          isInf(cur.edgeSharp[m.heEdge[secHe]]) && isInf(cur.edgeSharp[m.heEdge[m.hePrev[secHe]]]),
+          level,
+        );
       }
       if (nInf === 2) {
         // Crease: edges of the ring (boundary ring has one more edge than faces).
-        const edgeFar: number[] = [], edgeSharp: boolean[] = [];
-        for (const h of R) { edgeFar.push(m.faceIndices[m.heNext[h]]); edgeSharp.push(isInf(cur.edgeSharp[m.heEdge[h]])); }
-        if (ring.boundary) { const h = m.hePrev[R[R.length - 1]]; edgeFar.push(m.faceIndices[h]); edgeSharp.push(isInf(cur.edgeSharp[m.heEdge[h]])); }
+        const edgeFar: number[] = [],
+          edgeSharp: boolean[] = [];
+        for (const h of R) {
+          edgeFar.push(m.faceIndices[m.heNext[h]]);
+          edgeSharp.push(isInf(cur.edgeSharp[m.heEdge[h]]));
+        }
+        if (ring.boundary) {
+          const h = m.hePrev[R[R.length - 1]];
+          edgeFar.push(m.faceIndices[h]);
+          edgeSharp.push(isInf(cur.edgeSharp[m.heEdge[h]]));
+        }
         const sharpIdx = edgeSharp.map((s, i) => (s ? i : -1)).filter((i) => i >= 0);
         sharpEdgeIdx.push(...sharpIdx);
-        const ea = edgeFar[sharpIdx[0]], eb = edgeFar[sharpIdx[1]];
+        const ea = edgeFar[sharpIdx[0]],
+          eb = edgeFar[sharpIdx[1]];
         const p: V3 = [0, 0, 0];
         for (let c = 0; c < 3; c++) p[c] = (4 * P[3 * lv + c] + P[3 * ea + c] + P[3 * eb + c]) / 6;
         // Span containing the sector face (ring face r, between edges r and r+1).
@@ -165,16 +227,24 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
         const r = R.indexOf(secHe);
         let a: number, b: number;
         if (ring.boundary) {
-          a = r; while (!edgeSharp[a]) a--;
-          b = r + 1; while (!edgeSharp[b]) b++;
+          a = r;
+          while (!edgeSharp[a]) a--;
+          b = r + 1;
+          while (!edgeSharp[b]) b++;
         } else {
-          a = r; while (!edgeSharp[((a % nF) + nF) % nF]) a--;
-          b = r + 1; while (!edgeSharp[b % nF]) b++;
+          a = r;
+          while (!edgeSharp[((a % nF) + nF) % nF]) a--;
+          b = r + 1;
+          while (!edgeSharp[b % nF]) b++;
         }
         const k = b - a;
         const E = (i: number): number => edgeFar[ring.boundary ? i : ((i % nF) + nF) % nF];
-        const D = (i: number): number => { const h = R[ring.boundary ? i : ((i % nF) + nF) % nF]; return m.faceIndices[m.heNext[m.heNext[h]]]; };
-        const T1: V3 = [0, 0, 0], T2: V3 = [0, 0, 0];
+        const D = (i: number): number => {
+          const h = R[ring.boundary ? i : ((i % nF) + nF) % nF];
+          return m.faceIndices[m.heNext[m.heNext[h]]];
+        };
+        const T1: V3 = [0, 0, 0],
+          T2: V3 = [0, 0, 0];
         for (let c = 0; c < 3; c++) T1[c] = 0.5 * (P[3 * E(a) + c] - P[3 * E(b) + c]);
         let nd = true;
         if (k === 1) {
@@ -182,7 +252,9 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
           nd = false;
         } else if (k === 2) {
           for (let c = 0; c < 3; c++) {
-            T2[c] = (-4 * P[3 * lv + c] - P[3 * E(a) + c] - P[3 * E(b) + c] + 4 * P[3 * E(a + 1) + c] + P[3 * D(a) + c] + P[3 * D(a + 1) + c]) / 6;
+            T2[c] =
+              (-4 * P[3 * lv + c] - P[3 * E(a) + c] - P[3 * E(b) + c] + 4 * P[3 * E(a + 1) + c] + P[3 * D(a) + c] + P[3 * D(a + 1) + c]) /
+              6;
           }
         } else {
           const w = creaseCrossMask(k);
@@ -206,7 +278,10 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
       if (!ring.boundary && R.length >= 2) {
         const p = smoothLimit(m, P, lv, R);
         if (prev && (Math.hypot(p[0] - prev[0], p[1] - prev[1], p[2] - prev[2]) <= 2.3e-16 * scale0 || last)) {
-          if (R.length >= 3) { const [T1, T2] = smoothTangents(m, P, R); return done(p, T1, T2, true, level); }
+          if (R.length >= 3) {
+            const [T1, T2] = smoothTangents(m, P, R);
+            return done(p, T1, T2, true, level);
+          }
           return done(p, sub(P, leadE, lv), sub(P, trailE, lv), false, level);
         }
         prev = p;
@@ -233,13 +308,22 @@ export function limitPositions(L: Level): { P: Float64Array; N: Float64Array } {
   const P = new Float64Array(3 * m.nVerts);
   const N = new Float64Array(3 * m.nVerts).fill(NaN);
   for (let v = 0; v < m.nVerts; v++) {
-    if (m.vertHeOffsets[v + 1] === m.vertHeOffsets[v]) { P.set(L.pos.subarray(3 * v, 3 * v + 3), 3 * v); continue; }
+    if (m.vertHeOffsets[v + 1] === m.vertHeOffsets[v]) {
+      P.set(L.pos.subarray(3 * v, 3 * v + 3), 3 * v);
+      continue;
+    }
     const f = m.heFace[m.vertHe[m.vertHeOffsets[v]]];
     const r = vertexLimit(L, v, f);
-    P[3 * v] = r.P[0]; P[3 * v + 1] = r.P[1]; P[3 * v + 2] = r.P[2];
+    P[3 * v] = r.P[0];
+    P[3 * v + 1] = r.P[1];
+    P[3 * v + 2] = r.P[2];
     const n = cross(r.lead, r.trail);
     const l = Math.hypot(n[0], n[1], n[2]);
-    if (l > 0) { N[3 * v] = n[0] / l; N[3 * v + 1] = n[1] / l; N[3 * v + 2] = n[2] / l; }
+    if (l > 0) {
+      N[3 * v] = n[0] / l;
+      N[3 * v + 1] = n[1] / l;
+      N[3 * v + 2] = n[2] / l;
+    }
   }
   return { P, N };
 }

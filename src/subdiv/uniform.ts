@@ -22,7 +22,10 @@ export function sampleUniform(S: Surface, N: number): { faces: FaceSamples[] } {
   const faces: FaceSamples[] = [];
   for (let f = 0; f < S.faceCount; f++) {
     const n = S.faceSize(f);
-    if (!S.hasLimitSurface(f)) { faces.push({ f, n, hole: true, sub: [] }); continue; }
+    if (!S.hasLimitSurface(f)) {
+      faces.push({ f, n, hole: true, sub: [] });
+      continue;
+    }
     const ev = S.faceEvaluator(f);
     const sub: SubFaceSamples[] = [];
     for (let k = 0; k < (n === 4 ? 1 : n); k++) {
@@ -32,8 +35,12 @@ export function sampleUniform(S: Surface, N: number): { faces: FaceSamples[] } {
         for (let i = 0; i <= N; i++) {
           const r = ev.evaluate(k, i / N, j / N);
           const o = 3 * (j * (N + 1) + i);
-          P[o] = r.P[0]; P[o + 1] = r.P[1]; P[o + 2] = r.P[2];
-          Nn[o] = r.N[0]; Nn[o + 1] = r.N[1]; Nn[o + 2] = r.N[2];
+          P[o] = r.P[0];
+          P[o + 1] = r.P[1];
+          P[o + 2] = r.P[2];
+          Nn[o] = r.N[0];
+          Nn[o + 1] = r.N[1];
+          Nn[o + 2] = r.N[2];
         }
       }
       sub.push({ k, res: N, P, N: Nn });

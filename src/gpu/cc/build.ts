@@ -76,8 +76,17 @@
  *   vfan     per cage vertex: its fan (limit position and normal for the factor rule), or ~0
  */
 import {
-  type Cage, type HalfEdges, type SubdivOptions, DEFAULT_OPTIONS, FaceKind, SHARPNESS_INFINITE, buildTopology,
-  classify, computeSharpness, isRegularVertex, vertexRing,
+  type Cage,
+  type HalfEdges,
+  type SubdivOptions,
+  DEFAULT_OPTIONS,
+  FaceKind,
+  SHARPNESS_INFINITE,
+  buildTopology,
+  classify,
+  computeSharpness,
+  isRegularVertex,
+  vertexRing,
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../prepare.ts';
 
@@ -125,8 +134,17 @@ export interface CatmullClarkOptions {
 
 export interface CatmullClarkData {
   words: Uint32Array;
-  offTri: number; offPoly: number; offRegions: number; offPatchIdx: number; offFans: number; offSectors: number;
-  offThreads: number; offCos: number; offRules: number; offInputs: number; offVertexFan: number;
+  offTri: number;
+  offPoly: number;
+  offRegions: number;
+  offPatchIdx: number;
+  offFans: number;
+  offSectors: number;
+  offThreads: number;
+  offCos: number;
+  offRules: number;
+  offInputs: number;
+  offVertexFan: number;
   /** Points of the levels ≥ 1, fan slices and limits (the cage's vertices come first in the point space). */
   pointCount: number;
   /** Global point index ranges for the level dispatches: per level [faceFirst, faceCount, veFirst, veCount]. */
@@ -170,8 +188,21 @@ const INF = SHARPNESS_INFINITE;
 
 function makeLevel(he: HalfEdges, edgeSharp: Float64Array, vertSharp: Float64Array, hole: Uint8Array, base: number): Level {
   const boundary = new Uint8Array(he.nVerts);
-  for (let e = 0; e < he.nEdges; e++) if (he.edgeFaceCount[e] === 1) { boundary[he.edgeVerts[2 * e]] = 1; boundary[he.edgeVerts[2 * e + 1]] = 1; }
-  return { he, edgeSharp, vertSharp, hole, boundary, base, regular: new Int8Array(he.nVerts).fill(-1), eligible: new Int8Array(he.nVerts).fill(-1) };
+  for (let e = 0; e < he.nEdges; e++)
+    if (he.edgeFaceCount[e] === 1) {
+      boundary[he.edgeVerts[2 * e]] = 1;
+      boundary[he.edgeVerts[2 * e + 1]] = 1;
+    }
+  return {
+    he,
+    edgeSharp,
+    vertSharp,
+    hole,
+    boundary,
+    base,
+    regular: new Int8Array(he.nVerts).fill(-1),
+    eligible: new Int8Array(he.nVerts).fill(-1),
+  };
 }
 
 function vertexRuleOf(nSharp: number, vs: number): number {
@@ -184,10 +215,16 @@ class U32 {
   a = new Uint32Array(1024);
   n = 0;
   push(x: number): void {
-    if (this.n === this.a.length) { const b = new Uint32Array(2 * this.a.length); b.set(this.a); this.a = b; }
+    if (this.n === this.a.length) {
+      const b = new Uint32Array(2 * this.a.length);
+      b.set(this.a);
+      this.a = b;
+    }
     this.a[this.n++] = x >>> 0;
   }
-  get view(): Uint32Array { return this.a.subarray(0, this.n); }
+  get view(): Uint32Array {
+    return this.a.subarray(0, this.n);
+  }
 }
 
 const f32bits = (x: number): number => new Uint32Array(Float32Array.of(x).buffer)[0];
@@ -195,26 +232,51 @@ const f32bits = (x: number): number => new Uint32Array(Float32Array.of(x).buffer
 /** Refine level L's topology once: the rules of level L+1's points, and level L+1. */
 function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   const m = L.he;
-  const nV = m.nVerts, nE = m.nEdges, nF = m.nFaces;
+  const nV = m.nVerts,
+    nE = m.nEdges,
+    nF = m.nFaces;
   const base1 = L.base + nV;
-  const fBase = base1 + nV + nE, vBase = L.base;
+  const fBase = base1 + nV + nE,
+    vBase = L.base;
   // Vertex points.
   for (let v = 0; v < nV; v++) {
-    const e0 = m.vertEdgeOffsets[v], e1 = m.vertEdgeOffsets[v + 1];
-    const h0 = m.vertHeOffsets[v], h1 = m.vertHeOffsets[v + 1];
+    const e0 = m.vertEdgeOffsets[v],
+      e1 = m.vertEdgeOffsets[v + 1];
+    const h0 = m.vertHeOffsets[v],
+      h1 = m.vertHeOffsets[v + 1];
     const first = inputs.n;
     inputs.push(vBase + v);
-    let nSharp = 0, nSharpChild = 0, ia = 0, ib = 0, ca = 0, cb = 0;
-    let tSum = 0, tCount = 0;
+    let nSharp = 0,
+      nSharpChild = 0,
+      ia = 0,
+      ib = 0,
+      ca = 0,
+      cb = 0;
+    let tSum = 0,
+      tCount = 0;
     const vs = L.vertSharp[v];
-    if (vs > 0 && dec(vs) === 0) { tSum = Math.fround(vs); tCount = 1; }
+    if (vs > 0 && dec(vs) === 0) {
+      tSum = Math.fround(vs);
+      tCount = 1;
+    }
     for (let k = e0; k < e1; k++) {
       const e = m.vertEdges[k];
       inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
       const s = L.edgeSharp[e];
-      if (s > 0) { if (nSharp === 0) ia = k - e0; else if (nSharp === 1) ib = k - e0; nSharp++; }
-      if (dec(s) > 0) { if (nSharpChild === 0) ca = k - e0; else if (nSharpChild === 1) cb = k - e0; nSharpChild++; }
-      if (s > 0 && dec(s) === 0) { tSum = Math.fround(tSum + s); tCount++; }
+      if (s > 0) {
+        if (nSharp === 0) ia = k - e0;
+        else if (nSharp === 1) ib = k - e0;
+        nSharp++;
+      }
+      if (dec(s) > 0) {
+        if (nSharpChild === 0) ca = k - e0;
+        else if (nSharpChild === 1) cb = k - e0;
+        nSharpChild++;
+      }
+      if (s > 0 && dec(s) === 0) {
+        tSum = Math.fround(tSum + s);
+        tCount++;
+      }
     }
     for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
     const pr = vertexRuleOf(nSharp, vs);
@@ -224,7 +286,10 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
     } else cr = pr;
     // The crease pair: the parent's if it is a crease, else the child's.
-    if (pr !== VRULE_CREASE) { ia = ca; ib = cb; }
+    if (pr !== VRULE_CREASE) {
+      ia = ca;
+      ib = cb;
+    }
     if (e1 - e0 >= 1 << 12 || h1 - h0 >= 1 << 12) throw new Error(`vertex of valence ${e1 - e0} is not supported`);
     rules.push(RULE_VERTEX | (pr << 2) | (cr << 4) | ((e1 - e0) << 8) | ((h1 - h0) << 20));
     rules.push(first);
@@ -250,7 +315,8 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   }
   // Face points.
   for (let f = 0; f < nF; f++) {
-    const a = m.faceOffsets[f], b = m.faceOffsets[f + 1];
+    const a = m.faceOffsets[f],
+      b = m.faceOffsets[f + 1];
     rules.push(RULE_FACE | ((b - a) << 8));
     rules.push(inputs.n);
     rules.push(0);
@@ -274,8 +340,10 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   const he = refinedHalfEdges(m, nV1, faceOffsets, faceIndices);
   const edgeSharp = new Float64Array(he.nEdges);
   for (let e = 0; e < he.nEdges; e++) {
-    const a = he.edgeVerts[2 * e], b = he.edgeVerts[2 * e + 1];
-    const lo = Math.min(a, b), hi = Math.max(a, b);
+    const a = he.edgeVerts[2 * e],
+      b = he.edgeVerts[2 * e + 1];
+    const lo = Math.min(a, b),
+      hi = Math.max(a, b);
     if (lo < nV && hi >= nV && hi < nV + nE) edgeSharp[e] = dec(L.edgeSharp[hi - nV]);
   }
   const vertSharp = new Float64Array(nV1);
@@ -292,7 +360,10 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
 function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array, faceIndices: Int32Array): HalfEdges {
   const nHp = m.faceIndices.length;
   const nHe = 4 * nHp;
-  const heFace = new Int32Array(nHe), heNext = new Int32Array(nHe), hePrev = new Int32Array(nHe), heTwin = new Int32Array(nHe);
+  const heFace = new Int32Array(nHe),
+    heNext = new Int32Array(nHe),
+    hePrev = new Int32Array(nHe),
+    heTwin = new Int32Array(nHe);
   for (let h = 0; h < nHp; h++) {
     const b = 4 * h;
     for (let j = 0; j < 4; j++) {
@@ -300,7 +371,8 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
       heNext[b + j] = b + ((j + 1) & 3);
       hePrev[b + j] = b + ((j + 3) & 3);
     }
-    const t = m.heTwin[h], tp = m.heTwin[m.hePrev[h]];
+    const t = m.heTwin[h],
+      tp = m.heTwin[m.hePrev[h]];
     heTwin[b] = t >= 0 ? 4 * m.heNext[t] + 3 : -1;
     heTwin[b + 1] = 4 * m.heNext[h] + 2;
     heTwin[b + 2] = 4 * m.hePrev[h] + 1;
@@ -309,11 +381,16 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
   const heEdge = new Int32Array(nHe);
   let nEdges = 0;
   for (let h = 0; h < nHe; h++) if (heTwin[h] < 0 || h < heTwin[h]) nEdges++;
-  const edgeVerts = new Int32Array(2 * nEdges), edgeFaceCount = new Int32Array(nEdges), edgeHe = new Int32Array(nEdges);
+  const edgeVerts = new Int32Array(2 * nEdges),
+    edgeFaceCount = new Int32Array(nEdges),
+    edgeHe = new Int32Array(nEdges);
   let e = 0;
   for (let h = 0; h < nHe; h++) {
     const t = heTwin[h];
-    if (t >= 0 && t < h) { heEdge[h] = heEdge[t]; continue; }
+    if (t >= 0 && t < h) {
+      heEdge[h] = heEdge[t];
+      continue;
+    }
     heEdge[h] = e;
     edgeVerts[2 * e] = faceIndices[h];
     edgeVerts[2 * e + 1] = faceIndices[heNext[h]];
@@ -328,7 +405,10 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
   const fill = vertHeOffsets.slice(0, nVerts);
   for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
   const vertEdgeOffsets = new Int32Array(nVerts + 1);
-  for (let k = 0; k < nEdges; k++) { vertEdgeOffsets[edgeVerts[2 * k] + 1]++; vertEdgeOffsets[edgeVerts[2 * k + 1] + 1]++; }
+  for (let k = 0; k < nEdges; k++) {
+    vertEdgeOffsets[edgeVerts[2 * k] + 1]++;
+    vertEdgeOffsets[edgeVerts[2 * k + 1] + 1]++;
+  }
   for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
   const vertEdges = new Int32Array(2 * nEdges);
   const fill2 = vertEdgeOffsets.slice(0, nVerts);
@@ -337,8 +417,23 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
     vertEdges[fill2[edgeVerts[2 * k + 1]]++] = k;
   }
   return {
-    nVerts, nFaces: nHp, nEdges, faceOffsets, faceIndices, heFace, heNext, hePrev, heTwin, heEdge, edgeVerts, edgeFaceCount, edgeHe,
-    vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges,
+    nVerts,
+    nFaces: nHp,
+    nEdges,
+    faceOffsets,
+    faceIndices,
+    heFace,
+    heNext,
+    hePrev,
+    heTwin,
+    heEdge,
+    edgeVerts,
+    edgeFaceCount,
+    edgeHe,
+    vertHeOffsets,
+    vertHe,
+    vertEdgeOffsets,
+    vertEdges,
   };
 }
 
@@ -365,7 +460,8 @@ function isQuadHe(m: HalfEdges, h: number): boolean {
 function axisOk(L: Level, y: number, axisSharp: number): boolean {
   const m = L.he;
   if (L.vertSharp[y] !== 0) return false;
-  const nf = m.vertHeOffsets[y + 1] - m.vertHeOffsets[y], ne = m.vertEdgeOffsets[y + 1] - m.vertEdgeOffsets[y];
+  const nf = m.vertHeOffsets[y + 1] - m.vertHeOffsets[y],
+    ne = m.vertEdgeOffsets[y + 1] - m.vertEdgeOffsets[y];
   for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
   let nInf = 0;
   for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
@@ -435,9 +531,11 @@ function ringExponent(n: number, boundary: boolean, rule: number, ia: number, ib
     });
     let c1 = c;
     if (rule === VRULE_CREASE) c1 = 0.75 * c + 0.125 * (e[ia] + e[ib]);
-    else if (rule === VRULE_SMOOTH) c1 = ((n - 2) / n) * c + (e.slice(0, n).reduce((a, b) => a + b, 0) + F.reduce((a, b) => a + b, 0)) / (n * n);
+    else if (rule === VRULE_SMOOTH)
+      c1 = ((n - 2) / n) * c + (e.slice(0, n).reduce((a, b) => a + b, 0) + F.reduce((a, b) => a + b, 0)) / (n * n);
     // Modulo the constant vector: shift the centre to 0.
-    const e2 = e1.map((x) => x - c1), d2 = F.map((x) => x - c1);
+    const e2 = e1.map((x) => x - c1),
+      d2 = F.map((x) => x - c1);
     const norm = Math.hypot(...e2, ...d2);
     const prev = Math.hypot(...e.map((x) => x - c), ...d.map((x) => x - c));
     if (!(norm > 0) || !(prev > 0)) break;
@@ -458,9 +556,24 @@ export function subdominantEigenvalue(n: number): number {
 }
 
 // Sector coordinates of corner j of a quad in its own frame: (a, b) = rot_j(x, y).
-const QUAD_OF_ROT: [number, number][] = [[0, 0], [1, 0], [1, 1], [0, 1]];
-const GRID_POS: [number, number][] = [[1, 1], [2, 1], [2, 2], [1, 2]];
-const AXES: [number, number, number, number][] = [[1, 0, 0, 1], [0, 1, -1, 0], [-1, 0, 0, -1], [0, -1, 1, 0]];
+const QUAD_OF_ROT: [number, number][] = [
+  [0, 0],
+  [1, 0],
+  [1, 1],
+  [0, 1],
+];
+const GRID_POS: [number, number][] = [
+  [1, 1],
+  [2, 1],
+  [2, 2],
+  [1, 2],
+];
+const AXES: [number, number, number, number][] = [
+  [1, 0, 0, 1],
+  [0, 1, -1, 0],
+  [-1, 0, 0, -1],
+  [0, -1, 1, 0],
+];
 
 function setGrid(grid: number[], c: number, r: number, v: number): void {
   if (c >= 0 && c < 4 && r >= 0 && r < 4) grid[4 * r + c] = v;
@@ -528,14 +641,18 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const cls = classify(topo, sharp);
   const nV0 = topo.nVerts;
   const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0)];
-  const rules = new U32(), inputs = new U32();
+  const rules = new U32(),
+    inputs = new U32();
   const levelRanges: [number, number, number, number][] = [];
   const level = (l: number): Level => {
-    if (l > MAX_LEVEL) throw new Error(`Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (unsupported configuration)`);
+    if (l > MAX_LEVEL)
+      throw new Error(`Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (unsupported configuration)`);
     while (levels.length <= l) {
       const L = levels[levels.length - 1];
       const N = refineLevel(L, rules, inputs);
-      const nV = L.he.nVerts, nE = L.he.nEdges, nF = L.he.nFaces;
+      const nV = L.he.nVerts,
+        nE = L.he.nEdges,
+        nF = L.he.nFaces;
       levelRanges.push([N.base + nV + nE, nF, N.base, nV + nE]);
       levels.push(N);
     }
@@ -572,15 +689,21 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const faceRegion = new Int32Array(topo.nFaces).fill(-1);
   const faceDepth = new Int8Array(topo.nFaces).fill(-1);
   const faceKindOf = new Uint8Array(topo.nFaces);
-  let patchCount = 0, sectorRegionCount = 0;
+  let patchCount = 0,
+    sectorRegionCount = 0;
   type Desc = { g: number; k: number; i: number; j: number; r: number };
   for (let f = 0; f < topo.nFaces; f++) {
     if (sharp.hole[f]) continue;
     const N = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
     const fk = cls.faceKind[f];
-    const kind = fk === FaceKind.Regular ? PatchKind.Regular
-      : fk === FaceKind.QuadIrregular ? ((cls.faceFlags[f] & 3) !== 0 ? PatchKind.Crease : PatchKind.IrregularQuad)
-        : PatchKind.Triangle;
+    const kind =
+      fk === FaceKind.Regular
+        ? PatchKind.Regular
+        : fk === FaceKind.QuadIrregular
+          ? (cls.faceFlags[f] & 3) !== 0
+            ? PatchKind.Crease
+            : PatchKind.IrregularQuad
+          : PatchKind.Triangle;
     faceKindOf[f] = kind;
     // First depth worth trying: 0 for a quad (regular, or a sector of a fan eligible on the
     // cage); an n-gon's sub-faces are regions at level 1 only when its corners are smooth
@@ -615,11 +738,19 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
       let ok = true;
       for (const q of desc) {
         const a0 = m.faceOffsets[q.g];
-        let irregular = -1, nIrr = 0;
-        for (let c = 0; c < 4; c++) if (!isRegular(L, m.faceIndices[a0 + c])) { irregular = c; nIrr++; }
+        let irregular = -1,
+          nIrr = 0;
+        for (let c = 0; c < 4; c++)
+          if (!isRegular(L, m.faceIndices[a0 + c])) {
+            irregular = c;
+            nIrr++;
+          }
         if (nIrr === 0) {
           const p = gatherPatch(L, q.g);
-          if (p) { regs.push({ w0: REGION_PATCH | (q.r << 2) | (p.mask << 4) | (kind << 24), w1: 0, patch: p.idx }); continue; }
+          if (p) {
+            regs.push({ w0: REGION_PATCH | (q.r << 2) | (p.mask << 4) | (kind << 24), w1: 0, patch: p.idx });
+            continue;
+          }
         }
         // An EV sector: a corner that is (or descends from) an eligible fan centre.
         let found = false;
@@ -638,14 +769,19 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
           regs.push({ w0: REGION_SECTOR | (((q.r + c) & 3) << 2) | ((d - s) << 8) | (sector << 12) | (kind << 24), w1: fan });
           found = true;
         }
-        if (!found) { ok = false; break; }
+        if (!found) {
+          ok = false;
+          break;
+        }
       }
       if (!ok) continue;
       const dd = N === 4 ? d : d - 1;
       const side = 1 << dd;
       const base = regionWords.n / 2;
       const order = new Array<Reg>(regs.length);
-      desc.forEach((q, n) => { order[q.k * side * side + q.j * side + q.i] = regs[n]; });
+      desc.forEach((q, n) => {
+        order[q.k * side * side + q.j * side + q.i] = regs[n];
+      });
       for (const rg of order) {
         if (rg.patch) {
           regionWords.push(rg.w0);
@@ -679,13 +815,20 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const ring = vertexRing(m, x)!;
     const n = ring.he.length;
     const G = (v: number) => L.base + v;
-    const fi = m.faceIndices, nx = m.heNext;
+    const fi = m.faceIndices,
+      nx = m.heNext;
     const sectors: number[][] = [];
-    let nInf = 0, ia = 0, ib = 0;
+    let nInf = 0,
+      ia = 0,
+      ib = 0;
     for (let i = 0; i < n; i++) {
       const h = ring.he[i];
       const inf = L.edgeSharp[m.heEdge[h]] >= INF ? 1 : 0;
-      if (inf) { if (nInf === 0) ia = i; else ib = i; nInf++; }
+      if (inf) {
+        if (nInf === 0) ia = i;
+        else ib = i;
+        nInf++;
+      }
       const t = m.heTwin[nx[h]];
       const u = m.heTwin[nx[nx[nx[t]]]];
       sectors.push([inf, G(fi[nx[h]]), G(fi[nx[nx[t]]]), G(fi[nx[nx[h]]]), G(fi[nx[nx[nx[t]]]]), G(fi[nx[nx[nx[u]]]]), G(fi[nx[nx[u]]])]);
@@ -702,7 +845,17 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const smoothInterior = !ring.boundary && nInf === 0 && vs === 0 && n >= 3;
     const inf = sectors.map((q) => q[0]);
     return {
-      level: l, x, n, boundary: ring.boundary, D: 0, rule, ia, ib, cageVertex: -1, sectors, ringFaces: ring.he.map((h) => m.heFace[h]),
+      level: l,
+      x,
+      n,
+      boundary: ring.boundary,
+      D: 0,
+      rule,
+      ia,
+      ib,
+      cageVertex: -1,
+      sectors,
+      ringFaces: ring.he.map((h) => m.heFace[h]),
       alpha: smoothInterior ? -Math.log2(subdominantEigenvalue(n)) : ringExponent(n, ring.boundary, rule, ia, ib, inf),
     };
   }
@@ -710,7 +863,9 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   // Points: the levels, then per fan its slices and limits.
   const lastLevel = levels[levels.length - 1];
   let nextPoint = lastLevel.base + lastLevel.he.nVerts;
-  const fanWords = new U32(), sectorWords = new U32(), cosWords = new U32();
+  const fanWords = new U32(),
+    sectorWords = new U32(),
+    cosWords = new U32();
   const cosAt = new Map<number, number>();
   let maxDepth = 0;
   const sliceFans: number[] = [];
@@ -788,21 +943,56 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   }
 
   const parts: Uint32Array[] = [
-    triRegion, new Uint32Array(Float32Array.from(poly).buffer), regionWords.view, patchIdx.view, fanWords.view, sectorWords.view,
-    threadWords.view, cosWords.view, rules.view, inputs.view, vertexFan,
+    triRegion,
+    new Uint32Array(Float32Array.from(poly).buffer),
+    regionWords.view,
+    patchIdx.view,
+    fanWords.view,
+    sectorWords.view,
+    threadWords.view,
+    cosWords.view,
+    rules.view,
+    inputs.view,
+    vertexFan,
   ];
   const offs: number[] = [];
   let total = 0;
-  for (const p of parts) { offs.push(total); total += p.length; }
+  for (const p of parts) {
+    offs.push(total);
+    total += p.length;
+  }
   const words = new Uint32Array(total);
   parts.forEach((p, i) => words.set(p, offs[i]));
   const pointCount = nextPoint - nV0;
   return {
-    words, offTri: offs[0], offPoly: offs[1], offRegions: offs[2], offPatchIdx: offs[3], offFans: offs[4], offSectors: offs[5],
-    offThreads: offs[6], offCos: offs[7], offRules: offs[8], offInputs: offs[9], offVertexFan: offs[10],
-    pointCount, levelRanges, fanCount: fans.length, sliceWorkgroups: threadWords.n / WORKGROUP, maxDepth,
-    regionCount: regionWords.n / 2, patchCount, sectorRegionCount, levels: levels.length - 1, triKind, faceDepth, faceRegion,
-    regions: regionWords.view.slice(), fans: fanWords.view.slice(), triRegion, vertexCount: nV0,
+    words,
+    offTri: offs[0],
+    offPoly: offs[1],
+    offRegions: offs[2],
+    offPatchIdx: offs[3],
+    offFans: offs[4],
+    offSectors: offs[5],
+    offThreads: offs[6],
+    offCos: offs[7],
+    offRules: offs[8],
+    offInputs: offs[9],
+    offVertexFan: offs[10],
+    pointCount,
+    levelRanges,
+    fanCount: fans.length,
+    sliceWorkgroups: threadWords.n / WORKGROUP,
+    maxDepth,
+    regionCount: regionWords.n / 2,
+    patchCount,
+    sectorRegionCount,
+    levels: levels.length - 1,
+    triKind,
+    faceDepth,
+    faceRegion,
+    regions: regionWords.view.slice(),
+    fans: fanWords.view.slice(),
+    triRegion,
+    vertexCount: nV0,
     gpuBytes: 4 * total + 12 * pointCount,
   };
 }
@@ -816,7 +1006,8 @@ export function regionOf(cc: CatmullClarkData, t: number, k: number, x: number, 
   const info = cc.triRegion[3 * t + 1];
   const dd = info >>> 28;
   const side = 1 << dd;
-  const i = Math.min(Math.floor(x * side), side - 1), j = Math.min(Math.floor(y * side), side - 1);
+  const i = Math.min(Math.floor(x * side), side - 1),
+    j = Math.min(Math.floor(y * side), side - 1);
   const reg = cc.triRegion[3 * t] + k * side * side + j * side + i;
   const w0 = cc.regions[2 * reg];
   if ((w0 & 3) !== REGION_SECTOR) return { blended: false, sector: false };
@@ -830,9 +1021,13 @@ export function regionOf(cc: CatmullClarkData, t: number, k: number, x: number, 
 /** rot_r of the unit square: rot_1(x, y) = (y, 1 − x), rot_r = rot_1^r. */
 export function rot(r: number, x: number, y: number): [number, number] {
   switch (r & 3) {
-    case 0: return [x, y];
-    case 1: return [y, 1 - x];
-    case 2: return [1 - x, 1 - y];
-    default: return [1 - y, x];
+    case 0:
+      return [x, y];
+    case 1:
+      return [y, 1 - x];
+    case 2:
+      return [1 - x, 1 - y];
+    default:
+      return [1 - y, x];
   }
 }

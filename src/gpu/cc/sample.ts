@@ -33,7 +33,10 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
 const pipelines = new WeakMap<GPUDevice, Map<string, GPUComputePipeline>>();
 
 /** Samples: triangle t and fixed-point weights (w1, w2) of corners 1 and 2 (w0 = 65536 − w1 − w2). */
-export async function sampleSurface(tess: Tessellator, samples: { t: number; w1: number; w2: number }[]): Promise<{ pos: Float32Array; normal: Float32Array }> {
+export async function sampleSurface(
+  tess: Tessellator,
+  samples: { t: number; w1: number; w2: number }[],
+): Promise<{ pos: Float32Array; normal: Float32Array }> {
   const device = tess.device;
   let byKind = pipelines.get(device);
   if (!byKind) pipelines.set(device, (byKind = new Map()));
@@ -49,7 +52,11 @@ export async function sampleSurface(tess: Tessellator, samples: { t: number; w1:
   samples.forEach((s, i) => words.set([s.t, s.w1, s.w2], 3 * i));
   const input = device.createBuffer({ label: 'samples', size: words.byteLength, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST });
   device.queue.writeBuffer(input, 0, words);
-  const output = device.createBuffer({ label: 'sample results', size: 24 * Math.max(n, 1), usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
+  const output = device.createBuffer({
+    label: 'sample results',
+    size: 24 * Math.max(n, 1),
+    usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC,
+  });
   const group = device.createBindGroup({
     layout: pipe.getBindGroupLayout(0),
     entries: [
@@ -71,7 +78,8 @@ export async function sampleSurface(tess: Tessellator, samples: { t: number; w1:
   const f = new Float32Array(await readBuffer(device, output, 24 * n));
   input.destroy();
   output.destroy();
-  const pos = new Float32Array(3 * n), normal = new Float32Array(3 * n);
+  const pos = new Float32Array(3 * n),
+    normal = new Float32Array(3 * n);
   for (let i = 0; i < n; i++) {
     pos.set(f.subarray(6 * i, 6 * i + 3), 3 * i);
     normal.set(f.subarray(6 * i + 3, 6 * i + 6), 3 * i);
