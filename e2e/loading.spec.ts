@@ -6,6 +6,7 @@
 // model (?surface=cage), and the final one exactly the surface's own frame, in both a first load
 // and a switch from another model.
 import { expect, test, type Page } from '@playwright/test';
+import { ready } from './helpers.ts';
 
 interface Hooks {
   tessellab: {
@@ -13,10 +14,6 @@ interface Hooks {
     demo: { loadBuiltin(name: string): Promise<boolean>; controller: { shownSurface: string; preparing: boolean } };
   };
   tessellabHoldPreparation?: boolean;
-}
-
-async function ready(page: Page): Promise<void> {
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
 }
 
 /** The canvas, without the loading message drawn over it. */

@@ -10,6 +10,7 @@
 // Kept short on SwiftShader: small models, fixed factor 2, small output buffers (cap=0.05, i.e.
 // 50,000 vertices), one frame per camera move.
 import { expect, test, type Page } from '@playwright/test';
+import { dropFile, ready } from './helpers.ts';
 
 interface Memory {
   bytes: number;
@@ -35,10 +36,6 @@ function gpuMemory(page: Page): Promise<Memory> {
   return page.evaluate(() => (window as unknown as { tessellab: { gpuMemory(): Memory } }).tessellab.gpuMemory());
 }
 
-async function ready(page: Page): Promise<void> {
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
-}
-
 /** What the panel's cage picker shows. */
 function picked(page: Page) {
   return page.locator('.lil-gui.panel .lil-option').filter({ hasText: 'cage' }).first().locator('.lil-display');
@@ -46,20 +43,6 @@ function picked(page: Page) {
 
 function pickerSelect(page: Page) {
   return page.locator('.lil-gui.panel .lil-option').filter({ hasText: 'cage' }).first().locator('select');
-}
-
-/** Drop a file on the page the way a user's drag and drop does. */
-async function dropFile(page: Page, name: string, text: string): Promise<void> {
-  const dataTransfer = await page.evaluateHandle(
-    ({ name, text }) => {
-      const dt = new DataTransfer();
-      dt.items.add(new File([text], name, { type: 'text/plain' }));
-      return dt;
-    },
-    { name, text },
-  );
-  await page.dispatchEvent('body', 'dragenter', { dataTransfer });
-  await page.dispatchEvent('body', 'drop', { dataTransfer });
 }
 
 /** `title` is shown, tessellated (its counts read back). */
