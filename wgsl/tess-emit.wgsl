@@ -130,10 +130,14 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
   let G = gapOf(L, T.k0);
   var a = 0u;
   var b = 0u;
-  for (var m = 0u; m < g; m++) {
-    if (gapStepInner(G, a, b)) { a++; } else { b++; }
+  var inner = false;
+  // Moves 0..g (one call site of gapStepInner: see tess-pattern.wgsl on compile time).
+  for (var m = 0u; m <= g; m++) {
+    inner = gapStepInner(G, a, b);
+    if (m == g) { break; }
+    if (inner) { a++; } else { b++; }
   }
-  if (gapStepInner(G, a, b)) {
+  if (inner) {
     writeTriangle(r, mirrored, innerVertex(T, a), outerVertex(T, b), innerVertex(T, a + 1u));
   } else {
     writeTriangle(r, mirrored, innerVertex(T, a), outerVertex(T, b), outerVertex(T, b + 1u));

@@ -102,41 +102,70 @@ fn outerPoint(G: Gap, b: u32) -> vec2<i32> {
   return vec2<i32>(i32(ONE - v), i32(v));
 }
 
-// clamped.ts gapMoveOk.
-fn gapMoveOk(G: Gap, a: u32, b: u32, inner: bool) -> bool {
-  if (inner) {
-    if (a == G.nI) { return false; }
-    if (b == G.nO || !(a + 1u == G.nI && b + 1u < G.nO)) { return true; }
-    return capLevel(outerPoint(G, G.nO - 2u), outerPoint(G, G.nO - 1u), outerPoint(G, G.nO)) == 0u;
-  }
-  if (b == G.nO) { return false; }
-  if (a == G.nI || !(b + 1u == G.nO && a + 1u < G.nI)) { return true; }
-  return capLevel(innerPoint(G, G.nI - 2u), innerPoint(G, G.nI - 1u), innerPoint(G, G.nI)) == 0u;
+// Compile time: shader compilers inline every call, and innerPoint/outerPoint evaluate a line
+// pattern from the tables, so each is called from as few places as possible (loops over the
+// two moves and the three corners instead of one call per case): with one call per case the
+// emit pass took ~12 s to compile on SwiftShader. The logic is clamped.ts's, step for step.
+
+// Point i of the inner chain (inner) or of the outer chain.
+fn gapPoint(G: Gap, inner: bool, i: u32) -> vec2<i32> {
+  if (inner) { return innerPoint(G, i); }
+  return outerPoint(G, i);
 }
 
+// capLevel of the triangle of three chain points (chain: true = inner).
+fn gapTriLevel(G: Gap, chain: vec3<bool>, idx: vec3<u32>) -> u32 {
+  var p: array<vec2<i32>, 3>;
+  for (var k = 0u; k < 3u; k++) { p[k] = gapPoint(G, chain[k], idx[k]); }
+  return capLevel(p[0], p[1], p[2]);
+}
+
+// clamped.ts gapMoveOk: may the front edge I_a–O_b advance along the inner (or outer) chain?
+fn gapMoveOk(G: Gap, a: u32, b: u32, inner: bool) -> bool {
+  let x = select(b, a, inner); // the moving chain's index and count
+  let nx = select(G.nO, G.nI, inner);
+  let y = select(a, b, inner); // the other chain's
+  let ny = select(G.nI, G.nO, inner);
+  if (x == nx) { return false; }
+  if (y == ny || !(x + 1u == nx && y + 1u < ny)) { return true; }
+  // Not onto the moving chain's last point while the other chain's last three make a cap.
+  return gapTriLevel(G, vec3<bool>(!inner), vec3<u32>(ny - 2u, ny - 1u, ny)) == 0u;
+}
+
+// The cap level of the triangle a move makes: (I_a, O_b, I_a+1) or (I_a, O_b, O_b+1).
 fn moveLevel(G: Gap, a: u32, b: u32, inner: bool) -> u32 {
-  if (inner) { return capLevel(innerPoint(G, a), outerPoint(G, b), innerPoint(G, a + 1u)); }
-  return capLevel(innerPoint(G, a), outerPoint(G, b), outerPoint(G, b + 1u));
+  return gapTriLevel(G, vec3<bool>(true, false, inner), vec3<u32>(a, b, select(b + 1u, a + 1u, inner)));
 }
 
 fn bestLevel(G: Gap, a: u32, b: u32) -> u32 {
   var best = 4u;
-  if (gapMoveOk(G, a, b, true)) { best = min(best, moveLevel(G, a, b, true)); }
-  if (gapMoveOk(G, a, b, false)) { best = min(best, moveLevel(G, a, b, false)); }
+  for (var k = 0u; k < 2u; k++) {
+    let inner = k == 0u;
+    if (gapMoveOk(G, a, b, inner)) { best = min(best, moveLevel(G, a, b, inner)); }
+  }
   return select(best, 0u, best == 4u);
 }
 
 // clamped.ts gapStepInner: advance the inner chain from front edge I_a–O_b?
 fn gapStepInner(G: Gap, a: u32, b: u32) -> bool {
-  let okInner = gapMoveOk(G, a, b, true);
-  let okOuter = gapMoveOk(G, a, b, false);
-  if (!okInner) { return false; }
-  if (!okOuter) { return true; }
-  let li = moveLevel(G, a, b, true);
-  let lo = moveLevel(G, a, b, false);
-  let si = max(li, bestLevel(G, a + 1u, b));
-  let so = max(lo, bestLevel(G, a, b + 1u));
-  if (si != so) { return si < so; }
-  if (li != lo) { return li < lo; }
-  return halfDist2(outerPoint(G, b), innerPoint(G, a + 1u)) < halfDist2(innerPoint(G, a), outerPoint(G, b + 1u));
+  var ok: array<bool, 2>; // [inner, outer]
+  for (var k = 0u; k < 2u; k++) { ok[k] = gapMoveOk(G, a, b, k == 0u); }
+  if (!ok[0]) { return false; }
+  if (!ok[1]) { return true; }
+  var level: array<u32, 2>; // the move's own cap level
+  var ahead: array<u32, 2>; // and the worst of it and the best next move after it
+  for (var k = 0u; k < 2u; k++) {
+    let inner = k == 0u;
+    level[k] = moveLevel(G, a, b, inner);
+    ahead[k] = max(level[k], bestLevel(G, a + select(0u, 1u, inner), b + select(1u, 0u, inner)));
+  }
+  if (ahead[0] != ahead[1]) { return ahead[0] < ahead[1]; }
+  if (level[0] != level[1]) { return level[0] < level[1]; }
+  // Ties: the shorter diagonal, O_b–I_a+1 (inner) against I_a–O_b+1 (outer).
+  var d: array<u32, 2>;
+  for (var k = 0u; k < 2u; k++) {
+    let inner = k == 0u;
+    d[k] = halfDist2(gapPoint(G, !inner, select(a, b, inner)), gapPoint(G, inner, select(b + 1u, a + 1u, inner)));
+  }
+  return d[0] < d[1];
 }
