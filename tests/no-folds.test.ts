@@ -12,13 +12,12 @@
  * normals every uniform tessellation passes (factors 1, 2, 8, 32 give no fold on any model), so
  * a fold is the pattern's: a sliver whose three vertices lie on one curve of the surface.
  *
- * NOT MET: zero. Where an edge at factor 1 meets edges in (1, 2), whose two points slide in from
- * both ends, some triangles fold that no triangulation of those vertices avoids (a corner's
- * only non-degenerate triangle is a needle along a long chord of a strongly curved cage
- * triangle), and the gap matching's greedy still picks a cap in a few strips. So this is a
- * ratchet: zero where zero holds (creased-box, gear and icosphere folded 20, 27 and 11 times
- * before), and for the two models that still fold, the count measured
- * after the fix; the count before it is given beside it. A change that folds more fails here.
+ * NOT MET: zero. Folds come from the clamped pattern's gap strip (triangles whose three vertices
+ * lie nearly on one line in the domain: a cage edge or the clamp line, curved on the surface).
+ * A cap-avoiding greedy strip cut brought them down (creature 311 → 26, creased-box, gear and
+ * icosphere to 0), but replayed per output triangle on the GPU it made the emit pass 5–45×
+ * slower, so it was taken back out until the plan pass can store the strip's moves once per
+ * triangle. Until then this is a ratchet at today's counts: a change that folds more fails.
  */
 import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
@@ -29,12 +28,15 @@ import { cameraRule, cpuTessellate, geometricNormal, type CpuTriangle } from './
 
 const MODELS = new URL('../public/models/', import.meta.url);
 
-/** Folded triangles allowed over the 6 cameras (all others: 0), and the count before the fix. */
-const RESIDUAL: Record<string, { allowed: number; before: number }> = {
-  'creature.obj': { allowed: 26, before: 311 },
-  'pawn.obj': { allowed: 5, before: 11 },
-  // The creature's cage with UVs (a displaced model, added after the fix; its cameras differ).
-  'creature-wrinkles.obj': { allowed: 26, before: Number.NaN },
+/** Folded triangles allowed over the 6 cameras (all others: 0), as measured with today's pattern. */
+const RESIDUAL: Record<string, { allowed: number }> = {
+  'creature.obj': { allowed: 311 },
+  'creature-wrinkles.obj': { allowed: 311 }, // the creature's cage with UVs
+  'creased-box.obj': { allowed: 20 },
+  'brick-box.obj': { allowed: 20 }, // the creased box's cage with UVs
+  'gear.obj': { allowed: 27 },
+  'icosphere.obj': { allowed: 11 },
+  'pawn.obj': { allowed: 11 },
 };
 
 /** A small deterministic generator (LCG), so the cameras are the same on every run. */

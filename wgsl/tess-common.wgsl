@@ -39,6 +39,8 @@ fn tblSlotsOff() -> u32 { return staticBuf[5]; }
 fn tblStateStartOff() -> u32 { return staticBuf[6]; }
 fn tblStateIndexOff() -> u32 { return staticBuf[7]; }
 fn tblStateListOff() -> u32 { return staticBuf[8]; }
+fn tblMergeOff() -> u32 { return staticBuf[9]; }
+fn tblMergeWords() -> u32 { return staticBuf[10]; }
 fn tblStateCount() -> u32 { return staticBuf[4]; }
 
 // The line state that holds at 16.16 factor F: the last state whose start is ≤ F.

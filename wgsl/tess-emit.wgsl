@@ -62,14 +62,7 @@ fn gridVertex(T: Tri, row: u32, col: u32) -> u32 {
   return T.vertexBase + rowCum(T.first, row) - T.k0 + c - 1u;
 }
 
-// Inner chain point a of the gap strip: the bottom's points u_{nb−1} back to u_{k_0}, then the
-// row ends E_1..E_nl (= C).
-fn innerVertex(T: Tri, a: u32) -> u32 {
-  let tail = T.L.bottom.n - 1u - T.k0;
-  if (a <= tail) { return edgeVertex(triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, T.L.bottom.n - 1u - a, T.L.bottom.n); }
-  let j = a - tail;
-  return gridVertex(T, j, rowKept(T.first, j));
-}
+fn innerVertex(T: Tri, a: u32) -> u32 { return gridVertex(T, a, rowKept(T.first, a)); }
 
 fn outerVertex(T: Tri, b: u32) -> u32 {
   if (b == 0u) { return triVert(T.t, T.L.f.b); }
@@ -124,20 +117,16 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
     }
     return;
   }
-  // The gap strip: move g of the gap matching, replayed from the start (the moves depend on the
-  // points' current positions; the last move closes at C and is never emitted).
+  // The gap strip: merge step g of the gap matching (the last step, closing at C, is never emitted).
   let g = local - grid;
-  let G = gapOf(L, T.k0);
+  let record = ((L.left.state * tblStateCount() + L.right.state) * 2u + select(0u, 1u, L.f.flipLeft)) * 2u + select(0u, 1u, L.f.flipRight);
+  let mergeBase = tblMergeOff() + record * tblMergeWords();
   var a = 0u;
-  var b = 0u;
-  var inner = false;
-  // Moves 0..g (one call site of gapStepInner: see tess-pattern.wgsl on compile time).
-  for (var m = 0u; m <= g; m++) {
-    inner = gapStepInner(G, a, b);
-    if (m == g) { break; }
-    if (inner) { a++; } else { b++; }
-  }
-  if (inner) {
+  for (var m = 0u; m < (g >> 5u); m++) { a += countOneBits(staticBuf[mergeBase + m]); }
+  let word = staticBuf[mergeBase + (g >> 5u)];
+  a += countOneBits(word & ((1u << (g & 31u)) - 1u)); // g & 31 < 32, so the shift is defined
+  let b = g - a;
+  if (((word >> (g & 31u)) & 1u) == 1u) {
     writeTriangle(r, mirrored, innerVertex(T, a), outerVertex(T, b), innerVertex(T, a + 1u));
   } else {
     writeTriangle(r, mirrored, innerVertex(T, a), outerVertex(T, b), outerVertex(T, b + 1u));
