@@ -15,7 +15,7 @@
 #include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
-#include "obj_reader.h"
+#include "refiner.h"
 
 #include <cmath>
 #include <cstdio>
@@ -51,28 +51,15 @@ int main(int argc, char **argv) {
         if (o.boundary == 2) sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
         if (o.chaikin == 1) sdc.SetCreasingMethod(Sdc::Options::CREASE_CHAIKIN);
     }
-    Far::TopologyDescriptor d;
-    d.numVertices = (int)o.pos.size() / 3;
-    d.numFaces = (int)o.counts.size();
-    d.numVertsPerFace = o.counts.data();
-    d.vertIndicesPerFace = o.indices.data();
-    d.numCreases = (int)o.creaseW.size();
-    d.creaseVertexIndexPairs = o.creasePairs.data();
-    d.creaseWeights = o.creaseW.data();
-    d.numCorners = (int)o.cornerW.size();
-    d.cornerVertexIndices = o.cornerV.data();
-    d.cornerWeights = o.cornerW.data();
-    d.numHoles = (int)o.holes.size();
-    d.holeIndices = o.holes.data();
-    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-    std::unique_ptr<Far::TopologyRefiner> refiner(
-        Factory::Create(d, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+    std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(o, sdc);
+    const int numVertices = (int)o.pos.size() / 3;
+    const int numFaces = (int)o.counts.size();
     if (!refiner) { std::fprintf(stderr, "OpenSubdiv refused the topology\n"); return 3; }
     Far::TopologyLevel const &base = refiner->GetLevel(0);
 
     // Faces touching an interior valence-2 vertex go through Far::PatchTable.
-    std::vector<char> useFar(d.numFaces, forceFar ? 1 : 0);
-    for (int v = 0; v < d.numVertices; v++) {
+    std::vector<char> useFar(o.counts.size(), forceFar ? 1 : 0);
+    for (int v = 0; v < numVertices; v++) {
         if (base.IsVertexBoundary(v) || base.GetVertexEdges(v).size() != 2) continue;
         if (base.GetVertexFaces(v).size() != 2) continue;
         Far::ConstIndexArray fs = base.GetVertexFaces(v);
@@ -88,7 +75,7 @@ int main(int argc, char **argv) {
     std::vector<double> allPts;
     std::unique_ptr<Far::PtexIndices> ptex;
     if (anyFar) {
-        refiner2.reset(Factory::Create(d, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+        refiner2 = createRefiner(o, sdc);
         Far::PatchTableFactory::Options popts(10);
         popts.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
         popts.useInfSharpPatch = true;
@@ -108,7 +95,7 @@ int main(int argc, char **argv) {
             merged.reset(Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(*refiner2, st.get(), local, true));
             full = merged.get();
         }
-        int nCtrl = d.numVertices;
+        int nCtrl = numVertices;
         int nSt = full->GetNumStencils();
         allPts.assign(3 * (nCtrl + nSt), 0.0);
         for (int i = 0; i < 3 * nCtrl; i++) allPts[i] = o.pos[i];
@@ -132,7 +119,7 @@ int main(int argc, char **argv) {
     std::vector<double> patchPts;
 
     std::printf("{\"faces\":[\n");
-    for (int f = 0; f < d.numFaces; f++) {
+    for (int f = 0; f < numFaces; f++) {
         int n = o.counts[f];
         if (f) std::printf(",\n");
         if (!factory.FaceHasLimitSurface(f)) { std::printf("{\"f\":%d,\"n\":%d,\"hole\":true,\"sub\":[]}", f, n); continue; }

@@ -21,7 +21,7 @@
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
-#include "obj_reader.h"
+#include "refiner.h"
 
 #include <chrono>
 #include <cstdio>
@@ -99,21 +99,7 @@ int main(int argc, char **argv) {
     sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
     sdc.SetCreasingMethod(Sdc::Options::CREASE_UNIFORM);
     sdc.SetTriangleSubdivision(Sdc::Options::TRI_SUB_CATMARK);
-    Far::TopologyDescriptor d;
-    d.numVertices = (int)o.pos.size() / 3;
-    d.numFaces = (int)o.counts.size();
-    d.numVertsPerFace = o.counts.data();
-    d.vertIndicesPerFace = o.indices.data();
-    d.numCreases = (int)o.creaseW.size();
-    d.creaseVertexIndexPairs = o.creasePairs.data();
-    d.creaseWeights = o.creaseW.data();
-    d.numCorners = (int)o.cornerW.size();
-    d.cornerVertexIndices = o.cornerV.data();
-    d.cornerWeights = o.cornerW.data();
-    d.numHoles = (int)o.holes.size();
-    d.holeIndices = o.holes.data();
-    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-    std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(d, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+    std::unique_ptr<Far::TopologyRefiner> refiner = createRefiner(o, sdc);
     if (!refiner) { std::fprintf(stderr, "OpenSubdiv refused the topology\n"); return 3; }
     Clock::time_point t2 = Clock::now();
 
@@ -130,6 +116,6 @@ int main(int argc, char **argv) {
     // Surfaces and evaluation are timed per face; the loop's own overhead goes with the surfaces.
     const double surfaces = ms(t3 - t2) - times[1];
     std::printf("{\"faces\":%d,\"samples\":%ld,\"failed\":%d,\"grid\":%d,\"approx\":%d,\"real\":\"%s\",\"ms_load\":%.3f,\"ms_topology\":%.3f,\"ms_surfaces\":%.3f,\"ms_setup\":%.3f,\"ms_eval\":%.3f,\"ms_total\":%.3f,\"checksum\":%.17g}\n",
-                d.numFaces, samples, failed, N, approx, useFloat ? "float" : "double", load, topology, surfaces, topology + surfaces, times[1], total, checksum);
+                (int)o.counts.size(), samples, failed, N, approx, useFloat ? "float" : "double", load, topology, surfaces, topology + surfaces, times[1], total, checksum);
     return failed ? 4 : 0;
 }
