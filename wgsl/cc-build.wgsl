@@ -50,7 +50,7 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let i = (wid.y * GRID_X + wid.x) * 64u + lid;
   if (i >= range.count) { return; }
   let p = range.first + i;
-  let r = params.ccRules + 4u * (p - params.nVerts);
+  let r = params.ccRules + 2u * (p - params.nVerts);
   let w0 = staticBuf[r];
   let first = staticBuf[r + 1u];
   let kind = w0 & 3u;
@@ -64,7 +64,7 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   } else if (kind == 1u) {
     // Edge point: crease (s ≥ 1, boundary), smooth, or their blend for 0 < s < 1.
     let n = (w0 >> 8u) & 0xfffu;
-    let sh = bitcast<f32>(staticBuf[r + 3u]);
+    let sh = select(0.0, bitcast<f32>(staticBuf[params.ccInputs + first + 4u]), ((w0 >> 2u) & 1u) == 1u);
     let mid = 0.5 * (inp(first) + inp(first + 1u));
     if (n == 2u || sh >= 1.0) {
       out = mid;
@@ -73,15 +73,21 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       out = select(sm, sh * mid + (1.0 - sh) * sm, sh > 0.0);
     }
   } else {
-    // Vertex point: parent rule, child rule and OpenSubdiv's transitional weight W.
+    // Vertex point: parent rule, child rule and OpenSubdiv's transitional weight W (a sharp
+    // vertex's crease pair and W follow its inputs).
     let pr = (w0 >> 2u) & 3u;
     let cr = (w0 >> 4u) & 3u;
     let m = (w0 >> 8u) & 0xfffu;
     let k = (w0 >> 20u) & 0xfffu;
-    let pair = staticBuf[r + 2u];
-    let ia = pair & 0xffffu;
-    let ib = pair >> 16u;
-    let W = bitcast<f32>(staticBuf[r + 3u]);
+    var ia = 0u;
+    var ib = 0u;
+    var W = 1.0;
+    if ((pr | cr) != 0u) {
+      let x = params.ccInputs + first + 1u + m + k;
+      ia = staticBuf[x] & 0xffffu;
+      ib = staticBuf[x] >> 16u;
+      W = bitcast<f32>(staticBuf[x + 1u]);
+    }
     out = vertexMask(pr, first, m, k, ia, ib);
     if (cr != pr) { out = W * out + (1.0 - W) * vertexMask(cr, first, m, k, ia, ib); }
   }
@@ -217,18 +223,17 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       P[6u * lid + 3u] = o[5];
       P[6u * lid + 4u] = o[2];
       P[6u * lid + 5u] = o[6];
-      // Step k's slice: the 6 points carried on and the centre (the evaluator redoes the
-      // one local step for the other 6 of the 12, wgsl/surface-cc.wgsl ccStep).
-      let b = sliceBase + (k - 1u) * (6u * ns + 1u);
-      setPt(b + 6u * sec, o[0]);
-      setPt(b + 6u * sec + 1u, o[4]);
-      setPt(b + 6u * sec + 2u, o[1]);
-      setPt(b + 6u * sec + 3u, o[5]);
-      setPt(b + 6u * sec + 4u, o[2]);
-      setPt(b + 6u * sec + 5u, o[6]);
+      // Step k's slice (layout: src/gpu/cc/build.ts): the centre at every step; the ring, each
+      // sector's (1,0) and (1,1), at the steps k ≡ D (mod 2). The evaluator rebuilds the rest
+      // of the 2-ring it needs by local steps from the start level (wgsl/surface-cc.wgsl).
       if (sec == 0u) {
         C[lid] = cNew;
-        setPt(b + 6u * ns, cNew);
+        setPt(sliceBase + k - 1u, cNew);
+      }
+      if (((D - k) & 1u) == 0u) {
+        let rb = sliceBase + D + ((k - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * sec;
+        setPt(rb, o[0]);
+        setPt(rb + 1u, o[1]);
       }
     }
     workgroupBarrier();
@@ -237,8 +242,8 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 
 // ---------------------------------------------------------------------------------------------
 // Limit position and tangents of each fan's centre (notes §2.1–2.3) from its last level: the
-// start-level ring when the fan has no slices, else its step-D slice (offsets from the anchor:
-// (1,0) and (1,1) of each sector are its slots 0 and 2, the centre follows the sectors).
+// start-level ring when the fan has no slices, else its step-D ring and centre (offsets from
+// the anchor; step D's ring is always stored).
 // Written at the fan's limit base: P (absolute), T1, T2 (normal = T1 × T2).
 
 fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> vec3<f32> {
@@ -246,7 +251,7 @@ fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> v
   if (D == 0u) {
     return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
   }
-  return pt(fanWord(fan, 2u) + (D - 1u) * (6u * ns + 1u) + 6u * i + 2u * which);
+  return pt(fanWord(fan, 2u) + D + ((D - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * i + which);
 }
 
 @compute @workgroup_size(64)
@@ -261,7 +266,7 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let D = (w0 >> 20u) & 15u;
   let anchor = pt(fanWord(fan, 1u));
   var c = vec3<f32>(0.0);
-  if (D > 0u) { c = pt(fanWord(fan, 2u) + (D - 1u) * (6u * ns + 1u) + 6u * ns); }
+  if (D > 0u) { c = pt(fanWord(fan, 2u) + D - 1u); }
   let pair = fanWord(fan, 6u);
   let ia = pair & 255u;
   let ib = pair >> 8u;

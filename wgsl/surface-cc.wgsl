@@ -80,13 +80,16 @@ fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
   return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
 }
 
-// The fans' slices (src/gpu/cc/build.ts, wgsl/cc-build.wgsl) hold per step k = 1..D only the
-// 6 points each sector carries into the next step, (a, b) ∈ {1,2} × {0,1,2}, and the centre,
-// as offsets from the fan's anchor; step 0 is the start level, read through the sector table.
-// The evaluator redoes the one local step from step L−1 to get the 12 points of each sector
-// it needs at step L (ccStep: the slice kernel's own masks), and from them the 16 points of
-// the regular sub-patch A, B or C holding the point (notes §6.2).
-struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32> }
+// The fans' slices (src/gpu/cc/build.ts, wgsl/cc-build.wgsl) hold per step k = 1..D the centre
+// and, at the steps k ≡ D (mod 2), the 1-ring ((1,0) and (1,1) of every sector), as offsets
+// from the fan's anchor; step 0 is the start level, read through the sector table. To evaluate
+// sector i at step L the evaluator needs step L−1's 2-ring of sectors i−1, i, i+1; it rebuilds
+// the outer points (a = 2 or b = 2) of those three sectors by local steps from step 0 (ccStep:
+// the slice kernel's own masks), reading the ring and the centre of each step from storage. The
+// outer points that one step needs, beyond the ring, are closed under the step: sector i's
+// four, sector i+1's (2,0) (2,1), sector i−1's (1,2) (each mask below reads no more), so three
+// sectors suffice at any depth; the other outputs of a step on sectors i±1 are not read.
+struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32>, D: u32 }
 
 fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
 
@@ -99,35 +102,76 @@ fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
   return u32(((m % n) + n) % n);
 }
 
-fn ccCore(f: CCFan, j: u32, k: u32, p: u32) -> vec3<f32> {
-  if (k == 0u) { return ccP(staticBuf[f.sectors + 7u * j + 1u + p]) - f.anchor; }
-  return ccP(f.base + (k - 1u) * (6u * f.ns + 1u) + 6u * j + p);
-}
 fn ccCentre(f: CCFan, k: u32) -> vec3<f32> {
   if (k == 0u) { return vec3<f32>(0.0); }
-  return ccP(f.base + (k - 1u) * (6u * f.ns + 1u) + 6u * f.ns);
+  return ccP(f.base + k - 1u);
+}
+// Ring point w (0: (1,0), 1: (1,1)) of sector j at a step whose ring is stored (or step 0).
+fn ccRingStored(f: CCFan, k: u32, j: u32, w: u32) -> vec3<f32> {
+  if (k == 0u) { return ccP(staticBuf[f.sectors + 7u * j + 1u + 2u * w]) - f.anchor; }
+  return ccP(f.base + f.D + ((k - 1u - ((f.D + 1u) & 1u)) / 2u) * 2u * f.ns + 2u * j + w);
+}
+// Ring point at any step: a step between two stored rings is one step of the ring masks
+// (ccStep's o[0] and o[1]) from the stored ring before it. The reads are one call site in a
+// loop (every call is inlined: compile time).
+fn ccRing(f: CCFan, k: u32, j: u32, w: u32) -> vec3<f32> {
+  let stored = k == 0u || ((f.D - k) & 1u) == 0u;
+  let pseudo = f.boundary && j == f.n;
+  if (!stored && pseudo && w == 1u) { return vec3<f32>(0.0); }
+  // Stored: the one point. Else step k−1's (1,0), (1,1) of j, (1,0) of j+1, (1,0), (1,1) of j−1.
+  let nx = select(ccNb(f, j, 1), j, pseudo);
+  let pv = ccNb(f, j, -1);
+  var r: array<vec3<f32>, 5>;
+  let m = select(5u, 1u, stored);
+  for (var t = 0u; t < m; t++) {
+    let sj = select(select(select(pv, nx, t == 2u), j, t < 2u), j, stored);
+    let sw = select(select(0u, 1u, t == 1u || t == 4u), w, stored);
+    r[t] = ccRingStored(f, select(k - 1u, k, stored), sj, sw);
+  }
+  if (stored) { return r[0]; }
+  let c = ccCentre(f, k - 1u);
+  let f00 = 0.25 * (c + r[0] + r[1] + r[2]);
+  if (w == 1u) { return f00; }
+  if (staticBuf[f.sectors + 7u * j] == 1u) { return 0.5 * (c + r[0]); }
+  let g00 = 0.25 * (c + r[3] + r[4] + r[0]);
+  return 0.25 * (c + r[0] + f00 + g00);
+}
+
+// The local 2-ring: the 6 points (1,0) (2,0) (1,1) (2,1) (1,2) (2,2) of sectors idx[0..2] =
+// i, i+1, i−1 at one step; the ring points among them are read from storage instead.
+struct CCLocal { idx: vec3<u32>, p: array<vec3<f32>, 18> }
+
+// Outer point p (1: (2,0), 3: (2,1), 4: (1,2), 5: (2,2)) of sector j from the local 2-ring.
+fn ccOuter(loc: ptr<function, CCLocal>, j: u32, p: u32) -> vec3<f32> {
+  let slot = select(select(2u, 1u, j == (*loc).idx.y), 0u, j == (*loc).idx.x);
+  return (*loc).p[6u * slot + p];
 }
 
 // The 12 points (a, b), a ∈ 1..3, b ∈ 0..3 (index 4(a−1) + b) of sector j after step L: the
 // slice kernel's masks, on step L−1's points of sectors j−1, j, j+1.
-fn ccStep(f: CCFan, j: u32, L: u32) -> array<vec3<f32>, 12> {
+fn ccStep(f: CCFan, loc: ptr<function, CCLocal>, j: u32, L: u32) -> array<vec3<f32>, 12> {
   let k = L - 1u;
   let c = ccCentre(f, k);
   let pseudo = f.boundary && j == f.n;
   var nx = ccNb(f, j, 1);
   var pv = ccNb(f, j, -1);
   if (pseudo) { nx = j; }
-  let p10 = ccCore(f, j, k, 0u);
-  let p20 = ccCore(f, j, k, 1u);
-  let p11 = ccCore(f, j, k, 2u);
-  let p21 = ccCore(f, j, k, 3u);
-  let p12 = ccCore(f, j, k, 4u);
-  let p22 = ccCore(f, j, k, 5u);
-  let n10 = ccCore(f, nx, k, 0u);
-  let n20 = ccCore(f, nx, k, 1u);
-  let q10 = ccCore(f, pv, k, 0u);
-  let q11 = ccCore(f, pv, k, 2u);
-  let q12 = ccCore(f, pv, k, 4u);
+  // The ring points read: (1,0), (1,1) of j, (1,0) of j+1, (1,0), (1,1) of j−1 (one call site).
+  var r: array<vec3<f32>, 5>;
+  for (var t = 0u; t < 5u; t++) {
+    r[t] = ccRing(f, k, select(select(pv, nx, t == 2u), j, t < 2u), select(0u, 1u, t == 1u || t == 4u));
+  }
+  let p10 = r[0];
+  let p11 = r[1];
+  let n10 = r[2];
+  let q10 = r[3];
+  let q11 = r[4];
+  let p20 = ccOuter(loc, j, 1u);
+  let p21 = ccOuter(loc, j, 3u);
+  let p12 = ccOuter(loc, j, 4u);
+  let p22 = ccOuter(loc, j, 5u);
+  let n20 = ccOuter(loc, nx, 1u);
+  let q12 = ccOuter(loc, pv, 4u);
   let inf = staticBuf[f.sectors + 7u * j] == 1u;
   let f00 = 0.25 * (c + p10 + p11 + n10);
   let f10 = 0.25 * (p10 + p20 + p21 + p11);
@@ -158,18 +202,35 @@ fn ccStep(f: CCFan, j: u32, L: u32) -> array<vec3<f32>, 12> {
 // (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
 // (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
 fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
-  // Step L's 12 points of sectors i (own, 0..11), i+1 (12..23), i−1 (A only, 24..35) and i+2
-  // (C only, its (1, 0) at 36), from ONE call site of ccStep in a loop: shader compilers inline
-  // every call, and one copy of the step per call site made this evaluator take seconds to
-  // compile on SwiftShader (three pipelines include it).
-  var pts: array<vec3<f32>, 37>;
-  for (var s = 0u; s < 4u; s++) {
-    if ((s == 2u && which != 0u) || (s == 3u && which != 2u)) { continue; }
-    let d = select(select(select(0, 1, s == 1u), -1, s == 2u), 2, s == 3u);
-    let o = ccStep(f, ccNb(f, i, d), L);
-    let n = select(12u, 1u, s == 3u);
-    for (var q = 0u; q < n; q++) { pts[12u * s + q] = o[q]; }
+  // Steps 1..L−1 carry the local 2-ring; step L's 12 points of sectors i (own, 0..11), i+1
+  // (12..23) and i−1 (A only, 24..35) are the sub-patch's. ONE call site of ccStep in the loops:
+  // shader compilers inline every call, and one copy of the step per call site made this
+  // evaluator take seconds to compile on SwiftShader (three pipelines include it).
+  var loc: CCLocal;
+  loc.idx = vec3<u32>(i, ccNb(f, i, 1), ccNb(f, i, -1));
+  for (var s = 0u; s < 3u; s++) {
+    for (var q = 0u; q < 6u; q++) { loc.p[6u * s + q] = ccP(staticBuf[f.sectors + 7u * loc.idx[s] + 1u + q]) - f.anchor; }
   }
+  var pts: array<vec3<f32>, 37>;
+  for (var k = 1u; k <= L; k++) {
+    var nxt: array<vec3<f32>, 18>;
+    for (var s = 0u; s < 3u; s++) {
+      if (k == L && s == 2u && which != 0u) { continue; }
+      let o = ccStep(f, &loc, loc.idx[s], k);
+      if (k == L) {
+        for (var q = 0u; q < 12u; q++) { pts[12u * s + q] = o[q]; }
+      } else {
+        nxt[6u * s] = o[0];
+        nxt[6u * s + 1u] = o[4];
+        nxt[6u * s + 2u] = o[1];
+        nxt[6u * s + 3u] = o[5];
+        nxt[6u * s + 4u] = o[2];
+        nxt[6u * s + 5u] = o[6];
+      }
+    }
+    loc.p = nxt;
+  }
+  if (which == 2u) { pts[36] = ccRing(f, L, ccNb(f, i, 2), 0u); }
   let cL = ccCentre(f, L);
   var cp: array<vec3<f32>, 16>;
   let da = select(0, -1, which == 2u);
@@ -211,8 +272,8 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
   let ab = ccRot((w0 >> 2u) & 3u, x, y) * exp2(-f32(off));
   let fw = ccFanWord(fan, 0u);
   let anchor = ccP(ccFanWord(fan, 1u));
-  let f = CCFan(fw & 255u, (fw >> 8u) & 255u, ((fw >> 16u) & 1u) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor);
   let D = (fw >> 20u) & 15u;
+  let f = CCFan(fw & 255u, (fw >> 8u) & 255u, ((fw >> 16u) & 1u) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor, D);
   let lb = ccFanWord(fan, 5u);
   let m = max(ab.x, ab.y);
   // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).

@@ -11,10 +11,12 @@
  *    L+1 numbers its points [vertex points | edge points | face points] of level L (a vertex
  *    keeps its index at every deeper level); child face j of face f is half-edge
  *    faceOffsets[f]+j, [V(c_j), E(c_j c_j+1), F, E(c_j-1 c_j)]. Sharpness decays by notes §1.4.
- *    Each new point carries a RULE (4 words) and its inputs (point indices): face point (N
- *    corners), edge point (ends + the two new face points; sharpness s: smooth, crease, blend),
- *    vertex point (v, far ends of its edges, its new face points; parent rule, child rule,
- *    transitional weight W in f32 as OpenSubdiv computes it, and the two crease edges).
+ *    Each new point carries a RULE (2 words: kind and counts, first input) and its inputs
+ *    (point indices): face point (N corners), edge point (ends + the two new face points;
+ *    sharpness s: smooth, or after the inputs when not 0: crease, blend), vertex point (v, far
+ *    ends of its edges, its new face points; parent rule, child rule, and when either is not
+ *    smooth, after the inputs: the two crease edges and the transitional weight W in f32 as
+ *    OpenSubdiv computes it).
  * 2. Fans. A vertex x of level s is a fan centre ("eligible") when every point of its 2-ring
  *    other than x obeys the regular valence-4 masks: its faces are quads, its incident edges
  *    and its own sharpness are 0 or infinite, each neighbour (1,0) is a valence-4 vertex
@@ -48,12 +50,22 @@
  * GPU point space (f32 xyz in cageBuf; index p < nVerts: the cage positions; p ≥ nVerts at
  * offPoints + 3(p − nVerts)):
  *   [cage | level 1 | … | level G | fan slices | fan limits]
- *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary): for step k = 1..D,
- *     the 6 points each sector carries into the next step, (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
- *     at slot 6i + 0..5, then the centre (slot 6·ns); all as OFFSETS from the fan's anchor (its
- *     centre at level s: f32 precision of deep levels, notes §6.7). The other 6 of a step's 12
- *     (a = 3 or b = 3) are redone by the evaluator from the previous step (one local step, as
- *     the slice kernel does it): half the memory. Then the limits: P (absolute), T1, T2.
+ *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary), all as OFFSETS from the
+ *     fan's anchor (its centre at level s: f32 precision of deep levels, notes §6.7):
+ *       centres   D points, the centre after step k = 1..D at slot k − 1;
+ *       rings     the fan's 1-ring, (1,0) and (1,1) of each sector at slot 2i, 2i + 1, after
+ *                 the steps k ≡ D (mod 2) only (ceil(D/2) rings; step D's is always there),
+ *                 ring of step k at D + ((k − 1 − ((D + 1) mod 2)) / 2)·2·ns.
+ *     Why so little: the slice kernel computes the whole 2-ring of every step in workgroup
+ *     memory, but what the evaluator cannot redo cheaply is only what spreads round the fan:
+ *     the centre (it reads every sector) and the 1-ring (each point reads its two neighbour
+ *     sectors, so a local step of one sector would need ever more sectors). Given those, one
+ *     sector's own outer points (a = 2 or b = 2) at step L follow by L local steps from the start
+ *     level that read only sectors i−1, i, i+1 (wgsl/surface-cc.wgsl), and a ring of an odd
+ *     step follows from the stored ring before it by one step. A sector then costs 4 points
+ *     every other step instead of 6 every step: a third of the slices' memory at 2/6 · 1/2
+ *     (imrod, all triangles: 2.7 KB of slices per face before, under 0.6 KB now).
+ *   Then the limits: P (absolute), T1, T2.
  *
  * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
  *   tri      3 per prepared triangle: first region of the face, n | fan k << 8 | depth << 28
@@ -71,8 +83,11 @@
  *            at level s; the boundary pseudo-sector (axis n) has only (1,0), (2,0)
  *   threads  64 per slice workgroup: fan | sector << 24, or ~0 (idle)
  *   cos      per valence n used by a smooth fan: cos(2πi/n), i < n, then 1/(4λ−1)
- *   rules    4 per point of levels ≥ 1: kind | …, first input, crease pair, f32 parameter
- *   inputs   point indices read by the rules
+ *   rules    2 per point of levels ≥ 1: w0, first input. w0 = kind (0 face, 1 edge, 2 vertex) |
+ *            face: n << 8; edge: sharp << 2 | n << 8 (n = 2 on a boundary, else 4);
+ *            vertex: parent rule << 2 | child rule << 4 | edges << 8 | faces << 20
+ *   inputs   point indices read by the rules, each rule's followed by its parameters (edge:
+ *            sharpness f32 if flagged; vertex with a non-smooth rule: ia | ib << 16, W f32)
  *   vfan     per cage vertex: its fan (limit position and normal for the factor rule), or ~0
  */
 import {
@@ -118,8 +133,8 @@ export const WORKGROUP = 64;
  * spacing of an integer tess factor (64) is 1/64 of a quad's edge (1/32 of (s, t) =
  * 2·barycentric), but fractional factors make thinner slivers next to a corner, and the checks
  * hold every output vertex, blended or not, to 1e-5 of the diagonal: at 2^-6 the radial blend
- * missed that by ×1.3 (icosphere, creature), at 2^-8 it is under 2e-6. (Each step costs
- * 6 points per sector: 72 B.)
+ * missed that by ×1.3 (icosphere, creature), at 2^-8 it is under 2e-6. (Each step costs a
+ * centre and, every other step, 2 points per sector: 12 B per sector per step on average.)
  */
 export const TOTAL_DEPTH = 8;
 /** Extra fan depth round creases, corners, darts and boundary vertices (see the packing). */
@@ -293,8 +308,11 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
     if (e1 - e0 >= 1 << 12 || h1 - h0 >= 1 << 12) throw new Error(`vertex of valence ${e1 - e0} is not supported`);
     rules.push(RULE_VERTEX | (pr << 2) | (cr << 4) | ((e1 - e0) << 8) | ((h1 - h0) << 20));
     rules.push(first);
-    rules.push(ia | (ib << 16));
-    rules.push(f32bits(W));
+    // A sharp vertex (either rule not smooth) carries its crease pair and W after its inputs.
+    if (pr !== VRULE_SMOOTH || cr !== VRULE_SMOOTH) {
+      inputs.push(ia | (ib << 16));
+      inputs.push(f32bits(W));
+    }
   }
   // Edge points.
   for (let e = 0; e < nE; e++) {
@@ -308,10 +326,11 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       inputs.push(fBase + m.heFace[m.heTwin[h]]);
       n = 4;
     }
-    rules.push(RULE_EDGE | (n << 8));
+    // An interior edge with sharpness carries it after its inputs (flag bit 2).
+    const sharpEdge = n === 4 && L.edgeSharp[e] !== 0;
+    if (sharpEdge) inputs.push(f32bits(L.edgeSharp[e]));
+    rules.push(RULE_EDGE | ((sharpEdge ? 1 : 0) << 2) | (n << 8));
     rules.push(first);
-    rules.push(0);
-    rules.push(f32bits(n === 2 ? INF : L.edgeSharp[e]));
   }
   // Face points.
   for (let f = 0; f < nF; f++) {
@@ -319,8 +338,6 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       b = m.faceOffsets[f + 1];
     rules.push(RULE_FACE | ((b - a) << 8));
     rules.push(inputs.n);
-    rules.push(0);
-    rules.push(0);
     for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
   }
   // Level L+1 topology.
@@ -875,7 +892,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) F.D = Math.min(15, F.D + EXTRA_DEPTH_SHARP);
     const ns = F.sectors.length;
     const sliceBase = nextPoint;
-    nextPoint += F.D * (6 * ns + 1);
+    nextPoint += F.D + Math.ceil(F.D / 2) * 2 * ns;
     const limitBase = nextPoint;
     nextPoint += 3;
     maxDepth = Math.max(maxDepth, F.D);
