@@ -3,7 +3,10 @@
  * arrays that the GPU passes read (cage → topology → patches in the data flow).
  *
  *  - Faces are split into triangles (quads along the 0–2 diagonal, n-gons as a fan from corner
- *    0); hole faces are dropped. Each triangle keeps its source face.
+ *    0); faces without a limit surface are dropped: tagged holes, and under boundary
+ *    interpolation 'none' the faces at an unsharpened boundary (OpenSubdiv's rule, as
+ *    computeSharpness), so no surface evaluates a face the subdivision says is not there.
+ *    Each triangle keeps its source face.
  *  - Vertex normals: area-weighted (the sum of the faces' cross products), for Phong
  *    tessellation and for the adaptive factor rule.
  *  - Edges: every undirected edge of the triangulation once, canonically from its lower to
@@ -12,7 +15,8 @@
  *  - Per triangle: its three edge ids, and its pattern frame (clamped.ts chooseFrame) from the
  *    reverse flags, packed in one u32.
  */
-import type { Cage } from '../mesh/types.ts';
+import type { Cage, SubdivOptions } from '../mesh/types.ts';
+import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
 import { PATTERN_FRAME_WORD } from './contract.ts';
 
@@ -52,9 +56,20 @@ export function packFrame(reverse: Reverse): number {
   return PATTERN_FRAME_WORD.pack(chooseFrame(reverse));
 }
 
-export function prepareMesh(cage: Cage): PreparedMesh {
-  const nV = cage.positions.length / 3;
+/** Faces without a limit surface under these options (tagged holes; boundary 'none' adds more). */
+function holeFaces(cage: Cage, options: Partial<SubdivOptions>): Set<number> {
   const holes = new Set(cage.holes);
+  if (options.boundary === 'none') {
+    const topo = buildTopology(cage);
+    const { hole } = computeSharpness(cage, topo, { ...DEFAULT_OPTIONS, ...options });
+    for (let f = 0; f < hole.length; f++) if (hole[f]) holes.add(f);
+  }
+  return holes;
+}
+
+export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.fileOptions): PreparedMesh {
+  const nV = cage.positions.length / 3;
+  const holes = holeFaces(cage, options);
   const tris: number[] = [];
   const faces: number[] = [];
   const nFaces = cage.faceOffsets.length - 1;
