@@ -109,7 +109,9 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
         max = Math.max(max, Math.hypot(p[0] - r.ref.P[0], p[1] - r.ref.P[1], p[2] - r.ref.P[2]) / mesh.size);
       }
       const faces = cage.faceOffsets.length - 1;
-      rows.push(`${name}: ${faces} faces, ${Math.round(cc.gpuBytes / faces)} B/face, levels ${cc.levels}, checked ${checked}, max ${max.toExponential(2)}`);
+      rows.push(
+        `${name}: ${faces} faces, ${Math.round(cc.gpuBytes / faces)} B/face, levels ${cc.levels}, checked ${checked}, max ${max.toExponential(2)}`,
+      );
       if (nan > 0 || !(max < MAX_BOUND) || checked === 0) failures.push(`${name}: nan ${nan}, checked ${checked}, max ${max}`);
     }
     console.log(rows.join('\n'));
