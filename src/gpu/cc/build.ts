@@ -656,14 +656,32 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const topo = buildTopology(cage);
   const sharp = computeSharpness(cage, topo, options);
   const cls = classify(topo, sharp);
+  // A vertex's valence never changes under refinement, so one whose fan needs more threads
+  // than a workgroup can never be a fan centre: say so now rather than "too many levels" later.
+  for (let v = 0; v < topo.nVerts; v++) {
+    const faces = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
+    if (faces + (topo.vertBoundary[v] ? 1 : 0) > WORKGROUP)
+      throw new Error(
+        `Catmull-Clark: vertex ${v + 1} has ${faces} faces, more than the ${WORKGROUP} threads of a slice workgroup (not supported)`,
+      );
+  }
   const nV0 = topo.nVerts;
   const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0)];
   const rules = new U32(),
     inputs = new U32();
   const levelRanges: [number, number, number, number][] = [];
+  const maxSemiSharp = (): number => {
+    let m = 0;
+    for (const x of sharp.edge) if (x < INF) m = Math.max(m, x);
+    for (const x of sharp.vertex) if (x < INF) m = Math.max(m, x);
+    return m;
+  };
   const level = (l: number): Level => {
     if (l > MAX_LEVEL)
-      throw new Error(`Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (unsupported configuration)`);
+      throw new Error(
+        `Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (semi-sharp creases decay one level per unit of ` +
+          `sharpness; this cage has sharpness up to ${+maxSemiSharp().toPrecision(3)}: not supported)`,
+      );
     while (levels.length <= l) {
       const L = levels[levels.length - 1];
       const N = refineLevel(L, rules, inputs);
