@@ -393,7 +393,15 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   if (sum > 0.0) {
     F = (e01 * f32(edgeF(triEdge(t, 0u))) + e12 * f32(edgeF(triEdge(t, 1u))) + e20 * f32(edgeF(triEdge(t, 2u)))) / (65536.0 * sum);
   }
-  let k = clamp((F - 1.0) / 3.0, 0.0, 1.0);
+  // The blend weight: linear in F from 0 at F = 1 to the surface at F = 4, but never leaving
+  // the point more than 1/lodScale pixels from the limit surface (issue 13's smooth default):
+  // the point shown is flat + k·(S − flat), (1 − k)·|S − flat| from S, so k is raised to at
+  // least 1 − 1/(lodScale·s) where s is |S − flat| in pixels at the point's distance from the
+  // eye. Both terms are functions of the point's cage parameter and the camera: a vertex that
+  // two triangles share (the weld evaluates it once anyway) gets one k, a new vertex of the
+  // pop-free pattern appears where its parent is, and k moves continuously with the camera.
+  let sagPx = length(sp.pos - flat) / (max(length(sp.pos - params.eye.xyz), 1e-6) * params.pixelAngle);
+  let k = max(clamp((F - 1.0) / 3.0, 0.0, 1.0), 1.0 - 1.0 / max(params.lodScale * sagPx, 1.0));
   let nm = mix(fn0, sp.normal, k);
   return SurfacePoint(mix(flat, sp.pos, k), select(sp.normal, normalize(nm), length(nm) > 1e-6));
 }
