@@ -125,6 +125,16 @@ describe('single-crease patches', () => {
     expect(n).toBe(2 * 24); // every vertex of both loops (on the cube's vertical edges too: valence 4)
   });
 
+  it('the region word: kind and rot where the evaluator and regionOf read them, offset and sector where ccSector shifts them by hand', () => {
+    const w = CC_REGION_WORD.pack({ kind: 2, rot: 3, mask: 0, offset: 9, sector: 37, crease: 1, patchKind: 3 });
+    expect(w & 3).toBe(2);
+    expect((w >> 2) & 3).toBe(3);
+    expect((w >> 8) & 15).toBe(9);
+    expect((w >> 12) & 63).toBe(37);
+    expect((w >> 24) & 3).toBe(3);
+    expect(CC_VERTEX_LIMIT_WORD.unpack(0xffffffff)).toEqual({ index: 0x7fffffff, crease: 1 }); // NONE stays NONE
+  });
+
   it('a crease into an extraordinary vertex still refines until it decays (ceil σ levels)', () => {
     const cc = buildCatmullClark(cube({ creases: ringCrease(2.5) }), prepareMesh(cube({ creases: ringCrease(2.5) })));
     expect(cc.levels).toBe(3);
