@@ -327,7 +327,34 @@ fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_inde
   let fan = staticBuf[params.ccVertexFan + v];
   var p = pt(v);
   var nn = vec3<f32>(cageBuf[params.offNormals + 3u * v], cageBuf[params.offNormals + 3u * v + 1u], cageBuf[params.offNormals + 3u * v + 2u]);
-  if (fan != NONE) {
+  if (fan != NONE && ccVertexLimitWord_crease(fan) == 1u) {
+    // On a straight semi-sharp crease σ = k + f (build.ts creaseVertexGrid: 3×3 points at 3a + b,
+    // a across, b along, then σ): the corner of its single-crease patches, the closed form of
+    // wgsl/crease-basis.wgsl at u = 0: across (ρ/6, 1 − ρ/3, ρ/6) with ρ = 2^-k (1 − f/2), along
+    // the B-spline's (1/6, 2/3, 1/6); the derivatives (−½, 0, ½) both ways.
+    let b = params.ccPatchIdx + ccVertexLimitWord_index(fan);
+    let sigma = bitcast<f32>(staticBuf[b + 9u]);
+    let k = floor(sigma);
+    let rho = ldexp(1.0, -i32(k)) * (1.0 - 0.5 * (sigma - k));
+    let wa = array<f32, 3>(rho / 6.0, 1.0 - rho / 3.0, rho / 6.0);
+    let wb = array<f32, 3>(1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0);
+    let d = array<f32, 3>(-0.5, 0.0, 0.5);
+    let c = pt(staticBuf[b + 4u]);
+    var pp = vec3<f32>(0.0);
+    var pa = vec3<f32>(0.0);
+    var pb = vec3<f32>(0.0);
+    for (var i = 0u; i < 3u; i++) {
+      for (var j = 0u; j < 3u; j++) {
+        let q = pt(staticBuf[b + 3u * i + j]) - c;
+        pp += wa[i] * wb[j] * q;
+        pa += d[i] * wb[j] * q;
+        pb += wa[i] * d[j] * q;
+      }
+    }
+    p = c + pp;
+    let nc = cross(pa, pb);
+    if (length(nc) > 0.0) { nn = normalize(nc); }
+  } else if (fan != NONE) {
     let lb = fanWord(fan, 5u);
     p = pt(lb);
     let nc = cross(pt(lb + 1u), pt(lb + 2u));

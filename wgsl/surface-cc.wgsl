@@ -4,6 +4,8 @@
 // then to its region (src/gpu/cc/build.ts: region (i, j) of the face's 2^d × 2^d split):
 //   PATCH  a regular bicubic B-spline patch over 16 refined points, phantom rows/columns for
 //          boundaries and infinitely sharp edges (notes §3.3), position and analytic normal;
+//          or a single-crease patch: one semi-sharp crease on its x = 0 side, the closed-form
+//          change of basis across it (wgsl/crease-basis.wgsl, notes §3.4);
 //   SECTOR a sector of an extraordinary vertex's fan: after L = ceil(log2(1/max(a,b))) steps
 //          the point lies on one of the regular sub-patches A, B, C of the fan's slice at step
 //          L (notes §6.2); inside the last square (2^-7 of the face) a radial blend from the
@@ -31,11 +33,16 @@ fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
 // corner (0,0): f32 precision of small patches), phantom mask bit j = side j (0: row 0, 1:
 // column 3, 2: row 3, 3: column 0) reflected (notes §3.3: rows first, then columns).
 fn ccBicubic(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+  return ccBicubicW(cp, mask, ccBasis(x), y);
+}
+
+// The same with the x weights given (value, d/dx per column): ccBasis(x), or a single-crease
+// patch's row weights (ccRegularPatch).
+fn ccBicubicW(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, bx: array<vec4<f32>, 2>, y: f32) -> array<vec3<f32>, 3> {
   if ((mask & 1u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[c] = 2.0 * (*cp)[4u + c] - (*cp)[8u + c]; } }
   if ((mask & 4u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[12u + c] = 2.0 * (*cp)[8u + c] - (*cp)[4u + c]; } }
   if ((mask & 8u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r] = 2.0 * (*cp)[4u * r + 1u] - (*cp)[4u * r + 2u]; } }
   if ((mask & 2u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r + 3u] = 2.0 * (*cp)[4u * r + 2u] - (*cp)[4u * r + 1u]; } }
-  let bx = ccBasis(x);
   let by = ccBasis(y);
   var p = vec3<f32>(0.0);
   var pu = vec3<f32>(0.0);
@@ -71,12 +78,21 @@ fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
   }
 }
 
+// A patch region: its 16 point indices at word `base` of patchIdx. A bicubic B-spline patch, or
+// a single-crease patch (one semi-sharp crease σ on the frame's x = 0 side, σ's f32 bits after
+// the indices; notes §3.4): the closed-form crease row weights in x times the cubic B-spline in
+// y (wgsl/crease-basis.wgsl), which also gives both derivatives for the normal.
 fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
   var cp: array<vec3<f32>, 16>;
-  let b = params.ccPatchIdx + 16u * base;
+  let b = params.ccPatchIdx + base;
   let anchor = ccP(staticBuf[b + 5u]);
   for (var i = 0u; i < 16u; i++) { cp[i] = ccP(staticBuf[b + i]) - anchor; }
-  let e = ccBicubic(&cp, (w0 >> 4u) & 15u, x, y);
+  var bx = ccBasis(x);
+  if (ccRegionWord_crease(w0) == 1u) {
+    let cw = creaseRowWeights(bitcast<f32>(staticBuf[b + 16u]), x);
+    bx = array<vec4<f32>, 2>(cw.value, cw.du);
+  }
+  let e = ccBicubicW(&cp, ccRegionWord_mask(w0), bx, y);
   return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
 }
 
@@ -317,8 +333,8 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   let w1 = staticBuf[params.ccRegions + 2u * reg + 1u];
   let x = x0 * fs - f32(i);
   let y = y0 * fs - f32(j);
-  if ((w0 & 3u) == 1u) {
-    let l = ccRot((w0 >> 2u) & 3u, x, y);
+  if (ccRegionWord_kind(w0) == 1u) {
+    let l = ccRot(ccRegionWord_rot(w0), x, y);
     return ccRegularPatch(w0, w1, l.x, l.y);
   }
   return ccSector(w0, w1, x, y);

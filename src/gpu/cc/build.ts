@@ -7,7 +7,8 @@
  *
  * 1. Levels. Uniform refinement topology of the whole cage, levels 1..G, G as small as the
  *    cage allows (0 for an all-regular quad cage, 1 with extraordinary vertices, 2 with
- *    triangles or n-gons, more only where semi-sharp creases need to decay: see below). Level
+ *    triangles or n-gons, more only where semi-sharp creases need to decay and are not single
+ *    creases: see below). Level
  *    L+1 numbers its points [vertex points | edge points | face points] of level L (a vertex
  *    keeps its index at every deeper level); child face j of face f is half-edge
  *    faceOffsets[f]+j, [V(c_j), E(c_j c_j+1), F, E(c_j-1 c_j)]. Sharpness decays by notes §1.4.
@@ -28,24 +29,35 @@
  *    step the new (1,0), (1,1) are again of that kind. So the slice kernel is exact at every
  *    depth for boundaries, infinitely sharp creases into the EV, darts and corners alike.
  *    Semi-sharp values never reach a fan: a vertex is eligible only once they have decayed,
- *    which the uniform levels do (exactly, with OpenSubdiv's transitions). [The issue's single-
- *    crease change of basis (notes §3.4) would let semi-sharp faces stop at level 0/1; it was
- *    being written in parallel and is not used yet: creased faces refine until their
- *    sharpness has decayed, ceil(σ) levels.]
+ *    which the uniform levels do (exactly, with OpenSubdiv's transitions).
  * 3. Regions. Face f is split to the smallest depth d at which each of its level-d descendants
  *    is a regular patch (isRegularVertex at its 4 corners: smooth, boundary, infinitely sharp
- *    phantoms) or has an eligible fan centre at a corner (an EV SECTOR region; its fan may
- *    start at a coarser level s ≤ d: offset d − s). d = 0 for regular quads (1 region), 1 for
- *    quads at an EV (4), 2 where triangles are involved (16 per quad, 12 per triangle), as in
- *    the talk's table, and deeper only under semi-sharp creases.
+ *    phantoms), a SINGLE-CREASE patch, or has an eligible fan centre at a corner (an EV SECTOR
+ *    region; its fan may start at a coarser level s ≤ d: offset d − s). d = 0 for regular
+ *    quads (1 region), 1 for quads at an EV (4), 2 where triangles are involved (16 per quad,
+ *    12 per triangle), as in the talk's table, and deeper only where semi-sharp creases fail
+ *    the single-crease test. A single-crease patch (singleCrease; notes §3.4, OpenSubdiv's
+ *    isSingleCreasePatch conditions): a quad whose 4 corners are interior valence-4 vertices
+ *    of quads without vertex sharpness, whose only sharp edges at the corners are the 3
+ *    collinear edges A'A, AB, BB' of one side AB, all of one semi-sharp σ. Its limit is the
+ *    closed-form crease basis across the crease times the cubic B-spline along it, exact for
+ *    integer and fractional σ, so such faces stop at depth 0 (1 at an EV) with no level
+ *    refined for them: its 16 indices are gathered in the face's frame turned so that AB is
+ *    the frame's x = 0 side (grid column 1), rot composed accordingly, and σ follows them.
+ *    Likewise a cage vertex on a straight semi-sharp crease (two opposite edges of one σ, the
+ *    rest smooth, valence 4) takes its limit from the closed form at the patch corner (its 3×3
+ *    neighbourhood and σ; creaseVertexGrid) instead of a fan at the level where σ has decayed.
  *
- * Limits (honest): semi-sharp sharpness decays by UNIFORM levels of the whole cage, ceil(σ) of
- * them (sharpness ≥ 7 needs more than MAX_LEVEL = 6 and is refused with a message, as are
- * vertices of valence > 64, more than a workgroup, and Chaikin creasing). On the project's and
- * the talk's models that is at most 3 levels; OpenSubdiv's regression cages with long σ ≈ 5
- * crease loops (catmark_bishop, _car, _pawn) cost hundreds of KB per face. The fix is the
- * issue's design proper: semi-sharp axes decaying inside the slice kernel and single-crease
- * regions through the change of basis.
+ * Limits (honest): where a semi-sharp crease fails the single-crease test (it ends at a dart or
+ * a boundary, meets another crease or a corner, or runs into an extraordinary vertex) its
+ * sharpness still decays by UNIFORM levels of the whole cage, ceil(σ) of them (sharpness ≥ 7
+ * needs more than MAX_LEVEL = 6 and is refused with a message, as are vertices of valence > 64,
+ * more than a workgroup, and Chaikin creasing). catmark_pawn's crease loops are all single-crease
+ * (1 level, ~0.5 KB per face), but catmark_bishop and _car have σ ≈ 5 creases through valence-5
+ * vertices and still take 6 levels (hundreds of KB per face), and the project's creased-box's
+ * creases all end at the cube's corners (3 levels). The rest of the issue's design is what fixes
+ * those: semi-sharp axes decaying inside the slice kernel (fans eligible at once) and levels
+ * refined only round the faces that need them.
  *
  * GPU point space (f32 xyz in cageBuf; index p < nVerts: the cage positions; p ≥ nVerts at
  * offPoints + 3(p − nVerts)):
@@ -72,11 +84,15 @@
  *            (depth counted inside the quad or inside the sub-face), first corner in `poly`
  *   poly     regular n-gon corners (cos, sin as f32 bits, f64 on the CPU)
  *   regions  2 per region, region (i, j) of sub-face k at base + k·4^dd + j·2^dd + i:
- *            w0 = kind (1 patch, 2 sector) | rot << 2 | phantom mask << 4 | offset << 8 |
- *                 sector << 12 | patch kind << 24;  w1 = first of 16 indices in `patchIdx`
- *                 (patch, row-major, row ~ y of the region's own frame) or fan id (sector).
+ *            w0 = CC_REGION_WORD (src/gpu/cc/words.ts): kind (1 patch, 2 sector) [0,2), rot
+ *                 [2,4), phantom mask [4,8), offset [8,12), sector [12,18), crease [18]
+ *                 (single-crease patch), patch kind [24,26);  w1 = word offset in `patchIdx`
+ *                 of the patch's 16 indices (row-major, row ~ y of the region's own frame) or
+ *                 fan id (sector).
  *            rot r: the region's frame is rot_r of the root square, rot_1(x,y) = (y, 1−x).
- *   patchIdx 16 point indices per patch
+ *   patchIdx per patch 16 point indices, then for a single-crease patch σ (f32 bits; the
+ *            crease on the frame's x = 0 side); per crease vertex (vfan) 9 point indices of
+ *            its 3×3 neighbourhood (3a + b, a across the crease) and σ
  *   fans     8 per fan: ns | n << 8 | boundary << 16 | rule << 17 | D << 20; anchor;
  *            slice base; sector base; alpha (f32); limit base; ia | ib << 8; cos base
  *   sectors  7 per sector (ns per fan): axis-infinite flag, (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
@@ -88,7 +104,8 @@
  *            vertex: parent rule << 2 | child rule << 4 | edges << 8 | faces << 20
  *   inputs   point indices read by the rules, each rule's followed by its parameters (edge:
  *            sharpness f32 if flagged; vertex with a non-smooth rule: ia | ib << 16, W f32)
- *   vfan     per cage vertex: its fan (limit position and normal for the factor rule), or ~0
+ *   vfan     per cage vertex, CC_VERTEX_LIMIT_WORD: its fan (limit position and normal for the
+ *            factor rule), or (crease bit) the word offset of its crease record in patchIdx, or ~0
  */
 import {
   type Cage,
@@ -104,6 +121,7 @@ import {
   vertexRing,
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../prepare.ts';
+import { CC_REGION_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 
 /** Patch colours for the demo ("show irregular patches"). */
 export const enum PatchKind {
@@ -169,6 +187,8 @@ export interface CatmullClarkData {
   maxDepth: number;
   regionCount: number;
   patchCount: number;
+  /** Of the patches, single-crease ones (one semi-sharp crease on a side, closed form). */
+  singleCreaseCount: number;
   sectorRegionCount: number;
   levels: number;
   /** Per prepared triangle: the face's patch kind (for colours). */
@@ -596,15 +616,19 @@ function setGrid(grid: number[], c: number, r: number, v: number): void {
   if (c >= 0 && c < 4 && r >= 0 && r < 4) grid[4 * r + c] = v;
 }
 
-/** The 16 point indices (global) of a regular level face g, its own frame, and its phantom mask; null if a slot stays empty. */
-function gatherPatch(L: Level, g: number): { idx: number[]; mask: number } | null {
+/**
+ * The 16 point indices (global) of a regular level face g and its phantom mask, in the face's own
+ * frame turned to start at corner `start` (its corner `start` at grid (1,1), the edge leaving it
+ * along +x); null if a slot stays empty.
+ */
+function gatherPatch(L: Level, g: number, start = 0): { idx: number[]; mask: number } | null {
   const m = L.he;
   const a0 = m.faceOffsets[g];
   const grid = new Array<number>(16).fill(-1);
   let mask = 0;
 
   for (let j = 0; j < 4; j++) {
-    const h = a0 + j;
+    const h = a0 + ((j + start) & 3);
     if (L.edgeSharp[m.heEdge[h]] >= INF) mask |= 1 << j;
     const [gc, gr] = GRID_POS[j];
     const [ax, ay, bx, by] = AXES[j];
@@ -630,6 +654,98 @@ function gatherPatch(L: Level, g: number): { idx: number[]; mask: number } | nul
     }
   }
   return { idx: grid.map((v) => L.base + v), mask };
+}
+
+const semiSharp = (s: number): boolean => s > 0 && s < INF;
+
+/** Is v an interior valence-4 vertex of quads (no holes round it) without vertex sharpness? */
+function plainValence4(L: Level, v: number): boolean {
+  const m = L.he;
+  if (L.boundary[v] || L.vertSharp[v] !== 0) return false;
+  if (m.vertHeOffsets[v + 1] - m.vertHeOffsets[v] !== 4 || m.vertEdgeOffsets[v + 1] - m.vertEdgeOffsets[v] !== 4) return false;
+  for (let k = m.vertHeOffsets[v]; k < m.vertHeOffsets[v + 1]; k++) {
+    const h = m.vertHe[k];
+    if (!isQuadHe(m, h) || L.hole[m.heFace[h]]) return false;
+  }
+  return true;
+}
+
+/** Round an interior vertex: the half-edge leaving it after h (twin of the previous). */
+const turnHe = (m: HalfEdges, h: number): number => m.heTwin[m.hePrev[h]];
+
+/**
+ * A single-crease patch (notes §3.4; OpenSubdiv's isSingleCreasePatch conditions): level face g
+ * is a quad whose 4 corners are interior valence-4 vertices of quads without vertex sharpness,
+ * and the only sharp edges at its corners are the 3 collinear edges A'A, AB, BB' of one of its
+ * sides AB, all of the same semi-sharp σ. Then its limit is the tensor product of the cubic
+ * B-spline along the crease and the closed-form 1D crease basis across it: only the rules of the
+ * 4 corners and of the edges at them reach the sub-patches, and they stay of this kind as σ
+ * decays. Returns the corner to start the patch's frame at (B: the crease AB becomes the frame's
+ * x = 0 side, grid column 1) and σ; null if g is not such a face.
+ */
+function singleCrease(L: Level, g: number): { start: number; sigma: number } | null {
+  const m = L.he;
+  const a0 = m.faceOffsets[g];
+  if (m.faceOffsets[g + 1] - a0 !== 4) return null;
+  let side = -1;
+  for (let j = 0; j < 4; j++) {
+    if (!plainValence4(L, m.faceIndices[a0 + j])) return null;
+    if (L.edgeSharp[m.heEdge[a0 + j]] !== 0) {
+      if (side >= 0) return null;
+      side = j;
+    }
+  }
+  if (side < 0) return null;
+  const h = a0 + side;
+  const sigma = L.edgeSharp[m.heEdge[h]];
+  if (!semiSharp(sigma)) return null;
+  // The crease goes straight on through A and B: the edges opposite AB round A and round B.
+  const ea = m.heEdge[turnHe(m, turnHe(m, h))];
+  const eb = m.heEdge[turnHe(m, turnHe(m, m.heTwin[h]))];
+  if (L.edgeSharp[ea] !== sigma || L.edgeSharp[eb] !== sigma) return null;
+  const crease = [m.heEdge[h], ea, eb];
+  for (let j = 0; j < 4; j++) {
+    const v = m.faceIndices[a0 + j];
+    for (let k = m.vertEdgeOffsets[v]; k < m.vertEdgeOffsets[v + 1]; k++) {
+      const e = m.vertEdges[k];
+      if (L.edgeSharp[e] !== 0 && !crease.includes(e)) return null;
+    }
+  }
+  return { start: (side + 1) & 3, sigma };
+}
+
+/**
+ * A vertex on a straight semi-sharp crease (two opposite edges of the same semi-sharp σ, the
+ * other two smooth, an interior valence-4 vertex of quads, no vertex sharpness): its limit is
+ * the corner of the single-crease patches round it, in closed form (wgsl/cc-build.wgsl
+ * vlimits). Its 3×3 neighbourhood at 3a + b (global indices), a across the crease, b along it,
+ * oriented as the faces (a toward the first ring neighbour, b toward the next: cross(∂a, ∂b) is
+ * the surface normal); null if v is not such a vertex.
+ */
+function creaseVertexGrid(L: Level, v: number): { idx: number[]; sigma: number } | null {
+  const m = L.he;
+  if (!plainValence4(L, v)) return null;
+  let h = m.vertHe[m.vertHeOffsets[v]];
+  if (L.edgeSharp[m.heEdge[h]] !== 0) h = turnHe(m, h);
+  const hs = [h, turnHe(m, h), turnHe(m, turnHe(m, h)), turnHe(m, turnHe(m, turnHe(m, h)))];
+  const s = hs.map((x) => L.edgeSharp[m.heEdge[x]]);
+  if (s[0] !== 0 || s[2] !== 0 || !semiSharp(s[1]) || s[3] !== s[1]) return null;
+  const pos: [number, number][] = [
+    [2, 1],
+    [1, 2],
+    [0, 1],
+    [1, 0],
+  ];
+  const grid = new Array<number>(9).fill(-1);
+  grid[4] = v;
+  for (let k = 0; k < 4; k++) {
+    const [a, b] = pos[k],
+      [a2, b2] = pos[(k + 1) & 3];
+    grid[3 * a + b] = m.faceIndices[m.heNext[hs[k]]];
+    // Face k holds ring neighbours k and k + 1 (the next half-edge round v leaves to prev's start).
+    grid[3 * (a + a2 - 1) + (b + b2 - 1)] = m.faceIndices[m.heNext[m.heNext[hs[k]]]];
+  }
+  return { idx: grid.map((x) => L.base + x), sigma: s[1] };
 }
 
 interface FanRec {
@@ -725,6 +841,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const faceDepth = new Int8Array(topo.nFaces).fill(-1);
   const faceKindOf = new Uint8Array(topo.nFaces);
   let patchCount = 0,
+    singleCreaseCount = 0,
     sectorRegionCount = 0;
   type Desc = { g: number; k: number; i: number; j: number; r: number };
   for (let f = 0; f < topo.nFaces; f++) {
@@ -768,7 +885,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
       }
       const L = level(d);
       const m = L.he;
-      type Reg = { w0: number; w1: number; patch?: number[] };
+      type Reg = { w0: number; w1: number; patch?: number[]; sigma?: number };
       const regs: Reg[] = [];
       let ok = true;
       for (const q of desc) {
@@ -780,10 +897,22 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
             irregular = c;
             nIrr++;
           }
+        const patchWord = (rot: number, mask: number, crease: boolean) =>
+          CC_REGION_WORD.pack({ kind: REGION_PATCH, rot, mask, offset: 0, sector: 0, crease, patchKind: kind });
         if (nIrr === 0) {
           const p = gatherPatch(L, q.g);
           if (p) {
-            regs.push({ w0: REGION_PATCH | (q.r << 2) | (p.mask << 4) | (kind << 24), w1: 0, patch: p.idx });
+            regs.push({ w0: patchWord(q.r, p.mask, false), w1: 0, patch: p.idx });
+            continue;
+          }
+        } else {
+          // One semi-sharp crease along a side: a single-crease patch, turned so the crease is
+          // its x = 0 side.
+          const sc = singleCrease(L, q.g);
+          const p = sc && gatherPatch(L, q.g, sc.start);
+          if (sc && p && p.mask === 0) {
+            regs.push({ w0: patchWord((q.r + sc.start) & 3, 0, true), w1: 0, patch: p.idx, sigma: sc.sigma });
+            singleCreaseCount++;
             continue;
           }
         }
@@ -820,8 +949,9 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
       for (const rg of order) {
         if (rg.patch) {
           regionWords.push(rg.w0);
-          regionWords.push(patchIdx.n / 16);
+          regionWords.push(patchIdx.n);
           for (const v of rg.patch) patchIdx.push(v);
+          if (rg.sigma !== undefined) patchIdx.push(f32bits(rg.sigma));
           patchCount++;
         } else {
           regionWords.push(rg.w0);
@@ -835,10 +965,20 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     }
   }
 
-  // Every cage vertex's limit (the factor rule, the flat baseline) comes from its fan.
+  // Every cage vertex's limit (the factor rule, the flat baseline) comes from its fan, or on a
+  // straight semi-sharp crease from the closed form (no level refined for it).
   const vertexFan = new Uint32Array(nV0).fill(NONE);
   for (let v = 0; v < nV0; v++) {
     if (topo.vertHeOffsets[v + 1] === topo.vertHeOffsets[v]) continue;
+    if (!isEligible(levels[0], v)) {
+      const cv = creaseVertexGrid(levels[0], v);
+      if (cv) {
+        vertexFan[v] = CC_VERTEX_LIMIT_WORD.pack({ index: patchIdx.n, crease: 1 });
+        for (const p of cv.idx) patchIdx.push(p);
+        patchIdx.push(f32bits(cv.sigma));
+        continue;
+      }
+    }
     let s = -1;
     for (let l = 0; l <= MAX_LEVEL && s < 0; l++) if (isEligible(level(l), v)) s = l;
     if (s < 0) throw new Error(`Catmull-Clark: no limit rule for vertex ${v}`);
@@ -1019,6 +1159,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     maxDepth,
     regionCount: regionWords.n / 2,
     patchCount,
+    singleCreaseCount,
     sectorRegionCount,
     levels: levels.length - 1,
     triKind,

@@ -5,7 +5,7 @@
  * submitted (the uniforms and the patch build are then current).
  */
 import commonWgsl from '../../../wgsl/tess-common.wgsl?raw';
-import ccSurfaceWgsl from '../../../wgsl/surface-cc.wgsl?raw';
+import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './shaders.ts';
 import phongSurfaceWgsl from '../../../wgsl/surface-phong.wgsl?raw';
 import { PARAMS, type Tessellator } from '../tessellator.ts';
 import { readBuffer } from '../readback.ts';
