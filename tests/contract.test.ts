@@ -32,9 +32,10 @@ import {
   PATCH_COLOURS,
   sceneWgsl,
   wgslF32,
+  TESS_CONSTANTS,
 } from '../src/gpu/contract.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
-import { packFrame } from '../src/gpu/prepare.ts';
+import { packPatternFrame } from '../src/gpu/prepare.ts';
 import { RENDER_SHADERS } from '../src/gpu/renderer.ts';
 import { chooseFrame } from '../src/pattern/clamped.ts';
 
@@ -234,7 +235,7 @@ describe('packed words', () => {
     expect(top.unpack(0xffffffff)).toEqual({ lo: 0x7fffffff, hi: 1 });
   });
 
-  it('packFrame (prepare.ts) gives the bits the hand-written packer gave, for every reverse combination', () => {
+  it('packPatternFrame (prepare.ts) gives the bits the hand-written packer gave, for every reverse combination', () => {
     for (let r = 0; r < 8; r++) {
       const reverse = [(r & 1) === 1, (r & 2) === 2, (r & 4) === 4] as const;
       const f = chooseFrame(reverse as unknown as Parameters<typeof chooseFrame>[0]);
@@ -249,7 +250,7 @@ describe('packed words', () => {
         (Number(f.flipLeft) << 13) |
         (Number(f.flipRight) << 14) |
         (Number(f.mirrored) << 15);
-      expect(packFrame(reverse as unknown as Parameters<typeof packFrame>[0])).toBe(byHand);
+      expect(packPatternFrame(reverse as unknown as Parameters<typeof packPatternFrame>[0])).toBe(byHand);
       expect(PATTERN_FRAME_WORD.unpack(byHand)).toEqual({
         a: f.a,
         b: f.b,
@@ -291,20 +292,20 @@ describe('shared constants', () => {
     expect(parsed.length).toBe(Object.keys(SHARED_CONSTANTS).length);
   });
 
-  // Until the tessellator takes its numbers from the prelude, its shaders must at least agree.
-  it("the tessellator's shaders still agree with the shared values", () => {
-    const common = readFileSync(new URL('../wgsl/tess-common.wgsl', import.meta.url), 'utf8');
-    expect(Number(/const GRID_X: u32 = (\d+)u;/.exec(common)?.[1])).toBe(GRID_X);
-    const sizes = (file: string) =>
-      [...readFileSync(new URL(`../wgsl/${file}`, import.meta.url), 'utf8').matchAll(/@workgroup_size\((\d+)\)/g)].map((m) => Number(m[1]));
-    expect(sizes('scan.wgsl').every((n) => n === SCAN_WORKGROUP_SIZE)).toBe(true);
-    for (const f of ['tess-count.wgsl', 'tess-weld.wgsl', 'tess-plan.wgsl', 'tess-factors.wgsl', 'tess-emit.wgsl']) {
-      expect(sizes(f).length, f).toBeGreaterThan(0);
-      expect(
-        sizes(f).every((n) => n === WORKGROUP_SIZE),
-        f,
-      ).toBe(true);
+  it("the tessellator's shaders take their numbers and declarations from the generated prelude only", () => {
+    for (const f of TESS_WGSL_FILES) {
+      const code = readFileSync(new URL(`../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      expect(code, f).not.toMatch(/@binding|struct Params|struct ScanParams/);
+      for (const name of [...Object.keys(SHARED_CONSTANTS), ...Object.keys(TESS_CONSTANTS)]) {
+        expect(code, `${f}: ${name}`).not.toMatch(new RegExp(`const ${name}\\b`));
+      }
+      // Workgroup sizes by name (WORKGROUP_SIZE, scan.wgsl THREADS = SCAN_WORKGROUP_SIZE; the budget pass: 1), never typed.
+      for (const m of code.matchAll(/@workgroup_size\(([^)]*)\)/g)) expect(m[1], f).toMatch(/^(WORKGROUP_SIZE|THREADS|1)$/);
+      expect(code, f).not.toMatch(/\b(63|64|255|256|65535)u?\b/);
     }
+    // What the old shaders typed by hand, now from the prelude.
+    expect(GRID_X).toBe(65535);
+    expect([WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE]).toEqual([64, 256]);
   });
 });
 
@@ -487,3 +488,17 @@ describe('render constants', () => {
     }
   });
 });
+
+/** The tessellator's WGSL files. */
+const TESS_WGSL_FILES = [
+  'tess-common',
+  'tess-outputs',
+  'tess-factors',
+  'tess-count',
+  'tess-budget',
+  'tess-weld',
+  'tess-pattern',
+  'tess-plan',
+  'tess-emit',
+  'scan',
+];
