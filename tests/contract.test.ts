@@ -32,8 +32,24 @@ import {
   PATCH_COLOURS,
   sceneWgsl,
   wgslF32,
+  CC_BUILD_GROUP,
+  OWNER_WORD,
+  SCAN_GROUP,
+  SCAN_PARAMS,
+  scanPrelude,
+  TESS_BINDINGS,
+  TESS_CAGE,
   TESS_CONSTANTS,
+  TESS_GROUP,
+  TESS_INPUTS,
+  TESS_PARAMS,
+  TESS_STATIC,
+  TESS_WORK,
+  tessPrelude,
+  type TessSizes,
 } from '../src/gpu/contract.ts';
+import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tessellator.ts';
+import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../src/pattern/tables.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
 import { packPatternFrame } from '../src/gpu/prepare.ts';
 import { RENDER_SHADERS } from '../src/gpu/renderer.ts';
@@ -165,7 +181,7 @@ function runWgslPacker(word: BitWord<string>, values: Record<string, number>): n
   return w;
 }
 
-const WORDS: BitWord<string>[] = [PATTERN_FRAME_WORD as BitWord<string>, BARY_WORD as BitWord<string>];
+const WORDS: BitWord<string>[] = [PATTERN_FRAME_WORD, BARY_WORD, OWNER_WORD] as BitWord<string>[];
 
 describe('packed words', () => {
   for (const word of WORDS) {
@@ -489,7 +505,9 @@ describe('render constants', () => {
   });
 });
 
-/** The tessellator's WGSL files. */
+// ---- The compute tessellator's contract: Params, its arenas, its bindings, its prelude.
+
+/** The tessellator's WGSL files (the Catmull-Clark ones are another team's, read here only). */
 const TESS_WGSL_FILES = [
   'tess-common',
   'tess-outputs',
@@ -502,3 +520,143 @@ const TESS_WGSL_FILES = [
   'tess-emit',
   'scan',
 ];
+
+describe("the tessellator's contract", () => {
+  for (const struct of [TESS_PARAMS, SCAN_PARAMS] as {
+    wgsl: string;
+    size: number;
+    offset: Record<string, number>;
+    write: (v: DataView, x: Record<string, number | number[]>) => void;
+  }[]) {
+    const parsed = parseStruct(struct.wgsl);
+    it(`${parsed.name}: the generated struct parses back to the offsets and size TypeScript writes at, every word of it`, () => {
+      expect(parsed.size).toBe(struct.size);
+      expect(Object.keys(struct.offset)).toEqual(parsed.fields.map((f) => f.name));
+      const view = new DataView(new ArrayBuffer(struct.size));
+      const values: Record<string, number | number[]> = {};
+      let next = 1;
+      for (const f of parsed.fields) {
+        expect(struct.offset[f.name], f.name).toBe(f.offset);
+        values[f.name] = f.size === 4 ? next++ : Array.from({ length: f.size / 4 }, () => next++);
+      }
+      struct.write(view, values);
+      for (const f of parsed.fields) {
+        const words = Array.from({ length: f.size / 4 }, (_, i) =>
+          f.type === 'u32' ? view.getUint32(f.offset + 4 * i, true) : view.getFloat32(f.offset + 4 * i, true),
+        );
+        expect(words, f.name).toEqual(typeof values[f.name] === 'number' ? [values[f.name]] : values[f.name]);
+      }
+    });
+  }
+
+  const sizes = fc.record({
+    vertices: fc.nat(50_000),
+    edges: fc.nat(150_000),
+    triangles: fc.nat(100_000),
+    maxFactor: fc.constantFrom(8, 64, 256),
+    tableWords: fc.nat(100_000),
+    ccWords: fc.nat(100_000),
+    ccPoints: fc.nat(100_000),
+    limitVertices: fc.nat(50_000),
+  }) as fc.Arbitrary<TessSizes>;
+
+  it('each arena lays its arrays one after another, and its offsets reach Params at the fields the shaders read', () => {
+    const parsed = parseStruct(TESS_PARAMS.wgsl);
+    const at = Object.fromEntries(parsed.fields.map((f) => [f.name, f]));
+    fc.assert(
+      fc.property(sizes, (s) => {
+        for (const arena of [TESS_STATIC, TESS_CAGE, TESS_WORK] as unknown as (typeof TESS_WORK)[]) {
+          const l = arena.layout(s);
+          let words = 0;
+          for (const k of arena.names) {
+            expect(l.offset[k]).toBe(words);
+            words += l.length[k];
+          }
+          expect(l.words).toBe(words);
+          const view = new DataView(new ArrayBuffer(TESS_PARAMS.size));
+          const offsets = arena.offsets(l);
+          TESS_PARAMS.write(view, offsets);
+          for (const [field, value] of Object.entries(offsets)) {
+            expect(at[field]?.type, field).toBe('u32');
+            expect(view.getUint32(at[field].offset, true)).toBe(value);
+          }
+        }
+      }),
+      { numRuns: 50 },
+    );
+  });
+
+  it("every Params field a shader reads exists (the tessellator's files and the Catmull-Clark ones)", () => {
+    const fields = new Set(Object.keys(TESS_PARAMS.offset));
+    for (const f of [...TESS_WGSL_FILES, 'surface-phong', 'surface-cc', 'cc-build']) {
+      const code = readFileSync(new URL(`../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      for (const m of code.matchAll(/\bparams\.(\w+)/g)) expect(fields.has(m[1]), `${f}: params.${m[1]}`).toBe(true);
+    }
+  });
+
+  it('the prelude declares each binding of the group once, as the layout entries say; sample evaluation gets the inputs only', () => {
+    const kinds = (entries: GPUBindGroupLayoutEntry[]) => entries.map((e) => ({ group: 0, binding: e.binding, kind: layoutKind(e) }));
+    expect(declaredBindings(tessPrelude())).toEqual(kinds(TESS_GROUP.layoutEntries()));
+    expect(declaredBindings(tessPrelude(TESS_INPUTS))).toEqual(kinds(TESS_GROUP.layoutEntries([...TESS_INPUTS])));
+    expect(declaredBindings(scanPrelude)).toEqual(kinds(SCAN_GROUP.layoutEntries()));
+    // The names in the WGSL are the group's keys.
+    const names = [...tessPrelude().matchAll(/var<[^>]*>\s+(\w+)\s*:/g)].map((m) => m[1]);
+    expect(names).toEqual(TESS_BINDINGS);
+  });
+
+  it("the prelude's constants hold the TypeScript values, each declared once (shared, then the tessellator's)", () => {
+    const parsed = [...tessPrelude().matchAll(/const (\w+): u32 = (\d+)u;/g)].map((m) => [m[1], Number(m[2])] as const);
+    expect(new Set(parsed.map(([n]) => n)).size).toBe(parsed.length);
+    expect(Object.fromEntries(parsed)).toEqual({ ...SHARED_CONSTANTS, ...TESS_CONSTANTS });
+  });
+
+  it('the table header getters read the words that the tables writer and reader use', () => {
+    const prelude = tessPrelude();
+    const getters = [...prelude.matchAll(/fn tableHeader_(\w+)\(\) -> u32 \{ return staticBuf\[params\.offTables \+ (\d+)u\]; \}/g)];
+    expect(getters.map((m) => [m[1], Number(m[2])])).toEqual(TABLE_HEADER_FIELDS.map((f) => [f, TABLE_HEADER[f]]));
+    const words = bakeTables(8);
+    const t = new PatternTables(words);
+    expect([t.maxFactor, t.slotCount, t.stateCount]).toEqual([
+      words[TABLE_HEADER.maxFactor],
+      words[TABLE_HEADER.slotCount],
+      words[TABLE_HEADER.stateCount],
+    ]);
+    expect(words[TABLE_HEADER.totalWords]).toBe(words.length);
+  });
+
+  // The hand table the derived bindings replaced (tessellator.ts PASS_BINDINGS, with 'auto'
+  // layouts, which bind exactly what an entry point uses): derivation must give the same.
+  const HAND_TABLE: Record<string, number[]> = {
+    factors: [0, 1, 2, 3],
+    count: [0, 1, 3],
+    budget: [0, 3, 9, 10, 11],
+    corners: [0, 1, 2, 3, 4, 5, 6, 7],
+    edges: [0, 1, 2, 3, 4, 5, 6, 7],
+    plan: [0, 1, 3],
+    emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
+    emitTriangles: [0, 1, 3, 8],
+    ccPoints: [0, 1, 2, 3],
+    ccSlices: [0, 1, 2],
+    ccLimits: [0, 1, 2],
+    ccVertexLimits: [0, 1, 2],
+  };
+  for (const surface of ['phong', 'catmull-clark'] as const) {
+    it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
+      const passes = tessellatorPasses(surface);
+      expect(passes.length).toBe(surface === 'phong' ? 8 : 12);
+      for (const pass of passes) {
+        const { names, entries } = passBindings(pass);
+        expect(
+          entries.map((e) => e.binding),
+          pass.name,
+        ).toEqual(HAND_TABLE[pass.name]);
+        const group = pass.group === 'ccBuild' ? CC_BUILD_GROUP : TESS_GROUP;
+        expect(entries, pass.name).toEqual(group.layoutEntries(names as never[]));
+      }
+    });
+  }
+
+  it('the three scan steps each use the whole scan group (they share one bind group)', () => {
+    for (const entry of Object.values(SCAN_ENTRIES)) expect(usedBindings(scanCode, entry, ['scan', 'work'])).toEqual(['scan', 'work']);
+  });
+});
