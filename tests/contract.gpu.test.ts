@@ -16,7 +16,7 @@ import {
   wgslPrefix,
   type BitWord,
 } from '../src/gpu/contract.ts';
-import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tessellator.ts';
+import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tess-passes.ts';
 import { getDevice, releaseDevice } from './gpu-device.ts';
 
 afterAll(() => releaseDevice());

@@ -48,7 +48,7 @@ import {
   tessPrelude,
   type TessSizes,
 } from '../src/gpu/contract.ts';
-import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tessellator.ts';
+import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tess-passes.ts';
 import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../src/pattern/tables.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
 import { packPatternFrame } from '../src/gpu/prepare.ts';
@@ -141,30 +141,44 @@ describe('uniform structs', () => {
   });
 });
 
-// ---- Packed words: the WGSL getters are parsed back and evaluated with WGSL's extractBits.
+// ---- Packed words: the WGSL getters and packers (shifts and masks) are parsed back into bit
+// ranges and evaluated as WGSL's u32 arithmetic would.
 
-/** WGSL extractBits(e: u32, offset, count) for unsigned e. */
-function wgslExtractBits(e: number, offset: number, count: number): number {
-  const o = Math.min(offset, 32);
-  const c = Math.min(count, 32 - o);
-  return c === 0 ? 0 : Math.floor((e >>> 0) / 2 ** o) % 2 ** c;
+/** The bits [at, at + bits) of u32 e, as WGSL `(e >> at) & mask` gives them. */
+function wgslExtractBits(e: number, at: number, bits: number): number {
+  return Math.floor((e >>> 0) / 2 ** at) % 2 ** bits;
 }
 
-/** WGSL insertBits(e, newbits, offset, count) for unsigned values. */
-function wgslInsertBits(e: number, v: number, offset: number, count: number): number {
-  const cleared = (e >>> 0) - (Math.floor((e >>> 0) / 2 ** offset) % 2 ** count) * 2 ** offset;
-  return cleared + (v % 2 ** count) * 2 ** offset;
+/** `e | ((v & mask) << at)` for unsigned values, on bits that are clear in e. */
+function wgslInsertBits(e: number, v: number, at: number, bits: number): number {
+  const cleared = (e >>> 0) - (Math.floor((e >>> 0) / 2 ** at) % 2 ** bits) * 2 ** at;
+  return cleared + (v % 2 ** bits) * 2 ** at;
 }
 
+/** The width of a WGSL mask literal 0x…u of the form 2^bits − 1. */
+function maskBits(mask: string): number {
+  const m = Number.parseInt(mask, 16);
+  const bits = Math.log2(m + 1);
+  expect(Number.isInteger(bits), `mask 0x${mask}`).toBe(true);
+  return bits;
+}
+
+/** Each getter `fn prefix_field(w: u32) -> u32 { return (w >> at) & mask; }` (either part may be
+ * absent) as [at, bits]. */
 function parseGetters(word: BitWord<string>): Map<string, [number, number]> {
   const prefix = wgslPrefix(word.name);
-  const re = new RegExp(`fn ${prefix}_(\\w+)\\(w: u32\\) -> u32 \\{ return extractBits\\(w, (\\d+)u, (\\d+)u\\); \\}`, 'g');
+  const re = new RegExp(`fn ${prefix}_(\\w+)\\(w: u32\\) -> u32 \\{ return (.*); \\}`, 'g');
   const out = new Map<string, [number, number]>();
-  for (const m of word.wgsl.matchAll(re)) out.set(m[1], [Number(m[2]), Number(m[3])]);
+  for (const m of word.wgsl.matchAll(re)) {
+    const e = /^(?:w|\(w >> (\d+)u\))(?: & 0x([0-9a-f]+)u)?$/.exec(m[2]);
+    if (!e) throw new Error(`unexpected getter body ${m[2]}`);
+    const at = Number(e[1] ?? 0);
+    out.set(m[1], [at, e[2] ? maskBits(e[2]) : 32 - at]);
+  }
   return out;
 }
 
-/** Parse `fn prefix_pack(a: u32, …)` and run its insertBits statements. */
+/** Parse `fn prefix_pack(a: u32, …)` and run its `w = w | ((a & mask) << at);` statements. */
 function runWgslPacker(word: BitWord<string>, values: Record<string, number>): number {
   const prefix = wgslPrefix(word.name);
   const head = new RegExp(`fn ${prefix}_pack\\(([^)]*)\\) -> u32 \\{([\\s\\S]*?)\\n\\}`).exec(word.wgsl);
@@ -173,8 +187,9 @@ function runWgslPacker(word: BitWord<string>, values: Record<string, number>): n
   expect(args).toEqual(Object.keys(word.fields));
   let w = 0;
   let statements = 0;
-  for (const m of head[2].matchAll(/w = insertBits\(w, (\w+), (\d+)u, (\d+)u\);/g)) {
-    w = wgslInsertBits(w, values[m[1]], Number(m[2]), Number(m[3]));
+  for (const m of head[2].matchAll(/w = w \| \((?:\((\w+) & 0x([0-9a-f]+)u\)|(\w+)) << (\d+)u\);/g)) {
+    const at = Number(m[4]);
+    w = wgslInsertBits(w, values[m[1] ?? m[3]], at, m[2] ? maskBits(m[2]) : 32 - at);
     statements++;
   }
   expect(statements).toBe(args.length);

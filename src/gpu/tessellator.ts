@@ -24,38 +24,25 @@
  * ever needed.
  *
  * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the scan's
- * uniforms, the constants, the packed words) is declared in contract.ts; each pass's bind group
- * layout holds the bindings its entry point uses (usedBindings), so this file only builds the
- * pipelines, uploads a mesh (setMesh: validate, pack, bind) and records the passes (encode).
+ * uniforms, the constants, the packed words) is declared in contract.ts; which code each pass
+ * compiles and which bindings its entry point uses is tess-passes.ts; the timestamps are
+ * pass-timer.ts. This file builds the pipelines, uploads a mesh (setMesh: validate, pack, bind)
+ * and records the passes (encode).
  */
-import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
-import outputsWgsl from '../../wgsl/tess-outputs.wgsl?raw';
-import factorsWgsl from '../../wgsl/tess-factors.wgsl?raw';
-import countWgsl from '../../wgsl/tess-count.wgsl?raw';
-import budgetWgsl from '../../wgsl/tess-budget.wgsl?raw';
-import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
-import patternWgsl from '../../wgsl/tess-pattern.wgsl?raw';
-import planWgsl from '../../wgsl/tess-plan.wgsl?raw';
-import emitWgsl from '../../wgsl/tess-emit.wgsl?raw';
-import scanWgsl from '../../wgsl/scan.wgsl?raw';
-import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
-import ccSurfaceWgsl from '../../wgsl/surface-cc.wgsl?raw';
-import ccBuildWgsl from '../../wgsl/cc-build.wgsl?raw';
 import type { CatmullClarkData } from './cc/build.ts';
+import { type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './tess-passes.ts';
+import { PassTimer } from './pass-timer.ts';
 import {
   type ArenaLayout,
   ATTEMPTS,
   BUDGET,
-  CC_BUILD_BINDINGS,
   CC_BUILD_GROUP,
   type CcBuildBinding,
   GRID_X,
   SCAN_BLOCK,
   SCAN_GROUP,
   SCAN_PARAMS,
-  scanPrelude,
   scanSumsWords,
-  TESS_BINDINGS,
   TESS_CAGE,
   TESS_GROUP,
   TESS_PARAMS,
@@ -64,8 +51,6 @@ import {
   TESS_WORK,
   type TessBinding,
   type TessSizes,
-  tessPrelude,
-  usedBindings,
   WORKGROUP_SIZE,
 } from './contract.ts';
 import { outputCapacity } from './factors.ts';
@@ -74,6 +59,7 @@ import type { FactorParams, TessellatedMesh } from './types.ts';
 import { PatternTables } from '../pattern/tables.ts';
 
 export { prepareMesh, type PreparedMesh } from './prepare.ts';
+export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPasses } from './tess-passes.ts';
 
 /** Workgroup counts as a 2D grid: WebGPU caps each dimension at 65535 (an over-limit
  * indirect dispatch silently does nothing; a direct one is a validation error). */
@@ -86,92 +72,6 @@ export function grid2d(groups: number): [number, number] {
 function groupsFor(items: number): [number, number] {
   return grid2d(Math.ceil(items / WORKGROUP_SIZE));
 }
-
-export type Surface = 'phong' | 'catmull-clark';
-
-export type PassName =
-  | 'factors'
-  | 'count'
-  | 'budget'
-  | 'corners'
-  | 'edges'
-  | 'plan'
-  | 'emitVertices'
-  | 'emitTriangles'
-  | 'ccPoints'
-  | 'ccSlices'
-  | 'ccLimits'
-  | 'ccVertexLimits';
-
-/** One compute pass: its shader code, its entry point, and the bind group it draws its bindings
- * from (the tessellator's, or the patch build's). */
-export interface PassSpec {
-  name: PassName;
-  label: string;
-  module: string;
-  code: string;
-  entry: string;
-  group: 'tess' | 'ccBuild';
-}
-
-/** The passes of a tessellator over `surface`, with their code: what the constructor builds, and
- * what tests/contract.gpu.test.ts checks against the contract. */
-export function tessellatorPasses(surface: Surface): PassSpec[] {
-  const code = (...parts: string[]) => [tessPrelude(), commonWgsl, ...parts].join('\n');
-  const surfaceWgsl = surface === 'catmull-clark' ? ccSurfaceWgsl : phongSurfaceWgsl;
-  const modules = {
-    factors: code(factorsWgsl),
-    count: code(patternWgsl, countWgsl),
-    budget: code(budgetWgsl),
-    weld: code(surfaceWgsl, outputsWgsl, weldWgsl),
-    plan: code(patternWgsl, planWgsl),
-    emit: code(surfaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
-    // wgsl/cc-build.wgsl declares its bindings (CC_BUILD_GROUP) and constants itself.
-    ccBuild: [TESS_PARAMS.wgsl, ccBuildWgsl].join('\n'),
-  };
-  type Module = keyof typeof modules;
-  const pass = (name: PassName, label: string, module: Module, entry = 'main'): PassSpec => ({
-    name,
-    label,
-    module,
-    code: modules[module],
-    entry,
-    group: module === 'ccBuild' ? 'ccBuild' : 'tess',
-  });
-  const passes = [
-    pass('factors', 'tess factors', 'factors'),
-    pass('count', 'tess count', 'count'),
-    pass('budget', 'tess budget', 'budget'),
-    pass('corners', 'tess weld corners', 'weld', 'corners'),
-    pass('edges', 'tess weld edges', 'weld', 'edges'),
-    pass('plan', 'tess plan', 'plan'),
-    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
-    pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
-  ];
-  if (surface === 'catmull-clark') {
-    passes.push(
-      pass('ccPoints', 'cc level points', 'ccBuild', 'points'),
-      pass('ccSlices', 'cc ev slices', 'ccBuild', 'slices'),
-      pass('ccLimits', 'cc fan limits', 'ccBuild', 'limits'),
-      pass('ccVertexLimits', 'cc vertex limits', 'ccBuild', 'vlimits'),
-    );
-  }
-  return passes;
-}
-
-/** The bindings a pass's entry point uses, from its group: its bind group layout, entry for entry. */
-export function passBindings(pass: PassSpec): { names: string[]; entries: GPUBindGroupLayoutEntry[] } {
-  if (pass.group === 'ccBuild') {
-    const names = usedBindings(pass.code, pass.entry, CC_BUILD_BINDINGS);
-    return { names, entries: CC_BUILD_GROUP.layoutEntries(names) };
-  }
-  const names = usedBindings(pass.code, pass.entry, TESS_BINDINGS);
-  return { names, entries: TESS_GROUP.layoutEntries(names) };
-}
-
-/** The three steps of one prefix sum (wgsl/scan.wgsl), which share one bind group. */
-export const SCAN_ENTRIES = { blocks: 'scanBlocks', sums: 'scanSums', add: 'addSums' } as const;
-export const scanCode = [scanPrelude, scanWgsl].join('\n');
 
 /** Compute passes one rebuild records (the patch build, factors and count + budget per attempt,
  * weld, plan + emit), each timed by a pair of timestamps. */
@@ -228,14 +128,7 @@ export class Tessellator {
   private readonly scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
   private readonly scanLayout: GPUBindGroupLayout;
   private mesh?: MeshState;
-  private readonly timing?: {
-    set: GPUQuerySet;
-    resolve: GPUBuffer;
-    read: GPUBuffer;
-    pending: boolean;
-    stages: string[];
-    reading?: Promise<Record<string, number>>;
-  };
+  private readonly timer?: PassTimer;
 
   static create(device: GPUDevice, tables: Uint32Array, opts: TessellatorOptions = {}): Tessellator {
     return new Tessellator(device, tables, opts);
@@ -299,24 +192,7 @@ export class Tessellator {
       });
     this.scanPipelines = { blocks: scanPipeline('blocks'), sums: scanPipeline('sums'), add: scanPipeline('add') };
 
-    if (device.features.has('timestamp-query')) {
-      const count = 2 * TIMED_PASSES;
-      this.timing = {
-        set: device.createQuerySet({ label: 'tess timestamps', type: 'timestamp', count }),
-        resolve: device.createBuffer({
-          label: 'tess timestamps resolve',
-          size: 8 * count,
-          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
-        }),
-        read: device.createBuffer({
-          label: 'tess timestamps read',
-          size: 8 * count,
-          usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
-        }),
-        pending: false,
-        stages: [],
-      };
-    }
+    if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }
 
   /** Upload a prepared mesh: topology once; positions may be updated later (updateCage). The
@@ -555,18 +431,7 @@ export class Tessellator {
   private record(encoder: GPUCommandEncoder, m: MeshState): void {
     encoder.clearBuffer(m.work, 4 * m.workLayout.offset.budget, 4 * m.workLayout.length.budget);
 
-    const stages: string[] = [];
-    let query = 0;
-    const pass = (label: string, stage: string) => {
-      const t = this.timing && !this.timing.pending && query + 2 <= this.timing.set.count ? this.timing : undefined;
-      const desc: GPUComputePassDescriptor = { label };
-      if (t) {
-        desc.timestampWrites = { querySet: t.set, beginningOfPassWriteIndex: query, endOfPassWriteIndex: query + 1 };
-        stages.push(stage);
-        query += 2;
-      }
-      return encoder.beginComputePass(desc);
-    };
+    const pass = (label: string, stage: string) => this.timer?.beginPass(encoder, label, stage) ?? encoder.beginComputePass({ label });
     const { edgeCount: nE, triangleCount: nT, vertexCount: nV } = m.prepared;
     const run = (cp: GPUComputePassEncoder, name: PassName, groups: [number, number]) => {
       cp.setPipeline(this.pipelines[name]!.pipeline);
@@ -614,12 +479,7 @@ export class Tessellator {
     runIndirect(cp, 'emitTriangles', 12);
     cp.end();
 
-    if (this.timing && stages.length) {
-      encoder.resolveQuerySet(this.timing.set, 0, query, this.timing.resolve, 0);
-      encoder.copyBufferToBuffer(this.timing.resolve, 0, this.timing.read, 0, 8 * query);
-      this.timing.stages = stages;
-      this.timing.pending = true;
-    }
+    this.timer?.resolve(encoder);
   }
 
   private recordPatchBuild(cp: GPUComputePassEncoder, m: MeshState): void {
@@ -655,25 +515,7 @@ export class Tessellator {
    * Rebuilds encoded while a read is in flight are not timed; a second call while one read is
    * in flight gets the same answer. */
   readTimings(): Promise<Record<string, number>> {
-    const t = this.timing;
-    if (!t?.pending) return Promise.resolve({});
-    t.reading ??= this.mapTimings(t).finally(() => {
-      t.reading = undefined;
-    });
-    return t.reading;
-  }
-
-  private async mapTimings(t: NonNullable<Tessellator['timing']>): Promise<Record<string, number>> {
-    await t.read.mapAsync(GPUMapMode.READ);
-    const ticks = new BigUint64Array(t.read.getMappedRange().slice(0));
-    t.read.unmap();
-    t.pending = false;
-    const out: Record<string, number> = {};
-    t.stages.forEach((stage, i) => {
-      const ns = Number(ticks[2 * i + 1] - ticks[2 * i]);
-      out[stage] = (out[stage] ?? 0) + ns / 1e6;
-    });
-    return out;
+    return this.timer?.read() ?? Promise.resolve({});
   }
 
   private releaseMesh(): void {
@@ -699,9 +541,7 @@ export class Tessellator {
       this.emitArgs,
     ])
       b.destroy();
-    this.timing?.set.destroy();
-    this.timing?.resolve.destroy();
-    this.timing?.read.destroy();
+    this.timer?.destroy();
   }
 }
 
