@@ -71,7 +71,8 @@ export type BitRange = readonly [at: number, bits: number];
 export interface BitWord<K extends string> {
   readonly name: string;
   readonly fields: Readonly<Record<K, BitRange>>;
-  /** WGSL: `fn name_field(w: u32) -> u32` for each field and `fn name_pack(field, …) -> u32`. */
+  /** WGSL: `fn name_field(w: u32) -> u32` for each field and `fn name_pack(field, …) -> u32`
+   * (the low bits of each value; shifts and masks). */
   readonly wgsl: string;
   /** The word with these field values (every field named; booleans as 0/1). Throws on a value
    * that does not fit its field: the WGSL packer would silently truncate it. */
@@ -104,11 +105,13 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
     used |= mask;
   }
   const prefix = wgslPrefix(name);
-  const getters = entries.map(([f, [at, bits]]) => `fn ${prefix}_${f}(w: u32) -> u32 { return extractBits(w, ${at}u, ${bits}u); }`);
+  // Shifts and masks rather than extractBits/insertBits: the same bits, but Tint polyfills those
+  // two builtins (clamping their offset and count) and a software GPU's compiler keeps the calls.
+  const getters = entries.map(([f, [at, bits]]) => `fn ${prefix}_${f}(w: u32) -> u32 { return ${wgslField('w', at, bits)}; }`);
   const packer = [
     `fn ${prefix}_pack(${entries.map(([f]) => `${f}: u32`).join(', ')}) -> u32 {`,
     '  var w = 0u;',
-    ...entries.map(([f, [at, bits]]) => `  w = insertBits(w, ${f}, ${at}u, ${bits}u);`),
+    ...entries.map(([f, [at, bits]]) => `  w = w | (${bits === 32 ? f : `(${f} & ${hex(2 ** bits - 1)})`} << ${at}u);`),
     '  return w;',
     '}',
   ];
@@ -137,6 +140,17 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
       return extract(word, at, bits);
     },
   };
+}
+
+/** WGSL for bits [at, at + bits) of the u32 `w`. */
+function wgslField(w: string, at: number, bits: number): string {
+  if (bits === 32) return w;
+  const shifted = at ? `(${w} >> ${at}u)` : w;
+  return at + bits === 32 ? shifted : `${shifted} & ${hex(2 ** bits - 1)}`;
+}
+
+function hex(x: number): string {
+  return `0x${x.toString(16)}u`;
 }
 
 function maskOf(at: number, bits: number): number {
