@@ -7,8 +7,8 @@
 //   staticBuf  TESS_STATIC: the baked pattern tables (src/pattern/tables.ts layout), the mesh's
 //              topology (src/gpu/prepare.ts): triVerts, triEdges, triPatternFrame, edgeVerts,
 //              edgeOwner, vertexOwner; the Catmull-Clark tables
-//   cageBuf    TESS_CAGE: cage positions then vertex normals, 3 f32 each (may change every
-//              frame); with the Catmull-Clark surface then its control points and the limits
+//   cageBuf    TESS_CAGE: cage positions then vertex normals, 3 f32 each (rewritten when the
+//              cage moves); with the Catmull-Clark surface then its control points and limits
 //   work       TESS_WORK: per-edge and per-triangle counts, their prefix sums, the planned rows,
 //              and the budget state (BUDGET_* words at params.offBudget)
 // Each array's offset is the Params field `off` + its name.

@@ -1,7 +1,7 @@
 // The clamped-parallelogram pattern of one cage triangle, read from the baked tables and the
 // per-edge results of the factor pass (src/pattern/clamped.ts is the CPU original):
 //   the pattern frame (prepare.ts packPatternFrame) names the bottom, left and right edges; a framed line is
-//   an edge's line read in the frame's direction; c is the clamp line u + v = c;
+//   an edge's line read in the pattern frame's direction; c is the clamp line u + v = c;
 //   rows j = 0..nl: row 0 keeps nb − 1 columns, row j ≥ 1 keeps k_j = #{u_i < c − v_j}, row nl
 //   is the corner C. Shared by the count, plan and emit passes.
 

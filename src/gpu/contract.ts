@@ -163,7 +163,7 @@ function extract(word: number, at: number, bits: number): number {
 
 /**
  * The pattern frame of a triangle (src/pattern/clamped.ts chooseFrame; packed per triangle by
- * prepare.ts packFrame and read by wgsl/tess-pattern.wgsl): the corners playing A, B, C, the
+ * prepare.ts packPatternFrame and read by wgsl/tess-pattern.wgsl): the corners playing A, B, C, the
  * edges playing bottom, left, right, whether each of those runs against its edge's line, and
  * whether the frame is mirrored.
  */
