@@ -99,6 +99,14 @@ export interface TessellatorOptions {
 
 type WorkName = (typeof TESS_WORK.names)[number];
 
+/** What setMesh packs before it binds. */
+interface Packed {
+  staticWords: Uint32Array;
+  cageWords: Float32Array;
+  workLayout: ArenaLayout<WorkName>;
+  normalsOffset: number;
+}
+
 interface MeshState {
   prepared: PreparedMesh;
   staticBuf: GPUBuffer;
@@ -199,20 +207,25 @@ export class Tessellator {
    * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
   setMesh(prepared: PreparedMesh, cc?: CatmullClarkData): void {
     const ccData = this.validate(prepared, cc);
+    const packed = this.pack(prepared, ccData);
     this.releaseMesh();
-    const device = this.device;
+    this.mesh = this.bind(prepared, ccData, packed);
+  }
+
+  /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
+   * (into paramsBytes; encode() uploads them). Throws when the scratch buffer would not bind. */
+  private pack(prepared: PreparedMesh, cc: CatmullClarkData | undefined): Packed {
     const sizes: TessSizes = {
       vertices: prepared.vertexCount,
       edges: prepared.edgeCount,
       triangles: prepared.triangleCount,
       maxFactor: this.maxFactor,
       tableWords: this.tables.length,
-      ccWords: ccData?.words.length ?? 0,
-      ccPoints: ccData?.pointCount ?? 0,
-      limitVertices: ccData ? prepared.vertexCount : 0,
+      ccWords: cc?.words.length ?? 0,
+      ccPoints: cc?.pointCount ?? 0,
+      limitVertices: cc ? prepared.vertexCount : 0,
     };
 
-    // Pack: the three arenas, and the uniforms that say where their arrays lie.
     const staticLayout = TESS_STATIC.layout(sizes);
     const staticWords = packArena(TESS_STATIC.names, staticLayout, new Uint32Array(staticLayout.words), {
       tables: this.tables,
@@ -222,7 +235,7 @@ export class Tessellator {
       edgeVerts: prepared.edgeVerts,
       edgeOwner: prepared.edgeOwner,
       vertexOwner: prepared.vertexOwner,
-      cc: ccData?.words,
+      cc: cc?.words,
     });
     const cageLayout = TESS_CAGE.layout(sizes);
     // The refined points and the limits are written by the patch build.
@@ -231,7 +244,7 @@ export class Tessellator {
       normals: prepared.normals,
     });
     const workLayout = TESS_WORK.layout(sizes);
-    if (4 * workLayout.words > device.limits.maxStorageBufferBindingSize) {
+    if (4 * workLayout.words > this.device.limits.maxStorageBufferBindingSize) {
       throw new Error(
         `the cage is too large: its scratch buffer (${4 * workLayout.words} bytes) exceeds the device's storage binding limit`,
       );
@@ -247,25 +260,32 @@ export class Tessellator {
       ...TESS_STATIC.offsets(staticLayout),
       ...TESS_CAGE.offsets(cageLayout),
       ...TESS_WORK.offsets(workLayout),
-      offFactorPos: ccData ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
-      offFactorNormal: ccData ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
-      ccTri: ccBase + (ccData?.offTri ?? 0),
-      ccPoly: ccBase + (ccData?.offPoly ?? 0),
-      ccRegions: ccBase + (ccData?.offRegions ?? 0),
-      ccPatchIdx: ccBase + (ccData?.offPatchIdx ?? 0),
-      ccFans: ccBase + (ccData?.offFans ?? 0),
-      ccSectors: ccBase + (ccData?.offSectors ?? 0),
-      ccThreads: ccBase + (ccData?.offThreads ?? 0),
-      ccCos: ccBase + (ccData?.offCos ?? 0),
-      ccRules: ccBase + (ccData?.offRules ?? 0),
-      ccInputs: ccBase + (ccData?.offInputs ?? 0),
-      ccVertexFan: ccBase + (ccData?.offVertexFan ?? 0),
-      nFans: ccData?.fanCount ?? 0,
-      ccSliceGroups: ccData?.sliceWorkgroups ?? 0,
-      ccMaxDepth: ccData?.maxDepth ?? 0,
+      offFactorPos: cc ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
+      offFactorNormal: cc ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
+      ccTri: ccBase + (cc?.offTri ?? 0),
+      ccPoly: ccBase + (cc?.offPoly ?? 0),
+      ccRegions: ccBase + (cc?.offRegions ?? 0),
+      ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0),
+      ccFans: ccBase + (cc?.offFans ?? 0),
+      ccSectors: ccBase + (cc?.offSectors ?? 0),
+      ccThreads: ccBase + (cc?.offThreads ?? 0),
+      ccCos: ccBase + (cc?.offCos ?? 0),
+      ccRules: ccBase + (cc?.offRules ?? 0),
+      ccInputs: ccBase + (cc?.offInputs ?? 0),
+      ccVertexFan: ccBase + (cc?.offVertexFan ?? 0),
+      nFans: cc?.fanCount ?? 0,
+      ccSliceGroups: cc?.sliceWorkgroups ?? 0,
+      ccMaxDepth: cc?.maxDepth ?? 0,
     });
 
-    // Bind: the buffers, then each pass's bind group from the bindings its entry point uses.
+    return { staticWords, cageWords, workLayout, normalsOffset: cageLayout.offset.normals };
+  }
+
+  /** The buffers, written; each pass's bind group from the bindings its entry point uses; the
+   * scans' and the patch build's small uniforms. */
+  private bind(prepared: PreparedMesh, cc: CatmullClarkData | undefined, packed: Packed): MeshState {
+    const device = this.device;
+    const { staticWords, cageWords, workLayout, normalsOffset } = packed;
     const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST;
     const staticBuf = device.createBuffer({ label: 'tess tables + topology', size: staticWords.byteLength, usage: storage });
     device.queue.writeBuffer(staticBuf, 0, staticWords);
@@ -335,7 +355,7 @@ export class Tessellator {
     });
     // Catmull-Clark level dispatches: per level, its face points, then its edge and vertex
     // points (which read the new face points); each with its range in a small uniform.
-    const ccRanges = (ccData?.levelRanges ?? []).flatMap(([ff, fc, vf, vc]) =>
+    const ccRanges = (cc?.levelRanges ?? []).flatMap(([ff, fc, vf, vc]) =>
       [
         [ff, fc],
         [vf, vc],
@@ -344,19 +364,7 @@ export class Tessellator {
         group: bindGroup('ccPoints', { range: uniform('cc level range', Uint32Array.of(first, count, 0, 0)) }),
       })),
     );
-    this.mesh = {
-      prepared,
-      staticBuf,
-      cageBuf,
-      work,
-      workLayout,
-      normalsOffset: cageLayout.offset.normals,
-      groups,
-      scans,
-      cc: ccData,
-      ccRanges,
-      uniforms,
-    };
+    return { prepared, staticBuf, cageBuf, work, workLayout, normalsOffset, groups, scans, cc, ccRanges, uniforms };
   }
 
   /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
