@@ -22,14 +22,14 @@ fn main() {
     work[b + BUDGET_ACCEPTED] = 1u;
     work[b + BUDGET_FITS] = select(0u, 1u, fits);
     let shown = select(0u, triangles, fits);
-    drawArgs = array<u32, 5>(3u * shown, 1u, 0u, 0u, 0u);
+    drawArgs = array(3u * shown, 1u, 0u, 0u, 0u);
     var scale = 1.0;
     if (attempt == 1u) { scale = bitcast<f32>(work[b + BUDGET_SCALE]); }
     if (attempt >= ATTEMPTS - 1u) { scale = 0.0; }
-    counts = array<u32, 4>(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
+    counts = array(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
     let v = dispatchArgs(select(0u, work[params.offTriVertBase + params.nTris], fits));
     let t = dispatchArgs(shown);
-    emitArgs = array<u32, 6>(v.x, v.y, v.z, t.x, t.y, t.z);
+    emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z);
     return;
   }
   let ratio = min(f32(params.vertexCapacity) / f32(vertices), f32(params.triangleCapacity) / f32(triangles));

@@ -541,6 +541,13 @@ export const TESS_PARAMS = defineStruct('Params', [
   ['ccFlat', 'u32', 'Blend from the flat triangle by tess factor (TessellatorOptions.flatBaseline).'],
 ] as const);
 
+/** Words of the tessellator's fixed-size outputs: drawIndexedIndirect's arguments, the counts
+ * (src/gpu/types.ts: vertices, triangles, the accepted scale as f32 bits, the attempt), and the
+ * emit passes' two indirect dispatches (vertices', then triangles', 3 words each). */
+export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 6 } as const;
+/** Byte offset of the triangles' dispatch in emitArgs. */
+export const EMIT_TRIANGLES_ARGS_OFFSET = 4 * 3;
+
 /** One binding group for every tessellator pass; each pass's layout holds the bindings its entry
  * point uses (usedBindings), so the numbers below are the only place they are written. */
 export const TESS_GROUP = defineBindGroup(0, {
@@ -553,19 +560,14 @@ export const TESS_GROUP = defineBindGroup(0, {
   outBary: { binding: 6, space: 'read_write', type: 'array<u32>' },
   outSrcTri: { binding: 7, space: 'read_write', type: 'array<u32>' },
   outIndices: { binding: 8, space: 'read_write', type: 'array<u32>' },
-  drawArgs: { binding: 9, space: 'read_write', type: 'array<u32, 5>', doc: 'drawIndexedIndirect arguments, written by the budget pass.' },
-  counts: {
-    binding: 10,
+  drawArgs: {
+    binding: 9,
     space: 'read_write',
-    type: 'array<u32, 4>',
-    doc: 'vertices, triangles, the accepted scale (f32 bits), the attempt.',
+    type: `array<u32, ${TESS_FIXED_WORDS.drawArgs}>`,
+    doc: 'Written by the budget pass, as counts and emitArgs (TESS_FIXED_WORDS).',
   },
-  emitArgs: {
-    binding: 11,
-    space: 'read_write',
-    type: 'array<u32, 6>',
-    doc: 'Indirect dispatch arguments of the emit passes (vertices, triangles).',
-  },
+  counts: { binding: 10, space: 'read_write', type: `array<u32, ${TESS_FIXED_WORDS.counts}>` },
+  emitArgs: { binding: 11, space: 'read_write', type: `array<u32, ${TESS_FIXED_WORDS.emitArgs}>` },
 });
 export type TessBinding = keyof typeof TESS_GROUP.binding;
 export const TESS_BINDINGS = Object.keys(TESS_GROUP.binding) as TessBinding[];

@@ -37,6 +37,7 @@ import {
   ATTEMPTS,
   BUDGET,
   CC_BUILD_GROUP,
+  EMIT_TRIANGLES_ARGS_OFFSET,
   type CcBuildBinding,
   GRID_X,
   SCAN_BLOCK,
@@ -44,6 +45,7 @@ import {
   SCAN_PARAMS,
   scanSumsWords,
   TESS_CAGE,
+  TESS_FIXED_WORDS,
   TESS_GROUP,
   TESS_PARAMS,
   TESS_SCANS,
@@ -159,12 +161,12 @@ export class Tessellator {
       bary: buffer('tess barycentrics', 4 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
       srcTri: buffer('tess source triangles', 4 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
       indices: buffer('tess indices', 12 * cap.triangleCapacity, S | GPUBufferUsage.INDEX),
-      drawArgs: buffer('tess draw args', 20, S | GPUBufferUsage.INDIRECT),
-      counts: buffer('tess counts', 16, S),
+      drawArgs: buffer('tess draw args', 4 * TESS_FIXED_WORDS.drawArgs, S | GPUBufferUsage.INDIRECT),
+      counts: buffer('tess counts', 4 * TESS_FIXED_WORDS.counts, S),
       vertexCapacity: cap.vertexCapacity,
       triangleCapacity: cap.triangleCapacity,
     };
-    this.emitArgs = buffer('tess emit dispatch args', 24, GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT);
+    this.emitArgs = buffer('tess emit dispatch args', 4 * TESS_FIXED_WORDS.emitArgs, GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT);
     this.paramsBytes = new ArrayBuffer(TESS_PARAMS.size);
     this.params = device.createBuffer({
       label: 'tess params',
@@ -484,7 +486,7 @@ export class Tessellator {
     run(cp, 'plan', groupsFor(nT));
     // Sized by the budget pass: emitArgs holds the vertices' dispatch, then the triangles'.
     runIndirect(cp, 'emitVertices', 0);
-    runIndirect(cp, 'emitTriangles', 12);
+    runIndirect(cp, 'emitTriangles', EMIT_TRIANGLES_ARGS_OFFSET);
     cp.end();
 
     this.timer?.resolve(encoder);
