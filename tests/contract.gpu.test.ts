@@ -8,12 +8,15 @@ import { afterAll, describe, expect, it } from 'vitest';
 import {
   BARY_WORD,
   constantsWgsl,
+  OWNER_WORD,
   PATTERN_FRAME_WORD,
+  SCAN_GROUP,
   SCENE_UNIFORMS,
   SHARED_CONSTANTS,
   wgslPrefix,
   type BitWord,
 } from '../src/gpu/contract.ts';
+import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tess-passes.ts';
 import { getDevice, releaseDevice } from './gpu-device.ts';
 
 afterAll(() => releaseDevice());
@@ -99,7 +102,7 @@ ${copies.join('\n')}
     expect(Array.from(got)).toEqual(fields.flatMap((f) => values[f]));
   });
 
-  const words = [PATTERN_FRAME_WORD, BARY_WORD] as BitWord<string>[];
+  const words = [PATTERN_FRAME_WORD, BARY_WORD, OWNER_WORD] as BitWord<string>[];
   for (const word of words) {
     it(`${word.name}: the WGSL getters read what TypeScript packed, and the WGSL packer packs what TypeScript does`, async () => {
       const names = Object.keys(word.fields);
@@ -144,5 +147,63 @@ ${names.map((n, i) => `  out[${i + 1}u] = ${n};`).join('\n')}
 }`;
     const got = await run(code, { storage: new Uint32Array(4) }, names.length + 1);
     expect(Array.from(got.subarray(1))).toEqual(names.map((n) => SHARED_CONSTANTS[n]));
+  });
+});
+
+/**
+ * Each pipeline's bindings against the contract's, as the WGSL compiler sees them: the pipeline
+ * built on the contract's explicit layout must validate (every binding the entry point uses is
+ * there, with its type and access), and the compiler's own 'auto' layout of the same entry point
+ * must accept a bind group of exactly the contract's bindings (no binding more, none less).
+ */
+describe("the tessellator's pipelines bind what the contract says", () => {
+  /** The validation errors (null: none) of building the pass on `entries` and binding them to its 'auto' layout. */
+  async function check(label: string, code: string, entry: string, entries: GPUBindGroupLayoutEntry[]): Promise<string | null> {
+    const device = await getDevice();
+    device.pushErrorScope('validation');
+    const module = device.createShaderModule({ label, code });
+    const layout = device.createBindGroupLayout({ label, entries });
+    device.createComputePipeline({
+      label,
+      layout: device.createPipelineLayout({ label, bindGroupLayouts: [layout] }),
+      compute: { module, entryPoint: entry },
+    });
+    const explicit = await device.popErrorScope();
+    device.pushErrorScope('validation');
+    const auto = device.createComputePipeline({ label: `${label} (auto)`, layout: 'auto', compute: { module, entryPoint: entry } });
+    const buffers = entries.map(() =>
+      device.createBuffer({ label: `${label} binding`, size: 4096, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.STORAGE }),
+    );
+    device.createBindGroup({
+      label,
+      layout: auto.getBindGroupLayout(0),
+      entries: entries.map((e, i) => ({ binding: e.binding, resource: { buffer: buffers[i] } })),
+    });
+    const bound = await device.popErrorScope();
+    for (const b of buffers) b.destroy();
+    return explicit?.message ?? bound?.message ?? null;
+  }
+
+  for (const surface of ['phong', 'catmull-clark'] as const) {
+    it(`${surface}: every pass`, async () => {
+      for (const pass of tessellatorPasses(surface))
+        await check(`${surface} ${pass.name}`, pass.code, pass.entry, passBindings(pass).entries);
+    }, 120_000);
+  }
+
+  it('the scan steps', async () => {
+    for (const entry of Object.values(SCAN_ENTRIES))
+      expect(await check(`scan ${entry}`, scanCode, entry, SCAN_GROUP.layoutEntries())).toBeNull();
+  });
+
+  it('and it would notice: a binding short, one more, or a storage buffer bound read-only', async () => {
+    const budget = tessellatorPasses('phong').find((p) => p.name === 'budget')!;
+    const { entries } = passBindings(budget);
+    const run = (e: GPUBindGroupLayoutEntry[]) => check('budget (altered)', budget.code, budget.entry, e);
+    expect(await run(entries.slice(0, -1))).not.toBeNull();
+    expect(await run([...entries, { binding: 7, visibility: entries[0].visibility, buffer: { type: 'storage' } }])).not.toBeNull();
+    expect(
+      await run(entries.map((e) => (e.buffer?.type === 'storage' ? { ...e, buffer: { type: 'read-only-storage' } } : e))),
+    ).not.toBeNull();
   });
 });

@@ -32,9 +32,26 @@ import {
   PATCH_COLOURS,
   sceneWgsl,
   wgslF32,
+  CC_BUILD_GROUP,
+  OWNER_WORD,
+  SCAN_GROUP,
+  SCAN_PARAMS,
+  scanPrelude,
+  TESS_BINDINGS,
+  TESS_CAGE,
+  TESS_CONSTANTS,
+  TESS_GROUP,
+  TESS_INPUTS,
+  TESS_PARAMS,
+  TESS_STATIC,
+  TESS_WORK,
+  tessPrelude,
+  type TessSizes,
 } from '../src/gpu/contract.ts';
+import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../src/gpu/tess-passes.ts';
+import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../src/pattern/tables.ts';
 import { defineStruct } from '../src/gpu/layout.ts';
-import { packFrame } from '../src/gpu/prepare.ts';
+import { packPatternFrame } from '../src/gpu/prepare.ts';
 import { RENDER_SHADERS } from '../src/gpu/renderer.ts';
 import { chooseFrame } from '../src/pattern/clamped.ts';
 
@@ -124,30 +141,44 @@ describe('uniform structs', () => {
   });
 });
 
-// ---- Packed words: the WGSL getters are parsed back and evaluated with WGSL's extractBits.
+// ---- Packed words: the WGSL getters and packers (shifts and masks) are parsed back into bit
+// ranges and evaluated as WGSL's u32 arithmetic would.
 
-/** WGSL extractBits(e: u32, offset, count) for unsigned e. */
-function wgslExtractBits(e: number, offset: number, count: number): number {
-  const o = Math.min(offset, 32);
-  const c = Math.min(count, 32 - o);
-  return c === 0 ? 0 : Math.floor((e >>> 0) / 2 ** o) % 2 ** c;
+/** The bits [at, at + bits) of u32 e, as WGSL `(e >> at) & mask` gives them. */
+function wgslExtractBits(e: number, at: number, bits: number): number {
+  return Math.floor((e >>> 0) / 2 ** at) % 2 ** bits;
 }
 
-/** WGSL insertBits(e, newbits, offset, count) for unsigned values. */
-function wgslInsertBits(e: number, v: number, offset: number, count: number): number {
-  const cleared = (e >>> 0) - (Math.floor((e >>> 0) / 2 ** offset) % 2 ** count) * 2 ** offset;
-  return cleared + (v % 2 ** count) * 2 ** offset;
+/** `e | ((v & mask) << at)` for unsigned values, on bits that are clear in e. */
+function wgslInsertBits(e: number, v: number, at: number, bits: number): number {
+  const cleared = (e >>> 0) - (Math.floor((e >>> 0) / 2 ** at) % 2 ** bits) * 2 ** at;
+  return cleared + (v % 2 ** bits) * 2 ** at;
 }
 
+/** The width of a WGSL mask literal 0x…u of the form 2^bits − 1. */
+function maskBits(mask: string): number {
+  const m = Number.parseInt(mask, 16);
+  const bits = Math.log2(m + 1);
+  expect(Number.isInteger(bits), `mask 0x${mask}`).toBe(true);
+  return bits;
+}
+
+/** Each getter `fn prefix_field(w: u32) -> u32 { return (w >> at) & mask; }` (either part may be
+ * absent) as [at, bits]. */
 function parseGetters(word: BitWord<string>): Map<string, [number, number]> {
   const prefix = wgslPrefix(word.name);
-  const re = new RegExp(`fn ${prefix}_(\\w+)\\(w: u32\\) -> u32 \\{ return extractBits\\(w, (\\d+)u, (\\d+)u\\); \\}`, 'g');
+  const re = new RegExp(`fn ${prefix}_(\\w+)\\(w: u32\\) -> u32 \\{ return (.*); \\}`, 'g');
   const out = new Map<string, [number, number]>();
-  for (const m of word.wgsl.matchAll(re)) out.set(m[1], [Number(m[2]), Number(m[3])]);
+  for (const m of word.wgsl.matchAll(re)) {
+    const e = /^(?:w|\(w >> (\d+)u\))(?: & 0x([0-9a-f]+)u)?$/.exec(m[2]);
+    if (!e) throw new Error(`unexpected getter body ${m[2]}`);
+    const at = Number(e[1] ?? 0);
+    out.set(m[1], [at, e[2] ? maskBits(e[2]) : 32 - at]);
+  }
   return out;
 }
 
-/** Parse `fn prefix_pack(a: u32, …)` and run its insertBits statements. */
+/** Parse `fn prefix_pack(a: u32, …)` and run its `w = w | ((a & mask) << at);` statements. */
 function runWgslPacker(word: BitWord<string>, values: Record<string, number>): number {
   const prefix = wgslPrefix(word.name);
   const head = new RegExp(`fn ${prefix}_pack\\(([^)]*)\\) -> u32 \\{([\\s\\S]*?)\\n\\}`).exec(word.wgsl);
@@ -156,15 +187,16 @@ function runWgslPacker(word: BitWord<string>, values: Record<string, number>): n
   expect(args).toEqual(Object.keys(word.fields));
   let w = 0;
   let statements = 0;
-  for (const m of head[2].matchAll(/w = insertBits\(w, (\w+), (\d+)u, (\d+)u\);/g)) {
-    w = wgslInsertBits(w, values[m[1]], Number(m[2]), Number(m[3]));
+  for (const m of head[2].matchAll(/w = w \| \((?:\((\w+) & 0x([0-9a-f]+)u\)|(\w+)) << (\d+)u\);/g)) {
+    const at = Number(m[4]);
+    w = wgslInsertBits(w, values[m[1] ?? m[3]], at, m[2] ? maskBits(m[2]) : 32 - at);
     statements++;
   }
   expect(statements).toBe(args.length);
   return w;
 }
 
-const WORDS: BitWord<string>[] = [PATTERN_FRAME_WORD as BitWord<string>, BARY_WORD as BitWord<string>];
+const WORDS: BitWord<string>[] = [PATTERN_FRAME_WORD, BARY_WORD, OWNER_WORD] as BitWord<string>[];
 
 describe('packed words', () => {
   for (const word of WORDS) {
@@ -234,7 +266,7 @@ describe('packed words', () => {
     expect(top.unpack(0xffffffff)).toEqual({ lo: 0x7fffffff, hi: 1 });
   });
 
-  it('packFrame (prepare.ts) gives the bits the hand-written packer gave, for every reverse combination', () => {
+  it('packPatternFrame (prepare.ts) gives the bits the hand-written packer gave, for every reverse combination', () => {
     for (let r = 0; r < 8; r++) {
       const reverse = [(r & 1) === 1, (r & 2) === 2, (r & 4) === 4] as const;
       const f = chooseFrame(reverse as unknown as Parameters<typeof chooseFrame>[0]);
@@ -249,7 +281,7 @@ describe('packed words', () => {
         (Number(f.flipLeft) << 13) |
         (Number(f.flipRight) << 14) |
         (Number(f.mirrored) << 15);
-      expect(packFrame(reverse as unknown as Parameters<typeof packFrame>[0])).toBe(byHand);
+      expect(packPatternFrame(reverse as unknown as Parameters<typeof packPatternFrame>[0])).toBe(byHand);
       expect(PATTERN_FRAME_WORD.unpack(byHand)).toEqual({
         a: f.a,
         b: f.b,
@@ -291,20 +323,20 @@ describe('shared constants', () => {
     expect(parsed.length).toBe(Object.keys(SHARED_CONSTANTS).length);
   });
 
-  // Until the tessellator takes its numbers from the prelude, its shaders must at least agree.
-  it("the tessellator's shaders still agree with the shared values", () => {
-    const common = readFileSync(new URL('../wgsl/tess-common.wgsl', import.meta.url), 'utf8');
-    expect(Number(/const GRID_X: u32 = (\d+)u;/.exec(common)?.[1])).toBe(GRID_X);
-    const sizes = (file: string) =>
-      [...readFileSync(new URL(`../wgsl/${file}`, import.meta.url), 'utf8').matchAll(/@workgroup_size\((\d+)\)/g)].map((m) => Number(m[1]));
-    expect(sizes('scan.wgsl').every((n) => n === SCAN_WORKGROUP_SIZE)).toBe(true);
-    for (const f of ['tess-count.wgsl', 'tess-weld.wgsl', 'tess-plan.wgsl', 'tess-factors.wgsl', 'tess-emit.wgsl']) {
-      expect(sizes(f).length, f).toBeGreaterThan(0);
-      expect(
-        sizes(f).every((n) => n === WORKGROUP_SIZE),
-        f,
-      ).toBe(true);
+  it("the tessellator's shaders take their numbers and declarations from the generated prelude only", () => {
+    for (const f of TESS_WGSL_FILES) {
+      const code = readFileSync(new URL(`../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      expect(code, f).not.toMatch(/@binding|struct Params|struct ScanParams/);
+      for (const name of [...Object.keys(SHARED_CONSTANTS), ...Object.keys(TESS_CONSTANTS)]) {
+        expect(code, `${f}: ${name}`).not.toMatch(new RegExp(`const ${name}\\b`));
+      }
+      // Workgroup sizes by name (WORKGROUP_SIZE, scan.wgsl THREADS = SCAN_WORKGROUP_SIZE; the budget pass: 1), never typed.
+      for (const m of code.matchAll(/@workgroup_size\(([^)]*)\)/g)) expect(m[1], f).toMatch(/^(WORKGROUP_SIZE|THREADS|1)$/);
+      expect(code, f).not.toMatch(/\b(63|64|255|256|65535)u?\b/);
     }
+    // What the old shaders typed by hand, now from the prelude.
+    expect(GRID_X).toBe(65535);
+    expect([WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE]).toEqual([64, 256]);
   });
 });
 
@@ -485,5 +517,161 @@ describe('render constants', () => {
       expect(text, f).not.toMatch(/const\s+(GROUND_EXTENT|PATCH_SRGB)\b/);
       for (const p of PATCH_COLOURS) expect(text, `${f}: ${p.name}`).not.toContain(`vec3f(${p.srgb.join(', ')})`);
     }
+  });
+});
+
+// ---- The compute tessellator's contract: Params, its arenas, its bindings, its prelude.
+
+/** The tessellator's WGSL files (the Catmull-Clark ones are another team's, read here only). */
+const TESS_WGSL_FILES = [
+  'tess-common',
+  'tess-outputs',
+  'tess-factors',
+  'tess-count',
+  'tess-budget',
+  'tess-weld',
+  'tess-pattern',
+  'tess-plan',
+  'tess-emit',
+  'scan',
+];
+
+describe("the tessellator's contract", () => {
+  for (const struct of [TESS_PARAMS, SCAN_PARAMS] as {
+    wgsl: string;
+    size: number;
+    offset: Record<string, number>;
+    write: (v: DataView, x: Record<string, number | number[]>) => void;
+  }[]) {
+    const parsed = parseStruct(struct.wgsl);
+    it(`${parsed.name}: the generated struct parses back to the offsets and size TypeScript writes at, every word of it`, () => {
+      expect(parsed.size).toBe(struct.size);
+      expect(Object.keys(struct.offset)).toEqual(parsed.fields.map((f) => f.name));
+      const view = new DataView(new ArrayBuffer(struct.size));
+      const values: Record<string, number | number[]> = {};
+      let next = 1;
+      for (const f of parsed.fields) {
+        expect(struct.offset[f.name], f.name).toBe(f.offset);
+        values[f.name] = f.size === 4 ? next++ : Array.from({ length: f.size / 4 }, () => next++);
+      }
+      struct.write(view, values);
+      for (const f of parsed.fields) {
+        const words = Array.from({ length: f.size / 4 }, (_, i) =>
+          f.type === 'u32' ? view.getUint32(f.offset + 4 * i, true) : view.getFloat32(f.offset + 4 * i, true),
+        );
+        expect(words, f.name).toEqual(typeof values[f.name] === 'number' ? [values[f.name]] : values[f.name]);
+      }
+    });
+  }
+
+  const sizes = fc.record({
+    vertices: fc.nat(50_000),
+    edges: fc.nat(150_000),
+    triangles: fc.nat(100_000),
+    maxFactor: fc.constantFrom(8, 64, 256),
+    tableWords: fc.nat(100_000),
+    ccWords: fc.nat(100_000),
+    ccPoints: fc.nat(100_000),
+    limitVertices: fc.nat(50_000),
+  }) as fc.Arbitrary<TessSizes>;
+
+  it('each arena lays its arrays one after another, and its offsets reach Params at the fields the shaders read', () => {
+    const parsed = parseStruct(TESS_PARAMS.wgsl);
+    const at = Object.fromEntries(parsed.fields.map((f) => [f.name, f]));
+    fc.assert(
+      fc.property(sizes, (s) => {
+        for (const arena of [TESS_STATIC, TESS_CAGE, TESS_WORK] as unknown as (typeof TESS_WORK)[]) {
+          const l = arena.layout(s);
+          let words = 0;
+          for (const k of arena.names) {
+            expect(l.offset[k]).toBe(words);
+            words += l.length[k];
+          }
+          expect(l.words).toBe(words);
+          const view = new DataView(new ArrayBuffer(TESS_PARAMS.size));
+          const offsets = arena.offsets(l);
+          TESS_PARAMS.write(view, offsets);
+          for (const [field, value] of Object.entries(offsets)) {
+            expect(at[field]?.type, field).toBe('u32');
+            expect(view.getUint32(at[field].offset, true)).toBe(value);
+          }
+        }
+      }),
+      { numRuns: 50 },
+    );
+  });
+
+  it("every Params field a shader reads exists (the tessellator's files and the Catmull-Clark ones)", () => {
+    const fields = new Set(Object.keys(TESS_PARAMS.offset));
+    for (const f of [...TESS_WGSL_FILES, 'surface-phong', 'surface-cc', 'cc-build']) {
+      const code = readFileSync(new URL(`../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      for (const m of code.matchAll(/\bparams\.(\w+)/g)) expect(fields.has(m[1]), `${f}: params.${m[1]}`).toBe(true);
+    }
+  });
+
+  it('the prelude declares each binding of the group once, as the layout entries say; sample evaluation gets the inputs only', () => {
+    const kinds = (entries: GPUBindGroupLayoutEntry[]) => entries.map((e) => ({ group: 0, binding: e.binding, kind: layoutKind(e) }));
+    expect(declaredBindings(tessPrelude())).toEqual(kinds(TESS_GROUP.layoutEntries()));
+    expect(declaredBindings(tessPrelude(TESS_INPUTS))).toEqual(kinds(TESS_GROUP.layoutEntries([...TESS_INPUTS])));
+    expect(declaredBindings(scanPrelude)).toEqual(kinds(SCAN_GROUP.layoutEntries()));
+    // The names in the WGSL are the group's keys.
+    const names = [...tessPrelude().matchAll(/var<[^>]*>\s+(\w+)\s*:/g)].map((m) => m[1]);
+    expect(names).toEqual(TESS_BINDINGS);
+  });
+
+  it("the prelude's constants hold the TypeScript values, each declared once (shared, then the tessellator's)", () => {
+    const parsed = [...tessPrelude().matchAll(/const (\w+): u32 = (\d+)u;/g)].map((m) => [m[1], Number(m[2])] as const);
+    expect(new Set(parsed.map(([n]) => n)).size).toBe(parsed.length);
+    expect(Object.fromEntries(parsed)).toEqual({ ...SHARED_CONSTANTS, ...TESS_CONSTANTS });
+  });
+
+  it('the table header getters read the words that the tables writer and reader use', () => {
+    const prelude = tessPrelude();
+    const getters = [...prelude.matchAll(/fn tableHeader_(\w+)\(\) -> u32 \{ return staticBuf\[params\.offTables \+ (\d+)u\]; \}/g)];
+    expect(getters.map((m) => [m[1], Number(m[2])])).toEqual(TABLE_HEADER_FIELDS.map((f) => [f, TABLE_HEADER[f]]));
+    const words = bakeTables(8);
+    const t = new PatternTables(words);
+    expect([t.maxFactor, t.slotCount, t.stateCount]).toEqual([
+      words[TABLE_HEADER.maxFactor],
+      words[TABLE_HEADER.slotCount],
+      words[TABLE_HEADER.stateCount],
+    ]);
+    expect(words[TABLE_HEADER.totalWords]).toBe(words.length);
+  });
+
+  // The hand table the derived bindings replaced (tessellator.ts PASS_BINDINGS, with 'auto'
+  // layouts, which bind exactly what an entry point uses): derivation must give the same.
+  const HAND_TABLE: Record<string, number[]> = {
+    factors: [0, 1, 2, 3],
+    count: [0, 1, 3],
+    budget: [0, 3, 9, 10, 11],
+    corners: [0, 1, 2, 3, 4, 5, 6, 7],
+    edges: [0, 1, 2, 3, 4, 5, 6, 7],
+    plan: [0, 1, 3],
+    emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
+    emitTriangles: [0, 1, 3, 8],
+    ccPoints: [0, 1, 2, 3],
+    ccSlices: [0, 1, 2],
+    ccLimits: [0, 1, 2],
+    ccVertexLimits: [0, 1, 2],
+  };
+  for (const surface of ['phong', 'catmull-clark'] as const) {
+    it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
+      const passes = tessellatorPasses(surface);
+      expect(passes.length).toBe(surface === 'phong' ? 8 : 12);
+      for (const pass of passes) {
+        const { names, entries } = passBindings(pass);
+        expect(
+          entries.map((e) => e.binding),
+          pass.name,
+        ).toEqual(HAND_TABLE[pass.name]);
+        const group = pass.group === 'ccBuild' ? CC_BUILD_GROUP : TESS_GROUP;
+        expect(entries, pass.name).toEqual(group.layoutEntries(names as never[]));
+      }
+    });
+  }
+
+  it('the three scan steps each use the whole scan group (they share one bind group)', () => {
+    for (const entry of Object.values(SCAN_ENTRIES)) expect(usedBindings(scanCode, entry, ['scan', 'work'])).toEqual(['scan', 'work']);
   });
 });

@@ -13,6 +13,7 @@ import { type Cage, loadCage, makeCage } from '../src/mesh/index.ts';
 import { type HeightMap, heightMapFromFunction, makeHeightMap, sampleHeight } from '../src/mesh/heightmap.ts';
 import { DisplacedSurface, type SurfaceParam, Surface, faceEdgeParam, weldOwnerFaces } from '../src/subdiv/index.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
+import { OWNER_WORD } from '../src/gpu/contract.ts';
 import { readFileSync } from 'node:fs';
 
 type V3 = [number, number, number];
@@ -289,7 +290,7 @@ describe('UV seams: one owner per weld vertex', () => {
       }
       const prepEdge = new Map<string, number>();
       for (let e = 0; e < mesh.edgeCount; e++)
-        prepEdge.set(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`, mesh.triFace[mesh.edgeOwner[e] >>> 2]);
+        prepEdge.set(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`, mesh.triFace[OWNER_WORD.get(mesh.edgeOwner[e], 'tri')]);
       for (let e = 0; e < T.nEdges; e++) {
         const a = T.edgeVerts[2 * e],
           b = T.edgeVerts[2 * e + 1];

@@ -9,7 +9,7 @@ import { hableLine } from '../src/pattern/hable-line.ts';
 import { NO_OWNER } from '../src/gpu/prepare.ts';
 import type { PreparedMesh } from '../src/gpu/prepare.ts';
 import type { MeshReadback } from '../src/gpu/readback.ts';
-import { BARY_CORNER1, BARY_CORNER2 } from '../src/gpu/types.ts';
+import { decodeBary } from '../src/gpu/contract.ts';
 
 export interface TessReport {
   problems: string[];
@@ -30,16 +30,8 @@ export function angleBetween(a: number[], b: number[]): number {
 /** Weights of an output vertex per cage vertex, from its (srcTri, bary). */
 function weightsByCageVertex(mesh: PreparedMesh, out: MeshReadback, v: number): Map<number, number> {
   const s = out.srcTri[v];
-  const packed = out.bary[v];
   const tv = [mesh.triVerts[3 * s], mesh.triVerts[3 * s + 1], mesh.triVerts[3 * s + 2]];
-  let w: number[];
-  if (packed === BARY_CORNER1) w = [0, ONE, 0];
-  else if (packed === BARY_CORNER2) w = [0, 0, ONE];
-  else {
-    const w1 = packed & 0xffff,
-      w2 = packed >>> 16;
-    w = [ONE - w1 - w2, w1, w2];
-  }
+  const w = decodeBary(out.bary[v]);
   const m = new Map<number, number>();
   w.forEach((x, i) => {
     if (x !== 0) m.set(tv[i], x);

@@ -1,6 +1,6 @@
 // Exclusive prefix sum of n u32 values inside the `work` buffer, reduce-then-scan in three
 // direct dispatches (WebGPU gives no forward-progress guarantee, so no single-pass lookback):
-//   scanBlocks   each workgroup scans BLOCK = 256 × 16 values (16 consecutive ones per thread,
+//   scanBlocks   each workgroup scans BLOCK = SCAN_WORKGROUP_SIZE × SCAN_ITEMS (256 × 16) values (16 consecutive ones per thread,
 //                summed serially, so a big scan needs few workgroups and few barriers) and
 //                writes its block total
 //   scanSums     one workgroup scans the block totals and writes the grand total at out[n]
@@ -8,15 +8,12 @@
 // Up to 65535 blocks of 4096 values. A scan whose `skipOff` word is non-zero does nothing: the
 // budget loop's later attempts skip their scans once an attempt has been accepted.
 
-struct ScanParams { inOff: u32, outOff: u32, n: u32, sumsOff: u32, skipOff: u32 }
+// `scan: ScanParams`, `work` and the constants come from src/gpu/contract.ts (scanPrelude).
 
-@group(0) @binding(0) var<uniform> scan: ScanParams;
-@group(0) @binding(1) var<storage, read_write> work: array<u32>;
-
-const THREADS: u32 = 256u;
-const ITEMS: u32 = 16u;
+const THREADS: u32 = SCAN_WORKGROUP_SIZE;
+const ITEMS: u32 = SCAN_ITEMS;
 const BLOCK: u32 = THREADS * ITEMS;
-var<workgroup> partial: array<u32, 256>;
+var<workgroup> partial: array<u32, THREADS>;
 var<workgroup> skip: u32;
 
 fn skipped(lid: u32) -> bool {
@@ -35,7 +32,7 @@ fn scanPartial(lid: u32) {
   workgroupBarrier();
 }
 
-@compute @workgroup_size(256)
+@compute @workgroup_size(THREADS)
 fn scanBlocks(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   if (skipped(lid)) { return; }
   let first = wid.x * BLOCK + lid * ITEMS;
@@ -56,7 +53,7 @@ fn scanBlocks(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_i
   if (lid == THREADS - 1u) { work[scan.sumsOff + wid.x] = partial[lid]; }
 }
 
-@compute @workgroup_size(256)
+@compute @workgroup_size(THREADS)
 fn scanSums(@builtin(local_invocation_index) lid: u32) {
   if (skipped(lid)) { return; }
   let blocks = (scan.n + BLOCK - 1u) / BLOCK;
@@ -79,7 +76,7 @@ fn scanSums(@builtin(local_invocation_index) lid: u32) {
   if (lid == THREADS - 1u) { work[scan.outOff + scan.n] = partial[lid]; }
 }
 
-@compute @workgroup_size(256)
+@compute @workgroup_size(THREADS)
 fn addSums(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   if (skipped(lid)) { return; }
   let first = wid.x * BLOCK + lid * ITEMS;

@@ -3,13 +3,9 @@
 // attempt (src/gpu/factors.ts budgetScale), and after that, factor 1 everywhere. Nothing
 // overflows and nothing is lost at any camera: the emit passes only run once accepted.
 
-@group(0) @binding(9) var<storage, read_write> drawArgs: array<u32, 5>;
-@group(0) @binding(10) var<storage, read_write> counts: array<u32, 4>;
 // Indirect dispatch arguments of the two emit passes (vertices, triangles), folded into 2D.
-@group(0) @binding(11) var<storage, read_write> emitArgs: array<u32, 6>;
-
 fn dispatchArgs(threads: u32) -> vec3<u32> {
-  let groups = (threads + 63u) / 64u;
+  let groups = (threads + WORKGROUP_SIZE - 1u) / WORKGROUP_SIZE;
   if (groups == 0u) { return vec3<u32>(0u, 1u, 1u); }
   return vec3<u32>(min(groups, GRID_X), (groups + GRID_X - 1u) / GRID_X, 1u);
 }
@@ -22,18 +18,18 @@ fn main() {
   let vertices = params.nVerts + work[params.offEdgeBase + params.nEdges] + work[params.offTriVertBase + params.nTris];
   let triangles = work[params.offTriTriBase + params.nTris];
   let fits = vertices <= params.vertexCapacity && triangles <= params.triangleCapacity;
-  if (fits || attempt >= 2u) {
+  if (fits || attempt >= ATTEMPTS - 1u) {
     work[b + BUDGET_ACCEPTED] = 1u;
     work[b + BUDGET_FITS] = select(0u, 1u, fits);
     let shown = select(0u, triangles, fits);
-    drawArgs = array<u32, 5>(3u * shown, 1u, 0u, 0u, 0u);
+    drawArgs = array(3u * shown, 1u, 0u, 0u, 0u);
     var scale = 1.0;
     if (attempt == 1u) { scale = bitcast<f32>(work[b + BUDGET_SCALE]); }
-    if (attempt >= 2u) { scale = 0.0; }
-    counts = array<u32, 4>(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
+    if (attempt >= ATTEMPTS - 1u) { scale = 0.0; }
+    counts = array(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
     let v = dispatchArgs(select(0u, work[params.offTriVertBase + params.nTris], fits));
     let t = dispatchArgs(shown);
-    emitArgs = array<u32, 6>(v.x, v.y, v.z, t.x, t.y, t.z);
+    emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z);
     return;
   }
   let ratio = min(f32(params.vertexCapacity) / f32(vertices), f32(params.triangleCapacity) / f32(triangles));

@@ -1,47 +1,38 @@
-// Shared by every tessellation pass. `struct Params` is generated from src/gpu/tessellator.ts
-// (one definition for both sides) and prepended to this file.
+// Shared by every tessellation pass. What comes before it is generated from src/gpu/contract.ts
+// (tessPrelude, one definition for both sides): `struct Params`, the constants (WORKGROUP_SIZE,
+// GRID_X, ONE, NO_OWNER, BUDGET_*, …), the bindings, and the getters of the packed words
+// (patternFrameWord_*, baryWord_*, ownerWord_*) and of the table header (tableHeader_*).
 //
-// Buffers (few, so no pass needs more than 8 storage bindings):
-//   staticBuf  the baked pattern tables (src/pattern/tables.ts layout) followed by the mesh's
-//              topology (src/gpu/prepare.ts): triVerts, triEdges, triFrame, edgeVerts,
-//              edgeOwner, vertexOwner at the offsets in Params
-//   cageBuf    cage positions then vertex normals, 3 f32 each (may change every frame); with
-//              the Catmull-Clark surface then its control points and the cage vertices' limits
-//   work       per-edge and per-triangle counts, their prefix sums, and the budget state
+// Buffers (few, so no pass needs more than 8 storage bindings), each an arena of the contract:
+//   staticBuf  TESS_STATIC: the baked pattern tables (src/pattern/tables.ts layout), the mesh's
+//              topology (src/gpu/prepare.ts): triVerts, triEdges, triPatternFrame, edgeVerts,
+//              edgeOwner, vertexOwner; the Catmull-Clark tables
+//   cageBuf    TESS_CAGE: cage positions then vertex normals, 3 f32 each (rewritten when the
+//              cage moves); with the Catmull-Clark surface then its control points and limits
+//   work       TESS_WORK: per-edge and per-triangle counts, their prefix sums, the planned rows,
+//              and the budget state (BUDGET_* words at params.offBudget)
+// Each array's offset is the Params field `off` + its name.
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> staticBuf: array<u32>;
-@group(0) @binding(2) var<storage, read> cageBuf: array<f32>;
-@group(0) @binding(3) var<storage, read_write> work: array<u32>;
-
-const ONE: u32 = 65536u;
 const PHONG_ALPHA: f32 = 0.75;
-const NO_OWNER: u32 = 0xffffffffu;
-const GRID_X: u32 = 65535u; // dispatches wider than this are folded into y
-
-// Budget state words (at params.offBudget).
-const BUDGET_ACCEPTED: u32 = 0u;
-const BUDGET_ATTEMPT: u32 = 1u;
-const BUDGET_SCALE: u32 = 2u;
-const BUDGET_FITS: u32 = 3u;
 
 // The plan and emit passes run once the budget accepted counts that fit.
 fn emitEnabled() -> bool {
   return work[params.offBudget + BUDGET_ACCEPTED] == 1u && work[params.offBudget + BUDGET_FITS] == 1u;
 }
 
-fn flatIndex(wid: vec3<u32>, lid: u32, size: u32) -> u32 {
-  return (wid.y * GRID_X + wid.x) * size + lid;
+// The thread of a WORKGROUP_SIZE-wide dispatch folded into 2D (src/gpu/tessellator.ts grid2d).
+fn flatIndex(wid: vec3<u32>, lid: u32) -> u32 {
+  return (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
 }
 
-// ---- pattern tables (header word indices as documented in src/pattern/tables.ts) ----------
-fn tblSlotsOff() -> u32 { return staticBuf[5]; }
-fn tblStateStartOff() -> u32 { return staticBuf[6]; }
-fn tblStateIndexOff() -> u32 { return staticBuf[7]; }
-fn tblStateListOff() -> u32 { return staticBuf[8]; }
-fn tblMergeOff() -> u32 { return staticBuf[9]; }
-fn tblMergeWords() -> u32 { return staticBuf[10]; }
-fn tblStateCount() -> u32 { return staticBuf[4]; }
+// ---- pattern tables (src/pattern/tables.ts; the header's offsets count from the tables' start)
+fn tblSlotsOff() -> u32 { return params.offTables + tableHeader_slotsOffset(); }
+fn tblStateStartOff() -> u32 { return params.offTables + tableHeader_stateStartOffset(); }
+fn tblStateIndexOff() -> u32 { return params.offTables + tableHeader_stateIndexOffset(); }
+fn tblStateListOff() -> u32 { return params.offTables + tableHeader_stateListOffset(); }
+fn tblMergeOff() -> u32 { return params.offTables + tableHeader_mergeOffset(); }
+fn tblMergeWords() -> u32 { return tableHeader_mergeWords(); }
+fn tblStateCount() -> u32 { return tableHeader_stateCount(); }
 
 // The line state that holds at 16.16 factor F: the last state whose start is ≤ F.
 fn lineState(F: u32) -> u32 {
@@ -83,7 +74,7 @@ fn framedPoint(s: u32, F: u32, n: u32, flip: bool, i: u32) -> u32 {
 // ---- mesh topology ---------------------------------------------------------------------
 fn triVert(t: u32, i: u32) -> u32 { return staticBuf[params.offTriVerts + 3u * t + i]; }
 fn triEdge(t: u32, i: u32) -> u32 { return staticBuf[params.offTriEdges + 3u * t + i]; }
-fn triFrame(t: u32) -> u32 { return staticBuf[params.offTriFrame + t]; }
+fn triPatternFrame(t: u32) -> u32 { return staticBuf[params.offTriPatternFrame + t]; }
 fn edgeVert(e: u32, i: u32) -> u32 { return staticBuf[params.offEdgeVerts + 2u * e + i]; }
 
 // Per-edge results of the factor pass.
@@ -91,19 +82,21 @@ fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + e]; }
 fn edgeState(e: u32) -> u32 { return work[params.offEdgeState + e]; }
 fn edgeSegments(e: u32) -> u32 { return work[params.offEdgeSegs + e]; }
 
-struct Frame {
+// A triangle's pattern frame (src/pattern/clamped.ts PatternFrame): which corners play A, B, C,
+// which edges play bottom, left, right and whether each runs against its edge; mirrored or not.
+struct PatternFrame {
   a: u32, b: u32, c: u32,
   bottom: u32, left: u32, right: u32,
   flipBottom: bool, flipLeft: bool, flipRight: bool,
   mirrored: bool,
 }
 
-// Unpack src/gpu/prepare.ts packFrame.
-fn unpackFrame(bits: u32) -> Frame {
-  return Frame(bits & 3u, (bits >> 2u) & 3u, (bits >> 4u) & 3u,
-               (bits >> 6u) & 3u, (bits >> 8u) & 3u, (bits >> 10u) & 3u,
-               ((bits >> 12u) & 1u) == 1u, ((bits >> 13u) & 1u) == 1u, ((bits >> 14u) & 1u) == 1u,
-               ((bits >> 15u) & 1u) == 1u);
+// A PatternFrameWord (src/gpu/prepare.ts packPatternFrame), through the contract's getters.
+fn unpackPatternFrame(w: u32) -> PatternFrame {
+  return PatternFrame(patternFrameWord_a(w), patternFrameWord_b(w), patternFrameWord_c(w),
+                      patternFrameWord_bottomEdge(w), patternFrameWord_leftEdge(w), patternFrameWord_rightEdge(w),
+                      patternFrameWord_flipBottom(w) == 1u, patternFrameWord_flipLeft(w) == 1u,
+                      patternFrameWord_flipRight(w) == 1u, patternFrameWord_mirrored(w) == 1u);
 }
 
 // ---- the surface -------------------------------------------------------------------------
@@ -120,16 +113,16 @@ fn factorNormal(v: u32) -> vec3<f32> { return cageVec3(params.offFactorNormal + 
 
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32> }
 
-// (w1, w2) in 16 bits each; a corner of the source triangle is stored as a sentinel whose
-// sum exceeds 2^16 (src/gpu/types.ts).
+// A BaryWord (src/gpu/contract.ts): (w1, w2) in 16 bits each; a corner of the source triangle
+// is stored as a sentinel whose fields would sum past 2^16.
 fn packBary(w: vec3<u32>) -> u32 {
-  if (w.y == ONE) { return 0xffffffffu; }
-  if (w.z == ONE) { return 0xfffffffeu; }
-  return w.y | (w.z << 16u);
+  if (w.y == ONE) { return BARY_CORNER1; }
+  if (w.z == ONE) { return BARY_CORNER2; }
+  return baryWord_pack(w.y, w.z);
 }
 
-// Barycentric weights (corner order of the triangle) from frame weights (w_A, w_B, w_C).
-fn frameToCorners(f: Frame, wa: u32, wb: u32, wc: u32) -> vec3<u32> {
+// Barycentric weights (corner order of the triangle) from pattern-frame weights (w_A, w_B, w_C).
+fn patternToCorners(f: PatternFrame, wa: u32, wb: u32, wc: u32) -> vec3<u32> {
   var w = vec3<u32>(0u);
   w[f.a] = wa;
   w[f.b] = wb;

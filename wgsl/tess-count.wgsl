@@ -5,9 +5,9 @@
 //   row nl is the corner C; interior vertices = Σ_{0<j<nl} k_j;
 //   triangles = Σ_{j<nl} (k_j + k_{j+1}) + (nl + nr − 1).
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let t = flatIndex(wid, lid, 64u);
+  let t = flatIndex(wid, lid);
   if (t >= params.nTris || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
   let L = triLines(t);
   var interior = 0u;

@@ -4,8 +4,6 @@
 // few pattern values it needs from the tables. Corners of the output triangles that lie on cage
 // corners and edges refer to the welded vertices (tess-weld.wgsl).
 
-@group(0) @binding(8) var<storage, read_write> outIndices: array<u32>;
-
 fn rowKept(first: u32, j: u32) -> u32 { return work[params.offRows + 2u * (first + j)]; }
 fn rowCum(first: u32, j: u32) -> u32 { return work[params.offRows + 2u * (first + j) + 1u]; }
 
@@ -22,9 +20,9 @@ fn findTriangle(sums: u32, x: u32) -> u32 {
 
 fn edgeTotal() -> u32 { return work[params.offEdgeBase + params.nEdges]; }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let q = flatIndex(wid, lid, 64u);
+  let q = flatIndex(wid, lid);
   if (q >= work[params.offTriVertBase + params.nTris] || !emitEnabled()) { return; }
   let t = findTriangle(params.offTriVertBase, q);
   let local = q - work[params.offTriVertBase + t];
@@ -42,7 +40,7 @@ fn vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
   let col = local - (rowCum(first, j) - k0) + 1u; // columns 1..k_j; column k_j is the row end E_j
   let u = select(rowEnd(L, j), framed(L.bottom, col), col < rowKept(first, j));
   let v = framed(L.left, j);
-  writeVertex(params.nVerts + edgeTotal() + q, t, frameToCorners(L.f, ONE - u - v, u, v));
+  writeVertex(params.nVerts + edgeTotal() + q, t, patternToCorners(L.f, ONE - u - v, u, v));
 }
 
 struct Tri { t: u32, L: TriLines, first: u32, k0: u32, vertexBase: u32 }
@@ -77,9 +75,9 @@ fn writeTriangle(index: u32, mirrored: bool, a: u32, b: u32, c: u32) {
   outIndices[3u * index + 2u] = select(c, b, mirrored);
 }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let r = flatIndex(wid, lid, 64u);
+  let r = flatIndex(wid, lid);
   if (r >= work[params.offTriTriBase + params.nTris] || !emitEnabled()) { return; }
   let t = findTriangle(params.offTriTriBase, r);
   let local = r - work[params.offTriTriBase + t];

@@ -32,9 +32,9 @@ fn adaptiveFactor(e: u32) -> f32 {
   return sqrt(params.lodScale * err / (dist * params.pixelAngle));
 }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let e = flatIndex(wid, lid, 64u);
+  let e = flatIndex(wid, lid);
   if (e >= params.nEdges || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
   let attempt = work[params.offBudget + BUDGET_ATTEMPT];
   var f = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);

@@ -1,8 +1,4 @@
-// The output mesh (src/gpu/types.ts), for the emit passes.
-@group(0) @binding(4) var<storage, read_write> outPositions: array<f32>;
-@group(0) @binding(5) var<storage, read_write> outNormals: array<f32>;
-@group(0) @binding(6) var<storage, read_write> outBary: array<u32>;
-@group(0) @binding(7) var<storage, read_write> outSrcTri: array<u32>;
+// Writing one vertex of the output mesh (src/gpu/types.ts), for the weld and emit passes.
 
 fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
   if (index >= params.vertexCapacity) { return; }

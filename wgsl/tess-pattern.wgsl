@@ -1,7 +1,7 @@
 // The clamped-parallelogram pattern of one cage triangle, read from the baked tables and the
 // per-edge results of the factor pass (src/pattern/clamped.ts is the CPU original):
-//   the frame (prepare.ts packFrame) names the bottom, left and right edges; a framed line is
-//   an edge's line read in the frame's direction; c is the clamp line u + v = c;
+//   the pattern frame (prepare.ts packPatternFrame) names the bottom, left and right edges; a framed line is
+//   an edge's line read in the pattern frame's direction; c is the clamp line u + v = c;
 //   rows j = 0..nl: row 0 keeps nb − 1 columns, row j ≥ 1 keeps k_j = #{u_i < c − v_j}, row nl
 //   is the corner C. Shared by the count, plan and emit passes.
 
@@ -32,10 +32,10 @@ fn keptColumns(bottom: EdgeLine, e: u32) -> u32 {
   return lo;
 }
 
-struct TriLines { f: Frame, bottom: EdgeLine, left: EdgeLine, right: EdgeLine, c: u32 }
+struct TriLines { f: PatternFrame, bottom: EdgeLine, left: EdgeLine, right: EdgeLine, c: u32 }
 
 fn triLines(t: u32) -> TriLines {
-  let f = unpackFrame(triFrame(t));
+  let f = unpackPatternFrame(triPatternFrame(t));
   let bottom = edgeLine(t, f.bottom, f.flipBottom);
   let left = edgeLine(t, f.left, f.flipLeft);
   let right = edgeLine(t, f.right, f.flipRight);

@@ -7,9 +7,9 @@
 // With the rows planned, every output vertex and triangle is written by its own thread (emit):
 // no workgroup memory and no barriers, so the work is spread evenly whatever the factors.
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let t = flatIndex(wid, lid, 64u);
+  let t = flatIndex(wid, lid);
   if (t >= params.nTris || !emitEnabled()) { return; }
   let L = triLines(t);
   let first = work[params.offTriRowBase + t];

@@ -7,25 +7,25 @@
 //            (lower to higher vertex), one thread per edge; they are evaluated through one
 //            triangle of the edge, whose barycentrics are stored.
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn corners(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let v = flatIndex(wid, lid, 64u);
+  let v = flatIndex(wid, lid);
   if (v >= params.nVerts || !emitEnabled()) { return; }
   let owner = staticBuf[params.offVertexOwner + v];
   if (owner == NO_OWNER) { return; } // not used by any face
-  let t = owner >> 2u;
+  let t = ownerWord_tri(owner);
   var w = vec3<u32>(0u);
-  w[owner & 3u] = ONE;
+  w[ownerWord_corner(owner)] = ONE;
   writeVertex(v, t, w);
 }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let e = flatIndex(wid, lid, 64u);
+  let e = flatIndex(wid, lid);
   if (e >= params.nEdges || !emitEnabled()) { return; }
   let owner = staticBuf[params.offEdgeOwner + e];
-  let t = owner >> 2u;
-  let i = owner & 3u; // the owner's edge i runs from its corner i to corner i+1
+  let t = ownerWord_tri(owner);
+  let i = ownerWord_corner(owner); // the owner's edge i runs from its corner i to corner i+1
   let forward = triVert(t, i) == edgeVert(e, 0u);
   let s = edgeState(e);
   let F = edgeF(e);

@@ -11,7 +11,7 @@
  * clamp with the gap and the open strip, the gap matching, and the full pattern. Counts are of
  * what is drawn; at `full` (and `match`) they are the pattern's own, as the CLI prints them.
  */
-import { chooseFrame, clampedConstruction, type Frame } from '../pattern/clamped.ts';
+import { chooseFrame, clampedConstruction, type PatternFrame } from '../pattern/clamped.ts';
 import { d3d11Triangle } from '../pattern/d3d11.ts';
 import { ONE } from '../pattern/fixed.ts';
 import { line } from '../pattern/line.ts';
@@ -240,7 +240,7 @@ function outline(b: SceneBuilder, m: Mapper): void {
 }
 
 /** Edge factor labels outside each edge: bottom, left, right of the frame. */
-function edgeLabels(b: SceneBuilder, m: Mapper, frame: Frame, fc: TriFactors, shape: Shape): void {
+function edgeLabels(b: SceneBuilder, m: Mapper, frame: PatternFrame, fc: TriFactors, shape: Shape): void {
   const cx = (m.A[0] + m.B[0] + m.C[0]) / 3;
   const cy = (m.A[1] + m.B[1] + m.C[1]) / 3;
   const put = (P: V2, Q: V2, edge: number, extra = 0) => {

@@ -15,15 +15,18 @@
  *   arenas        arrays carved out of one storage buffer (defineArena): offsets, the uniform
  *                 fields that carry them, and WGSL accessors
  *
- * The compute tessellator's work layout, its Params and its passes' bindings still live in
- * tessellator.ts; they are meant to move here with these tools: defineArena for WorkLayout and
- * the `off*` fields of Params, defineBindGroup + usedBindings for its bindings and PASS_BINDINGS,
- * defineBits for the Catmull-Clark node word and the table header, SHARED_CONSTANTS for the
- * workgroup sizes and GRID_X typed in its dispatches and shaders.
+ * The compute tessellator's side: its three buffers as arenas (TESS_STATIC, TESS_CAGE, TESS_WORK),
+ * whose offsets are fields of its uniforms (TESS_PARAMS); its one bind group (TESS_GROUP), of
+ * which each pass binds what its entry point uses; the scan's uniforms (SCAN_PARAMS); the owner
+ * word, the table header, its constants; and tessPrelude, what its shaders start with.
+ * (The Catmull-Clark words of src/gpu/cc/build.ts are still decoded by hand there and in
+ * wgsl/cc-build.wgsl and wgsl/surface-cc.wgsl: that code is being rewritten.)
  *
  * tests/contract.test.ts parses the generated WGSL back and checks it against the TypeScript
  * views; tests/contract.gpu.test.ts runs it through a real WGSL compiler.
  */
+import { ONE } from '../pattern/fixed.ts';
+import { TABLE_HEADER_FIELDS } from '../pattern/tables.ts';
 import { defineStruct } from './layout.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -33,6 +36,9 @@ import { defineStruct } from './layout.ts';
 export const WORKGROUP_SIZE = 64;
 /** Threads per workgroup of the prefix-sum passes (wgsl/scan.wgsl). */
 export const SCAN_WORKGROUP_SIZE = 256;
+/** Values each scan thread sums serially (wgsl/scan.wgsl): one scan workgroup covers
+ * SCAN_WORKGROUP_SIZE × SCAN_ITEMS values. */
+export const SCAN_ITEMS = 16;
 /** Widest dispatch in x (WebGPU's default maxComputeWorkgroupsPerDimension); wider ones fold into y. */
 export const GRID_X = 65535;
 
@@ -40,7 +46,7 @@ export const GRID_X = 65535;
 export const STAGE = { VERTEX: 1, FRAGMENT: 2, COMPUTE: 4 } as const;
 
 /** The numbers every shader may read, by their WGSL names (all u32). */
-export const SHARED_CONSTANTS = { WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE, GRID_X } as const;
+export const SHARED_CONSTANTS = { WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE, SCAN_ITEMS, GRID_X } as const;
 
 /** `const NAME: u32 = value;` for each entry (u32 only: the shared numbers are counts and sizes). */
 export function wgslConstants(constants: Readonly<Record<string, number>>): string {
@@ -65,7 +71,8 @@ export type BitRange = readonly [at: number, bits: number];
 export interface BitWord<K extends string> {
   readonly name: string;
   readonly fields: Readonly<Record<K, BitRange>>;
-  /** WGSL: `fn name_field(w: u32) -> u32` for each field and `fn name_pack(field, …) -> u32`. */
+  /** WGSL: `fn name_field(w: u32) -> u32` for each field and `fn name_pack(field, …) -> u32`
+   * (the low bits of each value; shifts and masks). */
   readonly wgsl: string;
   /** The word with these field values (every field named; booleans as 0/1). Throws on a value
    * that does not fit its field: the WGSL packer would silently truncate it. */
@@ -98,11 +105,13 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
     used |= mask;
   }
   const prefix = wgslPrefix(name);
-  const getters = entries.map(([f, [at, bits]]) => `fn ${prefix}_${f}(w: u32) -> u32 { return extractBits(w, ${at}u, ${bits}u); }`);
+  // Shifts and masks rather than extractBits/insertBits: the same bits, but Tint polyfills those
+  // two builtins (clamping their offset and count) and a software GPU's compiler keeps the calls.
+  const getters = entries.map(([f, [at, bits]]) => `fn ${prefix}_${f}(w: u32) -> u32 { return ${wgslField('w', at, bits)}; }`);
   const packer = [
     `fn ${prefix}_pack(${entries.map(([f]) => `${f}: u32`).join(', ')}) -> u32 {`,
     '  var w = 0u;',
-    ...entries.map(([f, [at, bits]]) => `  w = insertBits(w, ${f}, ${at}u, ${bits}u);`),
+    ...entries.map(([f, [at, bits]]) => `  w = w | (${bits === 32 ? f : `(${f} & ${hex(2 ** bits - 1)})`} << ${at}u);`),
     '  return w;',
     '}',
   ];
@@ -133,6 +142,17 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
   };
 }
 
+/** WGSL for bits [at, at + bits) of the u32 `w`. */
+function wgslField(w: string, at: number, bits: number): string {
+  if (bits === 32) return w;
+  const shifted = at ? `(${w} >> ${at}u)` : w;
+  return at + bits === 32 ? shifted : `${shifted} & ${hex(2 ** bits - 1)}`;
+}
+
+function hex(x: number): string {
+  return `0x${x.toString(16)}u`;
+}
+
 function maskOf(at: number, bits: number): number {
   return bits === 32 ? -1 : ((2 ** bits - 1) * 2 ** at) | 0;
 }
@@ -143,7 +163,7 @@ function extract(word: number, at: number, bits: number): number {
 
 /**
  * The pattern frame of a triangle (src/pattern/clamped.ts chooseFrame; packed per triangle by
- * prepare.ts packFrame and read by wgsl/tess-pattern.wgsl): the corners playing A, B, C, the
+ * prepare.ts packPatternFrame and read by wgsl/tess-pattern.wgsl): the corners playing A, B, C, the
  * edges playing bottom, left, right, whether each of those runs against its edge's line, and
  * whether the frame is mirrored.
  */
@@ -334,6 +354,271 @@ export function defineArena<K extends string, S>(arrays: readonly (readonly [K, 
     },
   };
 }
+
+// ---------------------------------------------------------------------------------------------
+// The compute tessellator (tessellator.ts, wgsl/tess-*.wgsl, wgsl/scan.wgsl)
+
+/** Budget attempts per rebuild: scale 1, a scale that fits, then factor 1 everywhere. */
+export const ATTEMPTS = 3;
+export const SCAN_BLOCK = SCAN_WORKGROUP_SIZE * SCAN_ITEMS;
+/** Prefix sums per budget attempt: edge interior points, triangle interior vertices, triangles, rows. */
+export const SCANS = 4;
+/** 1.0 in the 16.16 fixed point of factors and barycentric weights (src/pattern/fixed.ts). */
+export { ONE };
+/** A cage vertex that no triangle uses (its OwnerWord). */
+export const NO_OWNER = 0xffffffff;
+/** The budget state words (work's `budget` array), by index. */
+export const BUDGET = { ACCEPTED: 0, ATTEMPT: 1, SCALE: 2, FITS: 3 } as const;
+
+/** The tessellator shaders' numbers beyond the shared ones (all u32), by their WGSL names. */
+export const TESS_CONSTANTS = {
+  ATTEMPTS,
+  ONE,
+  NO_OWNER,
+  BARY_CORNER1,
+  BARY_CORNER2,
+  ...Object.fromEntries(Object.entries(BUDGET).map(([k, v]) => [`BUDGET_${k}`, v])),
+  BUDGET_WORDS: Object.keys(BUDGET).length,
+} as Readonly<Record<string, number>>;
+
+/**
+ * Which triangle of the mesh owns a welded vertex (prepare.ts vertexOwner, edgeOwner; read by
+ * wgsl/tess-weld.wgsl): the triangle, and its corner (a vertex) or its local edge i, which runs
+ * from corner i to corner i + 1 (an edge). NO_OWNER marks a vertex no triangle uses.
+ */
+export const OWNER_WORD = defineBits('OwnerWord', { corner: [0, 2], tri: [2, 30] });
+
+/** WGSL getters of the pattern tables' header words (src/pattern/tables.ts TABLE_HEADER_FIELDS,
+ * which its writer and reader index by): `fn tableHeader_stateCount() -> u32` and so on, reading
+ * `buffer[params.offTables + i]`. */
+export function tableHeaderWgsl(buffer: string, params: string): string {
+  return TABLE_HEADER_FIELDS.map((f, i) => `fn tableHeader_${f}() -> u32 { return ${buffer}[${params}.offTables + ${i}u]; }`)
+    .join('\n')
+    .concat('\n');
+}
+
+/** What the tessellator's arenas are sized from. */
+export interface TessSizes {
+  vertices: number;
+  edges: number;
+  triangles: number;
+  /** The pattern tables' largest factor (a triangle has at most maxFactor + 1 rows). */
+  maxFactor: number;
+  /** Words of the pattern tables. */
+  tableWords: number;
+  /** Words of the Catmull-Clark tables (src/gpu/cc/build.ts), 0 without them. */
+  ccWords: number;
+  /** Refined Catmull-Clark points (3 floats each), 0 without them. */
+  ccPoints: number;
+  /** Cage vertices whose limit position and normal the patch build writes: all of them with the
+   * Catmull-Clark surface, else 0. */
+  limitVertices: number;
+}
+
+/**
+ * staticBuf (u32, read-only, written once per mesh): the pattern tables, the mesh topology of
+ * prepare.ts (named as its PreparedMesh arrays), then the Catmull-Clark tables (their own offsets
+ * within, cc/build.ts, reach the shaders as the cc* fields of Params).
+ */
+export const TESS_STATIC = defineArena<
+  'tables' | 'triVerts' | 'triEdges' | 'triPatternFrame' | 'edgeVerts' | 'edgeOwner' | 'vertexOwner' | 'cc',
+  TessSizes
+>([
+  ['tables', (s) => s.tableWords],
+  ['triVerts', (s) => 3 * s.triangles],
+  ['triEdges', (s) => 3 * s.triangles],
+  ['triPatternFrame', (s) => s.triangles],
+  ['edgeVerts', (s) => 2 * s.edges],
+  ['edgeOwner', (s) => s.edges],
+  ['vertexOwner', (s) => s.vertices],
+  ['cc', (s) => s.ccWords],
+]);
+
+/**
+ * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each;
+ * with the Catmull-Clark surface, its refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts))
+ * and the limit positions and normals of the cage vertices (wgsl/cc-build.wgsl writes them).
+ */
+export const TESS_CAGE = defineArena<'positions' | 'normals' | 'ctrl' | 'limitPositions' | 'limitNormals', TessSizes>([
+  ['positions', (s) => 3 * s.vertices],
+  ['normals', (s) => 3 * s.vertices],
+  ['ctrl', (s) => 3 * s.ccPoints],
+  ['limitPositions', (s) => 3 * s.limitVertices],
+  ['limitNormals', (s) => 3 * s.limitVertices],
+]);
+
+/**
+ * work (u32 scratch, rewritten every rebuild): per-edge and per-triangle counts and their
+ * exclusive prefix sums (n + 1 words: the total at n), the planned rows (two words per row,
+ * at most maxFactor + 1 rows a triangle), the scans' block sums, the budget state (BUDGET).
+ */
+export const TESS_WORK = defineArena<
+  | 'edgeF'
+  | 'edgeState'
+  | 'edgeSegs'
+  | 'edgeInterior'
+  | 'edgeBase'
+  | 'triVertCount'
+  | 'triVertBase'
+  | 'triTriCount'
+  | 'triTriBase'
+  | 'triRowCount'
+  | 'triRowBase'
+  | 'rows'
+  | 'sums'
+  | 'budget',
+  TessSizes
+>([
+  ['edgeF', (s) => s.edges],
+  ['edgeState', (s) => s.edges],
+  ['edgeSegs', (s) => s.edges],
+  ['edgeInterior', (s) => s.edges],
+  ['edgeBase', (s) => s.edges + 1],
+  ['triVertCount', (s) => s.triangles],
+  ['triVertBase', (s) => s.triangles + 1],
+  ['triTriCount', (s) => s.triangles],
+  ['triTriBase', (s) => s.triangles + 1],
+  ['triRowCount', (s) => s.triangles],
+  ['triRowBase', (s) => s.triangles + 1],
+  ['rows', (s) => 2 * (s.maxFactor + 1) * s.triangles],
+  ['sums', (s) => SCANS * scanSumsWords(Math.max(s.edges, s.triangles))],
+  ['budget', () => Object.keys(BUDGET).length],
+]);
+
+/** Block-sum words one scan of up to n values needs (its blocks, and one spare). */
+export function scanSumsWords(n: number): number {
+  return Math.ceil(Math.max(n, 1) / SCAN_BLOCK) + 1;
+}
+
+/** The prefix sums of each budget attempt, in order: what is summed into what (TESS_WORK arrays),
+ * over edges or triangles. */
+export const TESS_SCANS = [
+  { from: 'edgeInterior', to: 'edgeBase', over: 'edges' },
+  { from: 'triVertCount', to: 'triVertBase', over: 'triangles' },
+  { from: 'triTriCount', to: 'triTriBase', over: 'triangles' },
+  { from: 'triRowCount', to: 'triRowBase', over: 'triangles' },
+] as const satisfies readonly { from: string; to: string; over: 'edges' | 'triangles' }[];
+
+/**
+ * The tessellator's uniforms (`params` in every tessellator shader). The arenas' offsets are
+ * spread in from TESS_STATIC, TESS_CAGE and TESS_WORK; the Catmull-Clark fields are named by
+ * src/gpu/cc/build.ts and read by wgsl/cc-build.wgsl and wgsl/surface-cc.wgsl.
+ */
+export const TESS_PARAMS = defineStruct('Params', [
+  ['viewProj', 'mat4x4<f32>', 'World to clip space of the camera (frustum culling of edges).'],
+  ['eye', 'vec4<f32>', "xyz: the camera's position."],
+  ['nVerts', 'u32'],
+  ['nTris', 'u32'],
+  ['nEdges', 'u32'],
+  ['maxFactor', 'u32'],
+  ['vertexCapacity', 'u32'],
+  ['triangleCapacity', 'u32'],
+  ['mode', 'u32', '0: fixedFactor everywhere; 1: adaptive (screen-space error).'],
+  ['fixedFactor', 'f32'],
+  ['lodScale', 'f32'],
+  ['pixelAngle', 'f32'],
+  ...TESS_STATIC.offsetFields,
+  ...TESS_CAGE.offsetFields,
+  ...TESS_WORK.offsetFields,
+  // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
+  ['offFactorPos', 'u32'],
+  ['offFactorNormal', 'u32'],
+  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables and their sizes.
+  ['ccTri', 'u32'],
+  ['ccPoly', 'u32'],
+  ['ccRegions', 'u32'],
+  ['ccPatchIdx', 'u32'],
+  ['ccFans', 'u32'],
+  ['ccSectors', 'u32'],
+  ['ccThreads', 'u32'],
+  ['ccCos', 'u32'],
+  ['ccRules', 'u32'],
+  ['ccInputs', 'u32'],
+  ['ccVertexFan', 'u32'],
+  ['nFans', 'u32'],
+  ['ccSliceGroups', 'u32'],
+  ['ccMaxDepth', 'u32'],
+  ['ccFlat', 'u32', 'Blend from the flat triangle by tess factor (TessellatorOptions.flatBaseline).'],
+] as const);
+
+/** Words of the tessellator's fixed-size outputs: drawIndexedIndirect's arguments, the counts
+ * (src/gpu/types.ts: vertices, triangles, the accepted scale as f32 bits, the attempt), and the
+ * emit passes' two indirect dispatches (vertices', then triangles', 3 words each). */
+export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 6 } as const;
+/** Byte offset of the triangles' dispatch in emitArgs. */
+export const EMIT_TRIANGLES_ARGS_OFFSET = 4 * 3;
+
+/** One binding group for every tessellator pass; each pass's layout holds the bindings its entry
+ * point uses (usedBindings), so the numbers below are the only place they are written. */
+export const TESS_GROUP = defineBindGroup(0, {
+  params: { binding: 0, space: 'uniform', type: 'Params' },
+  staticBuf: { binding: 1, space: 'read', type: 'array<u32>', doc: 'TESS_STATIC: pattern tables, topology, Catmull-Clark tables.' },
+  cageBuf: { binding: 2, space: 'read', type: 'array<f32>', doc: 'TESS_CAGE: positions, normals (Catmull-Clark: refined points, limits).' },
+  work: { binding: 3, space: 'read_write', type: 'array<u32>', doc: 'TESS_WORK: counts, prefix sums, rows, budget state.' },
+  outPositions: { binding: 4, space: 'read_write', type: 'array<f32>', doc: 'The output mesh (src/gpu/types.ts TessellatedMesh).' },
+  outNormals: { binding: 5, space: 'read_write', type: 'array<f32>' },
+  outBary: { binding: 6, space: 'read_write', type: 'array<u32>' },
+  outSrcTri: { binding: 7, space: 'read_write', type: 'array<u32>' },
+  outIndices: { binding: 8, space: 'read_write', type: 'array<u32>' },
+  drawArgs: {
+    binding: 9,
+    space: 'read_write',
+    type: `array<u32, ${TESS_FIXED_WORDS.drawArgs}>`,
+    doc: 'Written by the budget pass, as counts and emitArgs (TESS_FIXED_WORDS).',
+  },
+  counts: { binding: 10, space: 'read_write', type: `array<u32, ${TESS_FIXED_WORDS.counts}>` },
+  emitArgs: { binding: 11, space: 'read_write', type: `array<u32, ${TESS_FIXED_WORDS.emitArgs}>` },
+});
+export type TessBinding = keyof typeof TESS_GROUP.binding;
+export const TESS_BINDINGS = Object.keys(TESS_GROUP.binding) as TessBinding[];
+/** What any evaluation over the mesh reads (no outputs): e.g. src/gpu/cc/sample.ts. */
+export const TESS_INPUTS: readonly TessBinding[] = ['params', 'staticBuf', 'cageBuf', 'work'];
+
+/**
+ * The patch build's group (wgsl/cc-build.wgsl, owned by the Catmull-Clark rewrite, declares these
+ * by hand; its pipelines are built on this layout, so a drift fails pipeline creation): it
+ * writes cageBuf, and its level dispatches take their point range in `range`.
+ */
+export const CC_BUILD_GROUP = defineBindGroup(0, {
+  params: { binding: 0, space: 'uniform', type: 'Params' },
+  staticBuf: { binding: 1, space: 'read', type: 'array<u32>' },
+  cageBuf: { binding: 2, space: 'read_write', type: 'array<f32>' },
+  range: { binding: 3, space: 'uniform', type: 'Range' },
+});
+export type CcBuildBinding = keyof typeof CC_BUILD_GROUP.binding;
+export const CC_BUILD_BINDINGS = Object.keys(CC_BUILD_GROUP.binding) as CcBuildBinding[];
+
+/** What every tessellator shader starts with: Params, the constants, the bindings `names` (all by
+ * default), the packed words' getters and the table header's. */
+export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): string {
+  return [
+    TESS_PARAMS.wgsl,
+    constantsWgsl,
+    wgslConstants(TESS_CONSTANTS),
+    TESS_GROUP.wgsl(names),
+    PATTERN_FRAME_WORD.wgsl,
+    BARY_WORD.wgsl,
+    OWNER_WORD.wgsl,
+    tableHeaderWgsl('staticBuf', 'params'),
+  ].join('\n');
+}
+
+/** The prefix sums' uniforms (wgsl/scan.wgsl reads them as `scan`): word offsets in `work`. */
+export const SCAN_PARAMS = defineStruct('ScanParams', [
+  ['inOff', 'u32', 'The n values summed.'],
+  ['outOff', 'u32', 'Their exclusive prefix sums, n + 1 words (the total last).'],
+  ['n', 'u32'],
+  ['sumsOff', 'u32', "This scan's block sums (scanSumsWords)."],
+  ['skipOff', 'u32', 'Skip the scan when this word is non-zero (the budget has accepted).'],
+] as const);
+
+export const SCAN_GROUP = defineBindGroup(0, {
+  scan: { binding: 0, space: 'uniform', type: 'ScanParams' },
+  work: { binding: 1, space: 'read_write', type: 'array<u32>' },
+});
+
+/** What wgsl/scan.wgsl starts with. */
+export const scanPrelude = [SCAN_PARAMS.wgsl, constantsWgsl, SCAN_GROUP.wgsl()].join('\n');
 
 // ---------------------------------------------------------------------------------------------
 // The renderer's uniforms and bindings

@@ -7,7 +7,8 @@ import { Tessellator } from './tessellator.ts';
 import { prepareMesh, type PreparedMesh } from './prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
-import { BARY_CORNER1, BARY_CORNER2, type FactorParams } from './types.ts';
+import type { FactorParams } from './types.ts';
+import { decodeBary, NO_OWNER } from './contract.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import { buildCatmullClark, type CatmullClarkData } from './cc/build.ts';
 import type { Cage } from '../mesh/types.ts';
@@ -96,12 +97,8 @@ export async function tessellateOnce(
 
 /** Float barycentric weights of output vertex v on its source triangle. */
 export function vertexWeights(out: MeshReadback, v: number): [number, number, number] {
-  const packed = out.bary[v];
-  if (packed === BARY_CORNER1) return [0, 1, 0];
-  if (packed === BARY_CORNER2) return [0, 0, 1];
-  const w1 = (packed & 0xffff) / 65536,
-    w2 = (packed >>> 16) / 65536;
-  return [1 - w1 - w2, w1, w2];
+  const [w0, w1, w2] = decodeBary(out.bary[v]);
+  return [w0 / 65536, w1 / 65536, w2 / 65536];
 }
 
 /** The welded mesh as OBJ (positions, normals, 1-based triangles). */
@@ -121,7 +118,7 @@ export function meshToObj(r: HeadlessResult, header: string): string {
 export function vertexParams(r: HeadlessResult, cage: Cage): (FaceParam | null)[] {
   const params: (FaceParam | null)[] = [];
   for (let v = 0; v < r.out.vertexCount; v++) {
-    if (v < r.mesh.vertexCount && r.mesh.vertexOwner[v] === 0xffffffff) params.push(null);
+    if (v < r.mesh.vertexCount && r.mesh.vertexOwner[v] === NO_OWNER) params.push(null);
     else params.push(faceParam(r.mesh, cage, r.out.srcTri[v], vertexWeights(r.out, v)));
   }
   return params;

@@ -18,7 +18,7 @@
 import type { Cage, SubdivOptions } from '../mesh/types.ts';
 import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
-import { PATTERN_FRAME_WORD } from './contract.ts';
+import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from './contract.ts';
 
 export interface PreparedMesh {
   vertexCount: number;
@@ -32,15 +32,15 @@ export interface PreparedMesh {
   triVerts: Uint32Array;
   /** Three edge ids per triangle: edge i joins corner i to corner i+1. */
   triEdges: Uint32Array;
-  /** Pattern frame per triangle (packFrame). */
-  triFrame: Uint32Array;
+  /** Pattern frame per triangle (packPatternFrame). */
+  triPatternFrame: Uint32Array;
   /** Source face of each triangle. */
   triFace: Uint32Array;
   /** Two cage vertices per edge, lower index first. */
   edgeVerts: Uint32Array;
-  /** One triangle of each edge and the edge's local index in it (tri·4 + local). */
+  /** One triangle of each edge and the edge's local index in it (an OwnerWord, contract.ts). */
   edgeOwner: Uint32Array;
-  /** One triangle of each vertex and its corner in it (tri·4 + corner), 0xFFFFFFFF if unused. */
+  /** One triangle of each vertex and its corner in it (an OwnerWord), NO_OWNER if unused. */
   vertexOwner: Uint32Array;
   /** Bounding box diagonal length: the model's size for tolerances. */
   size: number;
@@ -48,11 +48,11 @@ export interface PreparedMesh {
   bboxMax: [number, number, number];
 }
 
-export const NO_OWNER = 0xffffffff;
+export { NO_OWNER };
 
 /** The pattern frame of a triangle with these reverse flags, as a PatternFrameWord (its bits are
  * declared in contract.ts). */
-export function packFrame(reverse: Reverse): number {
+export function packPatternFrame(reverse: Reverse): number {
   return PATTERN_FRAME_WORD.pack(chooseFrame(reverse));
 }
 
@@ -118,7 +118,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
   const edgeVerts: number[] = [];
   const edgeOwner: number[] = [];
   const triEdges = new Uint32Array(3 * nT);
-  const triFrame = new Uint32Array(nT);
+  const triPatternFrame = new Uint32Array(nT);
   const vertexOwner = new Uint32Array(nV).fill(NO_OWNER);
   for (let t = 0; t < nT; t++) {
     const reverse: boolean[] = [];
@@ -133,13 +133,13 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
         e = edgeVerts.length / 2;
         edgeIds.set(key, e);
         edgeVerts.push(lo, hi);
-        edgeOwner.push(t * 4 + i);
+        edgeOwner.push(OWNER_WORD.pack({ corner: i, tri: t }));
       }
       triEdges[3 * t + i] = e;
       reverse.push(a > b); // walked from its higher vertex: reversed
-      if (vertexOwner[a] === NO_OWNER) vertexOwner[a] = t * 4 + i;
+      if (vertexOwner[a] === NO_OWNER) vertexOwner[a] = OWNER_WORD.pack({ corner: i, tri: t });
     }
-    triFrame[t] = packFrame(reverse as unknown as Reverse);
+    triPatternFrame[t] = packPatternFrame(reverse as unknown as Reverse);
   }
 
   const bboxMin: [number, number, number] = [Infinity, Infinity, Infinity];
@@ -161,7 +161,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     normals,
     triVerts: Uint32Array.from(tris),
     triEdges,
-    triFrame,
+    triPatternFrame,
     triFace: Uint32Array.from(faces),
     edgeVerts: Uint32Array.from(edgeVerts),
     edgeOwner: Uint32Array.from(edgeOwner),

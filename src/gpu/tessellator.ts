@@ -22,96 +22,46 @@
  *                vertices' limit positions and normals for the factor rule  wgsl/cc-build.wgsl
  * Attempts after the accepted one are no-ops on the GPU (they test a flag), so no readback is
  * ever needed.
+ *
+ * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the scan's
+ * uniforms, the constants, the packed words) is declared in contract.ts; which code each pass
+ * compiles and which bindings its entry point uses is tess-passes.ts; the timestamps are
+ * pass-timer.ts. This file builds the pipelines, uploads a mesh (setMesh: validate, pack, bind)
+ * and records the passes (encode).
  */
-import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
-import outputsWgsl from '../../wgsl/tess-outputs.wgsl?raw';
-import factorsWgsl from '../../wgsl/tess-factors.wgsl?raw';
-import countWgsl from '../../wgsl/tess-count.wgsl?raw';
-import budgetWgsl from '../../wgsl/tess-budget.wgsl?raw';
-import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
-import patternWgsl from '../../wgsl/tess-pattern.wgsl?raw';
-import planWgsl from '../../wgsl/tess-plan.wgsl?raw';
-import emitWgsl from '../../wgsl/tess-emit.wgsl?raw';
-import scanWgsl from '../../wgsl/scan.wgsl?raw';
-import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
-import { CC_SURFACE_WGSL as ccSurfaceWgsl, CC_BUILD_WGSL as ccBuildWgsl } from './cc/shaders.ts';
 import type { CatmullClarkData } from './cc/build.ts';
-import { defineStruct } from './layout.ts';
+import { type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './tess-passes.ts';
+import { PassTimer } from './pass-timer.ts';
+import {
+  type ArenaLayout,
+  ATTEMPTS,
+  BUDGET,
+  CC_BUILD_GROUP,
+  EMIT_TRIANGLES_ARGS_OFFSET,
+  type CcBuildBinding,
+  GRID_X,
+  SCAN_BLOCK,
+  SCAN_GROUP,
+  SCAN_PARAMS,
+  scanSumsWords,
+  TESS_CAGE,
+  TESS_FIXED_WORDS,
+  TESS_GROUP,
+  TESS_PARAMS,
+  TESS_SCANS,
+  TESS_STATIC,
+  TESS_WORK,
+  type TessBinding,
+  type TessSizes,
+  WORKGROUP_SIZE,
+} from './contract.ts';
 import { outputCapacity } from './factors.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { FactorParams, TessellatedMesh } from './types.ts';
 import { PatternTables } from '../pattern/tables.ts';
 
 export { prepareMesh, type PreparedMesh } from './prepare.ts';
-
-export const PARAMS = defineStruct('Params', [
-  ['viewProj', 'mat4x4<f32>'],
-  ['nVerts', 'u32'],
-  ['nTris', 'u32'],
-  ['nEdges', 'u32'],
-  ['maxFactor', 'u32'],
-  ['offTriVerts', 'u32'],
-  ['offTriEdges', 'u32'],
-  ['offTriFrame', 'u32'],
-  ['offEdgeVerts', 'u32'],
-  ['offEdgeOwner', 'u32'],
-  ['offVertexOwner', 'u32'],
-  ['offNormals', 'u32'],
-  ['offEdgeF', 'u32'],
-  ['offEdgeState', 'u32'],
-  ['offEdgeSegs', 'u32'],
-  ['offEdgeInterior', 'u32'],
-  ['offEdgeBase', 'u32'],
-  ['offTriVertCount', 'u32'],
-  ['offTriVertBase', 'u32'],
-  ['offTriTriCount', 'u32'],
-  ['offTriTriBase', 'u32'],
-  ['offTriRowCount', 'u32'],
-  ['offTriRowBase', 'u32'],
-  ['offRows', 'u32'],
-  ['offBudget', 'u32'],
-  ['vertexCapacity', 'u32'],
-  ['triangleCapacity', 'u32'],
-  ['mode', 'u32'],
-  ['fixedFactor', 'f32'],
-  ['lodScale', 'f32'],
-  ['pixelAngle', 'f32'],
-  ['eye', 'vec4<f32>'],
-  // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
-  ['offFactorPos', 'u32'],
-  ['offFactorNormal', 'u32'],
-  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables; offCtrl: cageBuf
-  // offset of the refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts)).
-  ['ccTri', 'u32'],
-  ['ccPoly', 'u32'],
-  ['ccRegions', 'u32'],
-  ['ccPatchIdx', 'u32'],
-  ['ccFans', 'u32'],
-  ['ccSectors', 'u32'],
-  ['ccThreads', 'u32'],
-  ['ccCos', 'u32'],
-  ['ccRules', 'u32'],
-  ['ccInputs', 'u32'],
-  ['ccVertexFan', 'u32'],
-  ['nFans', 'u32'],
-  ['ccSliceGroups', 'u32'],
-  ['ccMaxDepth', 'u32'],
-  ['offCtrl', 'u32'],
-  ['ccFlat', 'u32'],
-] as const);
-
-const SCAN_PARAMS = defineStruct('ScanParams', [
-  ['inOff', 'u32'],
-  ['outOff', 'u32'],
-  ['n', 'u32'],
-  ['sumsOff', 'u32'],
-  ['skipOff', 'u32'],
-] as const);
-/** Values one scan workgroup covers (wgsl/scan.wgsl BLOCK). */
-const SCAN_BLOCK = 256 * 16;
-
-const GRID_X = 65535;
-const ATTEMPTS = 3;
+export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPasses } from './tess-passes.ts';
 
 /** Workgroup counts as a 2D grid: WebGPU caps each dimension at 65535 (an over-limit
  * indirect dispatch silently does nothing; a direct one is a validation error). */
@@ -120,134 +70,75 @@ export function grid2d(groups: number): [number, number] {
   return [GRID_X, Math.ceil(groups / GRID_X)];
 }
 
-interface WorkLayout {
-  edgeF: number;
-  edgeState: number;
-  edgeSegs: number;
-  edgeInterior: number;
-  edgeBase: number;
-  triVertCount: number;
-  triVertBase: number;
-  triTriCount: number;
-  triTriBase: number;
-  triRowCount: number;
-  triRowBase: number;
-  rows: number;
-  sums: number;
-  budget: number;
-  words: number;
+/** Workgroups of WORKGROUP_SIZE threads for one thread per item, folded into 2D. */
+function groupsFor(items: number): [number, number] {
+  return grid2d(Math.ceil(items / WORKGROUP_SIZE));
 }
 
-const SCANS = 4;
+/** Compute passes one rebuild records (the patch build, factors and count + budget per attempt,
+ * weld, plan + emit), each timed by a pair of timestamps. */
+const TIMED_PASSES = 1 + 2 * ATTEMPTS + 2;
 
-/** Scratch words: per edge and per triangle counts and their prefix sums, the planned rows (a
- * triangle has at most maxFactor + 1 rows, two words each), scan block sums, budget state. */
-function workLayout(nE: number, nT: number, maxFactor: number): WorkLayout {
-  let at = 0;
-  const take = (n: number) => {
-    const o = at;
-    at += n;
-    return o;
-  };
-  const sumsPerScan = Math.ceil(Math.max(nE, nT, 1) / SCAN_BLOCK) + 1;
-  return {
-    edgeF: take(nE),
-    edgeState: take(nE),
-    edgeSegs: take(nE),
-    edgeInterior: take(nE),
-    edgeBase: take(nE + 1),
-    triVertCount: take(nT),
-    triVertBase: take(nT + 1),
-    triTriCount: take(nT),
-    triTriBase: take(nT + 1),
-    triRowCount: take(nT),
-    triRowBase: take(nT + 1),
-    rows: take(2 * (maxFactor + 1) * nT),
-    sums: take(SCANS * sumsPerScan),
-    budget: take(4),
-    words: at,
-  };
+interface Pipeline {
+  pipeline: GPUComputePipeline;
+  layout: GPUBindGroupLayout;
+  /** Its bindings by name, and their numbers (from its group). */
+  bindings: string[];
+  binding: Readonly<Record<string, number>>;
 }
-
-type PassName =
-  | 'factors'
-  | 'count'
-  | 'budget'
-  | 'corners'
-  | 'edges'
-  | 'plan'
-  | 'emitVertices'
-  | 'emitTriangles'
-  | 'ccPoints'
-  | 'ccSlices'
-  | 'ccLimits'
-  | 'ccVertexLimits';
-/** Bindings each pass uses (its pipeline layout is derived from the WGSL: 'auto'). */
-const PASS_BINDINGS: Record<PassName, number[]> = {
-  factors: [0, 1, 2, 3],
-  count: [0, 1, 3],
-  budget: [0, 3, 9, 10, 11],
-  corners: [0, 1, 2, 3, 4, 5, 6, 7],
-  edges: [0, 1, 2, 3, 4, 5, 6, 7],
-  plan: [0, 1, 3],
-  emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
-  emitTriangles: [0, 1, 3, 8],
-  // ccPoints: its binding 3 is a per-dispatch range (one bind group per level range, setMesh).
-  ccPoints: [],
-  ccSlices: [0, 1, 2],
-  ccLimits: [0, 1, 2],
-  ccVertexLimits: [0, 1, 2],
-};
 
 export interface TessellatorOptions {
   vertexCapacity?: number;
   triangleCapacity?: number;
-  /** WGSL that defines `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` for the emit
-   * passes (see wgsl/tess-common.wgsl). Default: Phong tessellation (wgsl/surface-phong.wgsl). */
-  surfaceWgsl?: string;
   /** 'catmull-clark': the exact Catmull-Clark limit surface (wgsl/surface-cc.wgsl); setMesh then
-   * needs the tables of src/gpu/cc/build.ts buildCatmullClark. Default 'phong'. */
-  surface?: 'phong' | 'catmull-clark';
+   * needs the tables of src/gpu/cc/build.ts buildCatmullClark. Default 'phong'
+   * (wgsl/surface-phong.wgsl). */
+  surface?: Surface;
   /** Catmull-Clark: blend from the flat triangle (corner limit positions) to the surface as the
    * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
   flatBaseline?: boolean;
 }
 
-/** Timing categories reported by readTimings (ms). */
-export const TIMED_STAGES = ['subdivision', 'factors', 'count+budget', 'weld', 'tessellate'] as const;
+type WorkName = (typeof TESS_WORK.names)[number];
+
+/** What setMesh packs before it binds. */
+interface Packed {
+  staticWords: Uint32Array;
+  cageWords: Float32Array;
+  workLayout: ArenaLayout<WorkName>;
+  normalsOffset: number;
+}
+
+interface MeshState {
+  prepared: PreparedMesh;
+  staticBuf: GPUBuffer;
+  cageBuf: GPUBuffer;
+  work: GPUBuffer;
+  /** Where the work arrays lie (TESS_WORK), and the normals in cageBuf. */
+  workLayout: ArenaLayout<WorkName>;
+  normalsOffset: number;
+  groups: Partial<Record<PassName, GPUBindGroup>>;
+  scans: { group: GPUBindGroup; n: number }[];
+  cc?: CatmullClarkData;
+  ccRanges: { group: GPUBindGroup; count: number }[];
+  uniforms: GPUBuffer[];
+}
 
 export class Tessellator {
   readonly output: TessellatedMesh;
   readonly maxFactor: number;
-  readonly surface: 'phong' | 'catmull-clark';
+  readonly surface: Surface;
   /** Catmull-Clark flat-baseline blend by tess factor (see TessellatorOptions.flatBaseline). */
   flatBaseline: boolean;
   private readonly params: GPUBuffer;
   private readonly paramsBytes: ArrayBuffer;
   /** Indirect dispatch arguments of the emit passes, written by the budget pass. */
   private readonly emitArgs: GPUBuffer;
-  private readonly pipelines: Record<PassName, GPUComputePipeline>;
-  private readonly scanPipelines: { blocks: GPUComputePipeline; sums: GPUComputePipeline; add: GPUComputePipeline };
+  private readonly pipelines: Partial<Record<PassName, Pipeline>> = {};
+  private readonly scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
   private readonly scanLayout: GPUBindGroupLayout;
-  private mesh?: {
-    prepared: PreparedMesh;
-    staticBuf: GPUBuffer;
-    cageBuf: GPUBuffer;
-    work: GPUBuffer;
-    layout: WorkLayout;
-    groups: Record<PassName, GPUBindGroup>;
-    scans: { group: GPUBindGroup; n: number }[];
-    cc?: CatmullClarkData;
-    ccRanges: { group: GPUBindGroup; count: number }[];
-  };
-  private readonly timing?: {
-    set: GPUQuerySet;
-    resolve: GPUBuffer;
-    read: GPUBuffer;
-    pending: boolean;
-    stages: string[];
-    reading?: Promise<Record<string, number>>;
-  };
+  private mesh?: MeshState;
+  private readonly timer?: PassTimer;
 
   static create(device: GPUDevice, tables: Uint32Array, opts: TessellatorOptions = {}): Tessellator {
     return new Tessellator(device, tables, opts);
@@ -270,167 +161,109 @@ export class Tessellator {
       bary: buffer('tess barycentrics', 4 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
       srcTri: buffer('tess source triangles', 4 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
       indices: buffer('tess indices', 12 * cap.triangleCapacity, S | GPUBufferUsage.INDEX),
-      drawArgs: buffer('tess draw args', 20, S | GPUBufferUsage.INDIRECT),
-      counts: buffer('tess counts', 16, S),
+      drawArgs: buffer('tess draw args', 4 * TESS_FIXED_WORDS.drawArgs, S | GPUBufferUsage.INDIRECT),
+      counts: buffer('tess counts', 4 * TESS_FIXED_WORDS.counts, S),
       vertexCapacity: cap.vertexCapacity,
       triangleCapacity: cap.triangleCapacity,
     };
-    this.emitArgs = buffer('tess emit dispatch args', 24, GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT);
-    this.paramsBytes = new ArrayBuffer(PARAMS.size);
-    this.params = device.createBuffer({ label: 'tess params', size: PARAMS.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-
-    const module = (label: string, ...parts: string[]) =>
-      device.createShaderModule({ label, code: [PARAMS.wgsl, commonWgsl, ...parts].join('\n') });
-    const pipeline = (label: string, mod: GPUShaderModule, entryPoint = 'main') =>
-      device.createComputePipeline({ label, layout: 'auto', compute: { module: mod, entryPoint } });
-    const cc = this.surface === 'catmull-clark';
-    const surface = opts.surfaceWgsl ?? (cc ? ccSurfaceWgsl : phongSurfaceWgsl);
-    const weld = module('tess weld', surface, outputsWgsl, weldWgsl);
-    this.pipelines = {
-      factors: pipeline('tess factors', module('tess factors', factorsWgsl)),
-      count: pipeline('tess count', module('tess count', patternWgsl, countWgsl)),
-      budget: pipeline('tess budget', module('tess budget', budgetWgsl)),
-      corners: pipeline('tess weld corners', weld, 'corners'),
-      edges: pipeline('tess weld edges', weld, 'edges'),
-      plan: pipeline('tess plan', module('tess plan', patternWgsl, planWgsl)),
-    } as Record<PassName, GPUComputePipeline>;
-    const emit = module('tess emit', surface, outputsWgsl, patternWgsl, emitWgsl);
-    this.pipelines.emitVertices = pipeline('tess emit vertices', emit, 'vertices');
-    this.pipelines.emitTriangles = pipeline('tess emit triangles', emit, 'triangles');
-    if (cc) {
-      const build = device.createShaderModule({ label: 'cc patch build', code: [PARAMS.wgsl, ccBuildWgsl].join('\n') });
-      this.pipelines.ccPoints = pipeline('cc level points', build, 'points');
-      this.pipelines.ccSlices = pipeline('cc ev slices', build, 'slices');
-      this.pipelines.ccLimits = pipeline('cc fan limits', build, 'limits');
-      this.pipelines.ccVertexLimits = pipeline('cc vertex limits', build, 'vlimits');
-    }
-    // The three scan steps share one bind group, so they share an explicit layout.
-    this.scanLayout = device.createBindGroupLayout({
-      label: 'scan',
-      entries: [
-        { binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'uniform' } },
-        { binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } },
-      ],
+    this.emitArgs = buffer('tess emit dispatch args', 4 * TESS_FIXED_WORDS.emitArgs, GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT);
+    this.paramsBytes = new ArrayBuffer(TESS_PARAMS.size);
+    this.params = device.createBuffer({
+      label: 'tess params',
+      size: TESS_PARAMS.size,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
-    const scanModule = device.createShaderModule({ label: 'scan', code: scanWgsl });
-    const scanPipelineLayout = device.createPipelineLayout({ label: 'scan', bindGroupLayouts: [this.scanLayout] });
-    const scanPipeline = (label: string, entryPoint: string) =>
-      device.createComputePipeline({ label, layout: scanPipelineLayout, compute: { module: scanModule, entryPoint } });
-    this.scanPipelines = {
-      blocks: scanPipeline('scan blocks', 'scanBlocks'),
-      sums: scanPipeline('scan sums', 'scanSums'),
-      add: scanPipeline('scan add', 'addSums'),
-    };
 
-    if (device.features.has('timestamp-query')) {
-      const count = 2 * 3 * ATTEMPTS + 6;
-      this.timing = {
-        set: device.createQuerySet({ label: 'tess timestamps', type: 'timestamp', count }),
-        resolve: device.createBuffer({
-          label: 'tess timestamps resolve',
-          size: 8 * count,
-          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
-        }),
-        read: device.createBuffer({
-          label: 'tess timestamps read',
-          size: 8 * count,
-          usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
-        }),
-        pending: false,
-        stages: [],
-      };
+    // Explicit layouts: each pass binds what its entry point uses, so a shared helper that starts
+    // reading one more buffer changes only the layouts of the passes that call it.
+    const modules = new Map<string, GPUShaderModule>();
+    for (const pass of tessellatorPasses(this.surface)) {
+      let module = modules.get(pass.module);
+      if (!module) modules.set(pass.module, (module = device.createShaderModule({ label: `tess ${pass.module}`, code: pass.code })));
+      const { names, entries } = passBindings(pass);
+      const layout = device.createBindGroupLayout({ label: pass.label, entries });
+      const pipeline = device.createComputePipeline({
+        label: pass.label,
+        layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
+        compute: { module, entryPoint: pass.entry },
+      });
+      const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
+      this.pipelines[pass.name] = { pipeline, layout, bindings: names, binding };
     }
+    // The three scan steps share one bind group, so they share one layout: the whole SCAN_GROUP.
+    this.scanLayout = device.createBindGroupLayout({ label: 'scan', entries: SCAN_GROUP.layoutEntries() });
+    const scanModule = device.createShaderModule({ label: 'scan', code: scanCode });
+    const scanPipelineLayout = device.createPipelineLayout({ label: 'scan', bindGroupLayouts: [this.scanLayout] });
+    const scanPipeline = (step: keyof typeof SCAN_ENTRIES) =>
+      device.createComputePipeline({
+        label: `scan ${step}`,
+        layout: scanPipelineLayout,
+        compute: { module: scanModule, entryPoint: SCAN_ENTRIES[step] },
+      });
+    this.scanPipelines = { blocks: scanPipeline('blocks'), sums: scanPipeline('sums'), add: scanPipeline('add') };
+
+    if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }
 
   /** Upload a prepared mesh: topology once; positions may be updated later (updateCage). The
    * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
   setMesh(prepared: PreparedMesh, cc?: CatmullClarkData): void {
-    const device = this.device;
-    if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
-    if (this.surface === 'catmull-clark' && !cc)
-      throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
-    if (this.surface !== 'catmull-clark') cc = undefined;
-    if (prepared.triangleCount > this.output.triangleCapacity || prepared.vertexCount + prepared.edgeCount > this.output.vertexCapacity) {
+    const ccData = this.validate(prepared, cc);
+    const packed = this.pack(prepared, ccData);
+    this.releaseMesh();
+    this.mesh = this.bind(prepared, ccData, packed);
+  }
+
+  /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
+   * (into paramsBytes; encode() uploads them). Throws when the scratch buffer would not bind. */
+  private pack(prepared: PreparedMesh, cc: CatmullClarkData | undefined): Packed {
+    const sizes: TessSizes = {
+      vertices: prepared.vertexCount,
+      edges: prepared.edgeCount,
+      triangles: prepared.triangleCount,
+      maxFactor: this.maxFactor,
+      tableWords: this.tables.length,
+      ccWords: cc?.words.length ?? 0,
+      ccPoints: cc?.pointCount ?? 0,
+      limitVertices: cc ? prepared.vertexCount : 0,
+    };
+
+    const staticLayout = TESS_STATIC.layout(sizes);
+    const staticWords = packArena(TESS_STATIC.names, staticLayout, new Uint32Array(staticLayout.words), {
+      tables: this.tables,
+      triVerts: prepared.triVerts,
+      triEdges: prepared.triEdges,
+      triPatternFrame: prepared.triPatternFrame,
+      edgeVerts: prepared.edgeVerts,
+      edgeOwner: prepared.edgeOwner,
+      vertexOwner: prepared.vertexOwner,
+      cc: cc?.words,
+    });
+    const cageLayout = TESS_CAGE.layout(sizes);
+    // The refined points and the limits are written by the patch build.
+    const cageWords = packArena(TESS_CAGE.names, cageLayout, new Float32Array(cageLayout.words), {
+      positions: prepared.positions,
+      normals: prepared.normals,
+    });
+    const workLayout = TESS_WORK.layout(sizes);
+    if (4 * workLayout.words > this.device.limits.maxStorageBufferBindingSize) {
       throw new Error(
-        `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
+        `the cage is too large: its scratch buffer (${4 * workLayout.words} bytes) exceeds the device's storage binding limit`,
       );
     }
-    this.releaseMesh();
-    const parts = [prepared.triVerts, prepared.triEdges, prepared.triFrame, prepared.edgeVerts, prepared.edgeOwner, prepared.vertexOwner];
-    const offsets: number[] = [];
-    let at = this.tables.length;
-    for (const p of parts) {
-      offsets.push(at);
-      at += p.length;
-    }
-    const ccBase = at;
-    if (cc) at += cc.words.length;
-    const staticWords = new Uint32Array(at);
-    staticWords.set(this.tables, 0);
-    parts.forEach((p, i) => staticWords.set(p, offsets[i]));
-    if (cc) staticWords.set(cc.words, ccBase);
-    const staticBuf = device.createBuffer({
-      label: 'tess tables + topology',
-      size: staticWords.byteLength,
-      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
-    });
-    device.queue.writeBuffer(staticBuf, 0, staticWords);
-
-    const nV = prepared.vertexCount;
-    // Catmull-Clark: refined points (levels, slices, fan limits), then limit positions and
-    // normals of the cage vertices.
-    const offCtrl = 6 * nV;
-    const offLimits = offCtrl + 3 * (cc?.pointCount ?? 0);
-    const cageWords = new Float32Array(cc ? offLimits + 6 * nV : 6 * nV);
-    cageWords.set(prepared.positions, 0);
-    cageWords.set(prepared.normals, 3 * prepared.vertexCount);
-    const cageBuf = device.createBuffer({
-      label: 'tess cage',
-      size: Math.max(16, cageWords.byteLength),
-      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC,
-    });
-    device.queue.writeBuffer(cageBuf, 0, cageWords);
-
-    const layout = workLayout(prepared.edgeCount, prepared.triangleCount, this.maxFactor);
-    if (4 * layout.words > device.limits.maxStorageBufferBindingSize) {
-      throw new Error(`the cage is too large: its scratch buffer (${4 * layout.words} bytes) exceeds the device's storage binding limit`);
-    }
-    const work = device.createBuffer({
-      label: 'tess work',
-      size: 4 * layout.words,
-      usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST,
-    });
-
-    const view = new DataView(this.paramsBytes);
-    PARAMS.write(view, {
+    const ccBase = staticLayout.offset.cc;
+    TESS_PARAMS.write(new DataView(this.paramsBytes), {
       nVerts: prepared.vertexCount,
       nTris: prepared.triangleCount,
       nEdges: prepared.edgeCount,
       maxFactor: this.maxFactor,
-      offTriVerts: offsets[0],
-      offTriEdges: offsets[1],
-      offTriFrame: offsets[2],
-      offEdgeVerts: offsets[3],
-      offEdgeOwner: offsets[4],
-      offVertexOwner: offsets[5],
-      offNormals: 3 * prepared.vertexCount,
-      offEdgeF: layout.edgeF,
-      offEdgeState: layout.edgeState,
-      offEdgeSegs: layout.edgeSegs,
-      offEdgeInterior: layout.edgeInterior,
-      offEdgeBase: layout.edgeBase,
-      offTriVertCount: layout.triVertCount,
-      offTriVertBase: layout.triVertBase,
-      offTriTriCount: layout.triTriCount,
-      offTriTriBase: layout.triTriBase,
-      offTriRowCount: layout.triRowCount,
-      offTriRowBase: layout.triRowBase,
-      offRows: layout.rows,
-      offBudget: layout.budget,
       vertexCapacity: this.output.vertexCapacity,
       triangleCapacity: this.output.triangleCapacity,
-      offFactorPos: cc ? offLimits : 0,
-      offFactorNormal: cc ? offLimits + 3 * nV : 3 * nV,
+      ...TESS_STATIC.offsets(staticLayout),
+      ...TESS_CAGE.offsets(cageLayout),
+      ...TESS_WORK.offsets(workLayout),
+      offFactorPos: cc ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
+      offFactorNormal: cc ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
       ccTri: ccBase + (cc?.offTri ?? 0),
       ccPoly: ccBase + (cc?.offPoly ?? 0),
       ccRegions: ccBase + (cc?.offRegions ?? 0),
@@ -445,94 +278,115 @@ export class Tessellator {
       nFans: cc?.fanCount ?? 0,
       ccSliceGroups: cc?.sliceWorkgroups ?? 0,
       ccMaxDepth: cc?.maxDepth ?? 0,
-      offCtrl,
     });
 
-    const resources: Record<number, GPUBindingResource> = {
-      0: { buffer: this.params },
-      1: { buffer: staticBuf },
-      2: { buffer: cageBuf },
-      3: { buffer: work },
-      4: { buffer: this.output.positions },
-      5: { buffer: this.output.normals },
-      6: { buffer: this.output.bary },
-      7: { buffer: this.output.srcTri },
-      8: { buffer: this.output.indices },
-      9: { buffer: this.output.drawArgs },
-      10: { buffer: this.output.counts },
-      11: { buffer: this.emitArgs },
+    return { staticWords, cageWords, workLayout, normalsOffset: cageLayout.offset.normals };
+  }
+
+  /** The buffers, written; each pass's bind group from the bindings its entry point uses; the
+   * scans' and the patch build's small uniforms. */
+  private bind(prepared: PreparedMesh, cc: CatmullClarkData | undefined, packed: Packed): MeshState {
+    const device = this.device;
+    const { staticWords, cageWords, workLayout, normalsOffset } = packed;
+    const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST;
+    const staticBuf = device.createBuffer({ label: 'tess tables + topology', size: staticWords.byteLength, usage: storage });
+    device.queue.writeBuffer(staticBuf, 0, staticWords);
+    const cageBuf = device.createBuffer({
+      label: 'tess cage',
+      size: Math.max(16, cageWords.byteLength),
+      usage: storage | GPUBufferUsage.COPY_SRC,
+    });
+    device.queue.writeBuffer(cageBuf, 0, cageWords);
+    const work = device.createBuffer({ label: 'tess work', size: 4 * workLayout.words, usage: storage | GPUBufferUsage.COPY_SRC });
+
+    const resources: Record<TessBinding, GPUBuffer> = {
+      params: this.params,
+      staticBuf,
+      cageBuf,
+      work,
+      outPositions: this.output.positions,
+      outNormals: this.output.normals,
+      outBary: this.output.bary,
+      outSrcTri: this.output.srcTri,
+      outIndices: this.output.indices,
+      drawArgs: this.output.drawArgs,
+      counts: this.output.counts,
+      emitArgs: this.emitArgs,
     };
-    const groups = {} as Record<PassName, GPUBindGroup>;
-    for (const name of Object.keys(PASS_BINDINGS) as PassName[]) {
-      if (!this.pipelines[name] || !PASS_BINDINGS[name].length) continue;
-      groups[name] = device.createBindGroup({
-        label: `tess ${name}`,
-        layout: this.pipelines[name].getBindGroupLayout(0),
-        entries: PASS_BINDINGS[name].map((binding) => ({ binding, resource: resources[binding] })),
+    const uniforms: GPUBuffer[] = [];
+    const uniform = (label: string, bytes: ArrayBuffer | Uint32Array) => {
+      const u = device.createBuffer({ label, size: bytes.byteLength, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      device.queue.writeBuffer(u, 0, bytes);
+      uniforms.push(u);
+      return u;
+    };
+    const bindGroup = (name: PassName, extra: Partial<Record<CcBuildBinding, GPUBuffer>> = {}) => {
+      const p = this.pipelines[name]!;
+      const byName: Record<string, GPUBuffer> = { ...resources, ...extra };
+      return device.createBindGroup({
+        label: p.pipeline.label,
+        layout: p.layout,
+        entries: p.bindings.map((n) => ({ binding: p.binding[n], resource: { buffer: byName[n] } })),
       });
-    }
-    const sumsPerScan = Math.ceil(Math.max(prepared.edgeCount, prepared.triangleCount, 1) / SCAN_BLOCK) + 1;
-    const scanDefs = [
-      { inOff: layout.edgeInterior, outOff: layout.edgeBase, n: prepared.edgeCount },
-      { inOff: layout.triVertCount, outOff: layout.triVertBase, n: prepared.triangleCount },
-      { inOff: layout.triTriCount, outOff: layout.triTriBase, n: prepared.triangleCount },
-      { inOff: layout.triRowCount, outOff: layout.triRowBase, n: prepared.triangleCount },
-    ];
-    const scans = scanDefs.map((s, i) => {
+    };
+    const groups: Partial<Record<PassName, GPUBindGroup>> = {};
+    for (const name of Object.keys(this.pipelines) as PassName[]) if (name !== 'ccPoints') groups[name] = bindGroup(name);
+
+    const sumsWords = scanSumsWords(Math.max(prepared.edgeCount, prepared.triangleCount));
+    const o = workLayout.offset;
+    const scans = TESS_SCANS.map((s, i) => {
+      const n = s.over === 'edges' ? prepared.edgeCount : prepared.triangleCount;
       const bytes = new ArrayBuffer(SCAN_PARAMS.size);
-      // Skip the scan once the budget has accepted an attempt (its "accepted" word).
-      SCAN_PARAMS.write(new DataView(bytes), { ...s, sumsOff: layout.sums + i * sumsPerScan, skipOff: layout.budget });
-      const uniform = device.createBuffer({
-        label: `scan params ${i}`,
-        size: SCAN_PARAMS.size,
-        usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+      // Skipped once the budget has accepted an attempt.
+      SCAN_PARAMS.write(new DataView(bytes), {
+        inOff: o[s.from],
+        outOff: o[s.to],
+        n,
+        sumsOff: o.sums + i * sumsWords,
+        skipOff: o.budget + BUDGET.ACCEPTED,
       });
-      device.queue.writeBuffer(uniform, 0, bytes);
       const group = device.createBindGroup({
         label: `scan ${i}`,
         layout: this.scanLayout,
         entries: [
-          { binding: 0, resource: { buffer: uniform } },
-          { binding: 1, resource: { buffer: work } },
+          { binding: SCAN_GROUP.binding.scan, resource: { buffer: uniform(`scan params ${i}`, bytes) } },
+          { binding: SCAN_GROUP.binding.work, resource: { buffer: work } },
         ],
       });
-      return { group, n: s.n, uniform };
+      return { group, n };
     });
     // Catmull-Clark level dispatches: per level, its face points, then its edge and vertex
     // points (which read the new face points); each with its range in a small uniform.
-    const ccRanges: { group: GPUBindGroup; count: number }[] = [];
-    const rangeUniforms: GPUBuffer[] = [];
-    for (const [ff, fc, vf, vc] of cc?.levelRanges ?? []) {
-      for (const [first, count] of [
+    const ccRanges = (cc?.levelRanges ?? []).flatMap(([ff, fc, vf, vc]) =>
+      [
         [ff, fc],
         [vf, vc],
-      ]) {
-        const u = device.createBuffer({ label: 'cc level range', size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-        device.queue.writeBuffer(u, 0, Uint32Array.of(first, count, 0, 0));
-        rangeUniforms.push(u);
-        ccRanges.push({
-          count,
-          group: device.createBindGroup({
-            label: 'cc level points',
-            layout: this.pipelines.ccPoints.getBindGroupLayout(0),
-            entries: [resources[0], resources[1], resources[2]]
-              .map((resource, binding) => ({ binding, resource }))
-              .concat([{ binding: 3, resource: { buffer: u } }]),
-          }),
-        });
-      }
-    }
-    this.mesh = { prepared, staticBuf, cageBuf, work, layout, groups, scans: scans.map(({ group, n }) => ({ group, n })), cc, ccRanges };
-    this.scanUniforms = [...scans.map((s) => s.uniform), ...rangeUniforms];
+      ].map(([first, count]) => ({
+        count,
+        group: bindGroup('ccPoints', { range: uniform('cc level range', Uint32Array.of(first, count, 0, 0)) }),
+      })),
+    );
+    return { prepared, staticBuf, cageBuf, work, workLayout, normalsOffset, groups, scans, cc, ccRanges, uniforms };
   }
 
-  private scanUniforms: GPUBuffer[] = [];
+  /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
+  private validate(prepared: PreparedMesh, cc?: CatmullClarkData): CatmullClarkData | undefined {
+    if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
+    if (this.surface === 'catmull-clark' && !cc)
+      throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
+    if (prepared.triangleCount > this.output.triangleCapacity || prepared.vertexCount + prepared.edgeCount > this.output.vertexCapacity) {
+      throw new Error(
+        `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
+      );
+    }
+    return this.surface === 'catmull-clark' ? cc : undefined;
+  }
 
   /** New cage positions (and normals) for the same topology, e.g. an animated cage. */
   updateCage(positions: Float32Array, normals: Float32Array): void {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
-    this.device.queue.writeBuffer(m.cageBuf, 4 * 3 * m.prepared.vertexCount, normals);
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.normalsOffset, normals);
   }
 
   /** The uniform and static buffers (for extra passes over the same mesh, e.g. surface sampling). */
@@ -558,11 +412,12 @@ export class Tessellator {
     return this.requireMesh().work;
   }
 
-  get workLayout(): WorkLayout {
-    return this.requireMesh().layout;
+  /** Word offsets of the scratch buffer's arrays (contract.ts TESS_WORK), e.g. `.edgeF`. */
+  get workLayout(): Readonly<Record<WorkName, number>> {
+    return this.requireMesh().workLayout.offset;
   }
 
-  private requireMesh() {
+  private requireMesh(): MeshState {
     if (!this.mesh) throw new Error('Tessellator.setMesh must be called first');
     return this.mesh;
   }
@@ -570,13 +425,7 @@ export class Tessellator {
   /** Record every pass of a rebuild into `encoder`. */
   encode(encoder: GPUCommandEncoder, p: FactorParams): void {
     const m = this.requireMesh();
-    this.writeParams(p);
-    this.record(encoder, m);
-  }
-
-  private writeParams(p: FactorParams): void {
-    const view = new DataView(this.paramsBytes);
-    PARAMS.write(view, {
+    TESS_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: p.viewProj,
       mode: p.mode === 'fixed' ? 0 : 1,
       fixedFactor: p.fixedFactor,
@@ -586,30 +435,23 @@ export class Tessellator {
       ccFlat: this.flatBaseline ? 1 : 0,
     });
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
+    this.record(encoder, m);
   }
 
-  private record(encoder: GPUCommandEncoder, m: NonNullable<Tessellator['mesh']>): void {
-    encoder.clearBuffer(m.work, 4 * m.layout.budget, 16);
+  private record(encoder: GPUCommandEncoder, m: MeshState): void {
+    encoder.clearBuffer(m.work, 4 * m.workLayout.offset.budget, 4 * m.workLayout.length.budget);
 
-    const stages: string[] = [];
-    let query = 0;
-    const pass = (label: string, stage: string) => {
-      const t = this.timing && !this.timing.pending && query + 2 <= this.timing.set.count ? this.timing : undefined;
-      const desc: GPUComputePassDescriptor = { label };
-      if (t) {
-        desc.timestampWrites = { querySet: t.set, beginningOfPassWriteIndex: query, endOfPassWriteIndex: query + 1 };
-        stages.push(stage);
-        query += 2;
-      }
-      return encoder.beginComputePass(desc);
+    const pass = (label: string, stage: string) => this.timer?.beginPass(encoder, label, stage) ?? encoder.beginComputePass({ label });
+    const { edgeCount: nE, triangleCount: nT, vertexCount: nV } = m.prepared;
+    const run = (cp: GPUComputePassEncoder, name: PassName, groups: [number, number]) => {
+      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.setBindGroup(0, m.groups[name]!);
+      cp.dispatchWorkgroups(...groups);
     };
-    const nE = m.prepared.edgeCount,
-      nT = m.prepared.triangleCount,
-      nV = m.prepared.vertexCount;
-    const run = (cp: GPUComputePassEncoder, name: PassName, groups: number) => {
-      cp.setPipeline(this.pipelines[name]);
-      cp.setBindGroup(0, m.groups[name]);
-      cp.dispatchWorkgroups(...grid2d(groups));
+    const runIndirect = (cp: GPUComputePassEncoder, name: PassName, offset: number) => {
+      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.setBindGroup(0, m.groups[name]!);
+      cp.dispatchWorkgroupsIndirect(this.emitArgs, offset);
     };
 
     if (m.cc) {
@@ -619,10 +461,10 @@ export class Tessellator {
     }
     for (let attempt = 0; attempt < ATTEMPTS; attempt++) {
       let cp = pass(`tess factors ${attempt}`, 'factors');
-      run(cp, 'factors', Math.ceil(nE / 64));
+      run(cp, 'factors', groupsFor(nE));
       cp.end();
       cp = pass(`tess count + budget ${attempt}`, 'count+budget');
-      run(cp, 'count', Math.ceil(nT / 64));
+      run(cp, 'count', groupsFor(nT));
       for (const s of m.scans) {
         const blocks = Math.ceil(Math.max(s.n, 1) / SCAN_BLOCK);
         cp.setBindGroup(0, s.group);
@@ -633,52 +475,39 @@ export class Tessellator {
         cp.setPipeline(this.scanPipelines.add);
         cp.dispatchWorkgroups(blocks);
       }
-      run(cp, 'budget', 1);
+      run(cp, 'budget', [1, 1]);
       cp.end();
     }
     let cp = pass('tess weld', 'weld');
-    run(cp, 'corners', Math.ceil(nV / 64));
-    run(cp, 'edges', Math.ceil(nE / 64));
+    run(cp, 'corners', groupsFor(nV));
+    run(cp, 'edges', groupsFor(nE));
     cp.end();
     cp = pass('tess plan + emit', 'tessellate');
-    run(cp, 'plan', Math.ceil(nT / 64));
-    cp.setBindGroup(0, m.groups.emitVertices);
-    cp.setPipeline(this.pipelines.emitVertices);
-    cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
-    cp.setBindGroup(0, m.groups.emitTriangles);
-    cp.setPipeline(this.pipelines.emitTriangles);
-    cp.dispatchWorkgroupsIndirect(this.emitArgs, 12);
+    run(cp, 'plan', groupsFor(nT));
+    // Sized by the budget pass: emitArgs holds the vertices' dispatch, then the triangles'.
+    runIndirect(cp, 'emitVertices', 0);
+    runIndirect(cp, 'emitTriangles', EMIT_TRIANGLES_ARGS_OFFSET);
     cp.end();
 
-    if (this.timing && stages.length) {
-      encoder.resolveQuerySet(this.timing.set, 0, query, this.timing.resolve, 0);
-      encoder.copyBufferToBuffer(this.timing.resolve, 0, this.timing.read, 0, 8 * query);
-      this.timing.stages = stages;
-      this.timing.pending = true;
-    }
+    this.timer?.resolve(encoder);
   }
 
-  private recordPatchBuild(cp: GPUComputePassEncoder, m: NonNullable<Tessellator['mesh']>): void {
+  private recordPatchBuild(cp: GPUComputePassEncoder, m: MeshState): void {
     const cc = m.cc!;
-    cp.setPipeline(this.pipelines.ccPoints);
+    cp.setPipeline(this.pipelines.ccPoints!.pipeline);
     for (const r of m.ccRanges) {
       if (!r.count) continue;
       cp.setBindGroup(0, r.group);
-      cp.dispatchWorkgroups(...grid2d(Math.ceil(r.count / 64)));
+      cp.dispatchWorkgroups(...groupsFor(r.count));
     }
-    if (cc.sliceWorkgroups) {
-      cp.setBindGroup(0, m.groups.ccSlices);
-      cp.setPipeline(this.pipelines.ccSlices);
-      cp.dispatchWorkgroups(...grid2d(cc.sliceWorkgroups));
-    }
-    if (cc.fanCount) {
-      cp.setBindGroup(0, m.groups.ccLimits);
-      cp.setPipeline(this.pipelines.ccLimits);
-      cp.dispatchWorkgroups(...grid2d(Math.ceil(cc.fanCount / 64)));
-    }
-    cp.setBindGroup(0, m.groups.ccVertexLimits);
-    cp.setPipeline(this.pipelines.ccVertexLimits);
-    cp.dispatchWorkgroups(...grid2d(Math.ceil(m.prepared.vertexCount / 64)));
+    const run = (name: PassName, groups: [number, number]) => {
+      cp.setBindGroup(0, m.groups[name]!);
+      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.dispatchWorkgroups(...groups);
+    };
+    if (cc.sliceWorkgroups) run('ccSlices', grid2d(cc.sliceWorkgroups));
+    if (cc.fanCount) run('ccLimits', groupsFor(cc.fanCount));
+    run('ccVertexLimits', groupsFor(m.prepared.vertexCount));
   }
 
   /** Record only the Catmull-Clark patch build (control points and vertex limits from the
@@ -696,25 +525,7 @@ export class Tessellator {
    * Rebuilds encoded while a read is in flight are not timed; a second call while one read is
    * in flight gets the same answer. */
   readTimings(): Promise<Record<string, number>> {
-    const t = this.timing;
-    if (!t || !t.pending) return Promise.resolve({});
-    t.reading ??= this.mapTimings(t).finally(() => {
-      t.reading = undefined;
-    });
-    return t.reading;
-  }
-
-  private async mapTimings(t: NonNullable<Tessellator['timing']>): Promise<Record<string, number>> {
-    await t.read.mapAsync(GPUMapMode.READ);
-    const ticks = new BigUint64Array(t.read.getMappedRange().slice(0));
-    t.read.unmap();
-    t.pending = false;
-    const out: Record<string, number> = {};
-    t.stages.forEach((stage, i) => {
-      const ns = Number(ticks[2 * i + 1] - ticks[2 * i]);
-      out[stage] = (out[stage] ?? 0) + ns / 1e6;
-    });
-    return out;
+    return this.timer?.read() ?? Promise.resolve({});
   }
 
   private releaseMesh(): void {
@@ -722,7 +533,7 @@ export class Tessellator {
     this.mesh.staticBuf.destroy();
     this.mesh.cageBuf.destroy();
     this.mesh.work.destroy();
-    for (const u of this.scanUniforms) u.destroy();
+    for (const u of this.mesh.uniforms) u.destroy();
     this.mesh = undefined;
   }
 
@@ -740,8 +551,23 @@ export class Tessellator {
       this.emitArgs,
     ])
       b.destroy();
-    this.timing?.set.destroy();
-    this.timing?.resolve.destroy();
-    this.timing?.read.destroy();
+    this.timer?.destroy();
   }
+}
+
+/** Copy each array of `sources` to its place in an arena; an array not given stays zero (its
+ * length is checked against the layout's when given). */
+function packArena<K extends string, T extends Uint32Array | Float32Array>(
+  names: readonly K[],
+  layout: { offset: Record<K, number>; length: Record<K, number> },
+  into: T,
+  sources: Partial<Record<K, ArrayLike<number>>>,
+): T {
+  for (const k of names) {
+    const src = sources[k];
+    if (!src) continue;
+    if (src.length !== layout.length[k]) throw new Error(`arena array ${k}: ${src.length} words given, ${layout.length[k]} laid out`);
+    into.set(src, layout.offset[k]);
+  }
+  return into;
 }

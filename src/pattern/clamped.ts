@@ -76,7 +76,7 @@ export function framedLine(slots: Slot[], present: number[], F: number, flip: bo
 }
 
 /** The frame a triangle's pattern is built in (see the header). */
-export interface Frame {
+export interface PatternFrame {
   /** The corners playing A (origin), B and C. */
   a: number;
   b: number;
@@ -102,7 +102,7 @@ function edgeFrom(p: number, q: number, reverse: Reverse): { edge: number; flip:
   return { edge, flip: towardsEnd === reverse[edge] };
 }
 
-function makeFrame(a: number, b: number, c: number, reverse: Reverse, mirrored: boolean): Frame {
+function makeFrame(a: number, b: number, c: number, reverse: Reverse, mirrored: boolean): PatternFrame {
   const bottom = edgeFrom(a, b, reverse);
   const left = edgeFrom(a, c, reverse);
   const right = edgeFrom(b, c, reverse);
@@ -121,7 +121,7 @@ function makeFrame(a: number, b: number, c: number, reverse: Reverse, mirrored: 
 }
 
 /** The frame for these reverse flags: the first whose left line starts at C. */
-export function chooseFrame(reverse: Reverse): Frame {
+export function chooseFrame(reverse: Reverse): PatternFrame {
   for (const mirrored of [false, true]) {
     for (let o = 0; o < 3; o++) {
       const f = mirrored ? makeFrame(o, (o + 2) % 3, (o + 1) % 3, reverse, true) : makeFrame(o, (o + 1) % 3, (o + 2) % 3, reverse, false);
@@ -236,7 +236,7 @@ export interface ClampedOptions {
 /** The three framed lines of a triangle at the given factors (the pattern's only inputs). */
 export function clampedLines(
   factors: readonly [number, number, number],
-  frame: Frame,
+  frame: PatternFrame,
   opts: ClampedOptions = {},
 ): { bottom: FramedLine; left: FramedLine; right: FramedLine } {
   const maxFactor = opts.maxFactor ?? 64;
@@ -254,7 +254,7 @@ export function clampedLines(
 
 /** Move a pattern built in a frame to the triangle's corners: (w_A, w_B, w_C) → corners
  * (a, b, c), and reverse the winding of a mirrored frame. */
-export function fromFrame(p: TriPattern, frame: Frame): TriPattern {
+export function fromFrame(p: TriPattern, frame: PatternFrame): TriPattern {
   const bary = new Array<number>(p.bary.length);
   for (let v = 0; v < p.vertexCount; v++) {
     bary[3 * v + frame.a] = p.bary[3 * v];
@@ -274,7 +274,7 @@ export function clampedConstruction(
   factors: readonly [number, number, number],
   reverse: Reverse = FORWARD,
   opts: ClampedOptions = {},
-): { frame: Frame; bottom: FramedLine; left: FramedLine; right: FramedLine; framed: ClampedAssembly } {
+): { frame: PatternFrame; bottom: FramedLine; left: FramedLine; right: FramedLine; framed: ClampedAssembly } {
   const frame = chooseFrame(reverse);
   const lines = clampedLines(factors, frame, opts);
   const framed = assembleClamped(lines.bottom.x, lines.left.x, lines.right.x, gapMergeSteps(lines.left.key, lines.right.key));

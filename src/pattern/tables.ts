@@ -38,7 +38,27 @@ import type { LinePattern, TriPattern } from './types.ts';
 
 export const TABLE_MAGIC = 0x4c534554;
 export const TABLE_VERSION = 1;
-const HEADER_WORDS = 16;
+/** The header's words, in order (the layout above): the one list that the writer, the reader and
+ * the WGSL getters (src/gpu/contract.ts, `tableHeader_stateCount()` …) all index by. */
+export const TABLE_HEADER_FIELDS = [
+  'magic',
+  'version',
+  'maxFactor',
+  'slotCount',
+  'stateCount',
+  'slotsOffset',
+  'stateStartOffset',
+  'stateIndexOffset',
+  'stateListOffset',
+  'mergeOffset',
+  'mergeWords',
+  'totalWords',
+] as const;
+export type TableHeaderField = (typeof TABLE_HEADER_FIELDS)[number];
+/** Word index of each header field. */
+export const TABLE_HEADER = Object.fromEntries(TABLE_HEADER_FIELDS.map((f, i) => [f, i])) as Readonly<Record<TableHeaderField, number>>;
+/** Words the header takes (the rest reserved, 0). */
+export const HEADER_WORDS = 16;
 const SLOT_WORDS = 5;
 
 /** The distinct present-slot sets of the schedule, with the F where each starts. */
@@ -70,12 +90,12 @@ export function bakeTables(maxFactor = 64): Uint32Array {
   const mergeOffset = stateListOffset + listWords;
   const totalWords = mergeOffset + T * T * 4 * mergeWords;
   const out = new Uint32Array(totalWords);
-  out.set([
-    TABLE_MAGIC,
-    TABLE_VERSION,
+  const header: Record<TableHeaderField, number> = {
+    magic: TABLE_MAGIC,
+    version: TABLE_VERSION,
     maxFactor,
-    S,
-    T,
+    slotCount: S,
+    stateCount: T,
     slotsOffset,
     stateStartOffset,
     stateIndexOffset,
@@ -83,7 +103,8 @@ export function bakeTables(maxFactor = 64): Uint32Array {
     mergeOffset,
     mergeWords,
     totalWords,
-  ]);
+  };
+  out.set(TABLE_HEADER_FIELDS.map((f) => header[f]));
 
   slots.forEach((s, i) => {
     out.set([s.x0, s.x1, s.f0 === ALWAYS ? 0 : s.f0, s.w, s.death], slotsOffset + SLOT_WORDS * i);
@@ -124,13 +145,21 @@ export class PatternTables {
   private readonly off: { slots: number; start: number; index: number; list: number; merge: number; mergeWords: number };
 
   constructor(readonly words: Uint32Array) {
-    if (words.length < HEADER_WORDS || words[0] !== TABLE_MAGIC) throw new Error('not a tessellab pattern table (bad magic)');
-    if (words[1] !== TABLE_VERSION) throw new Error(`unsupported pattern table version ${words[1]} (expected ${TABLE_VERSION})`);
-    if (words[11] !== words.length) throw new Error(`pattern table truncated: ${words.length} of ${words[11]} words`);
-    this.maxFactor = words[2];
-    this.slotCount = words[3];
-    this.stateCount = words[4];
-    this.off = { slots: words[5], start: words[6], index: words[7], list: words[8], merge: words[9], mergeWords: words[10] };
+    const h = (f: TableHeaderField) => words[TABLE_HEADER[f]];
+    if (words.length < HEADER_WORDS || h('magic') !== TABLE_MAGIC) throw new Error('not a tessellab pattern table (bad magic)');
+    if (h('version') !== TABLE_VERSION) throw new Error(`unsupported pattern table version ${h('version')} (expected ${TABLE_VERSION})`);
+    if (h('totalWords') !== words.length) throw new Error(`pattern table truncated: ${words.length} of ${h('totalWords')} words`);
+    this.maxFactor = h('maxFactor');
+    this.slotCount = h('slotCount');
+    this.stateCount = h('stateCount');
+    this.off = {
+      slots: h('slotsOffset'),
+      start: h('stateStartOffset'),
+      index: h('stateIndexOffset'),
+      list: h('stateListOffset'),
+      merge: h('mergeOffset'),
+      mergeWords: h('mergeWords'),
+    };
   }
 
   slot(i: number): Slot {

@@ -76,7 +76,8 @@ export function isRegularFace(L: Level, f: number): boolean {
   return true;
 }
 
-// Corner frames: grid position g and local axes a (towards c_{j+1}), b (towards c_{j-1}).
+// Each corner's axes (an affine map onto the 4 × 4 grid): grid position g and local axes a
+// (towards c_{j+1}), b (towards c_{j-1}).
 const G = [
   [1, 1],
   [2, 1],

@@ -7,7 +7,8 @@
 import commonWgsl from '../../../wgsl/tess-common.wgsl?raw';
 import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './shaders.ts';
 import phongSurfaceWgsl from '../../../wgsl/surface-phong.wgsl?raw';
-import { PARAMS, type Tessellator } from '../tessellator.ts';
+import { TESS_INPUTS, tessPrelude } from '../contract.ts';
+import type { Tessellator } from '../tessellator.ts';
 import { readBuffer } from '../readback.ts';
 
 const KERNEL = /* wgsl */ `
@@ -43,7 +44,10 @@ export async function sampleSurface(
   let pipe = byKind.get(tess.surface);
   if (!pipe) {
     const surface = tess.surface === 'catmull-clark' ? ccSurfaceWgsl : phongSurfaceWgsl;
-    const module = device.createShaderModule({ label: 'surface samples', code: [PARAMS.wgsl, commonWgsl, surface, KERNEL].join('\n') });
+    const module = device.createShaderModule({
+      label: 'surface samples',
+      code: [tessPrelude(TESS_INPUTS), commonWgsl, surface, KERNEL].join('\n'),
+    });
     pipe = device.createComputePipeline({ label: 'surface samples', layout: 'auto', compute: { module, entryPoint: 'main' } });
     byKind.set(tess.surface, pipe);
   }
