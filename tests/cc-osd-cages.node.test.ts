@@ -17,7 +17,7 @@ import { prepareMesh } from '../src/gpu/prepare.ts';
 import { readMesh } from '../src/gpu/readback.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { BARY_CORNER1, BARY_CORNER2 } from '../src/gpu/types.ts';
+import { decodeBary } from '../src/gpu/contract.ts';
 import { loadCage } from '../src/mesh/index.ts';
 
 const DIR = '../shared/cages';
@@ -94,10 +94,7 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
       for (let v = 0; v < out.vertexCount; v += step) {
         if (!used[v]) continue;
         const b = out.bary[v];
-        let w1: number, w2: number;
-        if (b === BARY_CORNER1) [w1, w2] = [65536, 0];
-        else if (b === BARY_CORNER2) [w1, w2] = [0, 65536];
-        else [w1, w2] = [b & 0xffff, b >>> 16];
+        const [, w1, w2] = decodeBary(b);
         const r = ref.at(out.srcTri[v], [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536]);
         const p = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
         if (!p.every(Number.isFinite)) {

@@ -6,6 +6,7 @@
 import { describe, it, expect } from 'vitest';
 import { buildCatmullClark, regionOf, REGION_PATCH, REGION_SECTOR, TOTAL_DEPTH, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
+import { CC_FAN_WORD } from '../src/gpu/cc/words.ts';
 import { makeCage, type Cage } from '../src/mesh/index.ts';
 import { cube, tetra, triPrism, ringCrease } from './subdiv-fixtures.ts';
 
@@ -67,8 +68,8 @@ describe('Catmull-Clark preparation (topology only)', () => {
     expect(cc.fanCount).toBe(8);
     for (let F = 0; F < 8; F++) {
       const w0 = cc.fans[8 * F];
-      expect(w0 & 255).toBe(3); // threads: 3 sectors
-      expect((w0 >> 20) & 15).toBe(TOTAL_DEPTH - 1); // start level 1
+      expect(CC_FAN_WORD.get(w0, 'sectors')).toBe(3); // threads: 3 sectors
+      expect(CC_FAN_WORD.get(w0, 'depth')).toBe(TOTAL_DEPTH - 1); // start level 1
     }
   });
 

@@ -14,7 +14,7 @@ import { readBuffer, readMesh } from '../src/gpu/readback.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { sampleSurface } from '../src/gpu/cc/sample.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { BARY_CORNER1, BARY_CORNER2 } from '../src/gpu/types.ts';
+import { decodeBary } from '../src/gpu/contract.ts';
 import { cornerLimit, creasedGridCube } from './single-crease-fixture.ts';
 
 const POSITION_BOUND = 1e-5;
@@ -63,10 +63,7 @@ describe('single-crease patches on the GPU', () => {
     const items = [];
     for (let v = 0; v < out.vertexCount; v++) {
       const b = out.bary[v];
-      let w1: number, w2: number;
-      if (b === BARY_CORNER1) [w1, w2] = [65536, 0];
-      else if (b === BARY_CORNER2) [w1, w2] = [0, 65536];
-      else [w1, w2] = [b & 0xffff, b >>> 16];
+      const [, w1, w2] = decodeBary(b);
       items.push({ t: out.srcTri[v], w: [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536] as [number, number, number] });
     }
     const s = ref.compare(samples, gpu.pos, gpu.normal);

@@ -14,7 +14,7 @@ import { readBuffer, readMesh, type MeshReadback } from '../src/gpu/readback.ts'
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { sampleSurface } from '../src/gpu/cc/sample.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { BARY_CORNER1, BARY_CORNER2 } from '../src/gpu/types.ts';
+import { decodeBary } from '../src/gpu/contract.ts';
 import { loadCage } from '../src/mesh/index.ts';
 import creasedBox from '../public/models/creased-box.obj?raw';
 import creature from '../public/models/creature.obj?raw';
@@ -32,9 +32,9 @@ afterAll(() => {
 });
 
 /** Bounds (fractions of the bounding-box diagonal, degrees) stated by the issue and by us. */
-export const POSITION_BOUND = 1e-5;
-export const NORMAL_BOUND_DEG = 0.1;
-export const BLENDED_POSITION_BOUND = 1e-4;
+const POSITION_BOUND = 1e-5;
+const NORMAL_BOUND_DEG = 0.1;
+const BLENDED_POSITION_BOUND = 1e-4;
 
 const camera = testCamera;
 
@@ -53,10 +53,7 @@ function outputItems(out: MeshReadback) {
   const items: { t: number; w: [number, number, number] }[] = [];
   for (let v = 0; v < out.vertexCount; v++) {
     const b = out.bary[v];
-    let w1: number, w2: number;
-    if (b === BARY_CORNER1) [w1, w2] = [65536, 0];
-    else if (b === BARY_CORNER2) [w1, w2] = [0, 65536];
-    else [w1, w2] = [b & 0xffff, b >>> 16];
+    const [, w1, w2] = decodeBary(b);
     items.push({ t: out.srcTri[v], w: [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536] });
   }
   return items;

@@ -334,6 +334,13 @@ describe('shared constants', () => {
       for (const m of code.matchAll(/@workgroup_size\(([^)]*)\)/g)) expect(m[1], f).toMatch(/^(WORKGROUP_SIZE|THREADS|1)$/);
       expect(code, f).not.toMatch(/\b(63|64|255|256|65535)u?\b/);
     }
+    // The patch build likewise (its prelude: ccBuildPrelude; its words: src/gpu/cc/words.ts).
+    const cc = readFileSync(new URL('../wgsl/cc-build.wgsl', import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+    expect(cc).not.toMatch(/@binding|struct Params|struct Range|const (GRID_X|WG|NONE|CC_NONE)\b/);
+    for (const m of cc.matchAll(/@workgroup_size\(([^)]*)\)/g)) expect(m[1]).toBe('WORKGROUP_SIZE');
+    // No packed word shifted by hand in the Catmull-Clark shaders.
+    const surface = readFileSync(new URL('../wgsl/surface-cc.wgsl', import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+    for (const code of [cc, surface]) expect(code).not.toMatch(/>> \d+u\)? & |& (255|63|15|3|0xfff+)u\b/);
     // What the old shaders typed by hand, now from the prelude.
     expect(GRID_X).toBe(65535);
     expect([WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE]).toEqual([64, 256]);

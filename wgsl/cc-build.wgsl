@@ -1,7 +1,6 @@
 // Catmull-Clark patch build ("subdivision"), run whenever the cage moves: every point the
 // evaluator reads, made from the current cage positions by the topology-only data of
-// src/gpu/cc/build.ts (its header has the layouts). `struct Params` is generated from
-// src/gpu/tessellator.ts and prepended. Points are f32 xyz: the cage positions (index < nVerts)
+// src/gpu/cc/build.ts (its header has the layouts). Its declarations are generated (below). Points are f32 xyz: the cage positions (index < nVerts)
 // then, from params.offCtrl in cageBuf, the refined levels, the fans' slices and limits.
 //   points   one thread per point of one level's range (face points, then in a second dispatch
 //            edge and vertex points, which read the new face points), its rule from its word
@@ -10,16 +9,9 @@
 //   limits   one thread per fan: limit position and tangents of its centre (notes §2)
 //   vlimits  one thread per cage vertex: its fan's limit where the factor rule reads it
 
-@group(0) @binding(0) var<uniform> params: Params;
-@group(0) @binding(1) var<storage, read> staticBuf: array<u32>;
-@group(0) @binding(2) var<storage, read_write> cageBuf: array<f32>;
-
-struct Range { first: u32, count: u32, pad0: u32, pad1: u32 }
-@group(0) @binding(3) var<uniform> range: Range;
-
-const GRID_X: u32 = 65535u;
-const NONE: u32 = 0xffffffffu;
-const WG: u32 = 64u;
+// Declared by the generated prelude (src/gpu/contract.ts ccBuildPrelude): Params, the constants
+// (WORKGROUP_SIZE, GRID_X, CC_NONE), `range` and the bindings params, staticBuf, cageBuf; then
+// the packed words' getters (src/gpu/cc/words.ts).
 
 fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.nVerts), 3u * p, p < params.nVerts); }
 fn pt(p: u32) -> vec3<f32> {
@@ -45,26 +37,26 @@ fn vertexMask(rule: u32, first: u32, m: u32, k: u32, ia: u32, ib: u32) -> vec3<f
   return ((n - 2.0) / n) * v + s / (n * n);
 }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let i = (wid.y * GRID_X + wid.x) * 64u + lid;
+  let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (i >= range.count) { return; }
   let p = range.first + i;
   let r = params.ccRules + 2u * (p - params.nVerts);
   let w0 = staticBuf[r];
   let first = staticBuf[r + 1u];
-  let kind = w0 & 3u;
+  let kind = ccRuleWord_kind(w0);
   var out: vec3<f32>;
   if (kind == 0u) {
     // Face point: the centroid.
-    let n = (w0 >> 8u) & 0xfffu;
+    let n = ccRuleWord_count(w0);
     var s = vec3<f32>(0.0);
     for (var j = 0u; j < n; j++) { s += inp(first + j); }
     out = s / f32(n);
   } else if (kind == 1u) {
     // Edge point: crease (s ≥ 1, boundary), smooth, or their blend for 0 < s < 1.
-    let n = (w0 >> 8u) & 0xfffu;
-    let sh = select(0.0, bitcast<f32>(staticBuf[params.ccInputs + first + 4u]), ((w0 >> 2u) & 1u) == 1u);
+    let n = ccRuleWord_count(w0);
+    let sh = select(0.0, bitcast<f32>(staticBuf[params.ccInputs + first + 4u]), ccRuleWord_sharp(w0) == 1u);
     let mid = 0.5 * (inp(first) + inp(first + 1u));
     if (n == 2u || sh >= 1.0) {
       out = mid;
@@ -75,17 +67,17 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   } else {
     // Vertex point: parent rule, child rule and OpenSubdiv's transitional weight W (a sharp
     // vertex's crease pair and W follow its inputs).
-    let pr = (w0 >> 2u) & 3u;
-    let cr = (w0 >> 4u) & 3u;
-    let m = (w0 >> 8u) & 0xfffu;
-    let k = (w0 >> 20u) & 0xfffu;
+    let pr = ccRuleWord_parent(w0);
+    let cr = ccRuleWord_child(w0);
+    let m = ccRuleWord_count(w0);
+    let k = ccRuleWord_faces(w0);
     var ia = 0u;
     var ib = 0u;
     var W = 1.0;
     if ((pr | cr) != 0u) {
       let x = params.ccInputs + first + 1u + m + k;
-      ia = staticBuf[x] & 0xffffu;
-      ib = staticBuf[x] >> 16u;
+      ia = ccPairWord_a(staticBuf[x]);
+      ib = ccPairWord_b(staticBuf[x]);
       W = bitcast<f32>(staticBuf[x + 1u]);
     }
     out = vertexMask(pr, first, m, k, ia, ib);
@@ -107,18 +99,18 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 // of build.ts), so the regular masks below are exact; the axis points use the crease rules
 // when the axis is infinitely sharp (boundaries, creases into the EV, darts).
 
-var<workgroup> P: array<vec3<f32>, 384>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
-var<workgroup> F: array<vec3<f32>, 256>;   // 4 new face points per thread: cells 00, 10, 01, 11
-var<workgroup> C: array<vec3<f32>, 64>;    // the centre, at the fan's first thread
+var<workgroup> P: array<vec3<f32>, 6u * WORKGROUP_SIZE>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+var<workgroup> F: array<vec3<f32>, 4u * WORKGROUP_SIZE>;   // 4 new face points per thread: cells 00, 10, 01, 11
+var<workgroup> C: array<vec3<f32>, WORKGROUP_SIZE>;    // the centre, at the fan's first thread
 
 fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let wg = wid.y * GRID_X + wid.x;
   // (Workgroups past the last one exist when the dispatch is folded into 2D.)
-  let th = select(NONE, staticBuf[params.ccThreads + wg * WG + lid], wg < params.ccSliceGroups);
-  let valid = th != NONE;
+  let th = select(CC_NONE, staticBuf[params.ccThreads + wg * WORKGROUP_SIZE + lid], wg < params.ccSliceGroups);
+  let valid = th != CC_NONE;
   var fan = 0u;
   var sec = 0u;
   var ns = 1u;
@@ -133,22 +125,22 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   var ia = 0u;
   var ib = 0u;
   if (valid) {
-    fan = th & 0xffffffu;
-    sec = th >> 24u;
+    fan = ccThreadWord_fan(th);
+    sec = ccThreadWord_sector(th);
     let w0 = fanWord(fan, 0u);
-    ns = w0 & 255u;
-    n = (w0 >> 8u) & 255u;
-    boundary = ((w0 >> 16u) & 1u) == 1u;
-    rule = (w0 >> 17u) & 3u;
-    D = (w0 >> 20u) & 15u;
+    ns = ccFanWord_sectors(w0);
+    n = ccFanWord_valence(w0);
+    boundary = ccFanWord_boundary(w0) == 1u;
+    rule = ccFanWord_rule(w0);
+    D = ccFanWord_depth(w0);
     anchor = pt(fanWord(fan, 1u));
     sliceBase = fanWord(fan, 2u);
     let sb = fanWord(fan, 3u) + 7u * sec;
     inf = staticBuf[params.ccSectors + sb] == 1u;
     pseudo = boundary && sec == n;
     let pair = fanWord(fan, 6u);
-    ia = pair & 255u;
-    ib = pair >> 8u;
+    ia = ccPairWord_a(pair);
+    ib = ccPairWord_b(pair);
     for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = pt(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
     if (sec == 0u) { C[lid] = vec3<f32>(0.0); }
   }
@@ -254,22 +246,22 @@ fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> v
   return pt(fanWord(fan, 2u) + D + ((D - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * i + which);
 }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let fan = (wid.y * GRID_X + wid.x) * 64u + lid;
+  let fan = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (fan >= params.nFans) { return; }
   let w0 = fanWord(fan, 0u);
-  let ns = w0 & 255u;
-  let n = (w0 >> 8u) & 255u;
-  let boundary = ((w0 >> 16u) & 1u) == 1u;
-  let rule = (w0 >> 17u) & 3u;
-  let D = (w0 >> 20u) & 15u;
+  let ns = ccFanWord_sectors(w0);
+  let n = ccFanWord_valence(w0);
+  let boundary = ccFanWord_boundary(w0) == 1u;
+  let rule = ccFanWord_rule(w0);
+  let D = ccFanWord_depth(w0);
   let anchor = pt(fanWord(fan, 1u));
   var c = vec3<f32>(0.0);
   if (D > 0u) { c = pt(fanWord(fan, 2u) + D - 1u); }
   let pair = fanWord(fan, 6u);
-  let ia = pair & 255u;
-  let ib = pair >> 8u;
+  let ia = ccPairWord_a(pair);
+  let ib = ccPairWord_b(pair);
   var P0 = c;
   var T1 = vec3<f32>(0.0);
   var T2 = vec3<f32>(0.0);
@@ -320,14 +312,14 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 
 // One thread per cage vertex: its limit position and normal, where the factor rule and the
 // flat baseline read them.
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let v = (wid.y * GRID_X + wid.x) * 64u + lid;
+  let v = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (v >= params.nVerts) { return; }
   let fan = staticBuf[params.ccVertexFan + v];
   var p = pt(v);
   var nn = vec3<f32>(cageBuf[params.offNormals + 3u * v], cageBuf[params.offNormals + 3u * v + 1u], cageBuf[params.offNormals + 3u * v + 2u]);
-  if (fan != NONE && ccVertexLimitWord_crease(fan) == 1u) {
+  if (fan != CC_NONE && ccVertexLimitWord_crease(fan) == 1u) {
     // On a straight semi-sharp crease σ = k + f (build.ts creaseVertexGrid: 3×3 points at 3a + b,
     // a across, b along, then σ): the corner of its single-crease patches, the closed form of
     // wgsl/crease-basis.wgsl at u = 0: across (ρ/6, 1 − ρ/3, ρ/6) with ρ = 2^-k (1 − f/2), along
@@ -354,7 +346,7 @@ fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_inde
     p = c + pp;
     let nc = cross(pa, pb);
     if (length(nc) > 0.0) { nn = normalize(nc); }
-  } else if (fan != NONE) {
+  } else if (fan != CC_NONE) {
     let lb = fanWord(fan, 5u);
     p = pt(lb);
     let nc = cross(pt(lb + 1u), pt(lb + 2u));

@@ -13,7 +13,6 @@
 // Optionally (params.ccFlat) blends from the flat triangle of the corners' limit positions to
 // the surface as the tess factor rises from 1 to 4.
 
-const CC_NONE: u32 = 0xffffffffu;
 
 fn ccP(p: u32) -> vec3<f32> {
   let o = select(params.offCtrl + 3u * (p - params.nVerts), 3u * p, p < params.nVerts);
@@ -283,13 +282,13 @@ fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec
 }
 
 fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
-  let sec = (w0 >> 12u) & 63u;
-  let off = (w0 >> 8u) & 15u;
-  let ab = ccRot((w0 >> 2u) & 3u, x, y) * exp2(-f32(off));
+  let sec = ccRegionWord_sector(w0);
+  let off = ccRegionWord_offset(w0);
+  let ab = ccRot(ccRegionWord_rot(w0), x, y) * exp2(-f32(off));
   let fw = ccFanWord(fan, 0u);
   let anchor = ccP(ccFanWord(fan, 1u));
-  let D = (fw >> 20u) & 15u;
-  let f = CCFan(fw & 255u, (fw >> 8u) & 255u, ((fw >> 16u) & 1u) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor, D);
+  let D = ccFanWord_depth(fw);
+  let f = CCFan(ccFanWord_sectors(fw), ccFanWord_valence(fw), ccFanWord_boundary(fw) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor, D);
   let lb = ccFanWord(fan, 5u);
   let m = max(ab.x, ab.y);
   // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).
@@ -380,9 +379,9 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
   let first = staticBuf[params.ccTri + 3u * t];
   let info = staticBuf[params.ccTri + 3u * t + 1u];
-  let n = info & 255u;
-  let fan = (info >> 8u) & 0xfffffu;
-  let dd = info >> 28u;
+  let n = ccTriWord_corners(info);
+  let fan = ccTriWord_fan(info);
+  let dd = ccTriWord_depth(info);
   // The face parameter (sub-face k, x, y), then one call of the region evaluator (a single
   // call site keeps the inlined shader small).
   var kxy: vec3<f32>;

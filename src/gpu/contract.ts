@@ -574,10 +574,15 @@ export const TESS_BINDINGS = Object.keys(TESS_GROUP.binding) as TessBinding[];
 /** What any evaluation over the mesh reads (no outputs): e.g. src/gpu/cc/sample.ts. */
 export const TESS_INPUTS: readonly TessBinding[] = ['params', 'staticBuf', 'cageBuf', 'work'];
 
+/** The point range of one level dispatch of the patch build (face points, or edge and vertex points). */
+export const CC_RANGE = defineStruct('Range', [
+  ['first', 'u32', 'Global index of the range’s first point.'],
+  ['count', 'u32'],
+] as const);
+
 /**
- * The patch build's group (wgsl/cc-build.wgsl, owned by the Catmull-Clark rewrite, declares these
- * by hand; its pipelines are built on this layout, so a drift fails pipeline creation): it
- * writes cageBuf, and its level dispatches take their point range in `range`.
+ * The patch build's group (wgsl/cc-build.wgsl): it reads the static words, writes cageBuf, and its
+ * level dispatches take their point range in `range`.
  */
 export const CC_BUILD_GROUP = defineBindGroup(0, {
   params: { binding: 0, space: 'uniform', type: 'Params' },
@@ -587,6 +592,13 @@ export const CC_BUILD_GROUP = defineBindGroup(0, {
 });
 export type CcBuildBinding = keyof typeof CC_BUILD_GROUP.binding;
 export const CC_BUILD_BINDINGS = Object.keys(CC_BUILD_GROUP.binding) as CcBuildBinding[];
+/** Sentinel of the Catmull-Clark words: no fan, no region, an idle slice thread. */
+export const CC_NONE = 0xffffffff;
+
+/** What wgsl/cc-build.wgsl starts with (then the packed words' getters, src/gpu/cc/shaders.ts). */
+export function ccBuildPrelude(): string {
+  return [TESS_PARAMS.wgsl, constantsWgsl, wgslConstants({ CC_NONE }), CC_RANGE.wgsl, CC_BUILD_GROUP.wgsl()].join('\n');
+}
 
 /** What every tessellator shader starts with: Params, the constants, the bindings `names` (all by
  * default), the packed words' getters and the table header's. */

@@ -16,16 +16,7 @@ import emitWgsl from '../../wgsl/tess-emit.wgsl?raw';
 import scanWgsl from '../../wgsl/scan.wgsl?raw';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { CC_BUILD_WGSL as ccBuildWgsl, CC_SURFACE_WGSL as ccSurfaceWgsl } from './cc/shaders.ts';
-import {
-  CC_BUILD_BINDINGS,
-  CC_BUILD_GROUP,
-  scanPrelude,
-  TESS_BINDINGS,
-  TESS_GROUP,
-  TESS_PARAMS,
-  tessPrelude,
-  usedBindings,
-} from './contract.ts';
+import { CC_BUILD_BINDINGS, CC_BUILD_GROUP, scanPrelude, TESS_BINDINGS, TESS_GROUP, tessPrelude, usedBindings } from './contract.ts';
 
 export type Surface = 'phong' | 'catmull-clark';
 
@@ -66,8 +57,8 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     weld: code(surfaceWgsl, outputsWgsl, weldWgsl),
     plan: code(patternWgsl, planWgsl),
     emit: code(surfaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
-    // wgsl/cc-build.wgsl declares its bindings (CC_BUILD_GROUP) and constants itself.
-    ccBuild: [TESS_PARAMS.wgsl, ccBuildWgsl].join('\n'),
+    // The patch build's own prelude (contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
+    ccBuild: ccBuildWgsl,
   };
   type Module = keyof typeof modules;
   const pass = (name: PassName, label: string, module: Module, entry = 'main'): PassSpec => ({

@@ -37,6 +37,7 @@ import {
   ATTEMPTS,
   BUDGET,
   CC_BUILD_GROUP,
+  CC_RANGE,
   EMIT_TRIANGLES_ARGS_OFFSET,
   type CcBuildBinding,
   GRID_X,
@@ -314,6 +315,11 @@ export class Tessellator {
       emitArgs: this.emitArgs,
     };
     const uniforms: GPUBuffer[] = [];
+    const rangeBytes = (first: number, count: number) => {
+      const bytes = new ArrayBuffer(CC_RANGE.size);
+      CC_RANGE.write(new DataView(bytes), { first, count });
+      return bytes;
+    };
     const uniform = (label: string, bytes: ArrayBuffer | Uint32Array) => {
       const u = device.createBuffer({ label, size: bytes.byteLength, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
       device.queue.writeBuffer(u, 0, bytes);
@@ -363,7 +369,7 @@ export class Tessellator {
         [vf, vc],
       ].map(([first, count]) => ({
         count,
-        group: bindGroup('ccPoints', { range: uniform('cc level range', Uint32Array.of(first, count, 0, 0)) }),
+        group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, count)) }),
       })),
     );
     return { prepared, staticBuf, cageBuf, work, workLayout, normalsOffset, groups, scans, cc, ccRanges, uniforms };

@@ -121,7 +121,7 @@ import {
   vertexRing,
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../prepare.ts';
-import { CC_REGION_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
+import { CC_FAN_WORD, CC_PAIR_WORD, CC_REGION_WORD, CC_RULE_WORD, CC_THREAD_WORD, CC_TRI_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 
 /** Patch colours for the demo ("show irregular patches"). */
 export const enum PatchKind {
@@ -326,11 +326,11 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       ib = cb;
     }
     if (e1 - e0 >= 1 << 12 || h1 - h0 >= 1 << 12) throw new Error(`vertex of valence ${e1 - e0} is not supported`);
-    rules.push(RULE_VERTEX | (pr << 2) | (cr << 4) | ((e1 - e0) << 8) | ((h1 - h0) << 20));
+    rules.push(CC_RULE_WORD.pack({ kind: RULE_VERTEX, parent: pr, child: cr, sharp: 0, count: e1 - e0, faces: h1 - h0 }));
     rules.push(first);
     // A sharp vertex (either rule not smooth) carries its crease pair and W after its inputs.
     if (pr !== VRULE_SMOOTH || cr !== VRULE_SMOOTH) {
-      inputs.push(ia | (ib << 16));
+      inputs.push(CC_PAIR_WORD.pack({ a: ia, b: ib }));
       inputs.push(f32bits(W));
     }
   }
@@ -349,14 +349,14 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
     // An interior edge with sharpness carries it after its inputs (flag bit 2).
     const sharpEdge = n === 4 && L.edgeSharp[e] !== 0;
     if (sharpEdge) inputs.push(f32bits(L.edgeSharp[e]));
-    rules.push(RULE_EDGE | ((sharpEdge ? 1 : 0) << 2) | (n << 8));
+    rules.push(CC_RULE_WORD.pack({ kind: RULE_EDGE, parent: 0, child: 0, sharp: sharpEdge, count: n, faces: 0 }));
     rules.push(first);
   }
   // Face points.
   for (let f = 0; f < nF; f++) {
     const a = m.faceOffsets[f],
       b = m.faceOffsets[f + 1];
-    rules.push(RULE_FACE | ((b - a) << 8));
+    rules.push(CC_RULE_WORD.pack({ kind: RULE_FACE, parent: 0, child: 0, sharp: 0, count: b - a, faces: 0 }));
     rules.push(inputs.n);
     for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
   }
@@ -930,7 +930,18 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
           const fan = getFan(s, x, Math.max(1, TOTAL_DEPTH - s));
           const sector = fans[fan].ringFaces.indexOf(g);
           if (sector < 0) throw new Error(`Catmull-Clark: face ${f} is not in the fan of its corner`);
-          regs.push({ w0: REGION_SECTOR | (((q.r + c) & 3) << 2) | ((d - s) << 8) | (sector << 12) | (kind << 24), w1: fan });
+          regs.push({
+            w0: CC_REGION_WORD.pack({
+              kind: REGION_SECTOR,
+              rot: (q.r + c) & 3,
+              mask: 0,
+              offset: d - s,
+              sector,
+              crease: 0,
+              patchKind: kind,
+            }),
+            w1: fan,
+          });
           found = true;
         }
         if (!found) {
@@ -1065,13 +1076,13 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
       cosBase = at;
     }
     if (F.D > 15) throw new Error('fan depth > 15');
-    fanWords.push(ns | (F.n << 8) | ((F.boundary ? 1 : 0) << 16) | (F.rule << 17) | (F.D << 20));
+    fanWords.push(CC_FAN_WORD.pack({ sectors: ns, valence: F.n, boundary: F.boundary, rule: F.rule, depth: F.D }));
     fanWords.push(levels[F.level].base + F.x);
     fanWords.push(sliceBase);
     fanWords.push(sectorWords.n);
     fanWords.push(f32bits(F.alpha));
     fanWords.push(limitBase);
-    fanWords.push(F.ia | (F.ib << 8));
+    fanWords.push(CC_PAIR_WORD.pack({ a: F.ia, b: F.ib }));
     fanWords.push(cosBase);
     for (const s of F.sectors) for (const w of s) sectorWords.push(w);
     if (F.D > 0) sliceFans.push(id);
@@ -1085,7 +1096,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
       while (threadWords.n % WORKGROUP) threadWords.push(NONE);
       used = 0;
     }
-    for (let i = 0; i < ns; i++) threadWords.push(id | (i << 24));
+    for (let i = 0; i < ns; i++) threadWords.push(CC_THREAD_WORD.pack({ fan: id, sector: i }));
     used += ns;
   }
   while (threadWords.n % WORKGROUP) threadWords.push(NONE);
@@ -1105,7 +1116,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     if (k < 0 || cage.faceIndices[start] !== prepared.triVerts[3 * t]) throw new Error(`triangle ${t} is not a fan triangle of face ${f}`);
     const dd = n === 4 ? faceDepth[f] : faceDepth[f] - 1;
     triRegion[3 * t] = faceRegion[f] >= 0 ? faceRegion[f] : NONE;
-    triRegion[3 * t + 1] = n | (k << 8) | (Math.max(0, dd) << 28);
+    triRegion[3 * t + 1] = CC_TRI_WORD.pack({ corners: n, fan: k, depth: Math.max(0, dd) });
     if (n !== 4) {
       let at = polyAt.get(n);
       if (at === undefined) {
@@ -1180,16 +1191,16 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
  */
 export function regionOf(cc: CatmullClarkData, t: number, k: number, x: number, y: number): { blended: boolean; sector: boolean } {
   const info = cc.triRegion[3 * t + 1];
-  const dd = info >>> 28;
+  const dd = CC_TRI_WORD.get(info, 'depth');
   const side = 1 << dd;
   const i = Math.min(Math.floor(x * side), side - 1),
     j = Math.min(Math.floor(y * side), side - 1);
   const reg = cc.triRegion[3 * t] + k * side * side + j * side + i;
   const w0 = cc.regions[2 * reg];
-  if ((w0 & 3) !== REGION_SECTOR) return { blended: false, sector: false };
-  const [a, b] = rot((w0 >> 2) & 3, x * side - i, y * side - j);
-  const off = (w0 >> 8) & 15;
-  const D = (cc.fans[8 * cc.regions[2 * reg + 1]] >> 20) & 15;
+  if (CC_REGION_WORD.get(w0, 'kind') !== REGION_SECTOR) return { blended: false, sector: false };
+  const [a, b] = rot(CC_REGION_WORD.get(w0, 'rot'), x * side - i, y * side - j);
+  const off = CC_REGION_WORD.get(w0, 'offset');
+  const D = CC_FAN_WORD.get(cc.fans[8 * cc.regions[2 * reg + 1]], 'depth');
   // Blended inside the step-D square: max(a, b)·2^-offset < 2^-D.
   return { blended: Math.max(a, b) * 2 ** (D - off) < 1, sector: true };
 }

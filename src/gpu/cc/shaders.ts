@@ -1,13 +1,17 @@
 /**
- * The Catmull-Clark shader sources with what they include: the evaluator (the region word's
- * getters, wgsl/crease-basis.wgsl for single-crease patches, wgsl/surface-cc.wgsl) and the patch
- * build (the vertex-limit word's getters, wgsl/cc-build.wgsl). `struct Params` is prepended by
- * the tessellator.
+ * The Catmull-Clark shader sources with what they include. The evaluator: the packed words'
+ * getters (words.ts), wgsl/crease-basis.wgsl for single-crease patches, wgsl/surface-cc.wgsl
+ * (after the tessellator's prelude). The patch build: its own prelude (Params, the shared
+ * constants, CC_BUILD_GROUP's bindings and the level range struct, from contract.ts), the
+ * getters, wgsl/cc-build.wgsl.
  */
 import creaseBasisWgsl from '../../../wgsl/crease-basis.wgsl?raw';
 import surfaceWgsl from '../../../wgsl/surface-cc.wgsl?raw';
 import buildWgsl from '../../../wgsl/cc-build.wgsl?raw';
-import { CC_REGION_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
+import { CC_NONE, ccBuildPrelude, wgslConstants } from '../contract.ts';
+import { CC_WORDS } from './words.ts';
 
-export const CC_SURFACE_WGSL = [CC_REGION_WORD.wgsl, creaseBasisWgsl, surfaceWgsl].join('\n');
-export const CC_BUILD_WGSL = [CC_VERTEX_LIMIT_WORD.wgsl, buildWgsl].join('\n');
+const wordsWgsl = CC_WORDS.map((w) => w.wgsl).join('\n');
+
+export const CC_SURFACE_WGSL = [wgslConstants({ CC_NONE }), wordsWgsl, creaseBasisWgsl, surfaceWgsl].join('\n');
+export const CC_BUILD_WGSL = [ccBuildPrelude(), wordsWgsl, buildWgsl].join('\n');

@@ -1,15 +1,16 @@
 /**
  * Packed words of the Catmull-Clark data (src/gpu/cc/build.ts has the layouts) declared once for
- * TypeScript and WGSL (defineBits, src/gpu/contract.ts); src/gpu/cc/shaders.ts prepends their
- * getters to the shaders. The fan and sector words are still shifted by hand.
+ * TypeScript and WGSL (defineBits, src/gpu/contract.ts): build.ts packs through .pack, the CPU
+ * side of the region lookup reads through .get, and src/gpu/cc/shaders.ts prepends the generated
+ * getters (`ccFanWord_depth(w)`, …) to the shaders, which decode nothing by hand.
  */
 import { defineBits } from '../contract.ts';
 
 /**
  * Word 0 of a region. kind: 1 patch, 2 EV sector; rot: the region's frame is rot_rot of the
  * root square; mask: phantom sides of a patch; crease: a single-crease patch (σ after its 16
- * indices, crease on the frame's x = 0 side); offset, sector: of an EV sector region; patchKind:
- * the colour. (ccSector still reads offset and sector by hand-written shifts of these bits.)
+ * indices, crease on the frame's x = 0 side); offset, sector: of an EV sector region (its fan
+ * starts `offset` levels above the region's); patchKind: the colour.
  */
 export const CC_REGION_WORD = defineBits('CcRegionWord', {
   kind: [0, 2],
@@ -27,3 +28,45 @@ export const CC_REGION_WORD = defineBits('CcRegionWord', {
  * patchIdx of its 3×3 neighbourhood and σ). All ones: none (isolated vertex).
  */
 export const CC_VERTEX_LIMIT_WORD = defineBits('CcVertexLimitWord', { index: [0, 31], crease: [31, 1] });
+
+/**
+ * Word 0 of a point's rule. kind: 0 face, 1 edge, 2 vertex point; count: the face's corners,
+ * the edge's inputs (2 on a boundary, else 4) or the vertex's edges; faces: the vertex's faces;
+ * parent, child: the vertex's rule before and after the step (0 smooth, 1 crease, 2 corner);
+ * sharp: the edge's sharpness follows its inputs (else 0).
+ */
+export const CC_RULE_WORD = defineBits('CcRuleWord', {
+  kind: [0, 2],
+  parent: [2, 2],
+  child: [4, 2],
+  sharp: [6, 1],
+  count: [8, 12],
+  faces: [20, 12],
+});
+
+/** Two edge positions in a vertex's ring: a vertex rule's or a fan's crease pair. */
+export const CC_PAIR_WORD = defineBits('CcPairWord', { a: [0, 16], b: [16, 16] });
+
+/**
+ * Word 0 of a fan. sectors: its threads (valence, + 1 pseudo-sector on a boundary); valence;
+ * boundary; rule: the centre's (0 smooth or dart, 1 crease, 2 corner); depth: its steps D.
+ */
+export const CC_FAN_WORD = defineBits('CcFanWord', {
+  sectors: [0, 8],
+  valence: [8, 8],
+  boundary: [16, 1],
+  rule: [17, 2],
+  depth: [20, 4],
+});
+
+/** One slice-kernel thread: its fan and its sector (all ones: idle). */
+export const CC_THREAD_WORD = defineBits('CcThreadWord', { fan: [0, 24], sector: [24, 8] });
+
+/**
+ * Word 1 of a prepared triangle. corners: its face's (4: a quad); fan: which fan triangle of
+ * the face it is (corners 0, fan, fan + 1); depth: the face's region depth inside the quad or
+ * inside each n-gon sub-face.
+ */
+export const CC_TRI_WORD = defineBits('CcTriWord', { corners: [0, 8], fan: [8, 20], depth: [28, 4] });
+
+export const CC_WORDS = [CC_REGION_WORD, CC_VERTEX_LIMIT_WORD, CC_RULE_WORD, CC_PAIR_WORD, CC_FAN_WORD, CC_THREAD_WORD, CC_TRI_WORD];
