@@ -87,6 +87,12 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
       // (bare vertices, vertices of holes only) keeps an output slot that nothing reads.
       const used = new Uint8Array(out.vertexCount);
       for (let i = 0; i < 3 * out.triangleCount; i++) used[out.indices[i]] = 1;
+      // ... and holds the cage position and no source triangle, never a previous mesh's data.
+      for (let v = 0; v < mesh.vertexCount; v++) {
+        if (used[v]) continue;
+        const same = [0, 1, 2].every((i) => out.positions[3 * v + i] === mesh.positions[3 * v + i]);
+        if (!same || out.srcTri[v] !== 0xffffffff) failures.push(`${name}: unused vertex ${v} holds stale data`);
+      }
       const step = Math.max(1, Math.floor(out.vertexCount / SAMPLE));
       let max = 0,
         nan = 0,

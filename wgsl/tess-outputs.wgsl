@@ -12,3 +12,19 @@ fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
   outBary[index] = packBary(w);
   outSrcTri[index] = t;
 }
+
+// A cage vertex no face with a surface uses (a bare vertex, or one of holes only) still has its
+// output slot: it gets the cage position, no normal and no source triangle (NO_OWNER), so the
+// output buffers never hold what a previous mesh left there. No triangle refers to it.
+fn writeUnusedVertex(index: u32, v: u32) {
+  if (index >= params.vertexCapacity) { return; }
+  let p = cagePos(v);
+  outPositions[3u * index] = p.x;
+  outPositions[3u * index + 1u] = p.y;
+  outPositions[3u * index + 2u] = p.z;
+  outNormals[3u * index] = 0.0;
+  outNormals[3u * index + 1u] = 0.0;
+  outNormals[3u * index + 2u] = 0.0;
+  outBary[index] = 0u;
+  outSrcTri[index] = NO_OWNER;
+}

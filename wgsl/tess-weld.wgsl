@@ -12,7 +12,10 @@ fn corners(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_inde
   let v = flatIndex(wid, lid);
   if (v >= params.nVerts || !emitEnabled()) { return; }
   let owner = staticBuf[params.offVertexOwner + v];
-  if (owner == NO_OWNER) { return; } // not used by any face
+  if (owner == NO_OWNER) {
+    writeUnusedVertex(v, v); // not used by any face with a surface
+    return;
+  }
   let t = ownerWord_tri(owner);
   var w = vec3<u32>(0u);
   w[ownerWord_corner(owner)] = ONE;
