@@ -95,7 +95,7 @@ export function continuity(
   S: AccSurface,
   normal: NormalFn = (f, u, v) => S.evaluate(f, u, v).N,
   samples = 9,
-  include: (fa: number, fb: number) => boolean = () => true,
+  include: (fa: number, fb: number, a: number, b: number) => boolean = () => true,
 ): EdgeStats {
   const T = S.topology,
     cage = S.cage;
@@ -113,7 +113,7 @@ export function continuity(
     const other = corner.get(`${b},${a}`);
     if (!other) continue;
     const [fb, kb] = other;
-    if (!include(fa, fb)) continue;
+    if (!include(fa, fb, a, b)) continue;
     stats.edges++;
     const ma = T.faceSize[fa],
       mb = T.faceSize[fb];
@@ -133,6 +133,22 @@ export function continuity(
     }
   }
   return stats;
+}
+
+/**
+ * Edges that are not infinitely sharp (as the exact reference sees them: tags, boundary mode): the
+ * edges across which the schemes must be G1. `continuity(S, n, s, smoothEdges(cage))`.
+ */
+export function smoothEdges(cage: Cage): (fa: number, fb: number, a: number, b: number) => boolean {
+  const L = levelFromCage(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
+  const sharp = new Set<string>();
+  for (let e = 0; e < L.he.nEdges; e++)
+    if (L.edgeSharp[e] >= 10) {
+      const a = L.he.edgeVerts[2 * e],
+        b = L.he.edgeVerts[2 * e + 1];
+      sharp.add(`${Math.min(a, b)},${Math.max(a, b)}`);
+    }
+  return (_fa, _fb, a, b) => !sharp.has(`${Math.min(a, b)},${Math.max(a, b)}`);
 }
 
 /** The exact limit at an ACC parameter (face, u, v) (triangles: (u, v) = (w1, w2)). */

@@ -409,12 +409,17 @@ describe("the tessellator's (triangle, weights) → ACC (face, u, v)", () => {
 });
 
 describe('what the schemes refuse or ignore', () => {
-  it('n-gons and boundaries are refused with a clear error; creases are ignored with a warning', () => {
+  it('n-gons and holes are refused with a clear error; semi-sharp creases are built smooth with a warning', () => {
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(AccError);
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(/5 corners/);
-    expect(() => new AccSurface(loadCage(sheet).cage, 'pm-acc')).toThrow(/boundary/);
+    const holed = loadCage(torus).cage;
+    holed.holes.push(3);
+    expect(() => new AccSurface(holed, 'pm-acc')).toThrow(/hole/);
+    expect(new AccSurface(loadCage(sheet).cage, 'pm-acc').topology.warnings.join()).toMatch(/semi-sharp/);
     const S = new AccSurface(loadCage(creasedBox).cage, 'bezier-acc');
-    expect(S.topology.warnings.join()).toMatch(/crease/);
-    expect(() => new AccSurface(makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]), 'bezier-acc')).toThrow(AccError);
+    expect(S.topology.warnings.join()).toMatch(/semi-sharp/);
+    // A lone triangle: three boundary corners (edge-and-corner), each interpolated.
+    const lone = new AccSurface(makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]), 'bezier-acc');
+    close(lone.evaluate(0, 1, 0).P, [1, 0, 0], 1e-15);
   });
 });
