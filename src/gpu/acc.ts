@@ -13,7 +13,10 @@
  *     ringOffs  nVerts + 1;  ringData: per vertex e_0..e_{n−1}, d_0..d_{n−1} (d = TRI_FACE for triangles)
  *     valOffs   per valence n ≤ max valence: start of its constants in valData
  *     valData   f32 bits, per valence: cos(2π/n), sin(2π/n), λ_n, s_n, α[n], β[n], cos(2πk/n)[n]
- *   accParams  (uniform, 8 u32)                         nPatches and the section offsets
+ *     sectors   4 per patch: each corner's sector (crease / corner / cone; src/subdiv/acc.ts)
+ *     secOffs   per crease/corner sector size k: start of its constants in secData (2k + corner?)
+ *     secData   f32 bits, per sector kind: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask
+ *   accParams  (uniform, 12 u32)                        nPatches and the section offsets
  *
  * encode(encoder, cageBuffer): the cage buffer holds xyz f32 per cage vertex from offset 0 (the
  * tessellator's cage buffer starts so); one thread per patch. Nothing else has to re-run when the
@@ -22,7 +25,7 @@
 import buildWgsl from '../../wgsl/acc-build.wgsl?raw';
 import surfaceWgsl from '../../wgsl/surface-acc.wgsl?raw';
 import type { Cage, Topology } from '../mesh/index.ts';
-import { type AccScheme, type AccTopology, KIND_POINTS, buildAccTopology, valenceTable } from '../subdiv/acc.ts';
+import { type AccScheme, type AccTopology, KIND_POINTS, buildAccTopology, sectorTable, valenceTable } from '../subdiv/acc.ts';
 import { readBuffer } from './readback.ts';
 import { faceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -79,7 +82,7 @@ export class AccPatches {
   private group: GPUBindGroup | undefined;
   private groupCage: GPUBuffer | undefined;
 
-  /** Throws AccError (src/subdiv/acc.ts) for cages the schemes do not support (n-gons, boundaries). */
+  /** Throws AccError (src/subdiv/acc.ts) for cages the schemes do not support (n-gons, holes). */
   constructor(
     readonly device: GPUDevice,
     cage: Cage,
@@ -88,7 +91,17 @@ export class AccPatches {
   ) {
     const T = (this.topology = buildAccTopology(cage, scheme, topology));
     const vt = valenceTable(T.maxValence);
-    const sections = [T.corners, T.ringOffs, T.ringData, vt.offsets, new Uint32Array(vt.values.buffer)];
+    const st = sectorTable(T.maxSector);
+    const sections = [
+      T.corners,
+      T.ringOffs,
+      T.ringData,
+      vt.offsets,
+      new Uint32Array(vt.values.buffer),
+      T.sectors,
+      st.offsets,
+      new Uint32Array(st.values.buffer),
+    ];
     const offs: number[] = [];
     let total = 0;
     for (const s of sections) {
@@ -103,7 +116,7 @@ export class AccPatches {
     this.patchBuffer = device.createBuffer({ label: `acc ${scheme} patches`, size: Math.max(8, T.patches.byteLength), usage: storage });
     device.queue.writeBuffer(this.patchBuffer, 0, T.patches);
     this.pointBuffer = device.createBuffer({ label: `acc ${scheme} control points`, size: Math.max(16, 16 * T.nPoints), usage: storage });
-    const params = new Uint32Array([T.nPatches, ...offs, 0, 0]);
+    const params = new Uint32Array([T.nPatches, ...offs, 0, 0, 0]);
     this.paramsBuffer = device.createBuffer({
       label: `acc ${scheme} build params`,
       size: params.byteLength,

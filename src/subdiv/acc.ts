@@ -92,7 +92,15 @@
  *   reference's); triangles (u, v) = (w1, w2), the barycentric weights of face corners 1 and 2
  *   (w0 = 1 − u − v), i.e. the tessellator's weights on a triangle face (prepare.ts fans it as (c0,c1,c2)).
  */
-import { type Cage, type Topology, DEFAULT_OPTIONS, SHARPNESS_INFINITE, buildTopology, computeSharpness, vertexRing } from '../mesh/index.ts';
+import {
+  type Cage,
+  type Topology,
+  DEFAULT_OPTIONS,
+  SHARPNESS_INFINITE,
+  buildTopology,
+  computeSharpness,
+  vertexRing,
+} from '../mesh/index.ts';
 import { creaseCrossMask } from './limit.ts';
 
 export type AccScheme = 'bezier-acc' | 'gregory-acc' | 'pm-acc';
@@ -314,8 +322,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
       edgeSharp[v].push(isInf(sharp.edge[topo.heEdge[h]]));
     }
     const nInf = edgeSharp[v].filter((x) => x).length;
-    const type =
-      isInf(sharp.vertex[v]) || nInf > 2 ? (nInf < 2 ? SECTOR_CONE : SECTOR_CORNER) : nInf === 2 ? SECTOR_CREASE : SECTOR_SMOOTH;
+    const type = isInf(sharp.vertex[v]) || nInf > 2 ? (nInf < 2 ? SECTOR_CONE : SECTOR_CORNER) : nInf === 2 ? SECTOR_CREASE : SECTOR_SMOOTH;
     const smooth = type === SECTOR_SMOOTH || type === SECTOR_CONE;
     if (smooth && n < 3) problems.push(`vertex ${v + 1} has valence ${n} (at least 3 needed)`);
     vType[v] = type;
@@ -454,14 +461,7 @@ export interface CornerInfo {
  * Corner info of vertex `vert` seen from a face at ring rotation `rot`. `midpointRule`: a triangle's
  * diagonal D is the midpoint of its other two vertices (Pm, nvmesh) instead of its centroid.
  */
-export function cornerInfo(
-  T: AccTopology,
-  P: ArrayLike<number>,
-  vert: number,
-  rot: number,
-  midpointRule: boolean,
-  sector = 0,
-): CornerInfo {
+export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, rot: number, midpointRule: boolean, sector = 0): CornerInfo {
   const type = sector & 3;
   if (type === SECTOR_CREASE || type === SECTOR_CORNER) return sectorCornerInfo(T, P, vert, rot, midpointRule, sector);
   const o = T.ringOffs[vert],
@@ -545,7 +545,14 @@ export function cornerInfo(
  * the same quantities as cornerInfo, with the sector's tangent family, the pseudo-valence n' in the
  * Loop–Schaefer interior points and the B-spline boundary rules on the sector's sharp edges.
  */
-function sectorCornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, rot: number, midpointRule: boolean, sector: number): CornerInfo {
+function sectorCornerInfo(
+  T: AccTopology,
+  P: ArrayLike<number>,
+  vert: number,
+  rot: number,
+  midpointRule: boolean,
+  sector: number,
+): CornerInfo {
   const o = T.ringOffs[vert],
     n = (T.ringOffs[vert + 1] - o) / 2;
   const type = sector & 3,
@@ -580,7 +587,9 @@ function sectorCornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, ro
   const f = (i: number): V3 => mul(add(add(mul(v, K.np), mul(add(e[i], e[i + 1]), 2)), D[i]), 1 / (K.np + 5));
   const edgePt = (j: number): V3 => comb([2 / 3, v], [1 / 3, e[j]]);
   const eh = (j: number): V3 =>
-    j === 0 || j === k ? edgePt(j) : comb([8 / 18, v], [4 / 18, e[j]], [2 / 18, e[j - 1]], [2 / 18, e[j + 1]], [1 / 18, D[j - 1]], [1 / 18, D[j]]);
+    j === 0 || j === k
+      ? edgePt(j)
+      : comb([8 / 18, v], [4 / 18, e[j]], [2 / 18, e[j - 1]], [2 / 18, e[j + 1]], [1 / 18, D[j - 1]], [1 / 18, D[j]]);
   const zero: V3 = [0, 0, 0];
   const first = i0 === 0,
     last = i0 + 1 === k;
@@ -693,12 +702,14 @@ function gregoryPatch(C: CornerInfo[]): V3[] {
       ck = C[k].k.c;
     // On a sharp (sector-bounding) edge there is no neighbour to be G1 with: the Loop–Schaefer
     // interior point on quads (the B-spline's on a regular boundary); triangles drop the transversal.
-    const Fp = C[k].sharpNext && m === 4
-      ? C[k].f0
-      : mul(comb([C[kn].k.c, C[k].p], [den - 2 * ck - C[kn].k.c, E[k].p], [2 * ck, E[kn].m], [1, C[k].rp]), 1 / den);
-    const Fm = C[k].sharpPrev && m === 4
-      ? C[k].f0
-      : mul(comb([C[kp].k.c, C[k].p], [den - 2 * ck - C[kp].k.c, E[k].m], [2 * ck, E[kp].p], [1, C[k].rm]), 1 / den);
+    const Fp =
+      C[k].sharpNext && m === 4
+        ? C[k].f0
+        : mul(comb([C[kn].k.c, C[k].p], [den - 2 * ck - C[kn].k.c, E[k].p], [2 * ck, E[kn].m], [1, C[k].rp]), 1 / den);
+    const Fm =
+      C[k].sharpPrev && m === 4
+        ? C[k].f0
+        : mul(comb([C[kp].k.c, C[k].p], [den - 2 * ck - C[kp].k.c, E[k].m], [2 * ck, E[kp].p], [1, C[k].rm]), 1 / den);
     out.push(C[k].p, E[k].p, E[k].m, Fp, Fm);
   }
   return out;
@@ -1137,5 +1148,21 @@ export function valenceTable(maxValence: number): { offsets: Uint32Array; values
     const k = valenceConstants(n);
     vals.push(k.c, k.s, k.lambda, k.sn, ...k.alpha, ...k.beta, ...k.cosk);
   }
+  return { offsets, values: Float32Array.from(vals) };
+}
+
+/**
+ * The f32 constant table of crease and corner sectors the GPU build reads: offsets[2k + corner?]
+ * into values: cos θ, sin θ, n', ca[0..k], cb[0..k], then (creases) the mask[2k + 2] (sectorConstants).
+ */
+export function sectorTable(maxSector: number): { offsets: Uint32Array; values: Float32Array } {
+  const offsets = new Uint32Array(2 * (maxSector + 1));
+  const vals: number[] = [];
+  for (let k = 1; k <= maxSector; k++)
+    for (const type of [SECTOR_CREASE, SECTOR_CORNER]) {
+      offsets[2 * k + (type === SECTOR_CORNER ? 1 : 0)] = vals.length;
+      const K = sectorConstants(type, k);
+      vals.push(K.c, K.s, K.np, ...K.ca, ...K.cb, ...K.mask);
+    }
   return { offsets, values: Float32Array.from(vals) };
 }
