@@ -500,7 +500,7 @@ describe("the tessellator's (triangle, weights) → ACC (face, u, v)", () => {
 });
 
 describe('what the schemes refuse or ignore', () => {
-  it('n-gons and holes are refused with a clear error; semi-sharp creases are built smooth with a warning', () => {
+  it('n-gons and holes are refused with a clear error; semi-sharp creases are built sharp (σ ≥ 1) or smooth, with a warning', () => {
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(AccError);
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(/5 corners/);
     const holed = loadCage(torus).cage;

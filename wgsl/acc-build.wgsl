@@ -17,9 +17,9 @@ struct AccBuildParams {
   offSectors: u32,   // 4 per patch: the corner's sector, type | k << 2 | a << 16
   offSecOffs: u32,   // per (k, corner?) at 2k + corner: start of its constants in secData
   offSecData: u32,   // f32 bits: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask[2k + 2]
+  offOrder: u32,     // nPatches: thread i builds patch order[i] (sorted by kind: uniform workgroups)
   pad0: u32,
   pad1: u32,
-  pad2: u32,
 }
 
 @group(0) @binding(0) var<uniform> bp: AccBuildParams;
@@ -354,8 +354,9 @@ fn pmPatch(m: u32, ls: bool) {
 
 @compute @workgroup_size(64)
 fn buildPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let f = (wid.y * GRID_X + wid.x) * 64u + lid;
-  if (f >= bp.nPatches) { return; }
+  let thread = (wid.y * GRID_X + wid.x) * 64u + lid;
+  if (thread >= bp.nPatches) { return; }
+  let f = accStatic[bp.offOrder + thread];
   let kind = accPatchesB[2u * f];
   outBase = accPatchesB[2u * f + 1u];
   let tri = kind == KIND_GREGORY_TRI || kind == KIND_PM_TRI || kind == KIND_PM_TRI_LS;

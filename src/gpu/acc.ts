@@ -16,6 +16,7 @@
  *     sectors   4 per patch: each corner's sector (crease / corner / cone; src/subdiv/acc.ts)
  *     secOffs   per crease/corner sector size k: start of its constants in secData (2k + corner?)
  *     secData   f32 bits, per sector kind: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask
+ *     order     nPatches: the patch each build thread takes (patches sorted by kind)
  *   accParams  (uniform, 12 u32)                        nPatches and the section offsets
  *
  * encode(encoder, cageBuffer): the cage buffer holds xyz f32 per cage vertex from offset 0 (the
@@ -25,7 +26,15 @@
 import buildWgsl from '../../wgsl/acc-build.wgsl?raw';
 import surfaceWgsl from '../../wgsl/surface-acc.wgsl?raw';
 import type { Cage, Topology } from '../mesh/index.ts';
-import { type AccScheme, type AccTopology, KIND_POINTS, buildAccTopology, sectorTable, valenceTable } from '../subdiv/acc.ts';
+import {
+  type AccOptions,
+  type AccScheme,
+  type AccTopology,
+  KIND_POINTS,
+  buildAccTopology,
+  sectorTable,
+  valenceTable,
+} from '../subdiv/acc.ts';
 import { readBuffer } from './readback.ts';
 import { faceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -88,10 +97,13 @@ export class AccPatches {
     cage: Cage,
     readonly scheme: AccScheme,
     topology?: Topology,
+    options: AccOptions = {},
   ) {
-    const T = (this.topology = buildAccTopology(cage, scheme, topology));
+    const T = (this.topology = buildAccTopology(cage, scheme, topology, options));
     const vt = valenceTable(T.maxValence);
     const st = sectorTable(T.maxSector);
+    // Threads take the patches grouped by kind, so a workgroup runs one construction (no divergence).
+    const order = Uint32Array.from([...Array(T.nPatches).keys()].sort((a, b) => T.patches[2 * a] - T.patches[2 * b] || a - b));
     const sections = [
       T.corners,
       T.ringOffs,
@@ -101,6 +113,7 @@ export class AccPatches {
       T.sectors,
       st.offsets,
       new Uint32Array(st.values.buffer),
+      order,
     ];
     const offs: number[] = [];
     let total = 0;
@@ -116,7 +129,7 @@ export class AccPatches {
     this.patchBuffer = device.createBuffer({ label: `acc ${scheme} patches`, size: Math.max(8, T.patches.byteLength), usage: storage });
     device.queue.writeBuffer(this.patchBuffer, 0, T.patches);
     this.pointBuffer = device.createBuffer({ label: `acc ${scheme} control points`, size: Math.max(16, 16 * T.nPoints), usage: storage });
-    const params = new Uint32Array([T.nPatches, ...offs, 0, 0, 0]);
+    const params = new Uint32Array([T.nPatches, ...offs, 0, 0]);
     this.paramsBuffer = device.createBuffer({
       label: `acc ${scheme} build params`,
       size: params.byteLength,

@@ -49,8 +49,10 @@
  *     exact B-spline (phantom-point) patch, routed to REGULAR as in the interior.
  *   - On sharp edges the schemes' cross terms have no neighbour: Gregory's F on that edge is the
  *     Loop–Schaefer interior point, Pm's ê is (2v + e)/3 (what a reflected phantom face gives).
- *   - Semi-sharp creases and corners (0 < σ < 10) are NOT modelled: built smooth, with a warning
- *     (the error table shows what that costs). A sharp vertex with fewer than 2 sharp edges (a cone
+ *   - Semi-sharp creases and corners (0 < σ < 10) are NOT modelled: those with σ ≥ 1 are built
+ *     infinitely sharp, the rest smooth (AccOptions.semiSharp = 'smooth' drops them all), with a
+ *     warning; the error table shows what that costs (sharp is the closer of the two everywhere
+ *     we measured). A sharp vertex with fewer than 2 sharp edges (a cone
  *     point) is built as a smooth vertex pinned at v (its limit; the tangents are the smooth masks',
  *     the cone is not modelled). A crease sector of one face is built (its corner has no tangent
  *     plane, as in Catmull-Clark; its normal there is degenerate).
@@ -254,6 +256,13 @@ export interface AccOptions {
    * schemes' regular exactness, and the guard that the Pm c-patch is NOT exact there, notes §8.3).
    */
   noRegular?: boolean;
+  /**
+   * Semi-sharp tags (0 < σ < 10): 'sharp' (default) builds those with σ ≥ 1 as infinitely sharp
+   * and drops the rest; 'smooth' drops them all. Neither is Catmull-Clark's semi-sharp surface;
+   * 'sharp' is the closer one on every cage we measured (RMS position error 2–30× lower, e.g.
+   * creased-box 0.41% against 2.3% of the diagonal).
+   */
+  semiSharp?: 'smooth' | 'sharp';
 }
 
 /**
@@ -277,11 +286,15 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
     new AccError(`${scheme}: ${list.slice(0, 3).join('; ')}${list.length > 3 ? `; … (${list.length - 3} more)` : ''}`);
   if (problems.length) throw fail(problems);
   const warnings: string[] = [];
-  const isInf = (x: number) => x >= SHARPNESS_INFINITE;
+  const asSharp = options.semiSharp !== 'smooth';
+  const isInf = (x: number) => x >= SHARPNESS_INFINITE || (asSharp && x >= 1);
   let semi = 0;
-  for (const x of sharp.edge) if (x > 0 && !isInf(x)) semi++;
-  for (const x of sharp.vertex) if (x > 0 && !isInf(x)) semi++;
-  if (semi) warnings.push(`${semi} semi-sharp crease/corner tags built smooth: ${scheme} models infinitely sharp creases and corners only`);
+  for (const x of sharp.edge) if (x > 0 && x < SHARPNESS_INFINITE) semi++;
+  for (const x of sharp.vertex) if (x > 0 && x < SHARPNESS_INFINITE) semi++;
+  if (semi)
+    warnings.push(
+      `${semi} semi-sharp crease/corner tags built ${asSharp ? 'infinitely sharp (σ ≥ 1) or smooth' : 'smooth'}: ${scheme} models infinitely sharp creases and corners only`,
+    );
 
   // Rings: e_i and d_i per vertex (a boundary vertex has one more edge than faces), and the rotation
   // of every half-edge (face corner) in its ring.
