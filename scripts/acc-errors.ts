@@ -205,7 +205,7 @@ for (const { name, cage: make, grid } of cages) {
         tris++;
       }
     }
-    const c = continuity(S, undefined, 8, smoothEdges(cage));
+    const c = continuity(S, undefined, 8, smoothEdges(cage, 1)); // semi-sharp σ ≥ 1 is built sharp
     const accMs = await accBuildMs(cage, scheme);
     ccMs ??= await ccBuildMs(cage);
     const ccCell = typeof ccMs === 'number' ? fmtMs(ccMs) : `— (${ccMs})`;

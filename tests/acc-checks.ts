@@ -207,13 +207,14 @@ export function continuity(
 
 /**
  * Edges that are not infinitely sharp (as the exact reference sees them: tags, boundary mode): the
- * edges across which the schemes must be G1. `continuity(S, n, s, smoothEdges(cage))`.
+ * edges across which the schemes must be G1. `continuity(S, n, s, smoothEdges(cage))`. `sharpFrom`:
+ * the sharpness from which an edge counts as sharp (1: as the ACC default builds semi-sharp tags).
  */
-export function smoothEdges(cage: Cage): (fa: number, fb: number, a: number, b: number) => boolean {
+export function smoothEdges(cage: Cage, sharpFrom = 10): (fa: number, fb: number, a: number, b: number) => boolean {
   const L = levelFromCage(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
   const sharp = new Set<string>();
   for (let e = 0; e < L.he.nEdges; e++)
-    if (L.edgeSharp[e] >= 10) {
+    if (L.edgeSharp[e] >= sharpFrom) {
       const a = L.he.edgeVerts[2 * e],
         b = L.he.edgeVerts[2 * e + 1];
       sharp.add(`${Math.min(a, b)},${Math.max(a, b)}`);
