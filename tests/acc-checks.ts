@@ -101,6 +101,22 @@ function triPrismCage(): Cage {
   );
 }
 
+/** A cube whose face 0 is split by an interior vertex of valence 2 (two quads sharing two edges). */
+export function valence2Cube(base: Cage): Cage {
+  const faces: number[][] = [];
+  for (let f = 0; f < base.faceOffsets.length - 1; f++)
+    faces.push(Array.from(base.faceIndices.subarray(base.faceOffsets[f], base.faceOffsets[f + 1])));
+  const [a, b, c, d] = faces[0];
+  const m = base.positions.length / 3;
+  faces.splice(0, 1, [a, b, c, m], [a, m, c, d]);
+  const P = Array.from(base.positions);
+  const cx = (P[3 * a] + P[3 * c]) / 2,
+    cy = (P[3 * a + 1] + P[3 * c + 1]) / 2,
+    cz = (P[3 * a + 2] + P[3 * c + 2]) / 2;
+  P.push(cx + 0.1, cy - 0.2, cz + 0.3);
+  return makeCage(P, faces);
+}
+
 /** Regular octahedron: all triangles, valence 4 (notes §8.5). */
 export function octahedron(): Cage {
   return makeCage(

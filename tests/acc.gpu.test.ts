@@ -13,7 +13,7 @@ import { getDevice, releaseDevice } from './gpu-device.ts';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
 import { ACC_SCHEMES, AccSurface } from '../src/subdiv/acc.ts';
 import { AccPatches } from '../src/gpu/acc.ts';
-import { bboxDiagonal, boundaryCages, octahedron, randomFaceParams } from './acc-checks.ts';
+import { bboxDiagonal, boundaryCages, octahedron, randomFaceParams, valence2Cube } from './acc-checks.ts';
 import { angleBetween } from './tess-checks.ts';
 import { cube } from './subdiv-fixtures.ts';
 import creature from '../public/models/creature.obj?raw';
@@ -62,6 +62,7 @@ const models: [string, () => Cage][] = [
   ['sheet', () => loadCage(sheet).cage],
   ['open prism 5, sharp loop and corner', () => boundaryCages()[0][1]],
   ['octahedron, one face dropped', () => boundaryCages()[4][1]],
+  ['cube with a valence-2 vertex', () => valence2Cube(cube())],
 ];
 
 describe('ACC patches on the GPU against the f64 yardstick', () => {

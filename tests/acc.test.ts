@@ -33,6 +33,7 @@ import {
   prism,
   randomFaceParams,
   smoothEdges,
+  valence2Cube,
 } from './acc-checks.ts';
 import { cube, triPrism } from './subdiv-fixtures.ts';
 import { accFaceParam } from '../src/gpu/acc.ts';
@@ -430,6 +431,21 @@ describe('boundaries, infinitely sharp creases and corners', () => {
       }
     });
   }
+  it('an interior vertex of valence 2: built with a warning, watertight, G1 (Gregory, Pm) away from the vertex, no NaN', () => {
+    const cage = valence2Cube(cube());
+    const exact = new ExactAt(cage);
+    for (const s of ACC_SCHEMES) {
+      const S = new AccSurface(cage, s);
+      expect(S.topology.warnings.join()).toMatch(/valence 2/);
+      const st = continuity(S);
+      expect(st.maxGap).toBeLessThan(1e-6);
+      // The vertex itself has no tangent plane (in Catmull-Clark too): its edges sampled short of it.
+      const m = cage.positions.length / 3 - 1;
+      const g1 = continuity(S, undefined, 9, (_fa, _fb, a, b) => a !== m && b !== m);
+      if (s !== 'bezier-acc') expect(g1.maxJumpDeg, g1.worst).toBeLessThan(0.01);
+      expect(accErrors(S, exact, randomFaceParams(cage, 200, 3)).nan).toBe(0);
+    }
+  });
   it('the Bezier ACC geometry-patch normals DO jump across smooth edges of an open, creased cage', () => {
     const [, cage] = cages[0];
     const S = new AccSurface(cage, 'bezier-acc');

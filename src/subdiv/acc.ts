@@ -56,6 +56,9 @@
  *     point) is built as a smooth vertex pinned at v (its limit; the tangents are the smooth masks',
  *     the cone is not modelled). A crease sector of one face is built (its corner has no tangent
  *     plane, as in Catmull-Clark; its normal there is degenerate).
+ *   - Interior vertices of valence 2 are built with the n = 2 masks and a warning (Catmull-Clark's
+ *     own limit there needs refinement, and has no tangent plane at the vertex; Bezier ACC's
+ *     tangent-patch normal is degenerate exactly there).
  *   - Faces with more than 4 corners: refused. The sample only has quads and triangles; a split would
  *     change the neighbours' rings and is not the schemes' own construction. Holes: refused.
  *
@@ -311,6 +314,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
   const heRot = new Int32Array(topo.faceIndices.length).fill(-1);
   /** Per vertex: sector type, and which ring edges are infinitely sharp. */
   const vType = new Uint8Array(nV);
+  let valence2 = 0;
   const edgeSharp: boolean[][] = [];
   let maxValence = 0;
   for (let v = 0; v < nV; v++) {
@@ -337,7 +341,8 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
     const nInf = edgeSharp[v].filter((x) => x).length;
     const type = isInf(sharp.vertex[v]) || nInf > 2 ? (nInf < 2 ? SECTOR_CONE : SECTOR_CORNER) : nInf === 2 ? SECTOR_CREASE : SECTOR_SMOOTH;
     const smooth = type === SECTOR_SMOOTH || type === SECTOR_CONE;
-    if (smooth && n < 3) problems.push(`vertex ${v + 1} has valence ${n} (at least 3 needed)`);
+    if (smooth && n < 2) problems.push(`vertex ${v + 1} has valence ${n} (at least 2 needed)`);
+    if (smooth && n === 2) valence2++;
     vType[v] = type;
     if (smooth) maxValence = Math.max(maxValence, n);
   }
@@ -398,6 +403,10 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
     nPoints += KIND_POINTS[kind];
   }
   if (problems.length) throw fail(problems);
+  if (valence2)
+    warnings.push(
+      `${valence2} interior vertices of valence 2: built with the n = 2 masks (not Catmull-Clark's limit there, which needs refinement; no tangent plane at the vertex, as in Catmull-Clark)`,
+    );
   return {
     scheme,
     nVerts: nV,
@@ -1156,7 +1165,7 @@ export class AccSurface {
 export function valenceTable(maxValence: number): { offsets: Uint32Array; values: Float32Array } {
   const offsets = new Uint32Array(maxValence + 1);
   const vals: number[] = [];
-  for (let n = 3; n <= maxValence; n++) {
+  for (let n = 2; n <= maxValence; n++) {
     offsets[n] = vals.length;
     const k = valenceConstants(n);
     vals.push(k.c, k.s, k.lambda, k.sn, ...k.alpha, ...k.beta, ...k.cosk);
