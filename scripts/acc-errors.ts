@@ -215,7 +215,10 @@ for (const { name, cage: make, grid } of cages) {
       .map(([k, n]) => `${KIND_NAMES[k]} ${n}`)
       .join(', ');
     const ppp = `${quads ? (quadPts / quads).toFixed(1) : '–'}, ${tris ? (triPts / tris).toFixed(0) : '–'}`;
-    const warn = T.warnings.length ? ' (semi-sharp: σ ≥ 1 built sharp)' : '';
+    const notes = [];
+    if (T.warnings.some((w) => w.includes('semi-sharp'))) notes.push('semi-sharp: σ ≥ 1 built sharp');
+    if (T.warnings.some((w) => w.includes('valence 2'))) notes.push('valence-2 vertices');
+    const warn = notes.length ? ` (${notes.join('; ')})` : '';
     console.log(
       `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} | ${accCell} | ${ccCell} |`,
     );
