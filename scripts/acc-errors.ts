@@ -3,24 +3,96 @@
  * and normal error (degrees) against exact Catmull-Clark (src/subdiv) at the same (face, u, v),
  * max and RMS; control points stored per patch; and the across-edge position gap / normal jump.
  *
- *   npx tsx scripts/acc-errors.ts [samples per face, default 16]
+ *   node scripts/vite-run.mjs scripts/acc-errors.ts [samples per face, default 16] [--no-gpu]
+ *
+ * With a WebGPU adapter (Dawn; SwiftShader where there is no GPU: XDG_RUNTIME_DIR=/tmp
+ * VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json) it also times the GPU patch build
+ * (src/gpu/acc.ts, wgsl/acc-build.wgsl) and, as a peer in the same run, the exact Catmull-Clark
+ * patch build (src/gpu/tessellator.ts encodePatchBuild): wall clock per build of 20 builds queued in
+ * one submission, median of 5, after a warm-up. On SwiftShader only the ratio means anything.
  *
  * Cages: the notes' §5 test cages (cube and n-prisms after one CC step, on the notes' 9×9 dyadic
  * grid per face, to compare with the notes' numbers), the project's models, and the talk models
  * from ../shared/cages when present (read there, never copied). Cages a scheme refuses (n-gons,
- * boundaries) are listed with the reason.
+ * holes) are listed with the reason. The normal jump is over smooth edges (creases may jump).
  */
 import { existsSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, join } from 'node:path';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
 import { ACC_SCHEMES, AccError, AccSurface, KIND_NAMES } from '../src/subdiv/acc.ts';
-import { ExactAt, accErrors, ccStep, continuity, prism } from '../tests/acc-checks.ts';
+import { ExactAt, accErrors, ccStep, continuity, prism, smoothEdges } from '../tests/acc-checks.ts';
+import { AccPatches } from '../src/gpu/acc.ts';
+import { Tessellator } from '../src/gpu/tessellator.ts';
+import { prepareMesh } from '../src/gpu/prepare.ts';
+import { buildCatmullClark } from '../src/gpu/cc/build.ts';
+import { bakeTables } from '../src/pattern/tables.ts';
+import { createNodeDevice } from '../src/gpu/node-device.ts';
 import { cube, pentPrism } from '../tests/subdiv-fixtures.ts';
 import { makeCage } from '../src/mesh/index.ts';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
-const perFace = Number(process.argv[2] ?? 16);
+const args = process.argv.slice(2);
+const perFace = Number(args.find((a) => /^\d+$/.test(a)) ?? 16);
+const useGpu = !args.includes('--no-gpu');
+
+const REPS = 20,
+  ROUNDS = 5;
+/** Milliseconds per encoded build: REPS builds in one submission, median of ROUNDS, after a warm-up. */
+async function wallMs(device: GPUDevice, encode: (enc: GPUCommandEncoder) => void): Promise<number> {
+  const ms: number[] = [];
+  for (let r = 0; r <= ROUNDS; r++) {
+    const enc = device.createCommandEncoder({ label: 'acc-errors timing' });
+    for (let i = 0; i < (r ? REPS : 1); i++) encode(enc);
+    const t0 = performance.now();
+    device.queue.submit([enc.finish()]);
+    await device.queue.onSubmittedWorkDone();
+    if (r) ms.push((performance.now() - t0) / REPS);
+  }
+  return ms.sort((a, b) => a - b)[Math.floor(ms.length / 2)];
+}
+
+let gpu: { device: GPUDevice; adapterName: string; cc: Tessellator } | undefined;
+if (useGpu) {
+  try {
+    const { device, adapterName } = await createNodeDevice();
+    gpu = { device, adapterName, cc: Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' }) };
+    console.error(`GPU: ${adapterName}`);
+  } catch (e) {
+    console.error(`no GPU timing: ${(e as Error).message}`);
+  }
+}
+
+/** GPU patch-build ms of the exact Catmull-Clark peer for this cage, or why there is none. */
+async function ccBuildMs(cage: Cage): Promise<number | string> {
+  if (!gpu) return 'no GPU';
+  try {
+    const mesh = prepareMesh(cage);
+    gpu.cc.setMesh(mesh, buildCatmullClark(cage, mesh));
+    return await wallMs(gpu.device, (enc) => gpu!.cc.encodePatchBuild(enc));
+  } catch (e) {
+    return (e as Error).message.split('\n')[0].slice(0, 60);
+  }
+}
+
+/** GPU patch-build ms of an ACC scheme (its own cage buffer, as the tessellator's: xyz f32). */
+async function accBuildMs(cage: Cage, scheme: (typeof ACC_SCHEMES)[number]): Promise<number | undefined> {
+  if (!gpu) return undefined;
+  const device = gpu.device;
+  const patches = new AccPatches(device, cage, scheme);
+  const f = Float32Array.from(cage.positions);
+  const buf = device.createBuffer({
+    label: 'acc-errors cage',
+    size: Math.max(16, f.byteLength),
+    usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
+  });
+  device.queue.writeBuffer(buf, 0, f);
+  const ms = await wallMs(device, (enc) => patches.encode(enc, buf));
+  patches.destroy();
+  buf.destroy();
+  return ms;
+}
+const fmtMs = (x: number) => (x < 1 ? x.toFixed(3) : x.toFixed(2));
 
 /** The notes' n-prism (unit circle, z = ±1, n-gon caps), as tests/subdiv-fixtures pentPrism. */
 function flatPrism(n: number): Cage {
@@ -89,21 +161,22 @@ for (const m of ['suzanne', 'bigguy', 'monsterfrog', 'imrod']) {
 
 const pct = (x: number) => `${(100 * x).toFixed(3)}%`;
 console.log(
-  `| cage | scheme | max pos | RMS pos | max normal | RMS normal | points/patch (quad, tri) | patch kinds | edge gap | edge normal jump | samples |`,
+  `| cage | scheme | max pos | RMS pos | max normal | RMS normal | points/patch (quad, tri) | patch kinds | edge gap | smooth-edge normal jump | samples | build ms (GPU) | exact CC build ms (same run) |`,
 );
-console.log(`|---|---|---|---|---|---|---|---|---|---|---|`);
+console.log(`|---|---|---|---|---|---|---|---|---|---|---|---|---|`);
 for (const { name, cage: make, grid } of cages) {
   const cage = make();
   let refs: ReturnType<ExactAt['at']>[] | undefined;
   let params: [number, number, number][] = [];
   let exactMs = 0;
+  let ccMs: number | string | undefined;
   for (const scheme of ACC_SCHEMES) {
     let S: AccSurface;
     try {
       S = new AccSurface(cage, scheme);
     } catch (e) {
       if (!(e instanceof AccError)) throw e;
-      console.log(`| ${name} | ${scheme} | refused: ${e.message.replace(/^[a-z-]+: /, '').split(';')[0]} | | | | | | | | |`);
+      console.log(`| ${name} | ${scheme} | refused: ${e.message.replace(/^[a-z-]+: /, '').split(';')[0]} | | | | | | | | | | |`);
       continue;
     }
     if (!refs) {
@@ -132,16 +205,27 @@ for (const { name, cage: make, grid } of cages) {
         tris++;
       }
     }
-    const c = continuity(S, undefined, 8);
+    const c = continuity(S, undefined, 8, smoothEdges(cage, 1)); // semi-sharp σ ≥ 1 is built sharp
+    const accMs = await accBuildMs(cage, scheme);
+    ccMs ??= await ccBuildMs(cage);
+    const ccCell = typeof ccMs === 'number' ? fmtMs(ccMs) : `— (${ccMs})`;
+    const accCell = accMs === undefined ? '—' : `${fmtMs(accMs)}${typeof ccMs === 'number' ? ` (${(accMs / ccMs).toFixed(2)}×)` : ''}`;
     const kindText = [...kinds]
       .sort((a, b) => a[0] - b[0])
       .map(([k, n]) => `${KIND_NAMES[k]} ${n}`)
       .join(', ');
     const ppp = `${quads ? (quadPts / quads).toFixed(1) : '–'}, ${tris ? (triPts / tris).toFixed(0) : '–'}`;
-    const warn = T.warnings.length ? ' (creases ignored)' : '';
+    const notes = [];
+    if (T.warnings.some((w) => w.includes('semi-sharp'))) notes.push('semi-sharp: σ ≥ 1 built sharp');
+    if (T.warnings.some((w) => w.includes('valence 2'))) notes.push('valence-2 vertices');
+    const warn = notes.length ? ` (${notes.join('; ')})` : '';
     console.log(
-      `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} |`,
+      `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} | ${accCell} | ${ccCell} |`,
     );
     if (scheme === 'pm-acc') console.error(`${name}: exact reference ${(exactMs / 1000).toFixed(1)} s`);
   }
+}
+if (gpu) {
+  gpu.cc.destroy();
+  gpu.device.destroy();
 }

@@ -31,6 +31,92 @@ export function ccStep(cage: Cage): Cage {
   return makeCage(L.pos, faces);
 }
 
+/**
+ * A cage with faces dropped (boundaries) and edges tagged infinitely sharp (creases), every vertex
+ * a sharp edge ends at tagged as a corner when `cornerAt` says so. Unused vertices stay (no rings).
+ */
+export function openCreased(cage: Cage, drop: (f: number) => boolean, creases: [number, number][] = [], corners: number[] = []): Cage {
+  const faces: number[][] = [];
+  for (let f = 0; f < cage.faceOffsets.length - 1; f++)
+    if (!drop(f)) faces.push(Array.from(cage.faceIndices.subarray(cage.faceOffsets[f], cage.faceOffsets[f + 1])));
+  return makeCage(cage.positions, faces, {
+    creases: creases.map(([a, b]) => [a, b, 10] as [number, number, number]),
+    corners: corners.map((v) => [v, 10] as [number, number]),
+  });
+}
+
+/**
+ * Test cages with boundaries and creases: n-prisms after one CC step (valences 3 and n) with one
+ * cap's faces dropped (a boundary through extraordinary vertices), an infinitely sharp loop
+ * round the middle (crease vertices of valence 4) and a sharp corner; a triangular prism opened
+ * the same way (triangles at the boundary); the octahedron with one face dropped.
+ */
+export function boundaryCages(): [string, Cage][] {
+  const out: [string, Cage][] = [];
+  for (const n of [5, 6, 8]) {
+    const c = ccStep(prism(n));
+    // The step's vertices: n-gon cap centres are face points; drop the faces round the top cap's centre.
+    const P = c.positions;
+    const zTop = (f: number) => {
+      let z = 0;
+      for (let i = c.faceOffsets[f]; i < c.faceOffsets[f + 1]; i++) z += P[3 * c.faceIndices[i] + 2];
+      return z / (c.faceOffsets[f + 1] - c.faceOffsets[f]);
+    };
+    let zMax = -Infinity;
+    for (let f = 0; f < c.faceOffsets.length - 1; f++) zMax = Math.max(zMax, zTop(f));
+    // A sharp loop: the side edges at mid-height (the CC step's edge points of the prism's sides).
+    const mid: [number, number][] = [];
+    const seen = new Set<string>();
+    for (let f = 0; f < c.faceOffsets.length - 1; f++) {
+      const o = c.faceOffsets[f],
+        m = c.faceOffsets[f + 1] - o;
+      for (let k = 0; k < m; k++) {
+        const a = c.faceIndices[o + k],
+          b = c.faceIndices[o + ((k + 1) % m)];
+        const key = `${Math.min(a, b)},${Math.max(a, b)}`;
+        if (Math.abs(P[3 * a + 2]) < 0.2 && Math.abs(P[3 * b + 2]) < 0.2 && !seen.has(key)) {
+          seen.add(key);
+          mid.push([a, b]);
+        }
+      }
+    }
+    out.push([`prism ${n} (CC step), open top, sharp loop, one corner`, openCreased(c, (f) => zTop(f) > zMax - 0.3, mid, [mid[0][0]])]);
+  }
+  out.push(['triangular prism, one quad dropped', openCreased(triPrismCage(), (f) => f === 2)]);
+  out.push(['octahedron, one face dropped', openCreased(octahedron(), (f) => f === 0)]);
+  return out;
+}
+
+/** A triangular prism: two triangles, three quads (as tests/subdiv-fixtures triPrism). */
+function triPrismCage(): Cage {
+  return makeCage(
+    [1, 0, -1, -0.5, 0.866, -1, -0.5, -0.866, -1, 1, 0, 1.2, -0.5, 0.866, 0.9, -0.5, -0.866, 1],
+    [
+      [0, 2, 1],
+      [3, 4, 5],
+      [0, 1, 4, 3],
+      [1, 2, 5, 4],
+      [2, 0, 3, 5],
+    ],
+  );
+}
+
+/** A cube whose face 0 is split by an interior vertex of valence 2 (two quads sharing two edges). */
+export function valence2Cube(base: Cage): Cage {
+  const faces: number[][] = [];
+  for (let f = 0; f < base.faceOffsets.length - 1; f++)
+    faces.push(Array.from(base.faceIndices.subarray(base.faceOffsets[f], base.faceOffsets[f + 1])));
+  const [a, b, c, d] = faces[0];
+  const m = base.positions.length / 3;
+  faces.splice(0, 1, [a, b, c, m], [a, m, c, d]);
+  const P = Array.from(base.positions);
+  const cx = (P[3 * a] + P[3 * c]) / 2,
+    cy = (P[3 * a + 1] + P[3 * c + 1]) / 2,
+    cz = (P[3 * a + 2] + P[3 * c + 2]) / 2;
+  P.push(cx + 0.1, cy - 0.2, cz + 0.3);
+  return makeCage(P, faces);
+}
+
 /** Regular octahedron: all triangles, valence 4 (notes §8.5). */
 export function octahedron(): Cage {
   return makeCage(
@@ -95,7 +181,7 @@ export function continuity(
   S: AccSurface,
   normal: NormalFn = (f, u, v) => S.evaluate(f, u, v).N,
   samples = 9,
-  include: (fa: number, fb: number) => boolean = () => true,
+  include: (fa: number, fb: number, a: number, b: number) => boolean = () => true,
 ): EdgeStats {
   const T = S.topology,
     cage = S.cage;
@@ -113,7 +199,7 @@ export function continuity(
     const other = corner.get(`${b},${a}`);
     if (!other) continue;
     const [fb, kb] = other;
-    if (!include(fa, fb)) continue;
+    if (!include(fa, fb, a, b)) continue;
     stats.edges++;
     const ma = T.faceSize[fa],
       mb = T.faceSize[fb];
@@ -133,6 +219,23 @@ export function continuity(
     }
   }
   return stats;
+}
+
+/**
+ * Edges that are not infinitely sharp (as the exact reference sees them: tags, boundary mode): the
+ * edges across which the schemes must be G1. `continuity(S, n, s, smoothEdges(cage))`. `sharpFrom`:
+ * the sharpness from which an edge counts as sharp (1: as the ACC default builds semi-sharp tags).
+ */
+export function smoothEdges(cage: Cage, sharpFrom = 10): (fa: number, fb: number, a: number, b: number) => boolean {
+  const L = levelFromCage(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
+  const sharp = new Set<string>();
+  for (let e = 0; e < L.he.nEdges; e++)
+    if (L.edgeSharp[e] >= sharpFrom) {
+      const a = L.he.edgeVerts[2 * e],
+        b = L.he.edgeVerts[2 * e + 1];
+      sharp.add(`${Math.min(a, b)},${Math.max(a, b)}`);
+    }
+  return (_fa, _fb, a, b) => !sharp.has(`${Math.min(a, b)},${Math.max(a, b)}`);
 }
 
 /** The exact limit at an ACC parameter (face, u, v) (triangles: (u, v) = (w1, w2)). */

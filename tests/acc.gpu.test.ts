@@ -3,7 +3,8 @@
  * patch build (wgsl/acc-build.wgsl) against the f64 yardstick (src/subdiv/acc.ts) point by point,
  * and the surface (wgsl/surface-acc.wgsl evalAccPatch) at a few hundred random (face, u, v) per
  * scheme, corners, edges and the c-patch diagonal included, on the cube of the notes' §8 reference
- * vectors, an all-triangle octahedron and small project models. f32 tolerances, relative to the
+ * vectors, an all-triangle octahedron, small project models and cages with boundaries, creases,
+ * corners and a cone point. f32 tolerances, relative to the
  * bounding-box diagonal: control points and positions 2e-6; normals 0.02° (measured: ≤ 2e-7 and
  * ≤ 0.003°). No NaN anywhere. A moved cage re-runs only the build and matches again.
  */
@@ -12,12 +13,13 @@ import { getDevice, releaseDevice } from './gpu-device.ts';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
 import { ACC_SCHEMES, AccSurface } from '../src/subdiv/acc.ts';
 import { AccPatches } from '../src/gpu/acc.ts';
-import { bboxDiagonal, octahedron, randomFaceParams } from './acc-checks.ts';
+import { bboxDiagonal, boundaryCages, octahedron, randomFaceParams, valence2Cube } from './acc-checks.ts';
 import { angleBetween } from './tess-checks.ts';
 import { cube } from './subdiv-fixtures.ts';
 import creature from '../public/models/creature.obj?raw';
 import torus from '../public/models/torus.obj?raw';
 import creasedBox from '../public/models/creased-box.obj?raw';
+import sheet from '../public/models/sheet.obj?raw';
 
 const POSITION_TOL = 2e-6; // × bbox diagonal
 const NORMAL_TOL_DEG = 0.02;
@@ -55,7 +57,12 @@ const models: [string, () => Cage][] = [
   ['octahedron', octahedron],
   ['creature', () => loadCage(creature).cage],
   ['torus', () => loadCage(torus).cage],
+  // Boundaries, infinitely sharp creases and corners, a cone point, one-face crease sectors.
   ['creased-box', () => loadCage(creasedBox).cage],
+  ['sheet', () => loadCage(sheet).cage],
+  ['open prism 5, sharp loop and corner', () => boundaryCages()[0][1]],
+  ['octahedron, one face dropped', () => boundaryCages()[4][1]],
+  ['cube with a valence-2 vertex', () => valence2Cube(cube())],
 ];
 
 describe('ACC patches on the GPU against the f64 yardstick', () => {

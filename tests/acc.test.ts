@@ -13,13 +13,28 @@ import {
   KIND_BEZIER,
   KIND_PM_TRI_LS,
   KIND_REGULAR,
+  SECTOR_CORNER,
+  SECTOR_CREASE,
   type V3,
   cross3,
   evalBicubic,
   evalTangentPatches,
   valenceConstants,
 } from '../src/subdiv/acc.ts';
-import { ExactAt, accErrors, bboxDiagonal, ccStep, continuity, octahedron, prism, randomFaceParams } from './acc-checks.ts';
+import {
+  ExactAt,
+  accErrors,
+  bboxDiagonal,
+  boundaryCages,
+  ccStep,
+  continuity,
+  edgeParam,
+  octahedron,
+  prism,
+  randomFaceParams,
+  smoothEdges,
+  valence2Cube,
+} from './acc-checks.ts';
 import { cube, triPrism } from './subdiv-fixtures.ts';
 import { accFaceParam } from '../src/gpu/acc.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
@@ -353,6 +368,98 @@ describe('across-edge continuity (notes §8.4–8.5)', () => {
   });
 });
 
+describe('boundaries, infinitely sharp creases and corners', () => {
+  const cages = boundaryCages();
+  for (const [name, cage] of cages) {
+    const exact = new ExactAt(cage);
+    const diag = bboxDiagonal(cage.positions);
+    const smooth = smoothEdges(cage);
+    for (const s of ACC_SCHEMES) {
+      it(`${name}, ${s}: watertight (sharp edges too), G1 across smooth edges, no NaN`, () => {
+        const S = new AccSurface(cage, s);
+        expect(S.topology.maxSector).toBeGreaterThan(0);
+        const all = continuity(S);
+        expect(all.edges).toBeGreaterThan(0);
+        expect(all.maxGap).toBeLessThan(1e-6);
+        // Bezier ACC: between its quads (tangent patches); an all-triangle cage is all Pm triangles.
+        const tri = (f: number) => S.kind(f) === KIND_PM_TRI_LS;
+        const anyQuad = [...Array(S.topology.nPatches).keys()].some((f) => !tri(f));
+        const g1 = continuity(
+          S,
+          undefined,
+          9,
+          (fa, fb, a, b) => smooth(fa, fb, a, b) && (s !== 'bezier-acc' || !anyQuad || (!tri(fa) && !tri(fb))),
+        );
+        expect(g1.edges).toBeGreaterThan(0);
+        expect(g1.maxJumpDeg, g1.worst).toBeLessThan(0.01);
+        expect(accErrors(S, exact, randomFaceParams(cage, 300, 3)).nan).toBe(0);
+      });
+    }
+    it(`${name}: every scheme interpolates the exact crease/boundary curve between crease and corner vertices, and regular patches are exact`, () => {
+      for (const s of ACC_SCHEMES) {
+        const S = new AccSurface(cage, s);
+        const T = S.topology;
+        let checked = 0,
+          regular = 0;
+        for (let f = 0; f < T.nPatches; f++) {
+          const m = T.faceSize[f];
+          for (let k = 0; k < m; k++) {
+            const k1 = (k + 1) % m;
+            const a = T.corners[8 * f + 2 * k],
+              b = T.corners[8 * f + 2 * k1];
+            const ta = T.sectors[4 * f + k] & 3,
+              tb = T.sectors[4 * f + k1] & 3;
+            const sharpType = (t: number) => t === SECTOR_CREASE || t === SECTOR_CORNER;
+            if (smooth(f, f, a, b) || !sharpType(ta) || !sharpType(tb)) continue;
+            for (let i = 0; i <= 4; i++) {
+              const [u, v] = edgeParam(m, k, i / 4);
+              expect(dist(S.evaluate(f, u, v).P, exact.at(f, u, v).P) / diag, `${s} face ${f} edge ${k}`).toBeLessThan(1e-12);
+              checked++;
+            }
+          }
+          if (S.kind(f) === KIND_REGULAR)
+            for (const [u, v] of [
+              [0.3, 0.6],
+              [0.9, 0.1],
+            ]) {
+              expect(dist(S.evaluate(f, u, v).P, exact.at(f, u, v).P) / diag).toBeLessThan(1e-12);
+              regular++;
+            }
+        }
+        expect(checked, s).toBeGreaterThan(0);
+        if (name.startsWith('prism')) expect(regular).toBeGreaterThan(0);
+      }
+    });
+  }
+  it('an interior vertex of valence 2: built with a warning, watertight, G1 (Gregory, Pm) away from the vertex, no NaN', () => {
+    const cage = valence2Cube(cube());
+    const exact = new ExactAt(cage);
+    for (const s of ACC_SCHEMES) {
+      const S = new AccSurface(cage, s);
+      expect(S.topology.warnings.join()).toMatch(/valence 2/);
+      const st = continuity(S);
+      expect(st.maxGap).toBeLessThan(1e-6);
+      // The vertex itself has no tangent plane (in Catmull-Clark too): its edges sampled short of it.
+      const m = cage.positions.length / 3 - 1;
+      const g1 = continuity(S, undefined, 9, (_fa, _fb, a, b) => a !== m && b !== m);
+      if (s !== 'bezier-acc') expect(g1.maxJumpDeg, g1.worst).toBeLessThan(0.01);
+      expect(accErrors(S, exact, randomFaceParams(cage, 200, 3)).nan).toBe(0);
+    }
+  });
+  it('the Bezier ACC geometry-patch normals DO jump across smooth edges of an open, creased cage', () => {
+    const [, cage] = cages[0];
+    const S = new AccSurface(cage, 'bezier-acc');
+    const smooth = smoothEdges(cage);
+    const geo = (f: number, u: number, v: number) => {
+      const d = evalBicubic(S.patch(f), u, v);
+      return cross3(d.Pu, d.Pv);
+    };
+    const quads = (f: number) => S.kind(f) !== KIND_PM_TRI_LS;
+    const st = continuity(S, geo, 9, (a, b, va, vb) => quads(a) && quads(b) && smooth(a, b, va, vb));
+    expect(st.maxJumpDeg).toBeGreaterThan(0.5);
+  });
+});
+
 describe('errors against exact Catmull-Clark (notes §5)', () => {
   it("cube after one CC step, 9×9 grid per face: the notes' measured max position / normal errors", () => {
     const cage = ccStep(cube());
@@ -409,12 +516,17 @@ describe("the tessellator's (triangle, weights) → ACC (face, u, v)", () => {
 });
 
 describe('what the schemes refuse or ignore', () => {
-  it('n-gons and boundaries are refused with a clear error; creases are ignored with a warning', () => {
+  it('n-gons and holes are refused with a clear error; semi-sharp creases are built sharp (σ ≥ 1) or smooth, with a warning', () => {
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(AccError);
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(/5 corners/);
-    expect(() => new AccSurface(loadCage(sheet).cage, 'pm-acc')).toThrow(/boundary/);
+    const holed = loadCage(torus).cage;
+    holed.holes.push(3);
+    expect(() => new AccSurface(holed, 'pm-acc')).toThrow(/hole/);
+    expect(new AccSurface(loadCage(sheet).cage, 'pm-acc').topology.warnings.join()).toMatch(/semi-sharp/);
     const S = new AccSurface(loadCage(creasedBox).cage, 'bezier-acc');
-    expect(S.topology.warnings.join()).toMatch(/crease/);
-    expect(() => new AccSurface(makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]), 'bezier-acc')).toThrow(AccError);
+    expect(S.topology.warnings.join()).toMatch(/semi-sharp/);
+    // A lone triangle: three boundary corners (edge-and-corner), each interpolated.
+    const lone = new AccSurface(makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]), 'bezier-acc');
+    close(lone.evaluate(0, 1, 0).P, [1, 0, 0], 1e-15);
   });
 });

@@ -14,6 +14,10 @@ struct AccBuildParams {
   offRingData: u32,  // per vertex: e_0..e_{n−1}, d_0..d_{n−1}
   offValOffs: u32,   // per valence n: start of its constants in the table
   offValData: u32,   // f32 bits: c, s, λ, s_n, α[n], β[n], cos(2πk/n)[n]
+  offSectors: u32,   // 4 per patch: the corner's sector, type | k << 2 | a << 16
+  offSecOffs: u32,   // per (k, corner?) at 2k + corner: start of its constants in secData
+  offSecData: u32,   // f32 bits: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask[2k + 2]
+  offOrder: u32,     // nPatches: thread i builds patch order[i] (sorted by kind: uniform workgroups)
   pad0: u32,
   pad1: u32,
 }
@@ -33,6 +37,9 @@ const KIND_PM_QUAD: u32 = 4u;
 const KIND_PM_TRI: u32 = 5u;
 const KIND_PM_TRI_LS: u32 = 6u;
 const GRID_X: u32 = 65535u;
+const SECTOR_CREASE: u32 = 1u;
+const SECTOR_CORNER: u32 = 2u;
+const SECTOR_CONE: u32 = 3u;
 
 fn cageAt(i: u32) -> vec3<f32> { return vec3<f32>(cagePos[3u * i], cagePos[3u * i + 1u], cagePos[3u * i + 2u]); }
 fn valF(n: u32, i: u32) -> f32 { return bitcast<f32>(accStatic[bp.offValData + accStatic[bp.offValOffs + n] + i]); }
@@ -51,6 +58,7 @@ struct Corner {
   eh0: vec3<f32>, eh1: vec3<f32>, // Pm valence-4-rule edge points toward e_0, e_1
   tp0: vec3<f32>, tp1: vec3<f32>, // Pm tangent points t^(0), t^(1)
   quadNext: bool, quadPrev: bool, // the face across the edge toward e_0 (ring face n−1) / e_1 (face 1) is a quad
+  sharpNext: bool, sharpPrev: bool, // the edge toward e_0 / e_1 bounds the corner's crease/corner sector
 }
 
 struct Ring { o: u32, n: u32, rot: u32, v: vec3<f32>, mid: bool }
@@ -67,7 +75,81 @@ fn ringD(r: Ring, j: u32) -> vec3<f32> {
   return (a + b) / 3.0;
 }
 
-fn cornerInfo(vert: u32, rot: u32, mid: bool) -> Corner {
+fn secF(i: u32) -> f32 { return bitcast<f32>(accStatic[bp.offSecData + i]); }
+
+// A crease or corner vertex seen from a face in one of its sectors (src/subdiv/acc.ts
+// sectorCornerInfo): sector edge j = ring edge a + j (j = 0..k), sector face j = ring face a + j.
+fn sectorCorner(vert: u32, rot: u32, mid: bool, sec: u32) -> Corner {
+  let o0 = accStatic[bp.offRingOffs + vert];
+  let n = (accStatic[bp.offRingOffs + vert + 1u] - o0) / 2u;
+  let typ = sec & 3u;
+  let kk = (sec >> 2u) & 0x3fffu;
+  let a = sec >> 16u;
+  let r = Ring(o0, n, a, cageAt(vert), mid);
+  let base = accStatic[bp.offSecOffs + 2u * kk + select(0u, 1u, typ == SECTOR_CORNER)];
+  let np = secF(base + 2u);
+  var k: Corner;
+  k.n = 0u;
+  k.c = secF(base);
+  k.s = secF(base + 1u);
+  k.sn = 1.0;
+  k.v = r.v;
+  let i0 = (rot + n - a) % n;
+  let ea = ringE(r, 0u);
+  let eb = ringE(r, kk);
+  var A: vec3<f32>;
+  var B = vec3<f32>(0.0);
+  if (typ == SECTOR_CREASE) {
+    k.p = (ea + eb) / 6.0;
+    A = 0.5 * (ea - eb);
+    let mb = base + 5u + 2u * kk;
+    for (var j = 0u; j <= kk; j++) { B += secF(mb + 1u + j) * ringE(r, j); }
+    for (var j = 0u; j < kk; j++) { B += secF(mb + kk + 2u + j) * ringD(r, j); }
+  } else {
+    k.p = vec3<f32>(0.0);
+    A = ea;
+    B = eb;
+  }
+  k.t0 = secF(base + 3u + i0) * A + secF(base + 4u + kk + i0) * B;
+  k.t1 = secF(base + 4u + i0) * A + secF(base + 5u + kk + i0) * B;
+  let first = i0 == 0u;
+  let last = i0 + 1u == kk;
+  let e0 = ringE(r, i0);
+  let e1 = ringE(r, i0 + 1u);
+  let d0 = ringD(r, i0);
+  k.f0 = (2.0 * (e0 + e1) + d0) / (np + 5.0);
+  k.m0 = e0 / 3.0;
+  k.eh0 = e0 / 3.0;
+  k.rp = vec3<f32>(0.0);
+  if (!first) {
+    let em = ringE(r, i0 - 1u);
+    let dm = ringD(r, i0 - 1u);
+    k.m0 = 0.5 * ((2.0 * (em + e0) + dm) / (np + 5.0) + k.f0);
+    k.eh0 = (4.0 * e0 + 2.0 * em + 2.0 * e1 + dm + d0) / 18.0;
+    k.rp = (e1 - em) / 3.0 + (d0 - dm) / 6.0;
+    k.quadNext = accStatic[bp.offRingData + o0 + n + (rot + n - 1u) % n] != TRI_FACE;
+  }
+  k.m1 = e1 / 3.0;
+  k.eh1 = e1 / 3.0;
+  k.rm = vec3<f32>(0.0);
+  if (!last) {
+    let e2 = ringE(r, i0 + 2u);
+    let d1 = ringD(r, i0 + 1u);
+    k.m1 = 0.5 * (k.f0 + (2.0 * (e1 + e2) + d1) / (np + 5.0));
+    k.eh1 = (4.0 * e1 + 2.0 * e0 + 2.0 * e2 + d0 + d1) / 18.0;
+    k.rm = (e0 - e2) / 3.0 + (d0 - d1) / 6.0;
+    k.quadPrev = accStatic[bp.offRingData + o0 + n + (rot + 1u) % n] != TRI_FACE;
+  }
+  k.tp0 = k.p + k.t0 / 3.0;
+  k.tp1 = k.p + k.t1 / 3.0;
+  k.sharpNext = first;
+  k.sharpPrev = last;
+  return k;
+}
+
+fn cornerInfo(vert: u32, rot: u32, mid: bool, sec: u32) -> Corner {
+  let typ = sec & 3u;
+  if (typ == SECTOR_CREASE || typ == SECTOR_CORNER) { return sectorCorner(vert, rot, mid, sec); }
   let o0 = accStatic[bp.offRingOffs + vert];
   let n = (accStatic[bp.offRingOffs + vert + 1u] - o0) / 2u;
   let r = Ring(o0, n, rot, cageAt(vert), mid);
@@ -102,6 +184,7 @@ fn cornerInfo(vert: u32, rot: u32, mid: bool) -> Corner {
     sc1 += valF(n, 4u + 2u * n + (n + 1u - i) % n) * eh;
   }
   k.p = (4.0 * se + sd) / (nf * (nf + 5.0));
+  if (typ == SECTOR_CONE) { k.p = vec3<f32>(0.0); } // a cone point stays at v
   k.t0 = t0;
   k.t1 = t1;
   let e0 = ringE(r, 0u);
@@ -194,8 +277,11 @@ fn gregoryPatch(m: u32) {
     let EpP = Pp + C[kp].t0 * (C[kp].sn / 3.0); // E_{k−1}⁺
     let ck = C[k].c;
     // Written relative to P (the weights sum to den) for precision.
-    let Fp = P + ((den - 2.0 * ck - C[kn].c) * (Ep - P) + 2.0 * ck * (EnM - P) + C[k].rp) / den;
-    let Fm = P + ((den - 2.0 * ck - C[kp].c) * (Em - P) + 2.0 * ck * (EpP - P) + C[k].rm) / den;
+    var Fp = P + ((den - 2.0 * ck - C[kn].c) * (Ep - P) + 2.0 * ck * (EnM - P) + C[k].rp) / den;
+    var Fm = P + ((den - 2.0 * ck - C[kp].c) * (Em - P) + 2.0 * ck * (EpP - P) + C[k].rm) / den;
+    // A sharp edge of a quad: the Loop–Schaefer interior point (src/subdiv/acc.ts gregoryPatch).
+    if (m == 4u && C[k].sharpNext) { Fp = C[k].v + C[k].f0; }
+    if (m == 4u && C[k].sharpPrev) { Fm = C[k].v + C[k].f0; }
     put(5u * k, P); put(5u * k + 1u, Ep); put(5u * k + 2u, Em); put(5u * k + 3u, Fp); put(5u * k + 4u, Fm);
   }
 }
@@ -268,8 +354,9 @@ fn pmPatch(m: u32, ls: bool) {
 
 @compute @workgroup_size(64)
 fn buildPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let f = (wid.y * GRID_X + wid.x) * 64u + lid;
-  if (f >= bp.nPatches) { return; }
+  let thread = (wid.y * GRID_X + wid.x) * 64u + lid;
+  if (thread >= bp.nPatches) { return; }
+  let f = accStatic[bp.offOrder + thread];
   let kind = accPatchesB[2u * f];
   outBase = accPatchesB[2u * f + 1u];
   let tri = kind == KIND_GREGORY_TRI || kind == KIND_PM_TRI || kind == KIND_PM_TRI_LS;
@@ -277,11 +364,12 @@ fn buildPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation
   let mid = kind == KIND_PM_QUAD || kind == KIND_PM_TRI;
   for (var k = 0u; k < m; k++) {
     let b = bp.offCorners + 8u * f + 2u * k;
-    C[k] = cornerInfo(accStatic[b], accStatic[b + 1u], mid);
+    let sec = accStatic[bp.offSectors + 4u * f + k];
+    C[k] = cornerInfo(accStatic[b], accStatic[b + 1u], mid, sec);
     if (kind == KIND_PM_TRI_LS) {
       // Exact corner and Loop–Schaefer points (centroid rule) but the midpoint rule's Pm edge and
       // tangent points, whose twist terms cancel across triangle–triangle edges (src/subdiv/acc.ts).
-      let cm = cornerInfo(accStatic[b], accStatic[b + 1u], true);
+      let cm = cornerInfo(accStatic[b], accStatic[b + 1u], true, sec);
       C[k].eh0 = cm.eh0;
       C[k].eh1 = cm.eh1;
       C[k].tp0 = C[k].p + (cm.tp0 - cm.p);

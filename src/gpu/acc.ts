@@ -13,7 +13,11 @@
  *     ringOffs  nVerts + 1;  ringData: per vertex e_0..e_{n−1}, d_0..d_{n−1} (d = TRI_FACE for triangles)
  *     valOffs   per valence n ≤ max valence: start of its constants in valData
  *     valData   f32 bits, per valence: cos(2π/n), sin(2π/n), λ_n, s_n, α[n], β[n], cos(2πk/n)[n]
- *   accParams  (uniform, 8 u32)                         nPatches and the section offsets
+ *     sectors   4 per patch: each corner's sector (crease / corner / cone; src/subdiv/acc.ts)
+ *     secOffs   per crease/corner sector size k: start of its constants in secData (2k + corner?)
+ *     secData   f32 bits, per sector kind: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask
+ *     order     nPatches: the patch each build thread takes (patches sorted by kind)
+ *   accParams  (uniform, 12 u32)                        nPatches and the section offsets
  *
  * encode(encoder, cageBuffer): the cage buffer holds xyz f32 per cage vertex from offset 0 (the
  * tessellator's cage buffer starts so); one thread per patch. Nothing else has to re-run when the
@@ -22,7 +26,15 @@
 import buildWgsl from '../../wgsl/acc-build.wgsl?raw';
 import surfaceWgsl from '../../wgsl/surface-acc.wgsl?raw';
 import type { Cage, Topology } from '../mesh/index.ts';
-import { type AccScheme, type AccTopology, KIND_POINTS, buildAccTopology, valenceTable } from '../subdiv/acc.ts';
+import {
+  type AccOptions,
+  type AccScheme,
+  type AccTopology,
+  KIND_POINTS,
+  buildAccTopology,
+  sectorTable,
+  valenceTable,
+} from '../subdiv/acc.ts';
 import { readBuffer } from './readback.ts';
 import { faceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -79,16 +91,30 @@ export class AccPatches {
   private group: GPUBindGroup | undefined;
   private groupCage: GPUBuffer | undefined;
 
-  /** Throws AccError (src/subdiv/acc.ts) for cages the schemes do not support (n-gons, boundaries). */
+  /** Throws AccError (src/subdiv/acc.ts) for cages the schemes do not support (n-gons, holes). */
   constructor(
     readonly device: GPUDevice,
     cage: Cage,
     readonly scheme: AccScheme,
     topology?: Topology,
+    options: AccOptions = {},
   ) {
-    const T = (this.topology = buildAccTopology(cage, scheme, topology));
+    const T = (this.topology = buildAccTopology(cage, scheme, topology, options));
     const vt = valenceTable(T.maxValence);
-    const sections = [T.corners, T.ringOffs, T.ringData, vt.offsets, new Uint32Array(vt.values.buffer)];
+    const st = sectorTable(T.maxSector);
+    // Threads take the patches grouped by kind, so a workgroup runs one construction (no divergence).
+    const order = Uint32Array.from([...Array(T.nPatches).keys()].sort((a, b) => T.patches[2 * a] - T.patches[2 * b] || a - b));
+    const sections = [
+      T.corners,
+      T.ringOffs,
+      T.ringData,
+      vt.offsets,
+      new Uint32Array(vt.values.buffer),
+      T.sectors,
+      st.offsets,
+      new Uint32Array(st.values.buffer),
+      order,
+    ];
     const offs: number[] = [];
     let total = 0;
     for (const s of sections) {
