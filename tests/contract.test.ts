@@ -580,6 +580,9 @@ describe("the tessellator's contract", () => {
     ccWords: fc.nat(100_000),
     ccPoints: fc.nat(100_000),
     limitVertices: fc.nat(50_000),
+    accTriangles: fc.nat(100_000),
+    accPatchWords: fc.nat(100_000),
+    accPoints: fc.nat(100_000),
   }) as fc.Arbitrary<TessSizes>;
 
   it('each arena lays its arrays one after another, and its offsets reach Params at the fields the shaders read', () => {

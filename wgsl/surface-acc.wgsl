@@ -27,7 +27,9 @@ struct AccSurfacePoint {
 
 var<private> accQ: array<vec3<f32>, 16>;
 
-fn accPt(i: u32) -> vec3<f32> { return accPoints[i].xyz; }
+// accPt(i) (control point i) and accPatchWord(i) (word i of the patch table) come from the
+// including shader: src/gpu/acc.ts accBindingsWgsl over its own buffers, or the tessellator's
+// wgsl/surface-acc-tess.wgsl over its arenas.
 
 fn accBern3(t: f32) -> vec4<f32> {
   let s = 1.0 - t;
@@ -180,8 +182,8 @@ fn accNormal(n: vec3<f32>) -> vec3<f32> {
 }
 
 fn evalAccPatch(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
-  let kind = accPatches[2u * patchId];
-  let o = accPatches[2u * patchId + 1u];
+  let kind = accPatchWord(2u * patchId);
+  let o = accPatchWord(2u * patchId + 1u);
   if (kind <= 2u) {
     if (kind == 2u) {
       accGregoryQuad(o, u, v);

@@ -14,12 +14,13 @@
  * Output: 2 f32 per point, distance (model units) and angle (degrees; 0 where either normal is 0).
  */
 import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
-import ccSurfaceWgsl from '../../wgsl/surface-cc.wgsl?raw';
+import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './cc/shaders.ts';
+import { TESS_INPUTS, tessPrelude } from './contract.ts';
 import type { Cage } from '../mesh/index.ts';
 import { ACC_SURFACE_WGSL, type AccPatches, accBindingsWgsl, accFaceParam } from './acc.ts';
 import type { PreparedMesh } from './prepare.ts';
 import { readBuffer } from './readback.ts';
-import { PARAMS, type Tessellator } from './tessellator.ts';
+import type { Tessellator } from './tessellator.ts';
 
 const WG = 64;
 const GRID_X = 65535;
@@ -87,7 +88,7 @@ export class AccErrorView {
     device.queue.writeBuffer(this.triMap, 0, map);
     let pipe = pipelines.get(device);
     if (!pipe) {
-      const code = [PARAMS.wgsl, commonWgsl, ccSurfaceWgsl, accBindingsWgsl(1, 0, 1), ACC_SURFACE_WGSL, KERNEL].join('\n');
+      const code = [tessPrelude(TESS_INPUTS), commonWgsl, ccSurfaceWgsl, accBindingsWgsl(1, 0, 1), ACC_SURFACE_WGSL, KERNEL].join('\n');
       const module = device.createShaderModule({ label: 'acc errors', code });
       pipe = device.createComputePipeline({ label: 'acc errors', layout: 'auto', compute: { module, entryPoint: 'accErrors' } });
       pipelines.set(device, pipe);

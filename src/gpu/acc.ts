@@ -43,10 +43,14 @@ const WG = 64;
 const GRID_X = 65535;
 const grid = (groups: number): [number, number] => (groups <= GRID_X ? [Math.max(1, groups), 1] : [GRID_X, Math.ceil(groups / GRID_X)]);
 
-/** Declarations of the two buffers surface-acc.wgsl reads, at the includer's group and bindings. */
+/** Declarations of the two buffers surface-acc.wgsl reads, at the includer's group and bindings,
+ * and the two accessors it reads them through (the compute tessellator defines the accessors over
+ * its own buffers instead: wgsl/surface-acc-tess.wgsl). */
 export function accBindingsWgsl(group: number, patchesBinding: number, pointsBinding: number): string {
   return `@group(${group}) @binding(${patchesBinding}) var<storage, read> accPatches: array<u32>;
 @group(${group}) @binding(${pointsBinding}) var<storage, read> accPoints: array<vec4<f32>>;
+fn accPatchWord(i: u32) -> u32 { return accPatches[i]; }
+fn accPt(i: u32) -> vec3<f32> { return accPoints[i].xyz; }
 `;
 }
 

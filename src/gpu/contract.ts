@@ -413,6 +413,11 @@ export interface TessSizes {
   /** Cage vertices whose limit position and normal the patch build writes: all of them with the
    * Catmull-Clark surface, else 0. */
   limitVertices: number;
+  /** Triangles with an ACC patch word (ACC_TRI_WORD): all of them with an ACC surface, else 0. */
+  accTriangles: number;
+  /** Words of the ACC patch table (2 per patch) and ACC control points, 0 without an ACC surface. */
+  accPatchWords: number;
+  accPoints: number;
 }
 
 /**
@@ -421,7 +426,7 @@ export interface TessSizes {
  * within, cc/build.ts, reach the shaders as the cc* fields of Params).
  */
 export const TESS_STATIC = defineArena<
-  'tables' | 'triVerts' | 'triEdges' | 'triPatternFrame' | 'edgeVerts' | 'edgeOwner' | 'vertexOwner' | 'cc',
+  'tables' | 'triVerts' | 'triEdges' | 'triPatternFrame' | 'edgeVerts' | 'edgeOwner' | 'vertexOwner' | 'cc' | 'accTri' | 'accPatches',
   TessSizes
 >([
   ['tables', (s) => s.tableWords],
@@ -432,19 +437,32 @@ export const TESS_STATIC = defineArena<
   ['edgeOwner', (s) => s.edges],
   ['vertexOwner', (s) => s.vertices],
   ['cc', (s) => s.ccWords],
+  ['accTri', (s) => s.accTriangles],
+  ['accPatches', (s) => s.accPatchWords],
 ]);
+
+/**
+ * Per triangle with an ACC surface (wgsl/surface-acc-tess.wgsl): its ACC patch (= cage face) and
+ * the patch parameter (u, v) of its three corners, each 0 or 1 (bit 2i: u_i, bit 2i + 1: v_i), so
+ * that (u, v) = Σ w_i (u_i, v_i) for the triangle's weights w (src/gpu/acc-error.ts
+ * accTriangleMap builds it: quads split on their 0–2 diagonal, triangles (u, v) = (w1, w2)).
+ */
+export const ACC_TRI_WORD = defineBits('AccTriWord', { corners: [0, 6], face: [6, 26] });
 
 /**
  * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each;
  * with the Catmull-Clark surface, its refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts))
  * and the limit positions and normals of the cage vertices (wgsl/cc-build.wgsl writes them).
  */
-export const TESS_CAGE = defineArena<'positions' | 'normals' | 'ctrl' | 'limitPositions' | 'limitNormals', TessSizes>([
+export const TESS_CAGE = defineArena<'positions' | 'normals' | 'ctrl' | 'limitPositions' | 'limitNormals' | 'accPoints', TessSizes>([
   ['positions', (s) => 3 * s.vertices],
   ['normals', (s) => 3 * s.vertices],
   ['ctrl', (s) => 3 * s.ccPoints],
   ['limitPositions', (s) => 3 * s.limitVertices],
   ['limitNormals', (s) => 3 * s.limitVertices],
+  // ACC control points (4 floats each: xyz, w unused), copied from the ACC patch build's buffer
+  // every frame, so the emit passes read no more storage buffers than with the other surfaces.
+  ['accPoints', (s) => 4 * s.accPoints],
 ]);
 
 /**
@@ -611,6 +629,7 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     PATTERN_FRAME_WORD.wgsl,
     BARY_WORD.wgsl,
     OWNER_WORD.wgsl,
+    ACC_TRI_WORD.wgsl,
     tableHeaderWgsl('staticBuf', 'params'),
   ].join('\n');
 }

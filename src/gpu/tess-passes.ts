@@ -16,9 +16,16 @@ import emitWgsl from '../../wgsl/tess-emit.wgsl?raw';
 import scanWgsl from '../../wgsl/scan.wgsl?raw';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { CC_BUILD_WGSL as ccBuildWgsl, CC_SURFACE_WGSL as ccSurfaceWgsl } from './cc/shaders.ts';
+import accTessWgsl from '../../wgsl/surface-acc-tess.wgsl?raw';
+import { ACC_SURFACE_WGSL } from './acc.ts';
+import type { AccScheme } from '../subdiv/acc.ts';
 import { CC_BUILD_BINDINGS, CC_BUILD_GROUP, scanPrelude, TESS_BINDINGS, TESS_GROUP, tessPrelude, usedBindings } from './contract.ts';
 
-export type Surface = 'phong' | 'catmull-clark';
+/** The tessellator's surfaces: Phong tessellation, the exact Catmull-Clark limit, or one of the
+ * three approximations of it (ACC, src/gpu/acc.ts). */
+export type Surface = 'phong' | 'catmull-clark' | AccScheme;
+export const SURFACES: readonly Surface[] = ['catmull-clark', 'phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
+export const isAccSurface = (s: Surface): s is AccScheme => s.endsWith('-acc');
 
 export type PassName =
   | 'factors'
@@ -49,7 +56,8 @@ export interface PassSpec {
  * what tests/contract.gpu.test.ts checks against the contract. */
 export function tessellatorPasses(surface: Surface): PassSpec[] {
   const code = (...parts: string[]) => [tessPrelude(), commonWgsl, ...parts].join('\n');
-  const surfaceWgsl = surface === 'catmull-clark' ? ccSurfaceWgsl : phongSurfaceWgsl;
+  const surfaceWgsl =
+    surface === 'catmull-clark' ? ccSurfaceWgsl : isAccSurface(surface) ? [ACC_SURFACE_WGSL, accTessWgsl].join('\n') : phongSurfaceWgsl;
   const modules = {
     factors: code(factorsWgsl),
     count: code(patternWgsl, countWgsl),

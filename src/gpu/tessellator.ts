@@ -30,7 +30,8 @@
  * and records the passes (encode).
  */
 import type { CatmullClarkData } from './cc/build.ts';
-import { type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './tess-passes.ts';
+import type { AccSurface } from './acc-surface.ts';
+import { isAccSurface, type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './tess-passes.ts';
 import { PassTimer } from './pass-timer.ts';
 import {
   type ArenaLayout,
@@ -92,8 +93,9 @@ export interface TessellatorOptions {
   vertexCapacity?: number;
   triangleCapacity?: number;
   /** 'catmull-clark': the exact Catmull-Clark limit surface (wgsl/surface-cc.wgsl); setMesh then
-   * needs the tables of src/gpu/cc/build.ts buildCatmullClark. Default 'phong'
-   * (wgsl/surface-phong.wgsl). */
+   * needs the tables of src/gpu/cc/build.ts buildCatmullClark. 'bezier-acc', 'gregory-acc',
+   * 'pm-acc': an approximation of it (wgsl/surface-acc.wgsl); setMesh then needs the ACC patches
+   * of src/gpu/acc-surface.ts prepareAccSurface. Default 'phong' (wgsl/surface-phong.wgsl). */
   surface?: Surface;
   /** Catmull-Clark: blend from the flat triangle (corner limit positions) to the surface as the
    * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
@@ -108,6 +110,7 @@ interface Packed {
   cageWords: Float32Array;
   workLayout: ArenaLayout<WorkName>;
   normalsOffset: number;
+  accPointsOffset: number;
 }
 
 interface MeshState {
@@ -122,6 +125,10 @@ interface MeshState {
   scans: { group: GPUBindGroup; n: number }[];
   cc?: CatmullClarkData;
   ccRanges: { group: GPUBindGroup; count: number }[];
+  /** The ACC patches (owned by the caller), built before every tessellation; where cageBuf keeps
+   * a copy of their control points (words). */
+  acc?: AccSurface;
+  accPointsOffset: number;
   uniforms: GPUBuffer[];
 }
 
@@ -208,16 +215,17 @@ export class Tessellator {
 
   /** Upload a prepared mesh: topology once; positions may be updated later (updateCage). The
    * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
-  setMesh(prepared: PreparedMesh, cc?: CatmullClarkData): void {
-    const ccData = this.validate(prepared, cc);
-    const packed = this.pack(prepared, ccData);
+  setMesh(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): void {
+    const ccData = this.validate(prepared, cc, acc);
+    const accData = isAccSurface(this.surface) ? acc : undefined;
+    const packed = this.pack(prepared, ccData, accData);
     this.releaseMesh();
-    this.mesh = this.bind(prepared, ccData, packed);
+    this.mesh = this.bind(prepared, ccData, packed, accData);
   }
 
   /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
    * (into paramsBytes; encode() uploads them). Throws when the scratch buffer would not bind. */
-  private pack(prepared: PreparedMesh, cc: CatmullClarkData | undefined): Packed {
+  private pack(prepared: PreparedMesh, cc: CatmullClarkData | undefined, acc: AccSurface | undefined): Packed {
     const sizes: TessSizes = {
       vertices: prepared.vertexCount,
       edges: prepared.edgeCount,
@@ -227,6 +235,9 @@ export class Tessellator {
       ccWords: cc?.words.length ?? 0,
       ccPoints: cc?.pointCount ?? 0,
       limitVertices: cc ? prepared.vertexCount : 0,
+      accTriangles: acc ? prepared.triangleCount : 0,
+      accPatchWords: acc?.patches.topology.patches.length ?? 0,
+      accPoints: acc?.patches.topology.nPoints ?? 0,
     };
 
     const staticLayout = TESS_STATIC.layout(sizes);
@@ -239,6 +250,8 @@ export class Tessellator {
       edgeOwner: prepared.edgeOwner,
       vertexOwner: prepared.vertexOwner,
       cc: cc?.words,
+      accTri: acc?.triangles,
+      accPatches: acc?.patches.topology.patches,
     });
     const cageLayout = TESS_CAGE.layout(sizes);
     // The refined points and the limits are written by the patch build.
@@ -281,12 +294,12 @@ export class Tessellator {
       ccMaxDepth: cc?.maxDepth ?? 0,
     });
 
-    return { staticWords, cageWords, workLayout, normalsOffset: cageLayout.offset.normals };
+    return { staticWords, cageWords, workLayout, normalsOffset: cageLayout.offset.normals, accPointsOffset: cageLayout.offset.accPoints };
   }
 
   /** The buffers, written; each pass's bind group from the bindings its entry point uses; the
    * scans' and the patch build's small uniforms. */
-  private bind(prepared: PreparedMesh, cc: CatmullClarkData | undefined, packed: Packed): MeshState {
+  private bind(prepared: PreparedMesh, cc: CatmullClarkData | undefined, packed: Packed, acc: AccSurface | undefined): MeshState {
     const device = this.device;
     const { staticWords, cageWords, workLayout, normalsOffset } = packed;
     const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST;
@@ -372,14 +385,33 @@ export class Tessellator {
         group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, count)) }),
       })),
     );
-    return { prepared, staticBuf, cageBuf, work, workLayout, normalsOffset, groups, scans, cc, ccRanges, uniforms };
+    return {
+      prepared,
+      staticBuf,
+      cageBuf,
+      work,
+      workLayout,
+      normalsOffset,
+      groups,
+      scans,
+      cc,
+      ccRanges,
+      uniforms,
+      acc,
+      accPointsOffset: packed.accPointsOffset,
+    };
   }
 
   /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
-  private validate(prepared: PreparedMesh, cc?: CatmullClarkData): CatmullClarkData | undefined {
+  private validate(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): CatmullClarkData | undefined {
     if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
     if (this.surface === 'catmull-clark' && !cc)
       throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
+    if (isAccSurface(this.surface)) {
+      if (!acc) throw new Error(`the ${this.surface} surface needs its patches (prepareAccSurface)`);
+      if (acc.patches.scheme !== this.surface) throw new Error(`${acc.patches.scheme} patches given to a ${this.surface} tessellator`);
+      if (acc.triangles.length !== prepared.triangleCount) throw new Error('the ACC patches were prepared for another mesh');
+    }
     if (prepared.triangleCount > this.output.triangleCapacity || prepared.vertexCount + prepared.edgeCount > this.output.vertexCapacity) {
       throw new Error(
         `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
@@ -465,6 +497,7 @@ export class Tessellator {
       this.recordPatchBuild(cp, m);
       cp.end();
     }
+    this.recordAccBuild(encoder, m);
     for (let attempt = 0; attempt < ATTEMPTS; attempt++) {
       let cp = pass(`tess factors ${attempt}`, 'factors');
       run(cp, 'factors', groupsFor(nE));
@@ -498,6 +531,15 @@ export class Tessellator {
     this.timer?.resolve(encoder);
   }
 
+  /** The ACC patch build (its own pass, src/gpu/acc.ts): control points from the cage positions,
+   * then copied into cageBuf, where the emit passes read them. */
+  private recordAccBuild(encoder: GPUCommandEncoder, m: MeshState): void {
+    if (!m.acc) return;
+    m.acc.patches.encode(encoder, m.cageBuf);
+    const bytes = 16 * m.acc.patches.topology.nPoints;
+    if (bytes) encoder.copyBufferToBuffer(m.acc.patches.pointBuffer, 0, m.cageBuf, 4 * m.accPointsOffset, bytes);
+  }
+
   private recordPatchBuild(cp: GPUComputePassEncoder, m: MeshState): void {
     const cc = m.cc!;
     cp.setPipeline(this.pipelines.ccPoints!.pipeline);
@@ -521,6 +563,7 @@ export class Tessellator {
    * runs it too. */
   encodePatchBuild(encoder: GPUCommandEncoder): void {
     const m = this.requireMesh();
+    this.recordAccBuild(encoder, m);
     if (!m.cc) return;
     const cp = encoder.beginComputePass({ label: 'cc patch build' });
     this.recordPatchBuild(cp, m);
