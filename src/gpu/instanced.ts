@@ -35,6 +35,7 @@ import {
   packPatterns,
   snapVertex,
   edgePoint,
+  vertexEdges,
   POW2_LEVEL_COUNT,
   MAX_POW2_LEVEL,
   type PackedPatterns,
@@ -319,6 +320,121 @@ export function instancedToObj(out: HeadlessInstanced, header: string): string {
   return lines.join('\n') + '\n';
 }
 
+/** The headless output welded across patches (what the CLI writes, as the compute tessellator's
+ * OBJ is welded). Copies are merged by where they lie on the cage, never by position: a patch
+ * corner by its cage vertex, a point on a cage edge by the edge and its canonical parameter
+ * (exact: a multiple of 1/64), an interior point by its patch and (i, j). The welded position is
+ * the first copy's; `gap` is the largest distance between copies merged (the two sides of an edge
+ * evaluate the surface in f32 each: the crack the weld closes). Triangles the snap collapsed
+ * (zero area in (u, v), or two corners welded together) are left out. */
+export interface WeldedInstanced {
+  vertexCount: number;
+  triangleCount: number;
+  positions: Float32Array;
+  normals: Float32Array;
+  indices: Uint32Array;
+  /** Per welded vertex: the headless output vertex it was taken from. */
+  source: Uint32Array;
+  /** Triangles of the draw left out (collapsed by the snap). */
+  collapsed: number;
+  /** Largest distance between merged copies, in model units. */
+  gap: number;
+}
+
+export function weldInstanced(m: InstancedMesh, out: HeadlessInstanced): WeldedInstanced {
+  const nV = m.prepared.vertexCount,
+    nE = m.edgeCount;
+  const S = MAX_POW2_LEVEL + 1;
+  const ids = new Map<number, number>();
+  const remap = new Uint32Array(out.vertexCount);
+  const source: number[] = [];
+  let gap = 0;
+  for (let v = 0; v < out.vertexCount; v++) {
+    const p = out.patch[v],
+      P = out.patchLevels[p];
+    const i = Math.round(out.uv[2 * v] * P),
+      j = Math.round(out.uv[2 * v + 1] * P);
+    const dom = patchDomain(m, p);
+    const on = vertexEdges(dom, P, i, j);
+    let key: number;
+    if (on.length === 0) key = nV + nE * S + (p * S + i) * S + j;
+    else {
+      const { edge, t } = on[0];
+      const n = dom === 'tri' ? 3 : 4;
+      if (t === 0) key = m.corners[4 * p + edge];
+      else if (t === P) key = m.corners[4 * p + ((edge + 1) % n)];
+      else {
+        const e = m.patches[PATCH_WORDS * p + 2 + edge];
+        const canonical = ((m.patches[PATCH_WORDS * p + 1] >> (1 + edge)) & 1) === 1;
+        const c = ((canonical ? t : P - t) * MAX_POW2_LEVEL) / P;
+        key = nV + e * S + c;
+      }
+    }
+    let w = ids.get(key);
+    if (w === undefined) {
+      w = source.length;
+      ids.set(key, w);
+      source.push(v);
+    } else {
+      const f = source[w];
+      const d = Math.hypot(
+        out.positions[3 * v] - out.positions[3 * f],
+        out.positions[3 * v + 1] - out.positions[3 * f + 1],
+        out.positions[3 * v + 2] - out.positions[3 * f + 2],
+      );
+      gap = Math.max(gap, d);
+    }
+    remap[v] = w;
+  }
+  const src = Uint32Array.from(source);
+  const positions = new Float32Array(3 * src.length);
+  const normals = new Float32Array(3 * src.length);
+  src.forEach((v, w) => {
+    positions.set(out.positions.subarray(3 * v, 3 * v + 3), 3 * w);
+    normals.set(out.normals.subarray(3 * v, 3 * v + 3), 3 * w);
+  });
+  const tris: number[] = [];
+  for (let t = 0; t < out.triangleCount; t++) {
+    const [a, b, c] = [0, 1, 2].map((k) => out.indices[3 * t + k]);
+    const uv = (x: number, k: number) => out.uv[2 * x + k];
+    const area2 = (uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(b, 1) - uv(a, 1)) * (uv(c, 0) - uv(a, 0));
+    const [wa, wb, wc] = [remap[a], remap[b], remap[c]];
+    if (area2 === 0 || wa === wb || wb === wc || wa === wc) continue;
+    tris.push(wa, wb, wc);
+  }
+  return {
+    vertexCount: src.length,
+    triangleCount: tris.length / 3,
+    positions,
+    normals,
+    indices: Uint32Array.from(tris),
+    source: src,
+    collapsed: out.triangleCount - tris.length / 3,
+    gap,
+  };
+}
+
+/** The welded mesh as OBJ (positions, normals, 1-based triangles), as src/gpu/headless.ts meshToObj. */
+export function weldedToObj(w: WeldedInstanced, header: string): string {
+  const lines: string[] = [
+    `# ${header}`,
+    `# ${w.vertexCount} vertices, ${w.triangleCount} triangles (${w.collapsed} collapsed by the snap left out; largest weld gap ${w.gap.toExponential(2)})`,
+  ];
+  for (let v = 0; v < w.vertexCount; v++) lines.push(`v ${w.positions[3 * v]} ${w.positions[3 * v + 1]} ${w.positions[3 * v + 2]}`);
+  for (let v = 0; v < w.vertexCount; v++) lines.push(`vn ${w.normals[3 * v]} ${w.normals[3 * v + 1]} ${w.normals[3 * v + 2]}`);
+  for (let t = 0; t < w.triangleCount; t++) {
+    const [a, b, c] = [w.indices[3 * t] + 1, w.indices[3 * t + 1] + 1, w.indices[3 * t + 2] + 1];
+    lines.push(`f ${a}//${a} ${b}//${b} ${c}//${c}`);
+  }
+  return lines.join('\n') + '\n';
+}
+
+/** Face parameters of the welded vertices (each its source copy's, instancedVertexParams). */
+export function weldedVertexParams(m: InstancedMesh, cage: Cage, out: HeadlessInstanced, w: WeldedInstanced): FaceParam[] {
+  const all = instancedVertexParams(m, cage, out);
+  return Array.from(w.source, (v) => all[v]);
+}
+
 // ---- the GPU tessellator --------------------------------------------------------------------
 
 export interface InstancedOptions {
@@ -377,6 +493,9 @@ export interface HeadlessInstanced {
   /** Per edge: its level; per patch: its pattern level. */
   edgeLevels: Uint32Array;
   patchLevels: Uint32Array;
+  /** GPU milliseconds of the headless run's passes ({ levels, evaluate }; {} without
+   * timestamp queries). */
+  timings: Record<string, number>;
 }
 
 export class InstancedTessellator {
@@ -512,6 +631,14 @@ export class InstancedTessellator {
     return this.mesh?.m;
   }
 
+  /** GPU memory held for the current mesh, in bytes: topology and patterns, cage, work (levels and
+   * bucket lists), pattern indices, draw records and uniforms. */
+  get gpuBytes(): number {
+    const m = this.mesh;
+    const own = [this.params, this.drawArgs, this.indexBuffer, this.bucketUniform, this.frame].reduce((a, b) => a + b.size, 0);
+    return own + (m ? m.staticBuf.size + m.cageBuf.size + m.work.size : 0);
+  }
+
   /** Upload a cage's patches (topology once; updateCage for new positions). */
   setMesh(m: InstancedMesh): void {
     const device = this.device;
@@ -622,8 +749,8 @@ export class InstancedTessellator {
     this.device.queue.writeBuffer(m.work, 4 * m.layout.wanted, levels);
   }
 
-  /** Record the level, bucket and record passes. */
-  encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams): void {
+  /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it). */
+  encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams, timestampWrites?: GPUComputePassTimestampWrites): void {
     const m = this.requireMesh();
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
@@ -638,7 +765,7 @@ export class InstancedTessellator {
     // Edge codes and bucket counts start at 0 (atomicMax / atomicAdd).
     encoder.clearBuffer(m.work, 4 * m.layout.edgeCode, 4 * m.m.edgeCount);
     encoder.clearBuffer(m.work, 4 * m.layout.counts, 4 * BUCKETS);
-    const cp = encoder.beginComputePass({ label: 'instanced levels' });
+    const cp = encoder.beginComputePass({ label: 'instanced levels', timestampWrites });
     const run = (name: keyof InstancedTessellator['levelPipelines'], groups: number, group: GPUBindGroup) => {
       cp.setPipeline(this.levelPipelines[name]);
       cp.setBindGroup(0, group);
@@ -768,8 +895,11 @@ export class InstancedTessellator {
     const device = this.device;
     const m = this.requireMesh();
     device.pushErrorScope('validation');
+    // GPU timestamps of the two passes (levels, evaluation), where the device has them.
+    const timed = device.features.has('timestamp-query');
+    const querySet = timed ? device.createQuerySet({ label: 'instanced headless timestamps', type: 'timestamp', count: 4 }) : undefined;
     let enc = device.createCommandEncoder({ label: 'instanced headless levels' });
-    this.encodeLevels(enc, lp);
+    this.encodeLevels(enc, lp, querySet && { querySet, beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 });
     device.queue.submit([enc.finish()]);
     const records = new Uint32Array(await readBuffer(device, this.drawArgs, 20 * BUCKETS));
     const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => records[5 * b + 1]);
@@ -830,7 +960,10 @@ export class InstancedTessellator {
     });
     device.queue.writeBuffer(uniform, 0, bytes);
     enc = device.createCommandEncoder({ label: 'instanced headless' });
-    const cp = enc.beginComputePass({ label: 'instanced headless' });
+    const cp = enc.beginComputePass({
+      label: 'instanced headless',
+      timestampWrites: querySet && { querySet, beginningOfPassWriteIndex: 2, endOfPassWriteIndex: 3 },
+    });
     cp.setPipeline(this.headlessPipeline);
     cp.setBindGroup(0, m.meshGroup);
     cp.setBindGroup(2, outGroup);
@@ -841,6 +974,14 @@ export class InstancedTessellator {
       cp.dispatchWorkgroups(...grid2d(Math.ceil(threads / 64)));
     });
     cp.end();
+    const resolve = querySet
+      ? device.createBuffer({
+          label: 'instanced headless timestamps',
+          size: 32,
+          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
+        })
+      : undefined;
+    if (querySet && resolve) enc.resolveQuerySet(querySet, 0, 4, resolve, 0);
     device.queue.submit([enc.finish()]);
     const error = await device.popErrorScope();
     if (error) throw new Error(`WebGPU validation error: ${error.message}`);
@@ -852,6 +993,15 @@ export class InstancedTessellator {
       readBuffer(device, out.indices, 12 * nt),
     ]);
     const levels = await this.readLevels();
+    const timings: Record<string, number> = {};
+    if (resolve) {
+      const ticks = new BigInt64Array(await readBuffer(device, resolve, 32));
+      const span = (k: number) => Number(ticks[2 * k + 1] - ticks[2 * k]) / 1e6;
+      if (span(0) >= 0) timings.levels = span(0);
+      if (span(1) >= 0) timings.evaluate = span(1);
+      resolve.destroy();
+    }
+    querySet?.destroy();
     for (const b of [...Object.values(out), uniform]) b.destroy();
     return {
       vertexCount: nv,
@@ -865,6 +1015,7 @@ export class InstancedTessellator {
       records,
       edgeLevels: levels.edgeLevels,
       patchLevels: levels.patchLevels,
+      timings,
     };
   }
 
@@ -899,7 +1050,7 @@ export class InstancedTessellator {
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
  * { mode: 'static', level: L }; `--adaptive` is { mode: 'dynamic', viewProj, viewport, lodScale }
  * with the CLI's camera (src/gpu/headless.ts headlessCamera gives one). Pass `tess` to reuse
- * compiled pipelines across calls.
+ * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation.
  */
 export async function tessellateInstanced(
   device: GPUDevice,
@@ -907,11 +1058,12 @@ export async function tessellateInstanced(
   prepared: PreparedMesh,
   lp: LevelParams,
   tess?: InstancedTessellator,
+  instancedMesh?: InstancedMesh,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
-    const mesh = prepareInstanced(cage, prepared);
+    const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
     t.setMesh(mesh);
     return { mesh, out: await t.headless(lp) };
   } finally {
