@@ -19,12 +19,18 @@
  *   bucket     each patch's level, a slot in its bucket's list                      one thread per patch
  *   records    14 drawIndexedIndirect records (quad and triangle × 7 levels)        one workgroup
  * Then encodeDraw (lit or shadow pass: 14 drawIndexedIndirect, the bucket's list base by dynamic
- * offset), or encodeHeadless (the same vertex function in compute, for checks and the CLI).
- * Buffer layouts: wgsl/instanced-common.wgsl, instanced-levels.wgsl, instanced-draw.wgsl.
+ * offset, shaded by wgsl/instanced-frame.wgsl), or drawShadow / drawLit / drawWire inside the demo
+ * renderer's passes (useRenderer: its scene uniform, shadow map and lit shading,
+ * wgsl/render-instanced.wgsl), or headless (the same vertex function in compute, for checks and
+ * the CLI). Buffer layouts: wgsl/instanced-common.wgsl, instanced-levels.wgsl, instanced-draw.wgsl.
  */
 import commonWgsl from '../../wgsl/instanced-common.wgsl?raw';
 import levelsWgsl from '../../wgsl/instanced-levels.wgsl?raw';
 import drawWgsl from '../../wgsl/instanced-draw.wgsl?raw';
+import frameWgsl from '../../wgsl/instanced-frame.wgsl?raw';
+import headlessWgsl from '../../wgsl/instanced-headless.wgsl?raw';
+import renderInstancedWgsl from '../../wgsl/render-instanced.wgsl?raw';
+import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
 import { readBuffer } from './readback.ts';
@@ -498,7 +504,19 @@ export interface HeadlessInstanced {
   timings: Record<string, number>;
 }
 
-export class InstancedTessellator {
+/** Move `@group(g) @binding(b)` declarations, one pass over the text: "g,b" → [g', b']. */
+function rebind(code: string, moves: Record<string, [number, number]>): string {
+  return code.replace(/@group\((\d+)\) @binding\((\d+)\)/g, (all, g, b) => {
+    const to = moves[`${g},${b}`];
+    return to ? `@group(${to[0]}) @binding(${to[1]})` : all;
+  });
+}
+
+/** Bytes of drawArgs: 14 indexed records (5 words), then 14 wireframe records (4 words). */
+const DRAW_ARGS_BYTES = 20 * BUCKETS + 16 * BUCKETS;
+const WIRE_ARGS_OFFSET = 20 * BUCKETS;
+
+export class InstancedTessellator implements SurfaceDrawer {
   readonly patterns = packPatterns();
   /** 14 drawIndexedIndirect records (5 u32 each), rewritten by every encodeLevels. */
   readonly drawArgs: GPUBuffer;
@@ -510,8 +528,9 @@ export class InstancedTessellator {
   private readonly frame: GPUBuffer;
   private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'bucketPatches' | 'records', GPUComputePipeline>;
   private readonly layouts: { mesh: GPUBindGroupLayout; bucket: GPUBindGroupLayout; frame: GPUBindGroupLayout; out: GPUBindGroupLayout };
-  private readonly headlessPipeline: GPUComputePipeline;
-  private readonly drawModule: GPUShaderModule;
+  private headlessPipelineMade?: GPUComputePipeline;
+  private readonly code: (...parts: string[]) => string;
+  private frameModule?: GPUShaderModule;
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
   private readonly depthFormat: GPUTextureFormat;
@@ -538,6 +557,7 @@ export class InstancedTessellator {
     this.sampleCount = opts.sampleCount ?? 1;
     const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
     const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
+    this.code = code;
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
     const pipeline = (entryPoint: string) =>
       device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
@@ -575,18 +595,9 @@ export class InstancedTessellator {
         entries: [1, 2, 3, 4, 5].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
       }),
     };
-    this.drawModule = device.createShaderModule({ label: 'instanced draw', code: code(drawWgsl) });
     this.renderLayout = device.createPipelineLayout({
       label: 'instanced render',
       bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.frame],
-    });
-    this.headlessPipeline = device.createComputePipeline({
-      label: 'instanced headless',
-      layout: device.createPipelineLayout({
-        label: 'instanced headless',
-        bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out],
-      }),
-      compute: { module: this.drawModule, entryPoint: 'headless' },
     });
 
     this.params = device.createBuffer({
@@ -596,7 +607,7 @@ export class InstancedTessellator {
     });
     this.drawArgs = device.createBuffer({
       label: 'instanced draw records',
-      size: 20 * BUCKETS,
+      size: DRAW_ARGS_BYTES,
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT | GPUBufferUsage.COPY_SRC,
     });
     this.indexBuffer = device.createBuffer({
@@ -859,13 +870,34 @@ export class InstancedTessellator {
     }
   }
 
+  /** Made on first use (a page that only draws never compiles it). */
+  private get headlessPipeline(): GPUComputePipeline {
+    this.headlessPipelineMade ??= this.device.createComputePipeline({
+      label: 'instanced headless',
+      layout: this.device.createPipelineLayout({
+        label: 'instanced headless',
+        bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out],
+      }),
+      compute: {
+        module: this.device.createShaderModule({ label: 'instanced headless', code: this.code(drawWgsl, headlessWgsl) }),
+        entryPoint: 'headless',
+      },
+    });
+    return this.headlessPipelineMade;
+  }
+
+  private drawFrameModule(): GPUShaderModule {
+    this.frameModule ??= this.device.createShaderModule({ label: 'instanced draw', code: this.code(drawWgsl, frameWgsl) });
+    return this.frameModule;
+  }
+
   private lit(): GPURenderPipeline {
     // The existing renderer's lit state: triangle list, no culling (open surfaces), depth less.
     this.litPipeline ??= this.device.createRenderPipeline({
       label: 'instanced lit',
       layout: this.renderLayout,
-      vertex: { module: this.drawModule, entryPoint: 'litVertex' },
-      fragment: { module: this.drawModule, entryPoint: 'litFragment', targets: [{ format: this.colorFormat }] },
+      vertex: { module: this.drawFrameModule(), entryPoint: 'litVertex' },
+      fragment: { module: this.drawFrameModule(), entryPoint: 'litFragment', targets: [{ format: this.colorFormat }] },
       primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'ccw' },
       depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
       multisample: { count: this.sampleCount },
@@ -878,11 +910,158 @@ export class InstancedTessellator {
     this.shadowPipeline ??= this.device.createRenderPipeline({
       label: 'instanced shadow',
       layout: this.renderLayout,
-      vertex: { module: this.drawModule, entryPoint: 'shadowVertex' },
+      vertex: { module: this.drawFrameModule(), entryPoint: 'shadowVertex' },
       primitive: { topology: 'triangle-list', cullMode: 'none' },
       depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
     });
     return this.shadowPipeline;
+  }
+
+  // ---- inside the demo renderer's passes (src/gpu/renderer.ts SurfaceDrawer) ------------------
+
+  private inRenderer?: {
+    res: ShadingResources;
+    module: GPUShaderModule;
+    /** Scene uniform only (the shadow pass: the shadow map is its attachment there). */
+    sceneGroup: GPUBindGroup;
+    /** Scene uniform, shadow map and sampler (the lit pass). */
+    litGroup: GPUBindGroup;
+    sceneLayout: GPUPipelineLayout;
+    litLayout: GPUPipelineLayout;
+    pipelines: Map<string, GPURenderPipeline>;
+  };
+
+  /**
+   * Draw inside a Renderer's passes (drawShadow, drawLit, drawWire), with its scene uniform, shadow
+   * map and lit shading (wgsl/render-instanced.wgsl prepends the renderer's own lit shader, its
+   * bindings moved to group 2). Call again for another renderer.
+   */
+  useRenderer(res: ShadingResources): void {
+    const device = this.device;
+    const F = GPUShaderStage.FRAGMENT,
+      VF = GPUShaderStage.VERTEX | F;
+    const sceneBgl = device.createBindGroupLayout({
+      label: 'instanced renderer scene',
+      entries: [{ binding: 0, visibility: VF, buffer: { type: 'uniform' } }],
+    });
+    const litBgl = device.createBindGroupLayout({
+      label: 'instanced renderer scene + shading',
+      entries: [
+        { binding: 0, visibility: VF, buffer: { type: 'uniform' } },
+        { binding: 1, visibility: F, texture: { sampleType: 'depth' } },
+        { binding: 2, visibility: F, sampler: { type: 'comparison' } },
+      ],
+    });
+    // The renderer's lit shader: scene (0, 0), shadow map and sampler (1, 0–1), its patch colours'
+    // buffers (2, 0–1, read by its own litVertex only) moved clear of this tessellator's groups.
+    const lit = rebind(RENDER_SHADERS.lit.join('\n'), { '0,0': [2, 0], '1,0': [2, 1], '1,1': [2, 2], '2,0': [3, 0], '2,1': [3, 1] });
+    const layout = (label: string, g: GPUBindGroupLayout) =>
+      device.createPipelineLayout({ label, bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, g] });
+    this.inRenderer = {
+      res,
+      module: device.createShaderModule({ label: 'instanced in the renderer', code: this.code(drawWgsl, lit, renderInstancedWgsl) }),
+      sceneGroup: device.createBindGroup({
+        label: 'instanced renderer scene',
+        layout: sceneBgl,
+        entries: [{ binding: 0, resource: { buffer: res.scene } }],
+      }),
+      litGroup: device.createBindGroup({
+        label: 'instanced renderer scene + shading',
+        layout: litBgl,
+        entries: [
+          { binding: 0, resource: { buffer: res.scene } },
+          { binding: 1, resource: res.shadowMap },
+          { binding: 2, resource: res.shadowSampler },
+        ],
+      }),
+      sceneLayout: layout('instanced renderer (scene)', sceneBgl),
+      litLayout: layout('instanced renderer (lit)', litBgl),
+      pipelines: new Map(),
+    };
+  }
+
+  /** The renderer-pass pipelines, made on first use, with the renderer's states: a closed cage
+   * culls back faces in the lit pass and the faces towards the light in the shadow pass. */
+  private rendererPipeline(kind: 'lit' | 'shadow' | 'wire', closed: boolean): GPURenderPipeline {
+    const r = this.inRenderer!;
+    const key = `${kind} ${closed ? 'closed' : 'open'}`;
+    let p = r.pipelines.get(key);
+    if (p) return p;
+    const { module, res } = r;
+    const device = this.device;
+    const multisample = { count: res.sampleCount };
+    if (kind === 'shadow')
+      p = device.createRenderPipeline({
+        label: `instanced shadow (${key})`,
+        layout: r.sceneLayout,
+        vertex: { module, entryPoint: 'instancedShadowVertex' },
+        primitive: { topology: 'triangle-list', cullMode: closed ? 'front' : 'none', frontFace: 'ccw' },
+        depthStencil: { format: res.depthFormat, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
+      });
+    else if (kind === 'lit')
+      p = device.createRenderPipeline({
+        label: `instanced lit (${key})`,
+        layout: r.litLayout,
+        vertex: { module, entryPoint: 'instancedLitVertex' },
+        fragment: { module, entryPoint: 'litFragment', targets: [{ format: res.colorFormat }] },
+        primitive: { topology: 'triangle-list', cullMode: closed ? 'back' : 'none', frontFace: 'ccw' },
+        depthStencil: { format: res.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
+        multisample,
+      });
+    else
+      p = device.createRenderPipeline({
+        label: 'instanced wireframe',
+        layout: r.sceneLayout,
+        vertex: { module, entryPoint: 'instancedWireVertex' },
+        fragment: {
+          module,
+          entryPoint: 'instancedWireFragment',
+          targets: [
+            {
+              format: res.colorFormat,
+              blend: {
+                color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha', operation: 'add' },
+                alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha', operation: 'add' },
+              },
+            },
+          ],
+        },
+        primitive: { topology: 'line-list' },
+        depthStencil: { format: res.depthFormat, depthWriteEnabled: false, depthCompare: 'less-equal' },
+        multisample,
+      });
+    r.pipelines.set(key, p);
+    return p;
+  }
+
+  private drawBuckets(pass: GPURenderPassEncoder, kind: 'lit' | 'shadow' | 'wire', closed: boolean): void {
+    const m = this.mesh,
+      r = this.inRenderer;
+    if (!m || !r) return;
+    pass.setPipeline(this.rendererPipeline(kind, closed));
+    pass.setBindGroup(0, m.meshGroup);
+    pass.setBindGroup(2, kind === 'lit' ? r.litGroup : r.sceneGroup);
+    if (kind !== 'wire') pass.setIndexBuffer(this.indexBuffer, 'uint32');
+    for (let b = 0; b < BUCKETS; b++) {
+      pass.setBindGroup(1, this.bucketGroup, [BUCKET_STRIDE * b]);
+      if (kind === 'wire') pass.drawIndirect(this.drawArgs, WIRE_ARGS_OFFSET + 16 * b);
+      else pass.drawIndexedIndirect(this.drawArgs, 20 * b);
+    }
+  }
+
+  /** SurfaceDrawer: the shadow map pass (the surface evaluated again, from the light). */
+  drawShadow(pass: GPURenderPassEncoder, closed: boolean): void {
+    this.drawBuckets(pass, 'shadow', closed);
+  }
+
+  /** SurfaceDrawer: the lit pass (evaluated again, shaded as the renderer's stored mesh). */
+  drawLit(pass: GPURenderPassEncoder, closed: boolean): void {
+    this.drawBuckets(pass, 'lit', closed);
+  }
+
+  /** SurfaceDrawer: the wireframe overlay (every pattern triangle's edges, evaluated again). */
+  drawWire(pass: GPURenderPassEncoder): void {
+    this.drawBuckets(pass, 'wire', false);
   }
 
   /**

@@ -74,6 +74,28 @@ export interface DrawOptions {
   wireOpacity?: number;
 }
 
+/**
+ * Something that draws the surface itself in the shadow and lit passes instead of the stored
+ * mesh: the instanced tessellator (src/gpu/instanced.ts), which evaluates the surface again in
+ * every pass. It may set any bind group and pipeline; the renderer sets its own again after.
+ */
+export interface SurfaceDrawer {
+  drawShadow(pass: GPURenderPassEncoder, closed: boolean): void;
+  drawLit(pass: GPURenderPassEncoder, closed: boolean): void;
+  drawWire(pass: GPURenderPassEncoder): void;
+}
+
+/** What a SurfaceDrawer binds to shade as the renderer does (Renderer.shadingResources). */
+export interface ShadingResources {
+  /** The per-frame uniforms (SCENE_UNIFORMS). */
+  scene: GPUBuffer;
+  shadowMap: GPUTextureView;
+  shadowSampler: GPUSampler;
+  colorFormat: GPUTextureFormat;
+  depthFormat: GPUTextureFormat;
+  sampleCount: number;
+}
+
 const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
 /** Vertex buffers of the mesh: positions then normals, float32x3, tightly packed. */
 const MESH_BUFFERS: GPUVertexBufferLayout[] = [
@@ -96,6 +118,8 @@ export class Renderer {
   #sceneBindGroup: GPUBindGroup;
   #shadingBindGroup: GPUBindGroup;
   #shadowMap: GPUTexture;
+  #shadowSampler: GPUSampler;
+  #drawer: SurfaceDrawer | null = null;
 
   /** [open, closed] (setMesh's `closed`). */
   #shadowPipelines: GPURenderPipeline[] = [];
@@ -157,12 +181,12 @@ export class Renderer {
       usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.TEXTURE_BINDING,
     });
     // Hardware PCF: a linear comparison sampler blends four depth tests per tap.
-    const shadowSampler = device.createSampler({
+    const shadowSampler = (this.#shadowSampler = device.createSampler({
       label: 'shadow comparison sampler',
       compare: 'less-equal',
       magFilter: 'linear',
       minFilter: 'linear',
-    });
+    }));
     this.#wireArgs = device.createBuffer({
       label: 'wireframe draw args',
       size: 16,
@@ -393,6 +417,24 @@ export class Renderer {
       : null;
   }
 
+  /** Draw the surface with `drawer` (in the shadow, lit and wireframe passes) instead of the
+   * stored mesh (setMesh); null: the stored mesh again. */
+  setDrawer(drawer: SurfaceDrawer | null): void {
+    this.#drawer = drawer;
+  }
+
+  /** The scene uniform, shadow map and formats a SurfaceDrawer shades with. */
+  get shadingResources(): ShadingResources {
+    return {
+      scene: this.#sceneBuffer,
+      shadowMap: this.#shadowMap.createView({ label: 'shadow map view (surface drawer)' }),
+      shadowSampler: this.#shadowSampler,
+      colorFormat: this.colorFormat,
+      depthFormat: DEPTH_FORMAT,
+      sampleCount: this.sampleCount,
+    };
+  }
+
   /** The cage overlay's lines (the renderer does not own them). */
   setCage(cage: CageLines | null): void {
     this.#cage = cage;
@@ -411,7 +453,8 @@ export class Renderer {
   render(encoder: GPUCommandEncoder, target: GPUTexture, view: View, options: DrawOptions): void {
     this.#ensureAttachments(target.width, target.height);
     this.#writeScene(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
-    const mesh = this.#mesh;
+    const drawer = this.#drawer;
+    const mesh = drawer ? null : this.#mesh;
     const timing = this.#timing;
 
     if (mesh && options.wireframe && this.#wireArgsBindGroup) {
@@ -434,6 +477,7 @@ export class Renderer {
       },
       timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 } : undefined,
     });
+    if (drawer) drawer.drawShadow(shadowPass, this.#closed);
     if (mesh) {
       shadowPass.setPipeline(this.#shadowPipelines[+this.#closed]);
       shadowPass.setBindGroup(0, this.#sceneBindGroup);
@@ -477,12 +521,21 @@ export class Renderer {
       pass.setIndexBuffer(mesh.indices, 'uint32');
       pass.drawIndexedIndirect(mesh.drawArgs, 0);
     }
+    if (drawer) {
+      drawer.drawLit(pass, this.#closed);
+      pass.setBindGroup(0, this.#sceneBindGroup);
+      pass.setBindGroup(1, this.#shadingBindGroup);
+    }
     pass.setPipeline(this.#groundPipeline);
     pass.draw(4);
     if (mesh && options.wireframe && this.#wireBindGroup) {
       pass.setPipeline(this.#wirePipeline);
       pass.setBindGroup(1, this.#wireBindGroup);
       pass.drawIndirect(this.#wireArgs, 0);
+    }
+    if (drawer && options.wireframe) {
+      drawer.drawWire(pass);
+      pass.setBindGroup(0, this.#sceneBindGroup);
     }
     const cage = this.#cage;
     if (cage && options.cage && cage.vertexCount > 0) {
