@@ -23,7 +23,9 @@ import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
-import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
+import type { LevelParams } from '../gpu/instanced.ts';
 import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
@@ -56,6 +58,9 @@ class TessellationDemo extends DemoBase {
   #flat: CageGeometry | null = null;
   #cageLines: CageLines | null = null;
   #counts: CountsReader | null = null;
+  /** The instanced tessellator (`tessellator=instanced`), made on first use, and its last counts. */
+  #instanced: InstancedView | null = null;
+  #instancedCounts: InstancedCounts | null = null;
 
   /** Catmull-Clark data per cage (topology only, cached): the controller's surface data. */
   readonly #ccTables = new CcTableCache();
@@ -194,6 +199,8 @@ class TessellationDemo extends DemoBase {
     this.#flat = null;
     this.#cageLines = null;
     this.#counts = null;
+    this.#instanced = null;
+    this.#instancedCounts = null;
     this.#otherReader = null;
     this.#frameFactors = this.#builtFactors = null;
   }
@@ -213,6 +220,60 @@ class TessellationDemo extends DemoBase {
     return surface === 'cage' ? this.#flat : (this.#tess[surface] ?? null);
   }
 
+  /** The instanced tessellator draws (asked for, and a surface rather than the flat cage is shown). */
+  get instancedActive(): boolean {
+    return this.params.tessellator === 'instanced' && this.shownSurface !== 'cage' && this.model !== null;
+  }
+
+  /** Hand the renderer the instanced tessellator (the model's patches uploaded) or take it back,
+   * for `model` drawn as `surface` (at upload: before the controller commits them). */
+  #syncDrawer(model: LoadedModel | null, surface: Shown): void {
+    const renderer = this.#renderer;
+    if (!renderer) return;
+    if (this.params.tessellator !== 'instanced' || surface === 'cage' || !model) {
+      renderer.setDrawer(null);
+      return;
+    }
+    this.#instanced ??= new InstancedView(this.gpu.device, renderer.shadingResources);
+    if (this.#instanced.cage !== model.cage) {
+      this.#instanced.setCage(model.cage);
+      this.#instancedCounts = null;
+    }
+    renderer.setDrawer(this.#instanced.tess);
+  }
+
+  /** Switch tessellators (the panel, the URL): the same model, camera and settings. */
+  setTessellator(kind: DemoParams['tessellator']): void {
+    this.params.tessellator = kind;
+    this.#syncDrawer(this.model, this.shownSurface);
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** The instanced tessellator's level parameters for this frame: fixed → every patch at the
+   * static level; adaptive → each edge's level from the view (its LOD scale), in model space. */
+  #instancedLevels(modelViewProj: Float32Array, width: number, height: number): LevelParams {
+    if (this.params.mode === 'fixed') return { mode: 'static', level: this.params.level };
+    return { mode: 'dynamic', viewProj: modelViewProj, viewport: [width, height], lodScale: this.params.lod, level: 1 };
+  }
+
+  /** Test hook: the GPU's bucket draw records of the latest level pass, and the CPU's count for
+   * static mode (null in dynamic mode). */
+  async instancedRecords(): Promise<{ gpu: number[]; cpu: number[] | null; mode: string; counts: InstancedCounts } | null> {
+    const view = this.#instanced;
+    if (!view || !this.instancedActive) return null;
+    const lv = await view.tess.readLevels();
+    const lp = view.lastLevels;
+    const cpu = lp?.mode === 'static' ? view.cpuRecords(lp.level ?? 1) : null;
+    return {
+      gpu: Array.from(lv.records),
+      cpu: cpu ? Array.from(cpu) : null,
+      mode: lp?.mode ?? 'none',
+      counts: countsFromRecords(lv.records, view.tess.patterns),
+    };
+  }
+
   /** The tessellator for `surface`, created on first use (the other one is freed). */
   #tessellator(surface: TessSurface): TessellatorGeometry {
     let tess = this.#tess[surface];
@@ -226,7 +287,8 @@ class TessellationDemo extends DemoBase {
 
   /** Patch colours are on and there are patches to colour. */
   get patchColours(): boolean {
-    return this.params.patches && this.shownSurface === 'catmull-clark';
+    // The instanced tessellator colours its patches by domain (quad, triangle) on any surface.
+    return this.params.patches && (this.shownSurface === 'catmull-clark' || this.instancedActive);
   }
 
   /** The legend of the patch colours, with each kind's share of the cage's triangles. */
@@ -238,6 +300,7 @@ class TessellationDemo extends DemoBase {
     const kinds = this.cc?.data.triKind ?? new Uint8Array();
     const count = [0, 0, 0, 0];
     for (const k of kinds) count[k]++;
+    const inst = this.instancedActive ? this.#instanced?.mesh : null;
     const hex = (c: readonly number[]) =>
       `#${c
         .map((x) =>
@@ -246,6 +309,13 @@ class TessellationDemo extends DemoBase {
             .padStart(2, '0'),
         )
         .join('')}`;
+    if (inst) {
+      // wgsl/render-instanced.wgsl: quad patches in the first colour, triangle patches in the third.
+      const entry = (c: readonly number[], name: string, n: number) =>
+        `<li><span class="swatch" style="background:${hex(c)}"></span>${name} <span class="muted">${n}</span></li>`;
+      legend.innerHTML = `<strong>Patches (instanced)</strong><ul>${entry(PATCH_COLOURS[0].srgb, 'quad', inst.quadCount)}${entry(PATCH_COLOURS[2].srgb, 'triangle', inst.triCount)}</ul>`;
+      return;
+    }
     legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
       (p) => `<li><span class="swatch" style="background:${hex(p.srgb)}"></span>${p.name} <span class="muted">${count[p.kind]}</span></li>`,
     ).join('')}</ul>`;
@@ -296,7 +366,17 @@ class TessellationDemo extends DemoBase {
       fovY: cam.fovY,
     };
     this.#frameFactors = factors;
-    if (this.#geometryDirty && geometry.output) {
+    const instanced = this.instancedActive ? this.#instanced : null;
+    if (instanced) {
+      // The instanced tessellator draws: its level pass when the levels may have changed (the
+      // compute tessellator is left as it was).
+      if (this.params.spin && this.params.mode === 'adaptive') this.#geometryDirty = true;
+      if (this.#geometryDirty) {
+        instanced.encode(encoder, this.#instancedLevels(modelViewProj, target.width, target.height));
+        this.#geometryDirty = false;
+        this.#rebuilds++;
+      } else instanced.copyIfOwed(encoder);
+    } else if (this.#geometryDirty && geometry.output) {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
@@ -310,7 +390,7 @@ class TessellationDemo extends DemoBase {
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
     // (and the demo draws on demand: there may be none).
-    if (this.#countsOwed && geometry.output && this.#counts?.idle) {
+    if (!instanced && this.#countsOwed && geometry.output && this.#counts?.idle) {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
@@ -340,6 +420,7 @@ class TessellationDemo extends DemoBase {
     const frame = this.#frameFactors;
     const built = this.#builtFactors;
     if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
+    if (this.instancedActive) return;
     const output = geometry.output;
     const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
     const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
@@ -374,6 +455,14 @@ class TessellationDemo extends DemoBase {
       this.updateStats();
       if (this.#countsOwed) this.requestFrame();
     });
+    if (this.#instanced && this.instancedActive) {
+      const view = this.#instanced;
+      void quietly(view.read(), null).then((counts) => {
+        if (counts) this.#instancedCounts = counts;
+        this.updateStats();
+        if (view.owed) this.requestFrame();
+      });
+    }
     void quietly(renderer?.readTimings(), {}).then((draw) => {
       this.#drawTimes = draw;
       this.updateStats();
@@ -432,6 +521,12 @@ class TessellationDemo extends DemoBase {
       adapter: this.gpu.adapterName,
       memory: this.memory.counts,
       clamps: this.#clamps,
+      instanced: this.instancedActive
+        ? {
+            counts: this.#instancedCounts,
+            setting: this.params.mode === 'fixed' ? `static level ${this.params.level}` : `dynamic LOD ${this.params.lod}`,
+          }
+        : null,
     });
   }
 
@@ -472,6 +567,7 @@ class TessellationDemo extends DemoBase {
     this.#cageLines = uploadCageLines(this.gpu.device, model.cage);
     renderer.setCage(this.#cageLines);
     if (this.#bounds) renderer.setBounds(this.#bounds);
+    this.#syncDrawer(model, surface);
     this.invalidateGeometry();
   }
 
@@ -562,6 +658,14 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     demo.invalidateGeometry();
   };
   tess
+    .add(p, 'tessellator', { 'compute (built once)': 'compute', 'instanced (per pass)': 'instanced' })
+    .name('tessellator')
+    .onChange((kind: DemoParams['tessellator']) => {
+      syncUrl(p);
+      showMode();
+      demo.setTessellator(kind);
+    });
+  tess
     .add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' })
     .name('surface')
     .onChange(() => {
@@ -581,9 +685,19 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     });
   const lod = tess.add(p, 'lod', LOD_RANGE.min, LOD_RANGE.max, 0.05).name('LOD scale').onChange(changed);
   const factor = tess.add(p, 'factor', FACTOR_RANGE.min, FACTOR_RANGE.max, 0.25).name('fixed factor').onChange(changed);
+  // The instanced tessellator's static LOD: one power-of-two level for every patch.
+  const level = tess
+    .add(p, 'level', [...LEVEL_CHOICES])
+    .name('level (instanced)')
+    .onChange((v: number | string) => {
+      p.level = Number(v);
+      changed();
+    });
   const showMode = () => {
+    const instanced = p.tessellator === 'instanced';
     lod.show(p.mode === 'adaptive');
-    factor.show(p.mode === 'fixed');
+    factor.show(p.mode === 'fixed' && !instanced);
+    level.show(p.mode === 'fixed' && instanced);
   };
   showMode();
 
@@ -663,6 +777,8 @@ async function main(): Promise<void> {
     holdPreparation: (hold: boolean) => demo.holdPreparation(hold),
     /** The bytes (and counts) of the page's live GPU buffers and textures, and per label. */
     gpuMemory: () => ({ ...demo.memory.counts, byLabel: demo.memory.byLabel() }),
+    /** The instanced tessellator's bucket draw records (GPU) and the CPU's count (static mode). */
+    instancedRecords: () => demo.instancedRecords(),
   };
   // Test hook: hold the first model's surface data from the start (e2e/demo.spec.ts).
   if ((window as { tessellabHoldPreparation?: boolean }).tessellabHoldPreparation) demo.holdPreparation(true);
