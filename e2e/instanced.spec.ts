@@ -3,6 +3,7 @@
 // each) with no console errors, its bucket draw records equal the CPU's count, its stats show
 // what it draws per pass, and switching tessellators keeps the page working.
 import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
 import { collectErrors, ready } from './helpers.ts';
 
 interface Records {
@@ -77,5 +78,38 @@ test('switching tessellators: compute and instanced on the same model, camera an
   await set('compute');
   await expect(page.getByTestId('stats-output')).not.toContainText('instanced', { timeout: 5_000 });
   expect(await records(page)).toBeNull();
+  expect(errors).toEqual([]);
+});
+
+test('split view: compute on the left, instanced on the right, same cage and camera; both counted and timed; no console errors', async ({
+  page,
+}) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&surface=phong&split=1&mode=fixed&factor=8&level=8&t=0');
+  await ready(page);
+  // Matched settings: the same triangle count on both halves.
+  await expect(page.getByTestId('stats-output-compute')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  const timed = await page.evaluate(
+    () => (window as unknown as { tessellab: { demo: { gpu: { timestamps: boolean } } } }).tessellab.demo.gpu.timestamps,
+  );
+  if (timed) {
+    await expect(page.getByTestId('stats-gpu-compute')).toContainText(/shadow [\d.<]+ · lit [\d.<]+/, { timeout: 5_000 });
+    await expect(page.getByTestId('stats-gpu')).toContainText(/shadow [\d.<]+ · lit [\d.<]+/, { timeout: 5_000 });
+  }
+  // Both halves show the torus: bright (lit clay) pixels on each side of the canvas's middle.
+  const shot = PNG.sync.read(
+    await page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')], maskColor: '#000000' }),
+  );
+  const halves = [0, 0];
+  for (let y = 0; y < shot.height; y++)
+    for (let x = 0; x < shot.width; x++) {
+      const k = 4 * (y * shot.width + x);
+      if (shot.data[k] + shot.data[k + 1] + shot.data[k + 2] > 400) halves[x < shot.width / 2 ? 0 : 1]++;
+    }
+  expect(halves[0]).toBeGreaterThan(500);
+  expect(halves[1]).toBeGreaterThan(500);
   expect(errors).toEqual([]);
 });

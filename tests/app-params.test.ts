@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -31,6 +31,7 @@ describe('URL parameters', () => {
       capacity: 0.5,
       tessellator: 'instanced',
       level: 16,
+      split: true,
     });
   });
 
@@ -89,6 +90,7 @@ describe('URL parameters', () => {
       '?surface=phong',
       '?patches=1&flat=0',
       '?tessellator=instanced&level=32',
+      '?split=1&mode=fixed&level=4',
     ];
     for (const q of cases) {
       const p = parseParams(q);

@@ -220,9 +220,15 @@ class TessellationDemo extends DemoBase {
     return surface === 'cage' ? this.#flat : (this.#tess[surface] ?? null);
   }
 
-  /** The instanced tessellator draws (asked for, and a surface rather than the flat cage is shown). */
+  /** The instanced tessellator draws, alone or in the split view (asked for, and a surface
+   * rather than the flat cage is shown). */
   get instancedActive(): boolean {
-    return this.params.tessellator === 'instanced' && this.shownSurface !== 'cage' && this.model !== null;
+    return (this.params.tessellator === 'instanced' || this.params.split) && this.shownSurface !== 'cage' && this.model !== null;
+  }
+
+  /** The split view: compute on the left half, instanced on the right, same cage and camera. */
+  get splitActive(): boolean {
+    return this.params.split && this.shownSurface !== 'cage' && this.model !== null;
   }
 
   /** Hand the renderer the instanced tessellator (the model's patches uploaded) or take it back,
@@ -230,16 +236,24 @@ class TessellationDemo extends DemoBase {
   #syncDrawer(model: LoadedModel | null, surface: Shown): void {
     const renderer = this.#renderer;
     if (!renderer) return;
-    if (this.params.tessellator !== 'instanced' || surface === 'cage' || !model) {
-      renderer.setDrawer(null);
-      return;
-    }
+    renderer.setDrawer(null);
+    if ((this.params.tessellator !== 'instanced' && !this.params.split) || surface === 'cage' || !model) return;
     this.#instanced ??= new InstancedView(this.gpu.device, renderer.shadingResources);
     if (this.#instanced.cage !== model.cage) {
       this.#instanced.setCage(model.cage);
       this.#instancedCounts = null;
     }
-    renderer.setDrawer(this.#instanced.tess);
+    // The split view hands it over per half, in onFrame.
+    if (!this.params.split) renderer.setDrawer(this.#instanced.tess);
+  }
+
+  /** Turn the split view on or off (the panel, the URL). */
+  setSplit(split: boolean): void {
+    this.params.split = split;
+    this.#syncDrawer(this.model, this.shownSurface);
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
   }
 
   /** Switch tessellators (the panel, the URL): the same model, camera and settings. */
@@ -300,7 +314,7 @@ class TessellationDemo extends DemoBase {
     const kinds = this.cc?.data.triKind ?? new Uint8Array();
     const count = [0, 0, 0, 0];
     for (const k of kinds) count[k]++;
-    const inst = this.instancedActive ? this.#instanced?.mesh : null;
+    const inst = this.instancedActive && !this.splitActive ? this.#instanced?.mesh : null;
     const hex = (c: readonly number[]) =>
       `#${c
         .map((x) =>
@@ -367,16 +381,19 @@ class TessellationDemo extends DemoBase {
     };
     this.#frameFactors = factors;
     const instanced = this.instancedActive ? this.#instanced : null;
+    const split = this.splitActive;
+    // The compute tessellator builds when it is drawn (alone, or the split view's left half).
+    const computeDrawn = !instanced || split;
     if (instanced) {
-      // The instanced tessellator draws: its level pass when the levels may have changed (the
-      // compute tessellator is left as it was).
+      // The instanced tessellator draws: its level pass when the levels may have changed.
       if (this.params.spin && this.params.mode === 'adaptive') this.#geometryDirty = true;
       if (this.#geometryDirty) {
         instanced.encode(encoder, this.#instancedLevels(modelViewProj, target.width, target.height));
-        this.#geometryDirty = false;
+        if (!computeDrawn) this.#geometryDirty = false;
         this.#rebuilds++;
       } else instanced.copyIfOwed(encoder);
-    } else if (this.#geometryDirty && geometry.output) {
+    }
+    if (computeDrawn && this.#geometryDirty && geometry.output) {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
@@ -390,20 +407,21 @@ class TessellationDemo extends DemoBase {
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
     // (and the demo draws on demand: there may be none).
-    if (!instanced && this.#countsOwed && geometry.output && this.#counts?.idle) {
+    if (computeDrawn && this.#countsOwed && geometry.output && this.#counts?.idle) {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
-    renderer.render(
-      encoder,
-      target,
-      { viewProj, model: this.#modelMatrix, eye: m.eye },
-      {
-        wireframe: this.params.wire,
-        cage: this.params.cage,
-        patchColours: this.patchColours,
-      },
-    );
+    const view = { viewProj, model: this.#modelMatrix, eye: m.eye };
+    const options = { wireframe: this.params.wire, cage: this.params.cage, patchColours: this.patchColours };
+    if (split && instanced) {
+      // The same camera twice: compute's stored mesh on the left half, the instanced
+      // tessellator on the right, each with its own shadow pass and timing slot.
+      renderer.setDrawer(null);
+      renderer.render(encoder, target, view, { ...options, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
+      renderer.setDrawer(instanced.tess);
+      renderer.render(encoder, target, view, { ...options, region: { x0: 0.5, x1: 1, first: false, slot: 1 } });
+      renderer.setDrawer(null);
+    } else renderer.render(encoder, target, view, options);
   }
 
   /**
@@ -523,6 +541,7 @@ class TessellationDemo extends DemoBase {
       clamps: this.#clamps,
       instanced: this.instancedActive
         ? {
+            split: this.splitActive,
             counts: this.#instancedCounts,
             setting: this.params.mode === 'fixed' ? `static level ${this.params.level}` : `dynamic LOD ${this.params.lod}`,
           }
@@ -658,14 +677,6 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     demo.invalidateGeometry();
   };
   tess
-    .add(p, 'tessellator', { 'compute (built once)': 'compute', 'instanced (per pass)': 'instanced' })
-    .name('tessellator')
-    .onChange((kind: DemoParams['tessellator']) => {
-      syncUrl(p);
-      showMode();
-      demo.setTessellator(kind);
-    });
-  tess
     .add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' })
     .name('surface')
     .onChange(() => {
@@ -685,19 +696,10 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     });
   const lod = tess.add(p, 'lod', LOD_RANGE.min, LOD_RANGE.max, 0.05).name('LOD scale').onChange(changed);
   const factor = tess.add(p, 'factor', FACTOR_RANGE.min, FACTOR_RANGE.max, 0.25).name('fixed factor').onChange(changed);
-  // The instanced tessellator's static LOD: one power-of-two level for every patch.
-  const level = tess
-    .add(p, 'level', [...LEVEL_CHOICES])
-    .name('level (instanced)')
-    .onChange((v: number | string) => {
-      p.level = Number(v);
-      changed();
-    });
   const showMode = () => {
-    const instanced = p.tessellator === 'instanced';
+    const instancedOnly = p.tessellator === 'instanced' && !p.split;
     lod.show(p.mode === 'adaptive');
-    factor.show(p.mode === 'fixed' && !instanced);
-    level.show(p.mode === 'fixed' && instanced);
+    factor.show(p.mode === 'fixed' && !instancedOnly);
   };
   showMode();
 
@@ -718,6 +720,34 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   view.add(p, 'spin').name('turntable').onChange(redraw);
   view.add(state, 'reset').name('reset camera');
   view.add(state, 'share').name('copy link to this view');
+  // NVIDIA's instanced power-of-two tessellator beside the compute one (closed unless in use).
+  const inst = gui.addFolder('Instanced tessellator');
+  inst
+    .add(p, 'tessellator', { 'compute (built once)': 'compute', 'instanced (per pass)': 'instanced' })
+    .name('tessellator')
+    .onChange((kind: DemoParams['tessellator']) => {
+      syncUrl(p);
+      showMode();
+      demo.setTessellator(kind);
+    });
+  inst
+    .add(p, 'split')
+    .name('split: compute | inst.')
+    .onChange((split: boolean) => {
+      syncUrl(p);
+      showMode();
+      demo.setSplit(split);
+    });
+  // Its static LOD (factors: fixed): one power-of-two level for every patch; adaptive factors
+  // give it its dynamic LOD, scaled by the LOD scale.
+  inst
+    .add(p, 'level', [...LEVEL_CHOICES])
+    .name('level (fixed)')
+    .onChange((v: number | string) => {
+      p.level = Number(v);
+      changed();
+    });
+  if (p.tessellator !== 'instanced' && !p.split) inst.close();
   if (window.matchMedia('(max-width: 640px)').matches) gui.close();
   return {
     gui,

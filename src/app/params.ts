@@ -48,6 +48,9 @@ export interface DemoParams {
   tessellator: TessellatorKind;
   /** The instanced tessellator's static level: a power of two in 1..64. */
   level: number;
+  /** Split view: the compute tessellator on the left half, the instanced one on the right, same
+   * cage, camera and settings (whatever `tessellator` says). */
+  split: boolean;
 }
 
 export const LOD_RANGE = { min: 0.05, max: 8 } as const;
@@ -75,6 +78,7 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   capacity: 4,
   tessellator: 'compute',
   level: 8,
+  split: false,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -124,6 +128,7 @@ export function parseParams(search: string): DemoParams {
   // Any level in range, rounded down to a power of two (what the instanced patterns have).
   const level = num(q.get('level'), 1, 64);
   if (level !== null) p.level = 2 ** Math.floor(Math.log2(level));
+  p.split = bool(q.get('split')) ?? p.split;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -151,6 +156,7 @@ export function formatParams(p: DemoParams): string {
   if (p.capacity !== d.capacity) q.set('cap', String(p.capacity));
   if (p.tessellator !== d.tessellator) q.set('tessellator', p.tessellator);
   if (p.level !== d.level) q.set('level', String(p.level));
+  if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));

@@ -51,7 +51,7 @@ export interface StatsInput {
   clamps?: string[];
   /** The instanced tessellator draws (`tessellator=instanced`): its draws' counts (null until
    * read back) and its setting ("static level 8", "dynamic LOD 1"). */
-  instanced?: { counts: InstancedCounts | null; setting: string } | null;
+  instanced?: { counts: InstancedCounts | null; setting: string; split?: boolean } | null;
 }
 
 const int = new Intl.NumberFormat('en-US');
@@ -102,20 +102,31 @@ export function renderStats(s: StatsInput): string {
       text += '</span>';
     }
     // The instanced tessellator evaluates Phong only so far (the exact surfaces are not plugged in).
-    if (s.instanced && sf.shown !== 'cage')
+    if (s.instanced?.split && sf.shown !== 'cage') text += ' <span class="muted">· instanced (right): Phong only so far</span>';
+    else if (s.instanced && sf.shown !== 'cage')
       text = '<b>Phong</b> <span class="muted">the instanced tessellator evaluates Phong only so far</span>';
     rows.push(row('surface', text, 'stats-surface'));
   }
   const inst = s.instanced;
-  // The instanced tessellator stores no mesh: its counts are its draws', per pass.
-  const c = inst ? null : s.counts;
+  const split = inst?.split ?? false;
+  // The instanced tessellator stores no mesh: its counts are its draws', per pass. The split
+  // view shows both: compute's stored mesh (left) and the instanced draws (right).
+  const c = inst && !split ? null : s.counts;
+  if (split)
+    rows.push(
+      row(
+        'output (left)',
+        c ? `${int.format(c.vertexCount)} verts · ${int.format(c.triangleCount)} tris <span class="muted">compute, ${s.mode}</span>` : '…',
+        'stats-output-compute',
+      ),
+    );
   const what = s.source === 'cage' ? 'cage (flat)' : s.mode;
   const size = (m: MeshCounts) => `${int.format(m.vertexCount)} verts · ${int.format(m.triangleCount)} tris`;
   if (inst) {
     const ic = inst.counts;
     rows.push(
       row(
-        'output',
+        split ? 'output (right)' : 'output',
         ic
           ? `${int.format(ic.vertices)} verts evaluated · ${int.format(ic.triangles)} tris <span class="muted">per pass · instanced, ${esc(inst.setting)}</span>`
           : '…',
@@ -131,6 +142,13 @@ export function renderStats(s: StatsInput): string {
         ),
       );
   } else rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>` : '…', 'stats-output'));
+  if (split && s.timestamps) {
+    // Both tessellators' draw passes, from their timing slots (src/gpu/renderer.ts DrawOptions.region).
+    const t = s.drawTimes;
+    const pair = (sh?: number, lit?: number) => (sh === undefined || lit === undefined ? '…' : `shadow ${ms(sh)} · lit ${ms(lit)}`);
+    rows.push(row('draw ms (left)', `${pair(t.shadow, t.lit)} <span class="muted">stored mesh</span>`, 'stats-gpu-compute'));
+    rows.push(row('draw ms (right)', `${pair(t['shadow 2'], t['lit 2'])} <span class="muted">evaluates</span>`, 'stats-gpu'));
+  }
   // The other factor mode, for the talk's fixed-vs-adaptive comparison: counted by one extra
   // build (then the drawn one again) when its settings, the model or the surface change.
   const o = s.source === 'cage' || inst ? null : s.other;
@@ -149,7 +167,7 @@ export function renderStats(s: StatsInput): string {
   if (s.timestamps) {
     // The build runs only when the camera, factors or model change; the draw passes every frame.
     // Subdivision (the Catmull-Clark patch build) and tessellation are shown apart.
-    const all = s.instanced ? [] : Object.entries(s.tessTimes);
+    const all = s.instanced && !s.instanced.split ? [] : Object.entries(s.tessTimes);
     const subdiv = all.filter(([k]) => SUBDIVISION_STAGES.has(k));
     const tess = all.filter(([k]) => !SUBDIVISION_STAGES.has(k));
     if (all.length && s.surface?.shown === 'catmull-clark') {
@@ -164,7 +182,7 @@ export function renderStats(s: StatsInput): string {
     const draw = Object.entries(s.drawTimes)
       .map(([k, v]) => `${esc(k)} ${ms(v)}`)
       .join(' · ');
-    rows.push(row(inst ? 'draw ms (evaluates)' : 'draw ms', draw || '…', 'stats-gpu'));
+    if (!split) rows.push(row(inst ? 'draw ms (evaluates)' : 'draw ms', draw || '…', 'stats-gpu'));
   } else {
     rows.push(row('GPU ms', '<span class="muted">no timestamp-query on this device</span>', 'stats-gpu'));
   }
