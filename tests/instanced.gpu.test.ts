@@ -354,7 +354,8 @@ describe('instanced tessellator', () => {
     const device = tess.device;
     const m = load(creature);
     tess.setMesh(m);
-    const renderer = Renderer.create(device, { colorFormat: 'rgba8unorm', sampleCount: 4, shadowMapSize: 256 });
+    const timed = device.features.has('timestamp-query');
+    const renderer = Renderer.create(device, { colorFormat: 'rgba8unorm', sampleCount: 4, shadowMapSize: 256, timestamps: timed });
     tess.useRenderer(renderer.shadingResources);
     renderer.setDrawer(tess);
     renderer.setBounds(boundsOf(m.prepared.positions));
@@ -393,6 +394,20 @@ describe('instanced tessellator', () => {
     for (let b = 0; b < BUCKETS; b++) {
       expect(Array.from(args.subarray(5 * BUCKETS + 4 * b, 5 * BUCKETS + 4 * b + 4))).toEqual([2 * args[5 * b], args[5 * b + 1], 0, 0]);
     }
+
+    await renderer.readTimings(); // the first frame's, so that the split frame's are copied
+    // The split view: two regions, the stored-mesh half drawn by nothing here (no mesh set), the
+    // instanced half by the drawer; both timing slots come back.
+    device.pushErrorScope('validation');
+    const split = device.createCommandEncoder({ label: 'test split frame' });
+    const view = { viewProj: cam.viewProj, model: upAxisMatrix('y') as Float32Array, eye: cam.eye };
+    renderer.setDrawer(null);
+    renderer.render(split, target, view, { wireframe: false, cage: false, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
+    renderer.setDrawer(tess);
+    renderer.render(split, target, view, { wireframe: true, cage: false, region: { x0: 0.5, x1: 1, first: false, slot: 1 } });
+    device.queue.submit([split.finish()]);
+    expect((await device.popErrorScope())?.message).toBeUndefined();
+    if (timed) expect(Object.keys(await renderer.readTimings()).sort()).toEqual(['lit', 'lit 2', 'shadow', 'shadow 2']);
     target.destroy();
     read.destroy();
     renderer.destroy();
