@@ -17,8 +17,9 @@
  * edge's level from the view, the sample's dynamic LOD scaled by --lod), then a compute pass that
  * runs the draw's own WGSL vertex function over every instance of every bucket; the copies on
  * shared cage edges are welded by their cage parameter (weldInstanced) and the snap's collapsed
- * triangles left out, so the OBJ and --params are what a draw shows. Phong surface only (the
- * exact surfaces are not plugged into it yet). Its --stats line has "tessellator": "instanced",
+ * triangles left out, so the OBJ and --params are what a draw shows. Surfaces: phong (default) and
+ * the three ACC schemes (--surface bezier-acc | gregory-acc | pm-acc; closed quad and triangle
+ * cages); the exact Catmull-Clark surface is not plugged into it yet. Its --stats line has "tessellator": "instanced",
  * "patches", "levelsMs" and "evaluateMs" (GPU timestamps of the two passes; "tessellationMs" is
  * their sum, "subdivisionMs" null), "drawnTriangles" (what a draw rasterises, collapsed ones
  * included) and "weldGap" (the largest distance between the two sides' copies of a point, over
@@ -43,9 +44,11 @@ import {
   type LevelParams,
 } from '../src/gpu/instanced.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
+import { AccPatches } from '../src/gpu/acc.ts';
+import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
 
 const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]
-       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt]`;
+       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|bezier-acc|gregory-acc|pm-acc]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
@@ -139,8 +142,10 @@ function parse(argv: string[]) {
   const instanced = tessellator === 'instanced';
   if (instanced) {
     if (o.mode === 'fixed') throw new UsageError('--tessellator instanced takes --level L (a power of two), not --fixed');
-    if (surface !== undefined && surface !== 'phong')
-      throw new UsageError(`--tessellator instanced: the Phong surface only for now (got --surface ${surface})`);
+    if (surface !== undefined && surface !== 'phong' && !(ACC_SCHEMES as readonly string[]).includes(surface))
+      throw new UsageError(
+        `--tessellator instanced: --surface phong, ${ACC_SCHEMES.join(', ')} (the exact Catmull-Clark surface is not plugged in yet; got ${surface})`,
+      );
     if (o.flatBaseline) throw new UsageError('--flat-baseline applies to the compute tessellator only');
   } else if (level !== undefined)
     throw new UsageError('--level applies to --tessellator instanced (the compute tessellator takes --fixed F)');
@@ -148,12 +153,16 @@ function parse(argv: string[]) {
     throw new UsageError(instanced ? 'give exactly one of --level L or --adaptive' : 'give exactly one of --fixed F or --adaptive');
   if (!out && !stats) throw new UsageError('--out (or --stats) is required');
   surface ??= instanced ? 'phong' : 'catmull-clark';
-  if (surface !== 'phong' && surface !== 'catmull-clark') throw new UsageError(`unknown surface '${surface}' (catmull-clark or phong)`);
-  o.surface = surface;
+  const acc = instanced && (ACC_SCHEMES as readonly string[]).includes(surface) ? (surface as AccScheme) : undefined;
+  if (surface !== 'phong' && surface !== 'catmull-clark' && !acc)
+    throw new UsageError(
+      `unknown surface '${surface}' (catmull-clark or phong; with --tessellator instanced also ${ACC_SCHEMES.join(', ')})`,
+    );
+  o.surface = acc ? 'phong' : (surface as 'phong' | 'catmull-clark');
   if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
   if ((o.mode === 'fixed' || level !== undefined) && (o.lodScale || o.eye || o.target))
     throw new UsageError('--lod, --eye and --target apply to --adaptive only');
-  return { model, o, out, params, stats, instanced, level };
+  return { model, o, out, params, stats, instanced, level, acc };
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -263,21 +272,37 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
     const cam = headlessCamera(mesh, args.o);
     lp = { mode: 'dynamic', viewProj: cam.viewProj, viewport: [1920, 1080], lodScale: args.o.lodScale ?? 1, level: 1 };
   }
-  const tess = new InstancedTessellator(device);
+  let acc: AccPatches | undefined;
+  if (args.acc) {
+    try {
+      acc = new AccPatches(device, cage, args.acc);
+    } catch (e) {
+      if (e instanceof AccError) {
+        console.error(`tessellate: ${args.model}: ${e.message}`);
+        return 2;
+      }
+      throw e;
+    }
+  }
+  const tess = new InstancedTessellator(device, { surface: acc ? 'acc' : 'evalSurface' });
   let r: Awaited<ReturnType<typeof tessellateInstanced>>;
   try {
-    r = await tessellateInstanced(device, cage, mesh, lp, tess, im);
+    r = await tessellateInstanced(device, cage, mesh, lp, tess, im, acc);
   } catch (e) {
     tess.destroy();
     console.error(`tessellate: ${(e as Error).message}`);
     return 1;
   }
-  const gpuBytes = tess.gpuBytes;
+  const gpuBytes = tess.gpuBytes + (acc ? acc.patchBuffer.size + acc.pointBuffer.size + acc.staticBuffer.size : 0);
   tess.destroy();
+  acc?.destroy();
   const w = weldInstanced(im, r.out);
   const what = args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`;
   if (args.out)
-    writeFileSync(args.out, weldedToObj(w, `tessellab: ${args.model}, instanced tessellator, phong surface, ${what}, ${adapterName}`));
+    writeFileSync(
+      args.out,
+      weldedToObj(w, `tessellab: ${args.model}, instanced tessellator, ${args.acc ?? 'phong'} surface, ${what}, ${adapterName}`),
+    );
   if (args.params) writeParams(args.params, weldedVertexParams(im, cage, r.out, w));
   if (args.stats) {
     const t = r.out.timings;
@@ -303,7 +328,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');
   console.error(
-    `tessellate: instanced, ${what}: ${w.vertexCount} vertices, ${w.triangleCount} triangles (${r.out.triangleCount} drawn, ${w.collapsed} collapsed by the snap; ${im.patchCount} patches) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
+    `tessellate: instanced, ${args.acc ?? 'phong'}, ${what}: ${w.vertexCount} vertices, ${w.triangleCount} triangles (${r.out.triangleCount} drawn, ${w.collapsed} collapsed by the snap; ${im.patchCount} patches) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
   return 0;
 }

@@ -200,6 +200,39 @@ describe('npm run tessellate', () => {
     expect(p.vertexCount).toBe(v.length);
   });
 
+  it('--tessellator instanced --surface bezier-acc: the ACC surface, welded closed across mixed levels; an n-gon cage refused', () => {
+    const out = join(dir, 'creature-acc.obj');
+    const r = run(
+      'public/models/creature.obj',
+      '--tessellator',
+      'instanced',
+      '--surface',
+      'bezier-acc',
+      '--adaptive',
+      '--out',
+      out,
+      '--stats',
+    );
+    expect(r.status, r.stderr).toBe(0);
+    const stats = JSON.parse(
+      r.stdout
+        .trim()
+        .split('\n')
+        .filter((l) => l.startsWith('{'))[0],
+    );
+    const { v, f } = objOf(out);
+    expect(stats.vertices).toBe(v.length);
+    expect(stats.triangles).toBe(f.length);
+    expect(readFileSync(out, 'utf8')).toContain('bezier-acc surface');
+    // Two sides of an edge evaluate different ACC patches in f32: the gap the weld closes.
+    console.log(`instanced bezier-acc creature: ${f.length} triangles, weld gap ${stats.weldGap} of the size`);
+    expect(stats.weldGap).toBeLessThan(1e-6);
+    expect(closedEverywhere(f).open).toBe(0);
+    const bad = run('public/models/icosphere.obj', '--tessellator', 'instanced', '--surface', 'pm-acc', '--level', '2', '--stats');
+    expect(bad.status).toBe(2);
+    expect(bad.stderr).toMatch(/5 corners/);
+  });
+
   it('rejects bad input with a message and exit code 2', () => {
     const bad = join(dir, 'bad.obj');
     writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');

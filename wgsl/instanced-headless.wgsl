@@ -2,17 +2,15 @@
 // (prepended: the vertex function, wgsl/instanced-draw.wgsl): checks and the CLI read exactly
 // what a draw shades.
 //
-//   headless outputs (storage, group 2): positions and normals (3 f32 per vertex), patch
-//     (u32 per vertex), uv (2 f32 per vertex: the snapped pattern point / P), indices (3 u32 per
-//     triangle). Each patch's pattern is written whole at outVertexBase + instance · vertexCount
+//   headless outputs (storage, group 2; two buffers, so that an ACC surface's two fit the
+//   per-stage limit of 8 storage buffers): outF32, 8 f32 per vertex: position, normal, uv (the
+//   snapped pattern point / P); outU32: the patch of each vertex (bucket.outVertexTotal of them),
+//   then 3 indices per triangle. Each patch's pattern is written whole at outVertexBase + instance · vertexCount
 //     and its triangles index it: vertices are shared within a patch, not across patch
 //     boundaries (both sides of an edge write their own copy, which is what the crack check compares).
 
-@group(2) @binding(1) var<storage, read_write> outPositions: array<f32>;
-@group(2) @binding(2) var<storage, read_write> outNormals: array<f32>;
-@group(2) @binding(3) var<storage, read_write> outPatch: array<u32>;
-@group(2) @binding(4) var<storage, read_write> outUV: array<f32>;
-@group(2) @binding(5) var<storage, read_write> outIndices: array<u32>;
+@group(2) @binding(1) var<storage, read_write> outF32: array<f32>;
+@group(2) @binding(2) var<storage, read_write> outU32: array<u32>;
 
 // One thread per (instance, pattern vertex) and per (instance, pattern triangle) of one bucket.
 @compute @workgroup_size(64)
@@ -26,12 +24,12 @@ fn headless(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
     let v = instancedVertex(instance, bucket.baseVertex + k);
     let o = bucket.outVertexBase + g;
     for (var c = 0u; c < 3u; c++) {
-      outPositions[3u * o + c] = v.pos[c];
-      outNormals[3u * o + c] = v.normal[c];
+      outF32[8u * o + c] = v.pos[c];
+      outF32[8u * o + 3u + c] = v.normal[c];
     }
-    outPatch[o] = v.patchId;
-    outUV[2u * o] = f32(v.ij.x) / f32(bucket.level);
-    outUV[2u * o + 1u] = f32(v.ij.y) / f32(bucket.level);
+    outF32[8u * o + 6u] = f32(v.ij.x) / f32(bucket.level);
+    outF32[8u * o + 7u] = f32(v.ij.y) / f32(bucket.level);
+    outU32[o] = v.patchId;
   }
   if (g < bucket.instances * nt) {
     let instance = g / nt;
@@ -39,7 +37,7 @@ fn headless(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
     let base = bucket.outVertexBase + instance * nv;
     let o = bucket.outTriangleBase + g;
     for (var c = 0u; c < 3u; c++) {
-      outIndices[3u * o + c] = base + staticBuf[params.offPatternIdx + bucket.firstIndex + 3u * t + c];
+      outU32[bucket.outVertexTotal + 3u * o + c] = base + staticBuf[params.offPatternIdx + bucket.firstIndex + 3u * t + c];
     }
   }
 }

@@ -4,7 +4,8 @@
 // (wgsl/instanced-draw.wgsl, with the surface), the renderer's scene uniform at group 2 binding 0,
 // render-common.wgsl, render-shading.wgsl (its shadow map and sampler at group 2 bindings 1 and
 // 2) and render-lit.wgsl (its litFragment shades here; its patch-colour buffers, moved to group
-// 3, belong to its own litVertex and are not bound).
+// 3 bindings 10 and 11, clear of an ACC surface's 0 and 1, belong to its own litVertex and are
+// not bound).
 
 @vertex
 fn instancedLitVertex(@builtin(instance_index) instance: u32, @builtin(vertex_index) index: u32) -> VertexOut {

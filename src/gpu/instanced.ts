@@ -30,6 +30,9 @@ import drawWgsl from '../../wgsl/instanced-draw.wgsl?raw';
 import frameWgsl from '../../wgsl/instanced-frame.wgsl?raw';
 import headlessWgsl from '../../wgsl/instanced-headless.wgsl?raw';
 import renderInstancedWgsl from '../../wgsl/render-instanced.wgsl?raw';
+import triSurfaceWgsl from '../../wgsl/instanced-surface-tri.wgsl?raw';
+import accSurfaceWgsl from '../../wgsl/instanced-surface-acc.wgsl?raw';
+import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from './acc.ts';
 import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
@@ -88,6 +91,7 @@ export const INST_BUCKET = defineStruct('InstBucket', [
   ['outVertexBase', 'u32'],
   ['outTriangleBase', 'u32'],
   ['instances', 'u32'],
+  ['outVertexTotal', 'u32'],
 ] as const);
 
 export const INST_FRAME = defineStruct('InstFrame', [
@@ -445,11 +449,15 @@ export function weldedVertexParams(m: InstancedMesh, cage: Cage, out: HeadlessIn
 
 export interface InstancedOptions {
   /** WGSL defining `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` (default: Phong,
-   * wgsl/surface-phong.wgsl). A surface needing more data than the cage and its normals (the
-   * exact Catmull-Clark or ACC surfaces) will declare its own bindings in a fourth bind group
-   * (group 3: control points, quadtree or patch tables) and this class will bind it in every
-   * pass: the exact-surface wiring adds that after the merge; today only the cage is bound. */
+   * wgsl/surface-phong.wgsl), evaluated through wgsl/instanced-surface-tri.wgsl. */
   surfaceWgsl?: string;
+  /**
+   * 'acc': the ACC surfaces (Bezier, Gregory or Pm ACC, by the AccPatches handed to setMesh:
+   * src/gpu/acc.ts builds them from the cage, wgsl/surface-acc.wgsl evaluates them through
+   * wgsl/instanced-surface-acc.wgsl), their two buffers bound in a fourth bind group (group 3) in
+   * every pass. The exact Catmull-Clark surface is not plugged in yet.
+   */
+  surface?: 'evalSurface' | 'acc';
   /** Render target format of the lit pipeline (default 'rgba8unorm'). */
   colorFormat?: GPUTextureFormat;
   /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
@@ -527,9 +535,20 @@ export class InstancedTessellator implements SurfaceDrawer {
   private readonly bucketUniform: GPUBuffer;
   private readonly frame: GPUBuffer;
   private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'bucketPatches' | 'records', GPUComputePipeline>;
-  private readonly layouts: { mesh: GPUBindGroupLayout; bucket: GPUBindGroupLayout; frame: GPUBindGroupLayout; out: GPUBindGroupLayout };
+  private readonly layouts: {
+    mesh: GPUBindGroupLayout;
+    bucket: GPUBindGroupLayout;
+    frame: GPUBindGroupLayout;
+    out: GPUBindGroupLayout;
+    /** Group 3 of an ACC surface: its patches and control points. */
+    surface: GPUBindGroupLayout;
+  };
   private headlessPipelineMade?: GPUComputePipeline;
   private readonly code: (...parts: string[]) => string;
+  /** Whether the surface is ACC (group 3: its patches and control points). */
+  readonly acc: boolean;
+  private accGroup?: GPUBindGroup;
+  private accPatches?: AccPatches;
   private frameModule?: GPUShaderModule;
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
@@ -555,7 +574,10 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.colorFormat = opts.colorFormat ?? 'rgba8unorm';
     this.depthFormat = opts.depthFormat ?? 'depth32float';
     this.sampleCount = opts.sampleCount ?? 1;
-    const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
+    this.acc = opts.surface === 'acc';
+    const surface = this.acc
+      ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
+      : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
     const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
     this.code = code;
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
@@ -592,12 +614,19 @@ export class InstancedTessellator implements SurfaceDrawer {
       }),
       out: device.createBindGroupLayout({
         label: 'instanced headless outputs',
-        entries: [1, 2, 3, 4, 5].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
+        entries: [1, 2].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
+      }),
+      surface: device.createBindGroupLayout({
+        label: 'instanced ACC surface',
+        entries: [
+          { binding: 0, visibility: VC, buffer: ro },
+          { binding: 1, visibility: VC, buffer: ro },
+        ],
       }),
     };
     this.renderLayout = device.createPipelineLayout({
       label: 'instanced render',
-      bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.frame],
+      bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, this.layouts.frame]),
     });
 
     this.params = device.createBuffer({
@@ -638,6 +667,16 @@ export class InstancedTessellator implements SurfaceDrawer {
     });
   }
 
+  /** A pipeline's bind group layouts, with the ACC surface's at group 3. */
+  private withSurface(groups: GPUBindGroupLayout[]): GPUBindGroupLayout[] {
+    return this.acc ? [...groups, this.layouts.surface] : groups;
+  }
+
+  /** Bind the ACC surface's buffers (group 3), where there is one. */
+  private bindSurface(pass: GPURenderPassEncoder | GPUComputePassEncoder): void {
+    if (this.accGroup) pass.setBindGroup(3, this.accGroup);
+  }
+
   get instancedMesh(): InstancedMesh | undefined {
     return this.mesh?.m;
   }
@@ -650,10 +689,13 @@ export class InstancedTessellator implements SurfaceDrawer {
     return own + (m ? m.staticBuf.size + m.cageBuf.size + m.work.size : 0);
   }
 
-  /** Upload a cage's patches (topology once; updateCage for new positions). */
-  setMesh(m: InstancedMesh): void {
+  /** Upload a cage's patches (topology once; updateCage for new positions). With an ACC surface,
+   * `acc`: its patches for the same cage (built here from the cage positions, and again by
+   * updateCage). */
+  setMesh(m: InstancedMesh, acc?: AccPatches): void {
     const device = this.device;
     this.releaseMesh();
+    if (this.acc && !acc) throw new Error('InstancedTessellator: an ACC surface needs its AccPatches (setMesh(mesh, acc))');
     const pr = m.prepared;
     const entries = new Uint32Array(4 * BUCKETS);
     this.patterns.entries.forEach((e, b) => entries.set([e.baseVertex, e.firstIndex, e.indexCount, e.vertexCount], 4 * b));
@@ -681,6 +723,17 @@ export class InstancedTessellator implements SurfaceDrawer {
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
     });
     device.queue.writeBuffer(cageBuf, 0, cage);
+    if (this.acc && acc) {
+      this.accPatches = acc;
+      this.accGroup = device.createBindGroup({
+        label: 'instanced ACC surface',
+        layout: this.layouts.surface,
+        entries: acc.surfaceEntries(0, 1),
+      });
+      const enc = device.createCommandEncoder({ label: 'instanced ACC build' });
+      acc.encode(enc, cageBuf);
+      device.queue.submit([enc.finish()]);
+    }
 
     let w = 0;
     const take = (n: number) => {
@@ -751,6 +804,11 @@ export class InstancedTessellator implements SurfaceDrawer {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+    if (this.accPatches) {
+      const enc = this.device.createCommandEncoder({ label: 'instanced ACC build' });
+      this.accPatches.encode(enc, m.cageBuf);
+      this.device.queue.submit([enc.finish()]);
+    }
   }
 
   /** The levels of per-patch mode (one per patch, rounded down to a power of two in [1, 64]). */
@@ -780,6 +838,8 @@ export class InstancedTessellator implements SurfaceDrawer {
     const run = (name: keyof InstancedTessellator['levelPipelines'], groups: number, group: GPUBindGroup) => {
       cp.setPipeline(this.levelPipelines[name]);
       cp.setBindGroup(0, group);
+      // The dynamic rule evaluates the surface: an ACC surface's buffers (its auto layout's group 3).
+      if (name === 'edgeView' && this.accPatches) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
@@ -788,6 +848,16 @@ export class InstancedTessellator implements SurfaceDrawer {
     run('bucketPatches', Math.ceil(nP / 64), this.levelGroupFor('bucketPatches'));
     run('records', 1, this.levelGroupFor('records'));
     cp.end();
+  }
+
+  private edgeViewSurface?: GPUBindGroup;
+  private edgeViewSurfaceGroup(): GPUBindGroup {
+    this.edgeViewSurface ??= this.device.createBindGroup({
+      label: 'instanced edgeView ACC surface',
+      layout: this.levelPipelines.edgeView.getBindGroupLayout(3),
+      entries: this.accPatches!.surfaceEntries(0, 1),
+    });
+    return this.edgeViewSurface;
   }
 
   // Auto layouts differ per entry point (each holds only the bindings it uses), so each level
@@ -800,7 +870,8 @@ export class InstancedTessellator implements SurfaceDrawer {
       const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
       const used: Record<string, number[]> = {
         patchEdges: [0, 1, 3],
-        edgeView: [0, 1, 2, 3],
+        // The cage buffer is read by the Phong surface; an ACC surface reads its own control points.
+        edgeView: this.acc ? [0, 1, 3] : [0, 1, 2, 3],
         bucketPatches: [0, 1, 3],
         records: [0, 1, 3, 4],
       };
@@ -863,6 +934,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     pass.setPipeline(kind === 'lit' ? this.lit() : this.shadow());
     pass.setBindGroup(0, m.meshGroup);
     pass.setBindGroup(2, this.frameGroup);
+    this.bindSurface(pass);
     pass.setIndexBuffer(this.indexBuffer, 'uint32');
     for (let b = 0; b < BUCKETS; b++) {
       pass.setBindGroup(1, this.bucketGroup, [BUCKET_STRIDE * b]);
@@ -876,7 +948,7 @@ export class InstancedTessellator implements SurfaceDrawer {
       label: 'instanced headless',
       layout: this.device.createPipelineLayout({
         label: 'instanced headless',
-        bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out],
+        bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, this.layouts.out]),
       }),
       compute: {
         module: this.device.createShaderModule({ label: 'instanced headless', code: this.code(drawWgsl, headlessWgsl) }),
@@ -953,10 +1025,11 @@ export class InstancedTessellator implements SurfaceDrawer {
       ],
     });
     // The renderer's lit shader: scene (0, 0), shadow map and sampler (1, 0–1), its patch colours'
-    // buffers (2, 0–1, read by its own litVertex only) moved clear of this tessellator's groups.
-    const lit = rebind(RENDER_SHADERS.lit.join('\n'), { '0,0': [2, 0], '1,0': [2, 1], '1,1': [2, 2], '2,0': [3, 0], '2,1': [3, 1] });
+    // buffers (2, 0–1, read by its own litVertex only) moved clear of this tessellator's groups
+    // (to 3, 10–11: group 3 bindings 0–1 are an ACC surface's).
+    const lit = rebind(RENDER_SHADERS.lit.join('\n'), { '0,0': [2, 0], '1,0': [2, 1], '1,1': [2, 2], '2,0': [3, 10], '2,1': [3, 11] });
     const layout = (label: string, g: GPUBindGroupLayout) =>
-      device.createPipelineLayout({ label, bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, g] });
+      device.createPipelineLayout({ label, bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, g]) });
     this.inRenderer = {
       res,
       module: device.createShaderModule({ label: 'instanced in the renderer', code: this.code(drawWgsl, lit, renderInstancedWgsl) }),
@@ -1041,6 +1114,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     pass.setPipeline(this.rendererPipeline(kind, closed));
     pass.setBindGroup(0, m.meshGroup);
     pass.setBindGroup(2, kind === 'lit' ? r.litGroup : r.sceneGroup);
+    this.bindSurface(pass);
     if (kind !== 'wire') pass.setIndexBuffer(this.indexBuffer, 'uint32');
     for (let b = 0; b < BUCKETS; b++) {
       pass.setBindGroup(1, this.bucketGroup, [BUCKET_STRIDE * b]);
@@ -1092,23 +1166,21 @@ export class InstancedTessellator implements SurfaceDrawer {
       nt += (counts[b] * e.indexCount) / 3;
     });
     const limit = device.limits.maxStorageBufferBindingSize;
-    if (12 * nv > limit || 12 * nt > limit) {
+    if (32 * nv > limit || 4 * nv + 12 * nt > limit) {
       throw new Error(
         `the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`,
       );
     }
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC;
+    // Two buffers (wgsl/instanced-headless.wgsl): 8 f32 per vertex; a patch per vertex, then the indices.
     const out = {
-      positions: device.createBuffer({ label: 'instanced headless positions', size: Math.max(16, 12 * nv), usage: S }),
-      normals: device.createBuffer({ label: 'instanced headless normals', size: Math.max(16, 12 * nv), usage: S }),
-      patch: device.createBuffer({ label: 'instanced headless patches', size: Math.max(16, 4 * nv), usage: S }),
-      uv: device.createBuffer({ label: 'instanced headless uv', size: Math.max(16, 8 * nv), usage: S }),
-      indices: device.createBuffer({ label: 'instanced headless indices', size: Math.max(16, 12 * nt), usage: S }),
+      f32: device.createBuffer({ label: 'instanced headless vertices', size: Math.max(16, 32 * nv), usage: S }),
+      u32: device.createBuffer({ label: 'instanced headless patches + indices', size: Math.max(16, 4 * nv + 12 * nt), usage: S }),
     };
     const outGroup = device.createBindGroup({
       label: 'instanced headless outputs',
       layout: this.layouts.out,
-      entries: [out.positions, out.normals, out.patch, out.uv, out.indices].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
+      entries: [out.f32, out.u32].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
     });
     // This run's bucket uniforms: the draw's, plus where each bucket's output goes.
     const bytes = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
@@ -1135,6 +1207,7 @@ export class InstancedTessellator implements SurfaceDrawer {
         outVertexBase: bases[b].v,
         outTriangleBase: bases[b].t,
         instances: counts[b],
+        outVertexTotal: nv,
       });
     });
     device.queue.writeBuffer(uniform, 0, bytes);
@@ -1145,6 +1218,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     });
     cp.setPipeline(this.headlessPipeline);
     cp.setBindGroup(0, m.meshGroup);
+    this.bindSurface(cp);
     cp.setBindGroup(2, outGroup);
     this.patterns.entries.forEach((e, b) => {
       const threads = counts[b] * Math.max(e.vertexCount, e.indexCount / 3);
@@ -1164,13 +1238,17 @@ export class InstancedTessellator implements SurfaceDrawer {
     device.queue.submit([enc.finish()]);
     const error = await device.popErrorScope();
     if (error) throw new Error(`WebGPU validation error: ${error.message}`);
-    const [positions, normals, patch, uv, indices] = await Promise.all([
-      readBuffer(device, out.positions, 12 * nv),
-      readBuffer(device, out.normals, 12 * nv),
-      readBuffer(device, out.patch, 4 * nv),
-      readBuffer(device, out.uv, 8 * nv),
-      readBuffer(device, out.indices, 12 * nt),
-    ]);
+    const [f32, u32] = await Promise.all([readBuffer(device, out.f32, 32 * nv), readBuffer(device, out.u32, 4 * nv + 12 * nt)]);
+    const fv = new Float32Array(f32),
+      uw = new Uint32Array(u32);
+    const positions = new Float32Array(3 * nv),
+      normals = new Float32Array(3 * nv),
+      uv = new Float32Array(2 * nv);
+    for (let v = 0; v < nv; v++) {
+      positions.set(fv.subarray(8 * v, 8 * v + 3), 3 * v);
+      normals.set(fv.subarray(8 * v + 3, 8 * v + 6), 3 * v);
+      uv.set(fv.subarray(8 * v + 6, 8 * v + 8), 2 * v);
+    }
     const levels = await this.readLevels();
     const timings: Record<string, number> = {};
     if (resolve) {
@@ -1185,11 +1263,11 @@ export class InstancedTessellator implements SurfaceDrawer {
     return {
       vertexCount: nv,
       triangleCount: nt,
-      positions: new Float32Array(positions),
-      normals: new Float32Array(normals),
-      patch: new Uint32Array(patch),
-      uv: new Float32Array(uv),
-      indices: new Uint32Array(indices),
+      positions,
+      normals,
+      patch: uw.slice(0, nv),
+      uv,
+      indices: uw.slice(nv, nv + 3 * nt),
       counts,
       records,
       edgeLevels: levels.edgeLevels,
@@ -1215,6 +1293,9 @@ export class InstancedTessellator implements SurfaceDrawer {
     if (!this.mesh) return;
     for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
     this.levelGroups.clear();
+    this.edgeViewSurface = undefined;
+    this.accGroup = undefined;
+    this.accPatches = undefined;
     this.mesh = undefined;
   }
 
@@ -1238,12 +1319,13 @@ export async function tessellateInstanced(
   lp: LevelParams,
   tess?: InstancedTessellator,
   instancedMesh?: InstancedMesh,
+  acc?: AccPatches,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
     const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
-    t.setMesh(mesh);
+    t.setMesh(mesh, acc);
     return { mesh, out: await t.headless(lp) };
   } finally {
     if (own) t.destroy();
