@@ -113,3 +113,22 @@ test('split view: compute on the left, instanced on the right, same cage and cam
   expect(halves[1]).toBeGreaterThan(500);
   expect(errors).toEqual([]);
 });
+
+test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the scheme refuses falls back to Phong and says why', async ({
+  page,
+}) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&tessellator=instanced&instsurface=gregory-acc&mode=fixed&level=8&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('gregory-acc', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  // The icosphere has a pentagon: no ACC patches; Phong instead, with the reason.
+  await page.goto('/?model=icosphere&tessellator=instanced&instsurface=pm-acc&mode=fixed&level=4&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('Phong', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-surface')).toContainText('ACC unavailable');
+  await expect(page.getByText('5 corners').first()).toBeVisible();
+  expect(errors).toEqual([]);
+});

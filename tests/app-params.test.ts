@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -32,6 +32,7 @@ describe('URL parameters', () => {
       tessellator: 'instanced',
       level: 16,
       split: true,
+      instSurface: 'gregory-acc',
     });
   });
 
@@ -91,6 +92,7 @@ describe('URL parameters', () => {
       '?patches=1&flat=0',
       '?tessellator=instanced&level=32',
       '?split=1&mode=fixed&level=4',
+      '?tessellator=instanced&instsurface=pm-acc',
     ];
     for (const q of cases) {
       const p = parseParams(q);
@@ -108,6 +110,8 @@ describe('URL parameters', () => {
     expect(parseParams('?level=500').level).toBe(64);
     expect(parseParams('?level=0').level).toBe(1);
     expect(parseParams('?level=x').level).toBe(DEFAULT_PARAMS.level);
+    expect(parseParams('?instsurface=bezier-acc').instSurface).toBe('bezier-acc');
+    expect(parseParams('?instsurface=loop').instSurface).toBe('phong');
   });
 });
 

@@ -11,6 +11,8 @@ import { prepareMesh } from '../gpu/prepare.ts';
 import type { ShadingResources } from '../gpu/renderer.ts';
 import type { PackedPatterns } from '../pattern/pow2.ts';
 import type { Cage } from '../mesh/types.ts';
+import { AccPatches } from '../gpu/acc.ts';
+import type { InstancedSurface } from './params.ts';
 
 /** What one frame's draws hold, from the 14 bucket records. */
 export interface InstancedCounts {
@@ -51,9 +53,22 @@ export class InstancedView {
   #owed = false;
   /** The latest level parameters encoded. */
   lastLevels: LevelParams | null = null;
+  /** The ACC patches of the cage (an ACC surface). */
+  #acc: AccPatches | null = null;
+  readonly #device: GPUDevice;
 
-  constructor(device: GPUDevice, shading: ShadingResources) {
-    this.tess = new InstancedTessellator(device, { colorFormat: shading.colorFormat, sampleCount: shading.sampleCount });
+  /** `surface`: Phong, or an ACC scheme (setCage then throws AccError for cages it refuses). */
+  constructor(
+    device: GPUDevice,
+    shading: ShadingResources,
+    readonly surface: InstancedSurface = 'phong',
+  ) {
+    this.#device = device;
+    this.tess = new InstancedTessellator(device, {
+      colorFormat: shading.colorFormat,
+      sampleCount: shading.sampleCount,
+      surface: surface === 'phong' ? 'evalSurface' : 'acc',
+    });
     this.tess.useRenderer(shading);
     this.#staging = device.createBuffer({
       label: 'instanced records readback',
@@ -70,11 +85,16 @@ export class InstancedView {
     return this.#mesh;
   }
 
-  /** Upload a model's patches (its topology and positions). */
+  /** Upload a model's patches (its topology and positions; with an ACC surface, its ACC patches:
+   * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses). */
   setCage(cage: Cage): void {
-    this.#mesh = prepareInstanced(cage, prepareMesh(cage));
+    const mesh = prepareInstanced(cage, prepareMesh(cage));
+    const acc = this.surface === 'phong' ? null : new AccPatches(this.#device, cage, this.surface);
+    this.#acc?.destroy();
+    this.#acc = acc;
+    this.#mesh = mesh;
     this.#cage = cage;
-    this.tess.setMesh(this.#mesh);
+    this.tess.setMesh(mesh, acc ?? undefined);
   }
 
   /** Encode the level pass (before the frame's render passes) and, when the reader is free, a copy of its records. */
@@ -122,6 +142,7 @@ export class InstancedView {
 
   destroy(): void {
     this.tess.destroy();
+    this.#acc?.destroy();
     this.#staging.destroy();
   }
 }

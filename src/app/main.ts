@@ -26,6 +26,7 @@ import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, mod
 import { FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
 import type { LevelParams } from '../gpu/instanced.ts';
+import { AccError } from '../subdiv/acc.ts';
 import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
@@ -61,6 +62,8 @@ class TessellationDemo extends DemoBase {
   /** The instanced tessellator (`tessellator=instanced`), made on first use, and its last counts. */
   #instanced: InstancedView | null = null;
   #instancedCounts: InstancedCounts | null = null;
+  /** The cage that refused an ACC scheme (the instanced tessellator draws Phong for it), and why. */
+  #instancedRefused: { cage: LoadedModel['cage']; surface: DemoParams['instSurface']; message: string } | null = null;
 
   /** Catmull-Clark data per cage (topology only, cached): the controller's surface data. */
   readonly #ccTables = new CcTableCache();
@@ -238,13 +241,43 @@ class TessellationDemo extends DemoBase {
     if (!renderer) return;
     renderer.setDrawer(null);
     if ((this.params.tessellator !== 'instanced' && !this.params.split) || surface === 'cage' || !model) return;
-    this.#instanced ??= new InstancedView(this.gpu.device, renderer.shadingResources);
-    if (this.#instanced.cage !== model.cage) {
-      this.#instanced.setCage(model.cage);
+    // Its surface: the one asked for, or Phong where this cage refused that ACC scheme.
+    const want = this.params.instSurface;
+    const refused = this.#instancedRefused;
+    const use = refused && refused.cage === model.cage && refused.surface === want ? 'phong' : want;
+    let view = this.#instanced;
+    if (view && view.surface !== use) {
+      view.destroy();
+      view = this.#instanced = null;
+    }
+    view ??= this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, use);
+    if (view.cage !== model.cage) {
+      try {
+        view.setCage(model.cage);
+      } catch (e) {
+        if (!(e instanceof AccError)) throw e;
+        this.#instancedRefused = { cage: model.cage, surface: want, message: e.message };
+        showToast(`${e.message}\n\nThe instanced tessellator draws Phong instead.`, {
+          kind: 'info',
+          title: `No ${want} patches for ${model.title}`,
+          timeout: 10_000,
+        });
+        view.destroy();
+        view = this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, 'phong');
+        view.setCage(model.cage);
+      }
       this.#instancedCounts = null;
     }
     // The split view hands it over per half, in onFrame.
-    if (!this.params.split) renderer.setDrawer(this.#instanced.tess);
+    if (!this.params.split) renderer.setDrawer(view.tess);
+  }
+
+  /** The instanced tessellator's surface (the panel, the URL): Phong or an ACC scheme. */
+  setInstancedSurface(surface: DemoParams['instSurface']): void {
+    this.params.instSurface = surface;
+    this.#syncDrawer(this.model, this.shownSurface);
+    this.invalidateGeometry();
+    this.updateStats(true);
   }
 
   /** Turn the split view on or off (the panel, the URL). */
@@ -542,6 +575,13 @@ class TessellationDemo extends DemoBase {
       instanced: this.instancedActive
         ? {
             split: this.splitActive,
+            surface: this.#instanced?.surface ?? 'phong',
+            fallback:
+              this.#instancedRefused &&
+              this.#instancedRefused.cage === this.model?.cage &&
+              this.#instancedRefused.surface === this.params.instSurface
+                ? this.#instancedRefused.message
+                : null,
             counts: this.#instancedCounts,
             setting: this.params.mode === 'fixed' ? `static level ${this.params.level}` : `dynamic LOD ${this.params.lod}`,
           }
@@ -737,6 +777,13 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       syncUrl(p);
       showMode();
       demo.setSplit(split);
+    });
+  inst
+    .add(p, 'instSurface', { Phong: 'phong', 'Bezier ACC': 'bezier-acc', 'Gregory ACC': 'gregory-acc', 'Pm ACC': 'pm-acc' })
+    .name('its surface')
+    .onChange((v: DemoParams['instSurface']) => {
+      syncUrl(p);
+      demo.setInstancedSurface(v);
     });
   // Its static LOD (factors: fixed): one power-of-two level for every patch; adaptive factors
   // give it its dynamic LOD, scaled by the LOD scale.

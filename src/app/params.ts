@@ -51,7 +51,13 @@ export interface DemoParams {
   /** Split view: the compute tessellator on the left half, the instanced one on the right, same
    * cage, camera and settings (whatever `tessellator` says). */
   split: boolean;
+  /** The instanced tessellator's surface (`instsurface=`): Phong or one of the ACC schemes
+   * (closed quad and triangle cages; elsewhere it falls back to Phong and says why). */
+  instSurface: InstancedSurface;
 }
+
+export type InstancedSurface = 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
 
 export const LOD_RANGE = { min: 0.05, max: 8 } as const;
 export const FACTOR_RANGE = { min: 1, max: 64 } as const;
@@ -79,6 +85,7 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   tessellator: 'compute',
   level: 8,
   split: false,
+  instSurface: 'phong',
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -129,6 +136,8 @@ export function parseParams(search: string): DemoParams {
   const level = num(q.get('level'), 1, 64);
   if (level !== null) p.level = 2 ** Math.floor(Math.log2(level));
   p.split = bool(q.get('split')) ?? p.split;
+  const instSurface = q.get('instsurface')?.trim().toLowerCase();
+  if (instSurface && (INSTANCED_SURFACES as readonly string[]).includes(instSurface)) p.instSurface = instSurface as InstancedSurface;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -157,6 +166,7 @@ export function formatParams(p: DemoParams): string {
   if (p.tessellator !== d.tessellator) q.set('tessellator', p.tessellator);
   if (p.level !== d.level) q.set('level', String(p.level));
   if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
+  if (p.instSurface !== d.instSurface) q.set('instsurface', p.instSurface);
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));

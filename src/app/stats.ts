@@ -51,7 +51,14 @@ export interface StatsInput {
   clamps?: string[];
   /** The instanced tessellator draws (`tessellator=instanced`): its draws' counts (null until
    * read back) and its setting ("static level 8", "dynamic LOD 1"). */
-  instanced?: { counts: InstancedCounts | null; setting: string; split?: boolean } | null;
+  instanced?: {
+    counts: InstancedCounts | null;
+    setting: string;
+    split?: boolean;
+    /** Its surface (Phong or an ACC scheme), and why not the one asked for, if refused. */
+    surface?: string;
+    fallback?: string | null;
+  } | null;
 }
 
 const int = new Intl.NumberFormat('en-US');
@@ -102,9 +109,10 @@ export function renderStats(s: StatsInput): string {
       text += '</span>';
     }
     // The instanced tessellator evaluates Phong only so far (the exact surfaces are not plugged in).
-    if (s.instanced?.split && sf.shown !== 'cage') text += ' <span class="muted">· instanced (right): Phong only so far</span>';
-    else if (s.instanced && sf.shown !== 'cage')
-      text = '<b>Phong</b> <span class="muted">the instanced tessellator evaluates Phong only so far</span>';
+    const instName = esc(s.instanced?.surface === 'phong' || !s.instanced?.surface ? 'Phong' : s.instanced.surface);
+    const refused = s.instanced?.fallback ? ` <span class="warn">ACC unavailable: ${esc(s.instanced.fallback)}</span>` : '';
+    if (s.instanced?.split && sf.shown !== 'cage') text += ` <span class="muted">· instanced (right): ${instName}</span>${refused}`;
+    else if (s.instanced && sf.shown !== 'cage') text = `<b>${instName}</b> <span class="muted">instanced tessellator</span>${refused}`;
     rows.push(row('surface', text, 'stats-surface'));
   }
   const inst = s.instanced;
