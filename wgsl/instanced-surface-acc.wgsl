@@ -10,3 +10,11 @@ fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
   let s = evalAccPatch(patchWord(p, 6u), f32(i) / f32(P), f32(j) / f32(P));
   return SurfacePoint(s.pos, s.normal);
 }
+
+// Patch colours, the sample's "show irregular patches" (wgsl/render-instanced.wgsl;
+// src/gpu/contract.ts PATCH_COLOURS order): a regular patch (a plain bicubic, ACC kind 0), an
+// irregular quad (Bezier, Gregory or Pm ACC around an extraordinary vertex), a triangle.
+fn patchColourIndex(p: u32) -> u32 {
+  if (accPatches[2u * patchWord(p, 6u)] == 0u) { return 0u; }
+  return select(1u, 2u, patchIsTri(p));
+}

@@ -15,10 +15,11 @@ fn instancedLitVertex(@builtin(instance_index) instance: u32, @builtin(vertex_in
   out.clip = scene.viewProj * vec4f(world, 1.0);
   out.world = world;
   out.normal = (scene.model * vec4f(v.normal, 0.0)).xyz;
-  // Patch colours: the patch's domain (quad patches as regular, triangle patches as triangles).
+  // Patch colours: the kind of the patch (patchColourIndex comes with the surface: regular,
+  // irregular quad or triangle on ACC; quad or triangle on Phong).
   out.patchWeights = vec4f(0.0);
   if (scene.viewport.w > 0.5) {
-    out.patchWeights = select(vec4f(1.0, 0.0, 0.0, 0.0), vec4f(0.0, 0.0, 1.0, 0.0), patchIsTri(v.patchId));
+    out.patchWeights = select(vec4f(0.0), vec4f(1.0), vec4<u32>(patchColourIndex(v.patchId)) == vec4<u32>(0u, 1u, 2u, 3u));
   }
   return out;
 }

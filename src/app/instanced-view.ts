@@ -85,6 +85,22 @@ export class InstancedView {
     return this.#mesh;
   }
 
+  /** Patches per patch colour (as wgsl/instanced-surface-*.wgsl patchColourIndex): regular,
+   * irregular quad, triangle (ACC: a regular patch is ACC kind 0; Phong: every quad). */
+  patchColourCounts(): [number, number, number, number] {
+    const m = this.#mesh;
+    const n: [number, number, number, number] = [0, 0, 0, 0];
+    if (!m) return n;
+    const kinds = this.#acc?.topology.patches;
+    for (let p = 0; p < m.patchCount; p++) {
+      const tri = (m.patches[8 * p + 1] & 1) === 1;
+      if (tri) n[2]++;
+      else if (!kinds || kinds[2 * m.patches[8 * p + 6]] === 0) n[0]++;
+      else n[1]++;
+    }
+    return n;
+  }
+
   /** Upload a model's patches (its topology and positions; with an ACC surface, its ACC patches:
    * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses). */
   setCage(cage: Cage): void {

@@ -276,6 +276,7 @@ class TessellationDemo extends DemoBase {
   setInstancedSurface(surface: DemoParams['instSurface']): void {
     this.params.instSurface = surface;
     this.#syncDrawer(this.model, this.shownSurface);
+    this.updateLegend();
     this.invalidateGeometry();
     this.updateStats(true);
   }
@@ -347,7 +348,7 @@ class TessellationDemo extends DemoBase {
     const kinds = this.cc?.data.triKind ?? new Uint8Array();
     const count = [0, 0, 0, 0];
     for (const k of kinds) count[k]++;
-    const inst = this.instancedActive && !this.splitActive ? this.#instanced?.mesh : null;
+    const inst = this.instancedActive && !this.splitActive ? this.#instanced : null;
     const hex = (c: readonly number[]) =>
       `#${c
         .map((x) =>
@@ -357,10 +358,12 @@ class TessellationDemo extends DemoBase {
         )
         .join('')}`;
     if (inst) {
-      // wgsl/render-instanced.wgsl: quad patches in the first colour, triangle patches in the third.
-      const entry = (c: readonly number[], name: string, n: number) =>
-        `<li><span class="swatch" style="background:${hex(c)}"></span>${name} <span class="muted">${n}</span></li>`;
-      legend.innerHTML = `<strong>Patches (instanced)</strong><ul>${entry(PATCH_COLOURS[0].srgb, 'quad', inst.quadCount)}${entry(PATCH_COLOURS[2].srgb, 'triangle', inst.triCount)}</ul>`;
+      // wgsl/instanced-surface-*.wgsl patchColourIndex: regular, irregular quad (ACC only), triangle.
+      const n = inst.patchColourCounts();
+      const entry = (k: number, name: string) =>
+        `<li><span class="swatch" style="background:${hex(PATCH_COLOURS[k].srgb)}"></span>${name} <span class="muted">${n[k]}</span></li>`;
+      const acc = inst.surface !== 'phong';
+      legend.innerHTML = `<strong>Patches (instanced)</strong><ul>${entry(0, acc ? 'regular' : 'quad')}${acc ? entry(1, 'irregular quad') : ''}${entry(2, 'triangle')}</ul>`;
       return;
     }
     legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
