@@ -132,3 +132,21 @@ test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the sche
   await expect(page.getByText('5 corners').first()).toBeVisible();
   expect(errors).toEqual([]);
 });
+
+test('flat shading (the instanced tessellator) changes the picture, and back', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&tessellator=instanced&mode=fixed&level=4&wire=0&t=0');
+  await ready(page);
+  const canvas = () => page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')] });
+  const set = (flat: boolean) =>
+    page.evaluate(
+      (f) => (window as unknown as { tessellab: { demo: { setInstancedFlat(f: boolean): void } } }).tessellab.demo.setInstancedFlat(f),
+      flat,
+    );
+  const before = await canvas();
+  await set(true);
+  await expect.poll(async () => Buffer.compare(await canvas(), before)).not.toBe(0);
+  await set(false);
+  await expect.poll(async () => Buffer.compare(await canvas(), before)).toBe(0);
+  expect(errors).toEqual([]);
+});

@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -33,6 +33,7 @@ describe('URL parameters', () => {
       level: 16,
       split: true,
       instSurface: 'gregory-acc',
+      flatShade: true,
     });
   });
 

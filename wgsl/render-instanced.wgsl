@@ -14,7 +14,8 @@ fn instancedLitVertex(@builtin(instance_index) instance: u32, @builtin(vertex_in
   var out: VertexOut;
   out.clip = scene.viewProj * vec4f(world, 1.0);
   out.world = world;
-  out.normal = (scene.model * vec4f(v.normal, 0.0)).xyz;
+  // Flat shading: no vertex normal, so litFragment shades each facet by its own (derivatives).
+  out.normal = select((scene.model * vec4f(v.normal, 0.0)).xyz, vec3f(0.0), params.flatShading == 1u);
   // Patch colours: the kind of the patch (patchColourIndex comes with the surface: regular,
   // irregular quad or triangle on ACC; quad or triangle on Phong).
   out.patchWeights = vec4f(0.0);

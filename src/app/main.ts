@@ -268,8 +268,16 @@ class TessellationDemo extends DemoBase {
       }
       this.#instancedCounts = null;
     }
+    view.tess.setFlatShading(this.params.flatShade);
     // The split view hands it over per half, in onFrame.
     if (!this.params.split) renderer.setDrawer(view.tess);
+  }
+
+  /** The instanced tessellator's flat shading (the panel, the URL). */
+  setInstancedFlat(flat: boolean): void {
+    this.params.flatShade = flat;
+    this.#instanced?.tess.setFlatShading(flat);
+    this.requestFrame();
   }
 
   /** The instanced tessellator's surface (the panel, the URL): Phong or an ACC scheme. */
@@ -787,6 +795,13 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     .onChange((v: DemoParams['instSurface']) => {
       syncUrl(p);
       demo.setInstancedSurface(v);
+    });
+  inst
+    .add(p, 'flatShade')
+    .name('flat shading')
+    .onChange((v: boolean) => {
+      syncUrl(p);
+      demo.setInstancedFlat(v);
     });
   // Its static LOD (factors: fixed): one power-of-two level for every patch; adaptive factors
   // give it its dynamic LOD, scaled by the LOD scale.

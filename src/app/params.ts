@@ -54,6 +54,8 @@ export interface DemoParams {
   /** The instanced tessellator's surface (`instsurface=`): Phong or one of the ACC schemes
    * (closed quad and triangle cages; elsewhere it falls back to Phong and says why). */
   instSurface: InstancedSurface;
+  /** The instanced tessellator's flat shading (`flatshade=1`): each facet by its own normal. */
+  flatShade: boolean;
 }
 
 export type InstancedSurface = 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
@@ -86,6 +88,7 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   level: 8,
   split: false,
   instSurface: 'phong',
+  flatShade: false,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -137,6 +140,7 @@ export function parseParams(search: string): DemoParams {
   if (level !== null) p.level = 2 ** Math.floor(Math.log2(level));
   p.split = bool(q.get('split')) ?? p.split;
   const instSurface = q.get('instsurface')?.trim().toLowerCase();
+  p.flatShade = bool(q.get('flatshade')) ?? p.flatShade;
   if (instSurface && (INSTANCED_SURFACES as readonly string[]).includes(instSurface)) p.instSurface = instSurface as InstancedSurface;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
@@ -167,6 +171,7 @@ export function formatParams(p: DemoParams): string {
   if (p.level !== d.level) q.set('level', String(p.level));
   if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
   if (p.instSurface !== d.instSurface) q.set('instsurface', p.instSurface);
+  if (p.flatShade !== d.flatShade) q.set('flatshade', p.flatShade ? '1' : '0');
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));

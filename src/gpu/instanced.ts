@@ -78,6 +78,8 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['offPatchLevel', 'u32'],
   ['offCounts', 'u32'],
   ['offLists', 'u32'],
+  // 1: the renderer-pass lit draw shades facets (wgsl/render-instanced.wgsl; setFlatShading).
+  ['flatShading', 'u32'],
 ] as const);
 
 export const INST_BUCKET = defineStruct('InstBucket', [
@@ -809,6 +811,13 @@ export class InstancedTessellator implements SurfaceDrawer {
       this.accPatches.encode(enc, m.cageBuf);
       this.device.queue.submit([enc.finish()]);
     }
+  }
+
+  /** Flat shading in the renderer's lit pass (the sample's "flat shading"): the vertex normal is
+   * dropped and the lit shader shades each facet by its own normal. */
+  setFlatShading(flat: boolean): void {
+    INST_PARAMS.write(new DataView(this.paramsBytes), { flatShading: flat ? 1 : 0 });
+    this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
   }
 
   /** The levels of per-patch mode (one per patch, rounded down to a power of two in [1, 64]). */
