@@ -29,8 +29,7 @@ import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
-import { timeDrawPasses } from './draw-timing.ts';
-import { mat4 } from 'gl-matrix';
+import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
 
 const REPEATS = 5;
 
@@ -83,7 +82,7 @@ function timeOpenSubdiv(bin: string, objPath: string, repeats: number): OsdTimin
   return runs[Math.floor(runs.length / 2)];
 }
 
-interface Run {
+export interface Run {
   vertices: number;
   triangles: number;
   stages: Record<string, number>;
@@ -95,7 +94,7 @@ function median(xs: number[]): number {
   return s[Math.floor(s.length / 2)];
 }
 
-async function timeRebuild(
+export async function timeRebuild(
   device: GPUDevice,
   tess: Tessellator,
   mesh: PreparedMesh,
@@ -312,17 +311,7 @@ export async function main(argv: string[]): Promise<number> {
       `| ${name} | ${faces} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} / ${warmMs.toFixed(0)} | ${Math.round(data.gpuBytes / faces)} | ${osdCells(warmMs)} |`,
     );
     const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
-    const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
-    const r = mesh.size / 2;
-    const lightView = mat4.lookAt(mat4.create(), [centre[0] + 2 * r, centre[1] + 3 * r, centre[2] + 2 * r], centre, [0, 1, 0]);
-    const lightProj = mat4.orthoZO(mat4.create(), -r, r, -r, r, 0.1 * r, 8 * r);
-    const { litMs, shadowMs } = await timeDrawPasses(
-      device,
-      cc.output,
-      cam.viewProj,
-      mat4.multiply(mat4.create(), lightProj, lightView) as Float32Array,
-      repeats,
-    );
+    const { litMs, shadowMs } = await timeDrawPasses(device, cc.output, cam.viewProj, benchLightViewProj(mesh), repeats);
     const perM = 1e6 / fixedRun.triangles;
     draws.push(
       `| ${name} | ${fixedRun.triangles} | ${(fixedRun.total * perM).toFixed(2)} | ${(litMs * perM).toFixed(2)} | ${(shadowMs * perM).toFixed(2)} | ${((litMs + 4 * shadowMs) * perM).toFixed(2)} |`,

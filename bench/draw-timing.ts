@@ -4,7 +4,18 @@
  * minimal pair of passes (Lambert shading into 1920×1080 rgba8 + depth; depth only into a
  * 2048² shadow map), so that the number measures the geometry, not a material.
  */
+import { mat4 } from 'gl-matrix';
 import type { TessellatedMesh } from '../src/gpu/types.ts';
+import type { PreparedMesh } from '../src/gpu/prepare.ts';
+
+/** The benchmark's light: an orthographic box around the model, from above and to the side. */
+export function benchLightViewProj(mesh: PreparedMesh): Float32Array {
+  const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
+  const r = mesh.size / 2;
+  const lightView = mat4.lookAt(mat4.create(), [centre[0] + 2 * r, centre[1] + 3 * r, centre[2] + 2 * r], centre, [0, 1, 0]);
+  const lightProj = mat4.orthoZO(mat4.create(), -r, r, -r, r, 0.1 * r, 8 * r);
+  return mat4.multiply(mat4.create(), lightProj, lightView) as Float32Array;
+}
 
 const SHADER = /* wgsl */ `
 struct Camera { viewProj: mat4x4<f32>, light: vec4<f32> }
@@ -27,6 +38,9 @@ export async function timeDrawPasses(
   viewProj: Float32Array,
   lightViewProj: Float32Array,
   repeats: number,
+  /** The lit pass's culling (default 'back'; the instanced comparison draws both with 'none',
+   * as the instanced tessellator's own lit pipeline does). */
+  litCullMode: GPUCullMode = 'back',
 ): Promise<{ litMs: number; shadowMs: number }> {
   const module = device.createShaderModule({ label: 'bench draw', code: SHADER });
   const vertexBuffers: GPUVertexBufferLayout[] = [
@@ -40,7 +54,7 @@ export async function timeDrawPasses(
     depthStencil,
     vertex: { module, entryPoint: 'vs', buffers: vertexBuffers },
     fragment: { module, entryPoint: 'fs', targets: [{ format: 'rgba8unorm' }] },
-    primitive: { cullMode: 'back' },
+    primitive: { cullMode: litCullMode },
   });
   const shadow = device.createRenderPipeline({
     label: 'bench shadow',

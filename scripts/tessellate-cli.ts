@@ -1,6 +1,7 @@
 /**
  * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
  *   (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`
+ * `npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye … --target …]) …`
  * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
  * GPU) and writes the welded mesh: by default on the exact Catmull-Clark limit surface (with
  * --flat-baseline, blended towards the flat cage at low factors as the demo does). --params writes every output vertex's source cage face and
@@ -10,18 +11,44 @@
  * Catmull-Clark preparation per topology), "gpuBytes" (GPU memory of the subdivision data),
  * "subdivisionMs", "tessellationMs" (GPU timestamps of the one rebuild: the patch build, and
  * everything after it; null without timestamp queries), "vertices", "triangles", "adapter"}.
+ *
+ * `--tessellator instanced` runs the instanced power-of-two tessellator (src/gpu/instanced.ts)
+ * instead: its level pass (static `--level L`, L a power of two in 1..64, or `--adaptive`: each
+ * edge's level from the view, the sample's dynamic LOD scaled by --lod), then a compute pass that
+ * runs the draw's own WGSL vertex function over every instance of every bucket; the copies on
+ * shared cage edges are welded by their cage parameter (weldInstanced) and the snap's collapsed
+ * triangles left out, so the OBJ and --params are what a draw shows. Surfaces: phong (default) and
+ * the three ACC schemes (--surface bezier-acc | gregory-acc | pm-acc; closed quad and triangle
+ * cages); the exact Catmull-Clark surface is not plugged into it yet. Its --stats line has "tessellator": "instanced",
+ * "patches", "levelsMs" and "evaluateMs" (GPU timestamps of the two passes; "tessellationMs" is
+ * their sum, "subdivisionMs" null), "drawnTriangles" (what a draw rasterises, collapsed ones
+ * included) and "weldGap" (the largest distance between the two sides' copies of a point, over
+ * the model's size).
  * Bad input: a message and exit code 2.
  */
 import { readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { loadCage, CageError } from '../src/mesh/index.ts';
 import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/node-device.ts';
-import { tessellateOnce, meshToObj, vertexParams, paramsToText, type HeadlessOptions } from '../src/gpu/headless.ts';
+import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, type HeadlessOptions } from '../src/gpu/headless.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { faceCount, type Cage } from '../src/mesh/index.ts';
+import {
+  prepareInstanced,
+  tessellateInstanced,
+  weldInstanced,
+  weldedToObj,
+  weldedVertexParams,
+  InstancedTessellator,
+  type LevelParams,
+} from '../src/gpu/instanced.ts';
+import { isPow2Level } from '../src/pattern/pow2.ts';
+import { AccPatches } from '../src/gpu/acc.ts';
+import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
 
-const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`;
+const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]
+       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|bezier-acc|gregory-acc|pm-acc]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
@@ -43,7 +70,9 @@ function parse(argv: string[]) {
   let out: string | undefined;
   let params: string | undefined;
   let stats = false;
-  let surface = 'catmull-clark';
+  let surface: string | undefined;
+  let tessellator = 'compute';
+  let level: number | undefined;
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const value = () => {
@@ -57,6 +86,18 @@ function parse(argv: string[]) {
         if (!(f >= 1 && f <= 64)) throw new UsageError(`--fixed: a tess factor in [1, 64], got ${argv[i]}`);
         o.mode = 'fixed';
         o.fixedFactor = f;
+        modeSeen++;
+        break;
+      }
+      case '--tessellator':
+        tessellator = value();
+        if (tessellator !== 'compute' && tessellator !== 'instanced')
+          throw new UsageError(`unknown tessellator '${tessellator}' (compute or instanced)`);
+        break;
+      case '--level': {
+        const L = Number(value());
+        if (!isPow2Level(L)) throw new UsageError(`--level: a power of two in [1, 64], got ${argv[i]}`);
+        level = L;
         modeSeen++;
         break;
       }
@@ -98,13 +139,30 @@ function parse(argv: string[]) {
     }
   }
   if (!model) throw new UsageError('no model given');
-  if (modeSeen !== 1) throw new UsageError('give exactly one of --fixed F or --adaptive');
+  const instanced = tessellator === 'instanced';
+  if (instanced) {
+    if (o.mode === 'fixed') throw new UsageError('--tessellator instanced takes --level L (a power of two), not --fixed');
+    if (surface !== undefined && surface !== 'phong' && !(ACC_SCHEMES as readonly string[]).includes(surface))
+      throw new UsageError(
+        `--tessellator instanced: --surface phong, ${ACC_SCHEMES.join(', ')} (the exact Catmull-Clark surface is not plugged in yet; got ${surface})`,
+      );
+    if (o.flatBaseline) throw new UsageError('--flat-baseline applies to the compute tessellator only');
+  } else if (level !== undefined)
+    throw new UsageError('--level applies to --tessellator instanced (the compute tessellator takes --fixed F)');
+  if (modeSeen !== 1)
+    throw new UsageError(instanced ? 'give exactly one of --level L or --adaptive' : 'give exactly one of --fixed F or --adaptive');
   if (!out && !stats) throw new UsageError('--out (or --stats) is required');
-  if (surface !== 'phong' && surface !== 'catmull-clark') throw new UsageError(`unknown surface '${surface}' (catmull-clark or phong)`);
-  o.surface = surface;
+  surface ??= instanced ? 'phong' : 'catmull-clark';
+  const acc = instanced && (ACC_SCHEMES as readonly string[]).includes(surface) ? (surface as AccScheme) : undefined;
+  if (surface !== 'phong' && surface !== 'catmull-clark' && !acc)
+    throw new UsageError(
+      `unknown surface '${surface}' (catmull-clark or phong; with --tessellator instanced also ${ACC_SCHEMES.join(', ')})`,
+    );
+  o.surface = acc ? 'phong' : (surface as 'phong' | 'catmull-clark');
   if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
-  if (o.mode === 'fixed' && (o.lodScale || o.eye || o.target)) throw new UsageError('--lod, --eye and --target apply to --adaptive only');
-  return { model, o, out, params, stats };
+  if ((o.mode === 'fixed' || level !== undefined) && (o.lodScale || o.eye || o.target))
+    throw new UsageError('--lod, --eye and --target apply to --adaptive only');
+  return { model, o, out, params, stats, instanced, level, acc };
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -142,6 +200,11 @@ export async function main(argv: string[]): Promise<number> {
     console.error(`tessellate: ${(e as Error).message}`);
     return 1;
   }
+  if (args.instanced) {
+    const code = await runInstanced(device, adapterName, cage, args);
+    device.destroy();
+    return code;
+  }
   const mesh = prepareMesh(cage);
   const started = performance.now();
   const cc = args.o.surface === 'catmull-clark' ? prepareCatmullClark(cage, mesh) : undefined;
@@ -156,16 +219,7 @@ export async function main(argv: string[]): Promise<number> {
       ),
     );
   if (args.params) {
-    const p = vertexParams(r, cage);
-    writeFileSync(
-      args.params,
-      args.params.endsWith('.txt')
-        ? paramsToText(p)
-        : JSON.stringify({
-            vertexCount: p.length,
-            params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])),
-          }) + '\n',
-    );
+    writeParams(args.params, vertexParams(r, cage));
   }
   if (args.stats) {
     const timed = Object.keys(r.timings).length > 0;
@@ -189,5 +243,92 @@ export async function main(argv: string[]): Promise<number> {
     `tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
   device.destroy();
+  return 0;
+}
+
+function writeParams(path: string, p: ReturnType<typeof vertexParams>): void {
+  writeFileSync(
+    path,
+    path.endsWith('.txt')
+      ? paramsToText(p)
+      : JSON.stringify({
+          vertexCount: p.length,
+          params: p.map((x) => (x === null ? null : 'u' in x ? [x.face, x.u, x.v] : [x.face, x.k, x.s, x.t])),
+        }) + '\n',
+  );
+}
+
+/** `--tessellator instanced`: levels, the draw's vertex function in compute, the weld. */
+async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, args: ReturnType<typeof parse>): Promise<number> {
+  const mesh = prepareMesh(cage);
+  const started = performance.now();
+  const im = prepareInstanced(cage, mesh);
+  const cpuPrepMs = performance.now() - started;
+  let lp: LevelParams;
+  if (args.level !== undefined) lp = { mode: 'static', level: args.level };
+  else {
+    // The compute tessellator's adaptive camera (1080 px high, 16:9); the level of an edge behind
+    // the eye is 1.
+    const cam = headlessCamera(mesh, args.o);
+    lp = { mode: 'dynamic', viewProj: cam.viewProj, viewport: [1920, 1080], lodScale: args.o.lodScale ?? 1, level: 1 };
+  }
+  let acc: AccPatches | undefined;
+  if (args.acc) {
+    try {
+      acc = new AccPatches(device, cage, args.acc);
+    } catch (e) {
+      if (e instanceof AccError) {
+        console.error(`tessellate: ${args.model}: ${e.message}`);
+        return 2;
+      }
+      throw e;
+    }
+  }
+  const tess = new InstancedTessellator(device, { surface: acc ? 'acc' : 'evalSurface' });
+  let r: Awaited<ReturnType<typeof tessellateInstanced>>;
+  try {
+    r = await tessellateInstanced(device, cage, mesh, lp, tess, im, acc);
+  } catch (e) {
+    tess.destroy();
+    console.error(`tessellate: ${(e as Error).message}`);
+    return 1;
+  }
+  const gpuBytes = tess.gpuBytes + (acc ? acc.patchBuffer.size + acc.pointBuffer.size + acc.staticBuffer.size : 0);
+  tess.destroy();
+  acc?.destroy();
+  const w = weldInstanced(im, r.out);
+  const what = args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`;
+  if (args.out)
+    writeFileSync(
+      args.out,
+      weldedToObj(w, `tessellab: ${args.model}, instanced tessellator, ${args.acc ?? 'phong'} surface, ${what}, ${adapterName}`),
+    );
+  if (args.params) writeParams(args.params, weldedVertexParams(im, cage, r.out, w));
+  if (args.stats) {
+    const t = r.out.timings;
+    const timed = t.levels !== undefined && t.evaluate !== undefined;
+    console.log(
+      JSON.stringify({
+        tessellator: 'instanced',
+        faces: faceCount(cage),
+        patches: im.patchCount,
+        cpuPrepMs: Number(cpuPrepMs.toFixed(3)),
+        gpuBytes,
+        subdivisionMs: null,
+        tessellationMs: timed ? Number((t.levels + t.evaluate).toFixed(4)) : null,
+        levelsMs: timed ? Number(t.levels.toFixed(4)) : null,
+        evaluateMs: timed ? Number(t.evaluate.toFixed(4)) : null,
+        vertices: w.vertexCount,
+        triangles: w.triangleCount,
+        drawnTriangles: r.out.triangleCount,
+        weldGap: Number((w.gap / mesh.size).toExponential(3)),
+        adapter: adapterName,
+      }),
+    );
+  }
+  const wrote = [args.out, args.params].filter(Boolean).join(' and ');
+  console.error(
+    `tessellate: instanced, ${args.acc ?? 'phong'}, ${what}: ${w.vertexCount} vertices, ${w.triangleCount} triangles (${r.out.triangleCount} drawn, ${w.collapsed} collapsed by the snap; ${im.patchCount} patches) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
+  );
   return 0;
 }

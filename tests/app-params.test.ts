@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -29,6 +29,11 @@ describe('URL parameters', () => {
       dist: 3,
       ui: false,
       capacity: 0.5,
+      tessellator: 'instanced',
+      level: 16,
+      split: true,
+      instSurface: 'gregory-acc',
+      flatShade: true,
     });
   });
 
@@ -86,12 +91,28 @@ describe('URL parameters', () => {
       '?spin=1&ui=0&cap=16',
       '?surface=phong',
       '?patches=1&flat=0',
+      '?tessellator=instanced&level=32',
+      '?split=1&mode=fixed&level=4',
+      '?tessellator=instanced&instsurface=pm-acc',
     ];
     for (const q of cases) {
       const p = parseParams(q);
       expect(parseParams(formatParams(p))).toEqual(p);
     }
     expect(formatParams(parseParams('?mode=fixed&factor=7.5'))).toBe('?mode=fixed&factor=7.5');
+  });
+
+  it('reads the tessellator (compute by default) and the instanced level (a power of two in 1..64)', () => {
+    expect(DEFAULT_PARAMS.tessellator).toBe('compute');
+    expect(parseParams('?tessellator=instanced').tessellator).toBe('instanced');
+    expect(parseParams('?tessellator=hull').tessellator).toBe('compute');
+    expect(parseParams('?level=16').level).toBe(16);
+    expect(parseParams('?level=12').level).toBe(8);
+    expect(parseParams('?level=500').level).toBe(64);
+    expect(parseParams('?level=0').level).toBe(1);
+    expect(parseParams('?level=x').level).toBe(DEFAULT_PARAMS.level);
+    expect(parseParams('?instsurface=bezier-acc').instSurface).toBe('bezier-acc');
+    expect(parseParams('?instsurface=loop').instSurface).toBe('phong');
   });
 });
 

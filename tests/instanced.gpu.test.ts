@@ -4,7 +4,8 @@
  * the headless pass (the draw's own vertex function, in compute) on project models at random
  * per-patch levels puts every vertex where the CPU snap and Phong surface put it (f32 tolerance),
  * flips no triangle, and closes every shared cage edge: the snapped points of its two sides pair
- * one to one and coincide within 1e-6 of the model's size; a lit and a shadow draw run clean.
+ * one to one and coincide within 1e-6 of the model's size (every project model on Phong; every model
+ * ACC takes with each ACC scheme); a lit and a shadow draw run clean, alone and in the renderer.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { mat4 } from 'gl-matrix';
@@ -29,9 +30,20 @@ import {
   type LevelParams,
 } from '../src/gpu/instanced.ts';
 import { vertexEdges, POW2_LEVEL_COUNT } from '../src/pattern/pow2.ts';
+import { Renderer } from '../src/gpu/renderer.ts';
+import { AccPatches } from '../src/gpu/acc.ts';
+import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
+import { readBuffer } from '../src/gpu/readback.ts';
+import { upAxisMatrix } from '../src/gpu/camera.ts';
+import { boundsOf } from '../src/gpu/camera.ts';
 import creature from '../public/models/creature.obj?raw';
 import gear from '../public/models/gear.obj?raw';
 import icosphere from '../public/models/icosphere.obj?raw';
+import torus from '../public/models/torus.obj?raw';
+import pawn from '../public/models/pawn.obj?raw';
+import sheet from '../public/models/sheet.obj?raw';
+import creasedBox from '../public/models/creased-box.obj?raw';
+import brickBox from '../public/models/brick-box.obj?raw';
 
 afterAll(() => releaseDevice());
 
@@ -73,6 +85,7 @@ function checkHeadless(
   m: InstancedMesh,
   out: HeadlessInstanced,
   tess: InstancedTessellator,
+  phong = true,
 ): { gap: number; posError: number; edgesChecked: number } {
   const size = m.prepared.size;
   const { edgeLevels, patchLevels } = out;
@@ -108,12 +121,12 @@ function checkHeadless(
         // The GPU's snapped parameter, exactly.
         expect([out.uv[2 * v], out.uv[2 * v + 1]]).toEqual([i / P, j / P]);
         const { t, w } = patchTriangle(m, p, P, i, j);
-        const ref = phongPoint(m.prepared, t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]);
+        const ref = phong ? phongPoint(m.prepared, t, [w[0] / 65536, w[1] / 65536, w[2] / 65536]) : null;
         for (let c = 0; c < 3; c++) {
           const x = out.positions[3 * v + c],
             n = out.normals[3 * v + c];
           if (!Number.isFinite(x) || !Number.isFinite(n)) throw new Error(`NaN or infinity at vertex ${v}`);
-          posError = Math.max(posError, Math.abs(x - ref.pos[c]) / size);
+          if (ref) posError = Math.max(posError, Math.abs(x - ref.pos[c]) / size);
         }
         // Boundary points, by edge, side and canonical parameter.
         const dom = patchDomain(m, p),
@@ -207,10 +220,16 @@ describe('instanced tessellator', () => {
     }
   });
 
+  // Every project model (creature-wrinkles has the creature's cage, displaced in its own work).
   const models: [string, string, number][] = [
     ['creature', creature, 16],
     ['gear', gear, 32],
     ['icosphere', icosphere, 64],
+    ['pawn', pawn, 16],
+    ['sheet', sheet, 64],
+    ['torus', torus, 32],
+    ['brick-box', brickBox, 64],
+    ['creased-box', creasedBox, 64],
   ];
   for (const [name, text, max] of models) {
     it(`${name}, random per-patch levels up to ${max}: headless output on the CPU's snap and surface, no flip, no crack`, async () => {
@@ -344,4 +363,120 @@ describe('instanced tessellator', () => {
     for (const t of [colour, depth, shadow]) t.destroy();
     read.destroy();
   });
+
+  it("inside the demo renderer's passes: shadow, lit and wireframe draws run clean, cover pixels, and the wire records follow the indexed ones", async () => {
+    const tess = await tessellator();
+    const device = tess.device;
+    const m = load(creature);
+    tess.setMesh(m);
+    const timed = device.features.has('timestamp-query');
+    const renderer = Renderer.create(device, { colorFormat: 'rgba8unorm', sampleCount: 4, shadowMapSize: 256, timestamps: timed });
+    tess.useRenderer(renderer.shadingResources);
+    renderer.setDrawer(tess);
+    renderer.setBounds(boundsOf(m.prepared.positions));
+    const target = device.createTexture({
+      label: 'test renderer target',
+      size: [64, 64],
+      format: 'rgba8unorm',
+      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC,
+    });
+    const cam = camera(m, 0.8 * m.prepared.size);
+    device.pushErrorScope('validation');
+    const enc = device.createCommandEncoder({ label: 'test renderer frame' });
+    tess.encodeLevels(enc, { mode: 'static', level: 4 });
+    renderer.render(
+      enc,
+      target,
+      { viewProj: cam.viewProj, model: upAxisMatrix('y') as Float32Array, eye: cam.eye },
+      { wireframe: true, cage: false },
+    );
+    const read = device.createBuffer({
+      label: 'test renderer read',
+      size: 64 * 64 * 4,
+      usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ,
+    });
+    enc.copyTextureToBuffer({ texture: target }, { buffer: read, bytesPerRow: 256 }, [64, 64]);
+    device.queue.submit([enc.finish()]);
+    expect((await device.popErrorScope())?.message).toBeUndefined();
+    await read.mapAsync(GPUMapMode.READ);
+    const px = new Uint8Array(read.getMappedRange().slice(0));
+    read.unmap();
+    // The backdrop is dark and fairly uniform; the lit clay surface is bright.
+    let bright = 0;
+    for (let k = 0; k < 64 * 64; k++) if (px[4 * k] + px[4 * k + 1] + px[4 * k + 2] > 300) bright++;
+    expect(bright).toBeGreaterThan(64 * 64 * 0.05);
+    const args = new Uint32Array(await readBuffer(device, tess.drawArgs, 36 * BUCKETS));
+    for (let b = 0; b < BUCKETS; b++) {
+      expect(Array.from(args.subarray(5 * BUCKETS + 4 * b, 5 * BUCKETS + 4 * b + 4))).toEqual([2 * args[5 * b], args[5 * b + 1], 0, 0]);
+    }
+
+    await renderer.readTimings(); // the first frame's, so that the split frame's are copied
+    // The split view: two regions, the stored-mesh half drawn by nothing here (no mesh set), the
+    // instanced half by the drawer; both timing slots come back.
+    device.pushErrorScope('validation');
+    const split = device.createCommandEncoder({ label: 'test split frame' });
+    const view = { viewProj: cam.viewProj, model: upAxisMatrix('y') as Float32Array, eye: cam.eye };
+    renderer.setDrawer(null);
+    renderer.render(split, target, view, { wireframe: false, cage: false, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
+    renderer.setDrawer(tess);
+    renderer.render(split, target, view, { wireframe: true, cage: false, region: { x0: 0.5, x1: 1, first: false, slot: 1 } });
+    device.queue.submit([split.finish()]);
+    expect((await device.popErrorScope())?.message).toBeUndefined();
+    if (timed) expect(Object.keys(await renderer.readTimings()).sort()).toEqual(['lit', 'lit 2', 'shadow', 'shadow 2']);
+    target.destroy();
+    read.destroy();
+    renderer.destroy();
+  });
+
+  // The project's models ACC takes (closed, quads and triangles; gear, icosphere and pawn have
+  // n-gons, the sheet a boundary), one tessellator for all (SwiftShader compiles it once).
+  let accTess: InstancedTessellator | undefined;
+  afterAll(() => accTess?.destroy());
+  for (const [name, text] of [
+    ['creature', creature],
+    ['torus', torus],
+    ['creased-box', creasedBox],
+    ['brick-box', brickBox],
+  ] as const) {
+    it(`ACC surfaces, ${name}: every scheme at random per-patch levels, each vertex where AccPatches.sample puts its face parameter, no crack`, async () => {
+      const device = await getDevice();
+      accTess ??= new InstancedTessellator(device, { surface: 'acc' });
+      const tess = accTess;
+      const cage = loadCage(text).cage;
+      const m = prepareInstanced(cage, prepareMesh(cage));
+      for (const scheme of ACC_SCHEMES) {
+        const acc = new AccPatches(device, cage, scheme);
+        device.pushErrorScope('validation');
+        tess.setMesh(m, acc);
+        tess.setWanted(randomLevels(m.patchCount, 16, 5));
+        const out = await tess.headless({ mode: 'per-patch' });
+        const r = checkHeadless(m, out, tess, false);
+        // The same evaluator at the same face parameter (a patch is a cage face; (u, v) = (i, j) / P).
+        const pts = Array.from(
+          { length: out.vertexCount },
+          (_, v) => [m.patches[8 * out.patch[v] + 6], out.uv[2 * v], out.uv[2 * v + 1]] as [number, number, number],
+        );
+        const ref = await acc.sample(pts);
+        let posError = 0;
+        for (let k = 0; k < 3 * out.vertexCount; k++)
+          posError = Math.max(posError, Math.abs(out.positions[k] - ref.pos[k]) / m.prepared.size);
+        // The dynamic rule evaluates the surface too (its ACC buffers bound in the level pass).
+        const cam = camera(m, 0.8 * m.prepared.size);
+        const dyn =
+          scheme === ACC_SCHEMES[0]
+            ? await tess.headless({ mode: 'dynamic', viewProj: cam.viewProj, viewport: [1280, 720], level: 2 })
+            : out;
+        const rd = checkHeadless(m, dyn, tess, false);
+        expect((await device.popErrorScope())?.message).toBeUndefined();
+        console.log(
+          `${name} ${scheme}: ${out.triangleCount} triangles, ${r.edgesChecked} shared edges, largest gap ${r.gap.toExponential(2)} of the size (dynamic: ${rd.gap.toExponential(2)}), against AccPatches.sample ${posError.toExponential(2)}`,
+        );
+        expect(r.edgesChecked).toBeGreaterThan(0);
+        expect(posError).toBeLessThan(1e-6);
+        expect(r.gap).toBeLessThan(1e-6);
+        expect(rd.gap).toBeLessThan(1e-6);
+        acc.destroy();
+      }
+    });
+  }
 });

@@ -100,6 +100,139 @@ describe('npm run tessellate', () => {
     expect(s.tessellationMs).toBeGreaterThan(0);
   });
 
+  const objOf = (path: string) => {
+    const lines = readFileSync(path, 'utf8').split('\n');
+    const v = lines.filter((l) => l.startsWith('v ')).map((l) => l.slice(2).split(' ').map(Number));
+    const f = lines
+      .filter((l) => l.startsWith('f '))
+      .map((l) =>
+        l
+          .slice(2)
+          .split(' ')
+          .map((x) => Number(x.split('//')[0]) - 1),
+      );
+    return { v, f };
+  };
+  const closedEverywhere = (f: number[][]) => {
+    const directed = new Set<string>();
+    for (const t of f) for (let i = 0; i < 3; i++) directed.add(`${t[i]},${t[(i + 1) % 3]}`);
+    let open = 0;
+    for (const e of directed) {
+      const [a, b] = e.split(',');
+      if (!directed.has(`${b},${a}`)) open++;
+    }
+    return { open, directed: directed.size };
+  };
+
+  it('--tessellator instanced --level 4: the compute tessellator’s points at --fixed 4 (Phong), welded and closed', () => {
+    const inst = join(dir, 'torus-inst.obj');
+    const comp = join(dir, 'torus-comp.obj');
+    const params = join(dir, 'torus-inst.txt');
+    let r = run('public/models/torus.obj', '--tessellator', 'instanced', '--level', '4', '--out', inst, '--params', params, '--stats');
+    expect(r.status, r.stderr).toBe(0);
+    const stats = JSON.parse(
+      r.stdout
+        .trim()
+        .split('\n')
+        .filter((l) => l.startsWith('{'))[0],
+    );
+    r = run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', comp);
+    expect(r.status, r.stderr).toBe(0);
+    const a = objOf(inst),
+      b = objOf(comp);
+    expect(stats.tessellator).toBe('instanced');
+    expect(stats.vertices).toBe(a.v.length);
+    expect(stats.triangles).toBe(a.f.length);
+    // Matched settings, matched meshes: the same counts and the same points (f32 apart).
+    expect(a.v.length).toBe(b.v.length);
+    expect(a.f.length).toBe(b.f.length);
+    const lo = [0, 1, 2].map((c) => Math.min(...b.v.map((p) => p[c])));
+    const hi = [0, 1, 2].map((c) => Math.max(...b.v.map((p) => p[c])));
+    const diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    let worst = 0;
+    for (const p of a.v) {
+      let best = Infinity;
+      for (const q of b.v) best = Math.min(best, Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+      worst = Math.max(worst, best / diagonal);
+    }
+    console.log(`instanced level 4 vs compute fixed 4 (Phong, torus): farthest point ${worst.toExponential(2)} of the diagonal`);
+    expect(worst).toBeLessThan(1e-6);
+    expect(closedEverywhere(a.f).open).toBe(0);
+    expect(readFileSync(params, 'utf8').trim().split('\n').length).toBe(a.v.length);
+  });
+
+  it('--tessellator instanced --adaptive: mixed levels, the weld closes every shared edge (no T-junction, no hole)', () => {
+    const out = join(dir, 'creature-inst.obj');
+    const params = join(dir, 'creature-inst.json');
+    const r = run(
+      'public/models/creature.obj',
+      '--tessellator',
+      'instanced',
+      '--adaptive',
+      '--lod',
+      '2',
+      '--out',
+      out,
+      '--params',
+      params,
+      '--stats',
+    );
+    expect(r.status, r.stderr).toBe(0);
+    const stats = JSON.parse(
+      r.stdout
+        .trim()
+        .split('\n')
+        .filter((l) => l.startsWith('{'))[0],
+    );
+    const { v, f } = objOf(out);
+    expect(stats.vertices).toBe(v.length);
+    expect(stats.triangles).toBe(f.length);
+    expect(stats.drawnTriangles).toBeGreaterThan(stats.triangles); // mixed levels: the snap collapsed some
+    expect(stats.weldGap).toBeLessThan(1e-6);
+    // The creature is closed: every directed edge has its twin, so the fine sides' snapped
+    // boundaries meet the coarse sides' segments exactly.
+    const c = closedEverywhere(f);
+    console.log(
+      `instanced adaptive creature: ${v.length} vertices, ${f.length} triangles, ${c.open} unpaired edges, weld gap ${stats.weldGap}`,
+    );
+    expect(c.open).toBe(0);
+    const p = JSON.parse(readFileSync(params, 'utf8'));
+    expect(p.vertexCount).toBe(v.length);
+  });
+
+  it('--tessellator instanced --surface bezier-acc: the ACC surface, welded closed across mixed levels; an n-gon cage refused', () => {
+    const out = join(dir, 'creature-acc.obj');
+    const r = run(
+      'public/models/creature.obj',
+      '--tessellator',
+      'instanced',
+      '--surface',
+      'bezier-acc',
+      '--adaptive',
+      '--out',
+      out,
+      '--stats',
+    );
+    expect(r.status, r.stderr).toBe(0);
+    const stats = JSON.parse(
+      r.stdout
+        .trim()
+        .split('\n')
+        .filter((l) => l.startsWith('{'))[0],
+    );
+    const { v, f } = objOf(out);
+    expect(stats.vertices).toBe(v.length);
+    expect(stats.triangles).toBe(f.length);
+    expect(readFileSync(out, 'utf8')).toContain('bezier-acc surface');
+    // Two sides of an edge evaluate different ACC patches in f32: the gap the weld closes.
+    console.log(`instanced bezier-acc creature: ${f.length} triangles, weld gap ${stats.weldGap} of the size`);
+    expect(stats.weldGap).toBeLessThan(1e-6);
+    expect(closedEverywhere(f).open).toBe(0);
+    const bad = run('public/models/icosphere.obj', '--tessellator', 'instanced', '--surface', 'pm-acc', '--level', '2', '--stats');
+    expect(bad.status).toBe(2);
+    expect(bad.stderr).toMatch(/5 corners/);
+  });
+
   it('rejects bad input with a message and exit code 2', () => {
     const bad = join(dir, 'bad.obj');
     writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');
@@ -112,6 +245,11 @@ describe('npm run tessellate', () => {
       ['public/models/torus.obj', '--fixed', '2', '--surface', 'loop', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--fixed', '2', '--surface', 'phong', '--flat-baseline', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--fixed', '2'], // neither --out nor --stats
+      ['public/models/torus.obj', '--tessellator', 'instanced', '--fixed', '4', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--tessellator', 'instanced', '--level', '3', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--tessellator', 'instanced', '--level', '4', '--surface', 'catmull-clark', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--level', '4', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--tessellator', 'hull', '--level', '4', '--out', join(dir, 'x.obj')],
     ]) {
       const r = run(...args);
       expect(r.status, args.join(' ')).toBe(2);

@@ -66,10 +66,9 @@ fn patchTriangle(p: u32, P: u32, i: u32, j: u32) -> PatchTriangle {
   return PatchTriangle(t0 + 1u, vec3<u32>((P - j) * s, i * s, (j - i) * s));
 }
 
-fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
-  let pt = patchTriangle(p, P, i, j);
-  return evalSurface(pt.t, pt.w);
-}
+// fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint, the surface at pattern point
+// (i, j) of patch p at level P, comes with the surface: wgsl/instanced-surface-tri.wgsl (the
+// evalSurface contract, through patchTriangle) or wgsl/instanced-surface-acc.wgsl (ACC patches).
 
 // (i, j) of the point at parameter t (from corner k) on edge k of a level-P pattern
 // (src/pattern/pow2.ts edgePoint).

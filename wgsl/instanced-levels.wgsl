@@ -13,7 +13,9 @@
 //   drawArgs (u32): 14 drawIndexedIndirect records of 5 words: indexCount, instanceCount,
 //     firstIndex, baseVertex, firstInstance = 0 (a non-zero firstInstance needs the optional
 //     'indirect-first-instance' feature; the bucket's list base reaches the vertex shader through
-//     a uniform with a dynamic offset instead)
+//     a uniform with a dynamic offset instead); then, from word 70, 14 drawIndirect
+//     records of 4 words for the wireframe (wgsl/render-instanced.wgsl): vertexCount = 2 ×
+//     indexCount (two line ends per triangle edge), instanceCount, 0, 0
 //
 // Modes (params.mode): 0 static (every patch wants params.staticLevel), 1 per patch (the wanted
 // array), 2 dynamic (per edge, from the view: distance and curvature). In modes 0 and 1 an edge's
@@ -111,4 +113,9 @@ fn records(@builtin(local_invocation_index) b: u32) {
   drawArgs[5u * b + 2u] = entryWord(domain, lg, 1u);
   drawArgs[5u * b + 3u] = entryWord(domain, lg, 0u);
   drawArgs[5u * b + 4u] = 0u;
+  let w = 5u * 2u * LEVELS + 4u * b;
+  drawArgs[w] = 2u * entryWord(domain, lg, 2u);
+  drawArgs[w + 1u] = drawArgs[5u * b + 1u];
+  drawArgs[w + 2u] = 0u;
+  drawArgs[w + 3u] = 0u;
 }

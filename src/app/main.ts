@@ -23,7 +23,10 @@ import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
-import { FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
+import type { LevelParams } from '../gpu/instanced.ts';
+import { AccError } from '../subdiv/acc.ts';
 import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
@@ -56,6 +59,11 @@ class TessellationDemo extends DemoBase {
   #flat: CageGeometry | null = null;
   #cageLines: CageLines | null = null;
   #counts: CountsReader | null = null;
+  /** The instanced tessellator (`tessellator=instanced`), made on first use, and its last counts. */
+  #instanced: InstancedView | null = null;
+  #instancedCounts: InstancedCounts | null = null;
+  /** The cage that refused an ACC scheme (the instanced tessellator draws Phong for it), and why. */
+  #instancedRefused: { cage: LoadedModel['cage']; surface: DemoParams['instSurface']; message: string } | null = null;
 
   /** Catmull-Clark data per cage (topology only, cached): the controller's surface data. */
   readonly #ccTables = new CcTableCache();
@@ -194,6 +202,8 @@ class TessellationDemo extends DemoBase {
     this.#flat = null;
     this.#cageLines = null;
     this.#counts = null;
+    this.#instanced = null;
+    this.#instancedCounts = null;
     this.#otherReader = null;
     this.#frameFactors = this.#builtFactors = null;
   }
@@ -213,6 +223,113 @@ class TessellationDemo extends DemoBase {
     return surface === 'cage' ? this.#flat : (this.#tess[surface] ?? null);
   }
 
+  /** The instanced tessellator draws, alone or in the split view (asked for, and a surface
+   * rather than the flat cage is shown). */
+  get instancedActive(): boolean {
+    return (this.params.tessellator === 'instanced' || this.params.split) && this.shownSurface !== 'cage' && this.model !== null;
+  }
+
+  /** The split view: compute on the left half, instanced on the right, same cage and camera. */
+  get splitActive(): boolean {
+    return this.params.split && this.shownSurface !== 'cage' && this.model !== null;
+  }
+
+  /** Hand the renderer the instanced tessellator (the model's patches uploaded) or take it back,
+   * for `model` drawn as `surface` (at upload: before the controller commits them). */
+  #syncDrawer(model: LoadedModel | null, surface: Shown): void {
+    const renderer = this.#renderer;
+    if (!renderer) return;
+    renderer.setDrawer(null);
+    if ((this.params.tessellator !== 'instanced' && !this.params.split) || surface === 'cage' || !model) return;
+    // Its surface: the one asked for, or Phong where this cage refused that ACC scheme.
+    const want = this.params.instSurface;
+    const refused = this.#instancedRefused;
+    const use = refused && refused.cage === model.cage && refused.surface === want ? 'phong' : want;
+    let view = this.#instanced;
+    if (view && view.surface !== use) {
+      view.destroy();
+      view = this.#instanced = null;
+    }
+    view ??= this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, use);
+    if (view.cage !== model.cage) {
+      try {
+        view.setCage(model.cage);
+      } catch (e) {
+        if (!(e instanceof AccError)) throw e;
+        this.#instancedRefused = { cage: model.cage, surface: want, message: e.message };
+        showToast(`${e.message}\n\nThe instanced tessellator draws Phong instead.`, {
+          kind: 'info',
+          title: `No ${want} patches for ${model.title}`,
+          timeout: 10_000,
+        });
+        view.destroy();
+        view = this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, 'phong');
+        view.setCage(model.cage);
+      }
+      this.#instancedCounts = null;
+    }
+    view.tess.setFlatShading(this.params.flatShade);
+    // The split view hands it over per half, in onFrame.
+    if (!this.params.split) renderer.setDrawer(view.tess);
+  }
+
+  /** The instanced tessellator's flat shading (the panel, the URL). */
+  setInstancedFlat(flat: boolean): void {
+    this.params.flatShade = flat;
+    this.#instanced?.tess.setFlatShading(flat);
+    this.requestFrame();
+  }
+
+  /** The instanced tessellator's surface (the panel, the URL): Phong or an ACC scheme. */
+  setInstancedSurface(surface: DemoParams['instSurface']): void {
+    this.params.instSurface = surface;
+    this.#syncDrawer(this.model, this.shownSurface);
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** Turn the split view on or off (the panel, the URL). */
+  setSplit(split: boolean): void {
+    this.params.split = split;
+    this.#syncDrawer(this.model, this.shownSurface);
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** Switch tessellators (the panel, the URL): the same model, camera and settings. */
+  setTessellator(kind: DemoParams['tessellator']): void {
+    this.params.tessellator = kind;
+    this.#syncDrawer(this.model, this.shownSurface);
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** The instanced tessellator's level parameters for this frame: fixed → every patch at the
+   * static level; adaptive → each edge's level from the view (its LOD scale), in model space. */
+  #instancedLevels(modelViewProj: Float32Array, width: number, height: number): LevelParams {
+    if (this.params.mode === 'fixed') return { mode: 'static', level: this.params.level };
+    return { mode: 'dynamic', viewProj: modelViewProj, viewport: [width, height], lodScale: this.params.lod, level: 1 };
+  }
+
+  /** Test hook: the GPU's bucket draw records of the latest level pass, and the CPU's count for
+   * static mode (null in dynamic mode). */
+  async instancedRecords(): Promise<{ gpu: number[]; cpu: number[] | null; mode: string; counts: InstancedCounts } | null> {
+    const view = this.#instanced;
+    if (!view || !this.instancedActive) return null;
+    const lv = await view.tess.readLevels();
+    const lp = view.lastLevels;
+    const cpu = lp?.mode === 'static' ? view.cpuRecords(lp.level ?? 1) : null;
+    return {
+      gpu: Array.from(lv.records),
+      cpu: cpu ? Array.from(cpu) : null,
+      mode: lp?.mode ?? 'none',
+      counts: countsFromRecords(lv.records, view.tess.patterns),
+    };
+  }
+
   /** The tessellator for `surface`, created on first use (the other one is freed). */
   #tessellator(surface: TessSurface): TessellatorGeometry {
     let tess = this.#tess[surface];
@@ -226,7 +343,8 @@ class TessellationDemo extends DemoBase {
 
   /** Patch colours are on and there are patches to colour. */
   get patchColours(): boolean {
-    return this.params.patches && this.shownSurface === 'catmull-clark';
+    // The instanced tessellator colours its patches by domain (quad, triangle) on any surface.
+    return this.params.patches && (this.shownSurface === 'catmull-clark' || this.instancedActive);
   }
 
   /** The legend of the patch colours, with each kind's share of the cage's triangles. */
@@ -238,6 +356,7 @@ class TessellationDemo extends DemoBase {
     const kinds = this.cc?.data.triKind ?? new Uint8Array();
     const count = [0, 0, 0, 0];
     for (const k of kinds) count[k]++;
+    const inst = this.instancedActive && !this.splitActive ? this.#instanced : null;
     const hex = (c: readonly number[]) =>
       `#${c
         .map((x) =>
@@ -246,6 +365,15 @@ class TessellationDemo extends DemoBase {
             .padStart(2, '0'),
         )
         .join('')}`;
+    if (inst) {
+      // wgsl/instanced-surface-*.wgsl patchColourIndex: regular, irregular quad (ACC only), triangle.
+      const n = inst.patchColourCounts();
+      const entry = (k: number, name: string) =>
+        `<li><span class="swatch" style="background:${hex(PATCH_COLOURS[k].srgb)}"></span>${name} <span class="muted">${n[k]}</span></li>`;
+      const acc = inst.surface !== 'phong';
+      legend.innerHTML = `<strong>Patches (instanced)</strong><ul>${entry(0, acc ? 'regular' : 'quad')}${acc ? entry(1, 'irregular quad') : ''}${entry(2, 'triangle')}</ul>`;
+      return;
+    }
     legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
       (p) => `<li><span class="swatch" style="background:${hex(p.srgb)}"></span>${p.name} <span class="muted">${count[p.kind]}</span></li>`,
     ).join('')}</ul>`;
@@ -296,7 +424,20 @@ class TessellationDemo extends DemoBase {
       fovY: cam.fovY,
     };
     this.#frameFactors = factors;
-    if (this.#geometryDirty && geometry.output) {
+    const instanced = this.instancedActive ? this.#instanced : null;
+    const split = this.splitActive;
+    // The compute tessellator builds when it is drawn (alone, or the split view's left half).
+    const computeDrawn = !instanced || split;
+    if (instanced) {
+      // The instanced tessellator draws: its level pass when the levels may have changed.
+      if (this.params.spin && this.params.mode === 'adaptive') this.#geometryDirty = true;
+      if (this.#geometryDirty) {
+        instanced.encode(encoder, this.#instancedLevels(modelViewProj, target.width, target.height));
+        if (!computeDrawn) this.#geometryDirty = false;
+        this.#rebuilds++;
+      } else instanced.copyIfOwed(encoder);
+    }
+    if (computeDrawn && this.#geometryDirty && geometry.output) {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
@@ -310,20 +451,21 @@ class TessellationDemo extends DemoBase {
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
     // (and the demo draws on demand: there may be none).
-    if (this.#countsOwed && geometry.output && this.#counts?.idle) {
+    if (computeDrawn && this.#countsOwed && geometry.output && this.#counts?.idle) {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
-    renderer.render(
-      encoder,
-      target,
-      { viewProj, model: this.#modelMatrix, eye: m.eye },
-      {
-        wireframe: this.params.wire,
-        cage: this.params.cage,
-        patchColours: this.patchColours,
-      },
-    );
+    const view = { viewProj, model: this.#modelMatrix, eye: m.eye };
+    const options = { wireframe: this.params.wire, cage: this.params.cage, patchColours: this.patchColours };
+    if (split && instanced) {
+      // The same camera twice: compute's stored mesh on the left half, the instanced
+      // tessellator on the right, each with its own shadow pass and timing slot.
+      renderer.setDrawer(null);
+      renderer.render(encoder, target, view, { ...options, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
+      renderer.setDrawer(instanced.tess);
+      renderer.render(encoder, target, view, { ...options, region: { x0: 0.5, x1: 1, first: false, slot: 1 } });
+      renderer.setDrawer(null);
+    } else renderer.render(encoder, target, view, options);
   }
 
   /**
@@ -340,6 +482,7 @@ class TessellationDemo extends DemoBase {
     const frame = this.#frameFactors;
     const built = this.#builtFactors;
     if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
+    if (this.instancedActive) return;
     const output = geometry.output;
     const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
     const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
@@ -374,6 +517,14 @@ class TessellationDemo extends DemoBase {
       this.updateStats();
       if (this.#countsOwed) this.requestFrame();
     });
+    if (this.#instanced && this.instancedActive) {
+      const view = this.#instanced;
+      void quietly(view.read(), null).then((counts) => {
+        if (counts) this.#instancedCounts = counts;
+        this.updateStats();
+        if (view.owed) this.requestFrame();
+      });
+    }
     void quietly(renderer?.readTimings(), {}).then((draw) => {
       this.#drawTimes = draw;
       this.updateStats();
@@ -432,6 +583,20 @@ class TessellationDemo extends DemoBase {
       adapter: this.gpu.adapterName,
       memory: this.memory.counts,
       clamps: this.#clamps,
+      instanced: this.instancedActive
+        ? {
+            split: this.splitActive,
+            surface: this.#instanced?.surface ?? 'phong',
+            fallback:
+              this.#instancedRefused &&
+              this.#instancedRefused.cage === this.model?.cage &&
+              this.#instancedRefused.surface === this.params.instSurface
+                ? this.#instancedRefused.message
+                : null,
+            counts: this.#instancedCounts,
+            setting: this.params.mode === 'fixed' ? `static level ${this.params.level}` : `dynamic LOD ${this.params.lod}`,
+          }
+        : null,
     });
   }
 
@@ -472,6 +637,7 @@ class TessellationDemo extends DemoBase {
     this.#cageLines = uploadCageLines(this.gpu.device, model.cage);
     renderer.setCage(this.#cageLines);
     if (this.#bounds) renderer.setBounds(this.#bounds);
+    this.#syncDrawer(model, surface);
     this.invalidateGeometry();
   }
 
@@ -582,8 +748,9 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   const lod = tess.add(p, 'lod', LOD_RANGE.min, LOD_RANGE.max, 0.05).name('LOD scale').onChange(changed);
   const factor = tess.add(p, 'factor', FACTOR_RANGE.min, FACTOR_RANGE.max, 0.25).name('fixed factor').onChange(changed);
   const showMode = () => {
+    const instancedOnly = p.tessellator === 'instanced' && !p.split;
     lod.show(p.mode === 'adaptive');
-    factor.show(p.mode === 'fixed');
+    factor.show(p.mode === 'fixed' && !instancedOnly);
   };
   showMode();
 
@@ -604,6 +771,48 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   view.add(p, 'spin').name('turntable').onChange(redraw);
   view.add(state, 'reset').name('reset camera');
   view.add(state, 'share').name('copy link to this view');
+  // NVIDIA's instanced power-of-two tessellator beside the compute one (closed unless in use).
+  const inst = gui.addFolder('Instanced tessellator');
+  inst
+    .add(p, 'tessellator', { 'compute (built once)': 'compute', 'instanced (per pass)': 'instanced' })
+    .name('tessellator')
+    .onChange((kind: DemoParams['tessellator']) => {
+      syncUrl(p);
+      showMode();
+      demo.setTessellator(kind);
+    });
+  inst
+    .add(p, 'split')
+    .name('split: compute | inst.')
+    .onChange((split: boolean) => {
+      syncUrl(p);
+      showMode();
+      demo.setSplit(split);
+    });
+  inst
+    .add(p, 'instSurface', { Phong: 'phong', 'Bezier ACC': 'bezier-acc', 'Gregory ACC': 'gregory-acc', 'Pm ACC': 'pm-acc' })
+    .name('its surface')
+    .onChange((v: DemoParams['instSurface']) => {
+      syncUrl(p);
+      demo.setInstancedSurface(v);
+    });
+  inst
+    .add(p, 'flatShade')
+    .name('flat shading')
+    .onChange((v: boolean) => {
+      syncUrl(p);
+      demo.setInstancedFlat(v);
+    });
+  // Its static LOD (factors: fixed): one power-of-two level for every patch; adaptive factors
+  // give it its dynamic LOD, scaled by the LOD scale.
+  inst
+    .add(p, 'level', [...LEVEL_CHOICES])
+    .name('level (fixed)')
+    .onChange((v: number | string) => {
+      p.level = Number(v);
+      changed();
+    });
+  if (p.tessellator !== 'instanced' && !p.split) inst.close();
   if (window.matchMedia('(max-width: 640px)').matches) gui.close();
   return {
     gui,
@@ -663,6 +872,8 @@ async function main(): Promise<void> {
     holdPreparation: (hold: boolean) => demo.holdPreparation(hold),
     /** The bytes (and counts) of the page's live GPU buffers and textures, and per label. */
     gpuMemory: () => ({ ...demo.memory.counts, byLabel: demo.memory.byLabel() }),
+    /** The instanced tessellator's bucket draw records (GPU) and the CPU's count (static mode). */
+    instancedRecords: () => demo.instancedRecords(),
   };
   // Test hook: hold the first model's surface data from the start (e2e/demo.spec.ts).
   if ((window as { tessellabHoldPreparation?: boolean }).tessellabHoldPreparation) demo.holdPreparation(true);

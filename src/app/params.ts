@@ -8,6 +8,9 @@ export type Mode = 'adaptive' | 'fixed';
 export type UpAxis = 'y' | 'z';
 /** What is drawn: the Catmull-Clark limit surface, Phong tessellation, or the cage's flat faces. */
 export type Surface = 'catmull-clark' | 'phong' | 'cage';
+/** Who tessellates: the compute tessellator (built once, the stored mesh drawn in every pass) or
+ * the instanced power-of-two tessellator (src/gpu/instanced.ts: re-evaluates in every pass). */
+export type TessellatorKind = 'compute' | 'instanced';
 
 export interface DemoParams {
   /** A model name from the project's list, or a URL of an OBJ file. */
@@ -40,11 +43,28 @@ export interface DemoParams {
   ui: boolean;
   /** Output buffer capacity, millions of vertices (and as many triangles). The talk uses 16. */
   capacity: number;
+  /** `tessellator=instanced`: the instanced power-of-two tessellator draws instead (Phong
+   * surface; factors adaptive → its dynamic LOD scaled by `lod`, fixed → every patch at `level`). */
+  tessellator: TessellatorKind;
+  /** The instanced tessellator's static level: a power of two in 1..64. */
+  level: number;
+  /** Split view: the compute tessellator on the left half, the instanced one on the right, same
+   * cage, camera and settings (whatever `tessellator` says). */
+  split: boolean;
+  /** The instanced tessellator's surface (`instsurface=`): Phong or one of the ACC schemes
+   * (closed quad and triangle cages; elsewhere it falls back to Phong and says why). */
+  instSurface: InstancedSurface;
+  /** The instanced tessellator's flat shading (`flatshade=1`): each facet by its own normal. */
+  flatShade: boolean;
 }
+
+export type InstancedSurface = 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
 
 export const LOD_RANGE = { min: 0.05, max: 8 } as const;
 export const FACTOR_RANGE = { min: 1, max: 64 } as const;
 export const CAPACITY_RANGE = { min: 0.01, max: 16 } as const;
+export const LEVEL_CHOICES = [1, 2, 4, 8, 16, 32, 64] as const;
 
 export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
@@ -64,6 +84,11 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   dist: null,
   ui: true,
   capacity: 4,
+  tessellator: 'compute',
+  level: 8,
+  split: false,
+  instSurface: 'phong',
+  flatShade: false,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -108,6 +133,15 @@ export function parseParams(search: string): DemoParams {
   p.spin = bool(q.get('spin')) ?? p.spin;
   p.ui = bool(q.get('ui')) ?? p.ui;
   p.capacity = num(q.get('cap'), CAPACITY_RANGE.min, CAPACITY_RANGE.max) ?? p.capacity;
+  const tessellator = q.get('tessellator')?.trim().toLowerCase();
+  if (tessellator === 'compute' || tessellator === 'instanced') p.tessellator = tessellator;
+  // Any level in range, rounded down to a power of two (what the instanced patterns have).
+  const level = num(q.get('level'), 1, 64);
+  if (level !== null) p.level = 2 ** Math.floor(Math.log2(level));
+  p.split = bool(q.get('split')) ?? p.split;
+  const instSurface = q.get('instsurface')?.trim().toLowerCase();
+  p.flatShade = bool(q.get('flatshade')) ?? p.flatShade;
+  if (instSurface && (INSTANCED_SURFACES as readonly string[]).includes(instSurface)) p.instSurface = instSurface as InstancedSurface;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -133,6 +167,11 @@ export function formatParams(p: DemoParams): string {
   if (p.spin !== d.spin) q.set('spin', p.spin ? '1' : '0');
   if (p.ui !== d.ui) q.set('ui', p.ui ? '1' : '0');
   if (p.capacity !== d.capacity) q.set('cap', String(p.capacity));
+  if (p.tessellator !== d.tessellator) q.set('tessellator', p.tessellator);
+  if (p.level !== d.level) q.set('level', String(p.level));
+  if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
+  if (p.instSurface !== d.instSurface) q.set('instsurface', p.instSurface);
+  if (p.flatShade !== d.flatShade) q.set('flatshade', p.flatShade ? '1' : '0');
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));

@@ -5,6 +5,7 @@
 import type { LoadedModel } from './models.ts';
 import type { MeshCounts } from './counts.ts';
 import type { GpuMemoryCounts } from '../gpu/tracked-device.ts';
+import type { InstancedCounts } from './instanced-view.ts';
 
 /** The surface drawn, and what the Catmull-Clark tables are (or why there are none). */
 export interface SurfaceStats {
@@ -48,6 +49,16 @@ export interface StatsInput {
   memory?: GpuMemoryCounts;
   /** What the device's limits clamped (output buffers, budget), said once per device. */
   clamps?: string[];
+  /** The instanced tessellator draws (`tessellator=instanced`): its draws' counts (null until
+   * read back) and its setting ("static level 8", "dynamic LOD 1"). */
+  instanced?: {
+    counts: InstancedCounts | null;
+    setting: string;
+    split?: boolean;
+    /** Its surface (Phong or an ACC scheme), and why not the one asked for, if refused. */
+    surface?: string;
+    fallback?: string | null;
+  } | null;
 }
 
 const int = new Intl.NumberFormat('en-US');
@@ -97,15 +108,58 @@ export function renderStats(s: StatsInput): string {
       if (sf.tablesMs !== undefined) text += ` · prepared in ${sf.tablesMs < 10 ? sf.tablesMs.toFixed(1) : Math.round(sf.tablesMs)} ms`;
       text += '</span>';
     }
+    // The instanced tessellator evaluates Phong only so far (the exact surfaces are not plugged in).
+    const instName = esc(s.instanced?.surface === 'phong' || !s.instanced?.surface ? 'Phong' : s.instanced.surface);
+    const refused = s.instanced?.fallback ? ` <span class="warn">ACC unavailable: ${esc(s.instanced.fallback)}</span>` : '';
+    if (s.instanced?.split && sf.shown !== 'cage') text += ` <span class="muted">· instanced (right): ${instName}</span>${refused}`;
+    else if (s.instanced && sf.shown !== 'cage') text = `<b>${instName}</b> <span class="muted">instanced tessellator</span>${refused}`;
     rows.push(row('surface', text, 'stats-surface'));
   }
-  const c = s.counts;
+  const inst = s.instanced;
+  const split = inst?.split ?? false;
+  // The instanced tessellator stores no mesh: its counts are its draws', per pass. The split
+  // view shows both: compute's stored mesh (left) and the instanced draws (right).
+  const c = inst && !split ? null : s.counts;
+  if (split)
+    rows.push(
+      row(
+        'output (left)',
+        c ? `${int.format(c.vertexCount)} verts · ${int.format(c.triangleCount)} tris <span class="muted">compute, ${s.mode}</span>` : '…',
+        'stats-output-compute',
+      ),
+    );
   const what = s.source === 'cage' ? 'cage (flat)' : s.mode;
   const size = (m: MeshCounts) => `${int.format(m.vertexCount)} verts · ${int.format(m.triangleCount)} tris`;
-  rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>` : '…', 'stats-output'));
+  if (inst) {
+    const ic = inst.counts;
+    rows.push(
+      row(
+        split ? 'output (right)' : 'output',
+        ic
+          ? `${int.format(ic.vertices)} verts evaluated · ${int.format(ic.triangles)} tris <span class="muted">per pass · instanced, ${esc(inst.setting)}</span>`
+          : '…',
+        'stats-output',
+      ),
+    );
+    if (ic)
+      rows.push(
+        row(
+          'buckets',
+          `${int.format(ic.patches)} patches <span class="muted">${ic.levels.map(([l, n]) => `L${l}: ${int.format(n)}`).join(' · ')}</span>`,
+          'stats-buckets',
+        ),
+      );
+  } else rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>` : '…', 'stats-output'));
+  if (split && s.timestamps) {
+    // Both tessellators' draw passes, from their timing slots (src/gpu/renderer.ts DrawOptions.region).
+    const t = s.drawTimes;
+    const pair = (sh?: number, lit?: number) => (sh === undefined || lit === undefined ? '…' : `shadow ${ms(sh)} · lit ${ms(lit)}`);
+    rows.push(row('draw ms (left)', `${pair(t.shadow, t.lit)} <span class="muted">stored mesh</span>`, 'stats-gpu-compute'));
+    rows.push(row('draw ms (right)', `${pair(t['shadow 2'], t['lit 2'])} <span class="muted">evaluates</span>`, 'stats-gpu'));
+  }
   // The other factor mode, for the talk's fixed-vs-adaptive comparison: counted by one extra
   // build (then the drawn one again) when its settings, the model or the surface change.
-  const o = s.source === 'cage' ? null : s.other;
+  const o = s.source === 'cage' || inst ? null : s.other;
   if (o && o.mode !== s.mode) {
     let text = `${size(o.counts)} <span class="muted">${o.mode}, ${esc(o.setting)}`;
     if (c && c.triangleCount > 0) text += ` · ${(o.counts.triangleCount / c.triangleCount).toFixed(2)}× the drawn tris`;
@@ -121,7 +175,7 @@ export function renderStats(s: StatsInput): string {
   if (s.timestamps) {
     // The build runs only when the camera, factors or model change; the draw passes every frame.
     // Subdivision (the Catmull-Clark patch build) and tessellation are shown apart.
-    const all = Object.entries(s.tessTimes);
+    const all = s.instanced && !s.instanced.split ? [] : Object.entries(s.tessTimes);
     const subdiv = all.filter(([k]) => SUBDIVISION_STAGES.has(k));
     const tess = all.filter(([k]) => !SUBDIVISION_STAGES.has(k));
     if (all.length && s.surface?.shown === 'catmull-clark') {
@@ -136,7 +190,7 @@ export function renderStats(s: StatsInput): string {
     const draw = Object.entries(s.drawTimes)
       .map(([k, v]) => `${esc(k)} ${ms(v)}`)
       .join(' · ');
-    rows.push(row('draw ms', draw || '…', 'stats-gpu'));
+    if (!split) rows.push(row(inst ? 'draw ms (evaluates)' : 'draw ms', draw || '…', 'stats-gpu'));
   } else {
     rows.push(row('GPU ms', '<span class="muted">no timestamp-query on this device</span>', 'stats-gpu'));
   }

@@ -19,12 +19,21 @@
  *   bucket     each patch's level, a slot in its bucket's list                      one thread per patch
  *   records    14 drawIndexedIndirect records (quad and triangle × 7 levels)        one workgroup
  * Then encodeDraw (lit or shadow pass: 14 drawIndexedIndirect, the bucket's list base by dynamic
- * offset), or encodeHeadless (the same vertex function in compute, for checks and the CLI).
- * Buffer layouts: wgsl/instanced-common.wgsl, instanced-levels.wgsl, instanced-draw.wgsl.
+ * offset, shaded by wgsl/instanced-frame.wgsl), or drawShadow / drawLit / drawWire inside the demo
+ * renderer's passes (useRenderer: its scene uniform, shadow map and lit shading,
+ * wgsl/render-instanced.wgsl), or headless (the same vertex function in compute, for checks and
+ * the CLI). Buffer layouts: wgsl/instanced-common.wgsl, instanced-levels.wgsl, instanced-draw.wgsl.
  */
 import commonWgsl from '../../wgsl/instanced-common.wgsl?raw';
 import levelsWgsl from '../../wgsl/instanced-levels.wgsl?raw';
 import drawWgsl from '../../wgsl/instanced-draw.wgsl?raw';
+import frameWgsl from '../../wgsl/instanced-frame.wgsl?raw';
+import headlessWgsl from '../../wgsl/instanced-headless.wgsl?raw';
+import renderInstancedWgsl from '../../wgsl/render-instanced.wgsl?raw';
+import triSurfaceWgsl from '../../wgsl/instanced-surface-tri.wgsl?raw';
+import accSurfaceWgsl from '../../wgsl/instanced-surface-acc.wgsl?raw';
+import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from './acc.ts';
+import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
 import { readBuffer } from './readback.ts';
@@ -35,6 +44,7 @@ import {
   packPatterns,
   snapVertex,
   edgePoint,
+  vertexEdges,
   POW2_LEVEL_COUNT,
   MAX_POW2_LEVEL,
   type PackedPatterns,
@@ -68,6 +78,8 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['offPatchLevel', 'u32'],
   ['offCounts', 'u32'],
   ['offLists', 'u32'],
+  // 1: the renderer-pass lit draw shades facets (wgsl/render-instanced.wgsl; setFlatShading).
+  ['flatShading', 'u32'],
 ] as const);
 
 export const INST_BUCKET = defineStruct('InstBucket', [
@@ -81,6 +93,7 @@ export const INST_BUCKET = defineStruct('InstBucket', [
   ['outVertexBase', 'u32'],
   ['outTriangleBase', 'u32'],
   ['instances', 'u32'],
+  ['outVertexTotal', 'u32'],
 ] as const);
 
 export const INST_FRAME = defineStruct('InstFrame', [
@@ -319,15 +332,134 @@ export function instancedToObj(out: HeadlessInstanced, header: string): string {
   return lines.join('\n') + '\n';
 }
 
+/** The headless output welded across patches (what the CLI writes, as the compute tessellator's
+ * OBJ is welded). Copies are merged by where they lie on the cage, never by position: a patch
+ * corner by its cage vertex, a point on a cage edge by the edge and its canonical parameter
+ * (exact: a multiple of 1/64), an interior point by its patch and (i, j). The welded position is
+ * the first copy's; `gap` is the largest distance between copies merged (the two sides of an edge
+ * evaluate the surface in f32 each: the crack the weld closes). Triangles the snap collapsed
+ * (zero area in (u, v), or two corners welded together) are left out. */
+export interface WeldedInstanced {
+  vertexCount: number;
+  triangleCount: number;
+  positions: Float32Array;
+  normals: Float32Array;
+  indices: Uint32Array;
+  /** Per welded vertex: the headless output vertex it was taken from. */
+  source: Uint32Array;
+  /** Triangles of the draw left out (collapsed by the snap). */
+  collapsed: number;
+  /** Largest distance between merged copies, in model units. */
+  gap: number;
+}
+
+export function weldInstanced(m: InstancedMesh, out: HeadlessInstanced): WeldedInstanced {
+  const nV = m.prepared.vertexCount,
+    nE = m.edgeCount;
+  const S = MAX_POW2_LEVEL + 1;
+  const ids = new Map<number, number>();
+  const remap = new Uint32Array(out.vertexCount);
+  const source: number[] = [];
+  let gap = 0;
+  for (let v = 0; v < out.vertexCount; v++) {
+    const p = out.patch[v],
+      P = out.patchLevels[p];
+    const i = Math.round(out.uv[2 * v] * P),
+      j = Math.round(out.uv[2 * v + 1] * P);
+    const dom = patchDomain(m, p);
+    const on = vertexEdges(dom, P, i, j);
+    let key: number;
+    if (on.length === 0) key = nV + nE * S + (p * S + i) * S + j;
+    else {
+      const { edge, t } = on[0];
+      const n = dom === 'tri' ? 3 : 4;
+      if (t === 0) key = m.corners[4 * p + edge];
+      else if (t === P) key = m.corners[4 * p + ((edge + 1) % n)];
+      else {
+        const e = m.patches[PATCH_WORDS * p + 2 + edge];
+        const canonical = ((m.patches[PATCH_WORDS * p + 1] >> (1 + edge)) & 1) === 1;
+        const c = ((canonical ? t : P - t) * MAX_POW2_LEVEL) / P;
+        key = nV + e * S + c;
+      }
+    }
+    let w = ids.get(key);
+    if (w === undefined) {
+      w = source.length;
+      ids.set(key, w);
+      source.push(v);
+    } else {
+      const f = source[w];
+      const d = Math.hypot(
+        out.positions[3 * v] - out.positions[3 * f],
+        out.positions[3 * v + 1] - out.positions[3 * f + 1],
+        out.positions[3 * v + 2] - out.positions[3 * f + 2],
+      );
+      gap = Math.max(gap, d);
+    }
+    remap[v] = w;
+  }
+  const src = Uint32Array.from(source);
+  const positions = new Float32Array(3 * src.length);
+  const normals = new Float32Array(3 * src.length);
+  src.forEach((v, w) => {
+    positions.set(out.positions.subarray(3 * v, 3 * v + 3), 3 * w);
+    normals.set(out.normals.subarray(3 * v, 3 * v + 3), 3 * w);
+  });
+  const tris: number[] = [];
+  for (let t = 0; t < out.triangleCount; t++) {
+    const [a, b, c] = [0, 1, 2].map((k) => out.indices[3 * t + k]);
+    const uv = (x: number, k: number) => out.uv[2 * x + k];
+    const area2 = (uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(b, 1) - uv(a, 1)) * (uv(c, 0) - uv(a, 0));
+    const [wa, wb, wc] = [remap[a], remap[b], remap[c]];
+    if (area2 === 0 || wa === wb || wb === wc || wa === wc) continue;
+    tris.push(wa, wb, wc);
+  }
+  return {
+    vertexCount: src.length,
+    triangleCount: tris.length / 3,
+    positions,
+    normals,
+    indices: Uint32Array.from(tris),
+    source: src,
+    collapsed: out.triangleCount - tris.length / 3,
+    gap,
+  };
+}
+
+/** The welded mesh as OBJ (positions, normals, 1-based triangles), as src/gpu/headless.ts meshToObj. */
+export function weldedToObj(w: WeldedInstanced, header: string): string {
+  const lines: string[] = [
+    `# ${header}`,
+    `# ${w.vertexCount} vertices, ${w.triangleCount} triangles (${w.collapsed} collapsed by the snap left out; largest weld gap ${w.gap.toExponential(2)})`,
+  ];
+  for (let v = 0; v < w.vertexCount; v++) lines.push(`v ${w.positions[3 * v]} ${w.positions[3 * v + 1]} ${w.positions[3 * v + 2]}`);
+  for (let v = 0; v < w.vertexCount; v++) lines.push(`vn ${w.normals[3 * v]} ${w.normals[3 * v + 1]} ${w.normals[3 * v + 2]}`);
+  for (let t = 0; t < w.triangleCount; t++) {
+    const [a, b, c] = [w.indices[3 * t] + 1, w.indices[3 * t + 1] + 1, w.indices[3 * t + 2] + 1];
+    lines.push(`f ${a}//${a} ${b}//${b} ${c}//${c}`);
+  }
+  return lines.join('\n') + '\n';
+}
+
+/** Face parameters of the welded vertices (each its source copy's, instancedVertexParams). */
+export function weldedVertexParams(m: InstancedMesh, cage: Cage, out: HeadlessInstanced, w: WeldedInstanced): FaceParam[] {
+  const all = instancedVertexParams(m, cage, out);
+  return Array.from(w.source, (v) => all[v]);
+}
+
 // ---- the GPU tessellator --------------------------------------------------------------------
 
 export interface InstancedOptions {
   /** WGSL defining `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` (default: Phong,
-   * wgsl/surface-phong.wgsl). A surface needing more data than the cage and its normals (the
-   * exact Catmull-Clark or ACC surfaces) will declare its own bindings in a fourth bind group
-   * (group 3: control points, quadtree or patch tables) and this class will bind it in every
-   * pass: the exact-surface wiring adds that after the merge; today only the cage is bound. */
+   * wgsl/surface-phong.wgsl), evaluated through wgsl/instanced-surface-tri.wgsl. */
   surfaceWgsl?: string;
+  /**
+   * 'acc': the ACC surfaces (Bezier, Gregory or Pm ACC, by the AccPatches handed to setMesh:
+   * src/gpu/acc.ts builds them from the cage, wgsl/surface-acc.wgsl evaluates them through
+   * wgsl/instanced-surface-acc.wgsl), their two buffers bound in a fourth bind group (group 3) in
+   * every pass. The exact Catmull-Clark surface is not plugged in yet.
+   */
+  surface?: 'evalSurface' | 'acc';
   /** Render target format of the lit pipeline (default 'rgba8unorm'). */
   colorFormat?: GPUTextureFormat;
   /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
@@ -377,9 +509,24 @@ export interface HeadlessInstanced {
   /** Per edge: its level; per patch: its pattern level. */
   edgeLevels: Uint32Array;
   patchLevels: Uint32Array;
+  /** GPU milliseconds of the headless run's passes ({ levels, evaluate }; {} without
+   * timestamp queries). */
+  timings: Record<string, number>;
 }
 
-export class InstancedTessellator {
+/** Move `@group(g) @binding(b)` declarations, one pass over the text: "g,b" → [g', b']. */
+function rebind(code: string, moves: Record<string, [number, number]>): string {
+  return code.replace(/@group\((\d+)\) @binding\((\d+)\)/g, (all, g, b) => {
+    const to = moves[`${g},${b}`];
+    return to ? `@group(${to[0]}) @binding(${to[1]})` : all;
+  });
+}
+
+/** Bytes of drawArgs: 14 indexed records (5 words), then 14 wireframe records (4 words). */
+const DRAW_ARGS_BYTES = 20 * BUCKETS + 16 * BUCKETS;
+const WIRE_ARGS_OFFSET = 20 * BUCKETS;
+
+export class InstancedTessellator implements SurfaceDrawer {
   readonly patterns = packPatterns();
   /** 14 drawIndexedIndirect records (5 u32 each), rewritten by every encodeLevels. */
   readonly drawArgs: GPUBuffer;
@@ -390,9 +537,21 @@ export class InstancedTessellator {
   private readonly bucketUniform: GPUBuffer;
   private readonly frame: GPUBuffer;
   private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'bucketPatches' | 'records', GPUComputePipeline>;
-  private readonly layouts: { mesh: GPUBindGroupLayout; bucket: GPUBindGroupLayout; frame: GPUBindGroupLayout; out: GPUBindGroupLayout };
-  private readonly headlessPipeline: GPUComputePipeline;
-  private readonly drawModule: GPUShaderModule;
+  private readonly layouts: {
+    mesh: GPUBindGroupLayout;
+    bucket: GPUBindGroupLayout;
+    frame: GPUBindGroupLayout;
+    out: GPUBindGroupLayout;
+    /** Group 3 of an ACC surface: its patches and control points. */
+    surface: GPUBindGroupLayout;
+  };
+  private headlessPipelineMade?: GPUComputePipeline;
+  private readonly code: (...parts: string[]) => string;
+  /** Whether the surface is ACC (group 3: its patches and control points). */
+  readonly acc: boolean;
+  private accGroup?: GPUBindGroup;
+  private accPatches?: AccPatches;
+  private frameModule?: GPUShaderModule;
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
   private readonly depthFormat: GPUTextureFormat;
@@ -417,8 +576,12 @@ export class InstancedTessellator {
     this.colorFormat = opts.colorFormat ?? 'rgba8unorm';
     this.depthFormat = opts.depthFormat ?? 'depth32float';
     this.sampleCount = opts.sampleCount ?? 1;
-    const surface = opts.surfaceWgsl ?? phongSurfaceWgsl;
+    this.acc = opts.surface === 'acc';
+    const surface = this.acc
+      ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
+      : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
     const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
+    this.code = code;
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
     const pipeline = (entryPoint: string) =>
       device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
@@ -453,21 +616,19 @@ export class InstancedTessellator {
       }),
       out: device.createBindGroupLayout({
         label: 'instanced headless outputs',
-        entries: [1, 2, 3, 4, 5].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
+        entries: [1, 2].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
+      }),
+      surface: device.createBindGroupLayout({
+        label: 'instanced ACC surface',
+        entries: [
+          { binding: 0, visibility: VC, buffer: ro },
+          { binding: 1, visibility: VC, buffer: ro },
+        ],
       }),
     };
-    this.drawModule = device.createShaderModule({ label: 'instanced draw', code: code(drawWgsl) });
     this.renderLayout = device.createPipelineLayout({
       label: 'instanced render',
-      bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.frame],
-    });
-    this.headlessPipeline = device.createComputePipeline({
-      label: 'instanced headless',
-      layout: device.createPipelineLayout({
-        label: 'instanced headless',
-        bindGroupLayouts: [this.layouts.mesh, this.layouts.bucket, this.layouts.out],
-      }),
-      compute: { module: this.drawModule, entryPoint: 'headless' },
+      bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, this.layouts.frame]),
     });
 
     this.params = device.createBuffer({
@@ -477,7 +638,7 @@ export class InstancedTessellator {
     });
     this.drawArgs = device.createBuffer({
       label: 'instanced draw records',
-      size: 20 * BUCKETS,
+      size: DRAW_ARGS_BYTES,
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT | GPUBufferUsage.COPY_SRC,
     });
     this.indexBuffer = device.createBuffer({
@@ -508,14 +669,35 @@ export class InstancedTessellator {
     });
   }
 
+  /** A pipeline's bind group layouts, with the ACC surface's at group 3. */
+  private withSurface(groups: GPUBindGroupLayout[]): GPUBindGroupLayout[] {
+    return this.acc ? [...groups, this.layouts.surface] : groups;
+  }
+
+  /** Bind the ACC surface's buffers (group 3), where there is one. */
+  private bindSurface(pass: GPURenderPassEncoder | GPUComputePassEncoder): void {
+    if (this.accGroup) pass.setBindGroup(3, this.accGroup);
+  }
+
   get instancedMesh(): InstancedMesh | undefined {
     return this.mesh?.m;
   }
 
-  /** Upload a cage's patches (topology once; updateCage for new positions). */
-  setMesh(m: InstancedMesh): void {
+  /** GPU memory held for the current mesh, in bytes: topology and patterns, cage, work (levels and
+   * bucket lists), pattern indices, draw records and uniforms. */
+  get gpuBytes(): number {
+    const m = this.mesh;
+    const own = [this.params, this.drawArgs, this.indexBuffer, this.bucketUniform, this.frame].reduce((a, b) => a + b.size, 0);
+    return own + (m ? m.staticBuf.size + m.cageBuf.size + m.work.size : 0);
+  }
+
+  /** Upload a cage's patches (topology once; updateCage for new positions). With an ACC surface,
+   * `acc`: its patches for the same cage (built here from the cage positions, and again by
+   * updateCage). */
+  setMesh(m: InstancedMesh, acc?: AccPatches): void {
     const device = this.device;
     this.releaseMesh();
+    if (this.acc && !acc) throw new Error('InstancedTessellator: an ACC surface needs its AccPatches (setMesh(mesh, acc))');
     const pr = m.prepared;
     const entries = new Uint32Array(4 * BUCKETS);
     this.patterns.entries.forEach((e, b) => entries.set([e.baseVertex, e.firstIndex, e.indexCount, e.vertexCount], 4 * b));
@@ -543,6 +725,17 @@ export class InstancedTessellator {
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
     });
     device.queue.writeBuffer(cageBuf, 0, cage);
+    if (this.acc && acc) {
+      this.accPatches = acc;
+      this.accGroup = device.createBindGroup({
+        label: 'instanced ACC surface',
+        layout: this.layouts.surface,
+        entries: acc.surfaceEntries(0, 1),
+      });
+      const enc = device.createCommandEncoder({ label: 'instanced ACC build' });
+      acc.encode(enc, cageBuf);
+      device.queue.submit([enc.finish()]);
+    }
 
     let w = 0;
     const take = (n: number) => {
@@ -613,6 +806,18 @@ export class InstancedTessellator {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+    if (this.accPatches) {
+      const enc = this.device.createCommandEncoder({ label: 'instanced ACC build' });
+      this.accPatches.encode(enc, m.cageBuf);
+      this.device.queue.submit([enc.finish()]);
+    }
+  }
+
+  /** Flat shading in the renderer's lit pass (the sample's "flat shading"): the vertex normal is
+   * dropped and the lit shader shades each facet by its own normal. */
+  setFlatShading(flat: boolean): void {
+    INST_PARAMS.write(new DataView(this.paramsBytes), { flatShading: flat ? 1 : 0 });
+    this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
   }
 
   /** The levels of per-patch mode (one per patch, rounded down to a power of two in [1, 64]). */
@@ -622,8 +827,8 @@ export class InstancedTessellator {
     this.device.queue.writeBuffer(m.work, 4 * m.layout.wanted, levels);
   }
 
-  /** Record the level, bucket and record passes. */
-  encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams): void {
+  /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it). */
+  encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams, timestampWrites?: GPUComputePassTimestampWrites): void {
     const m = this.requireMesh();
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
@@ -638,10 +843,12 @@ export class InstancedTessellator {
     // Edge codes and bucket counts start at 0 (atomicMax / atomicAdd).
     encoder.clearBuffer(m.work, 4 * m.layout.edgeCode, 4 * m.m.edgeCount);
     encoder.clearBuffer(m.work, 4 * m.layout.counts, 4 * BUCKETS);
-    const cp = encoder.beginComputePass({ label: 'instanced levels' });
+    const cp = encoder.beginComputePass({ label: 'instanced levels', timestampWrites });
     const run = (name: keyof InstancedTessellator['levelPipelines'], groups: number, group: GPUBindGroup) => {
       cp.setPipeline(this.levelPipelines[name]);
       cp.setBindGroup(0, group);
+      // The dynamic rule evaluates the surface: an ACC surface's buffers (its auto layout's group 3).
+      if (name === 'edgeView' && this.accPatches) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
@@ -650,6 +857,16 @@ export class InstancedTessellator {
     run('bucketPatches', Math.ceil(nP / 64), this.levelGroupFor('bucketPatches'));
     run('records', 1, this.levelGroupFor('records'));
     cp.end();
+  }
+
+  private edgeViewSurface?: GPUBindGroup;
+  private edgeViewSurfaceGroup(): GPUBindGroup {
+    this.edgeViewSurface ??= this.device.createBindGroup({
+      label: 'instanced edgeView ACC surface',
+      layout: this.levelPipelines.edgeView.getBindGroupLayout(3),
+      entries: this.accPatches!.surfaceEntries(0, 1),
+    });
+    return this.edgeViewSurface;
   }
 
   // Auto layouts differ per entry point (each holds only the bindings it uses), so each level
@@ -662,7 +879,8 @@ export class InstancedTessellator {
       const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
       const used: Record<string, number[]> = {
         patchEdges: [0, 1, 3],
-        edgeView: [0, 1, 2, 3],
+        // The cage buffer is read by the Phong surface; an ACC surface reads its own control points.
+        edgeView: this.acc ? [0, 1, 3] : [0, 1, 2, 3],
         bucketPatches: [0, 1, 3],
         records: [0, 1, 3, 4],
       };
@@ -725,6 +943,7 @@ export class InstancedTessellator {
     pass.setPipeline(kind === 'lit' ? this.lit() : this.shadow());
     pass.setBindGroup(0, m.meshGroup);
     pass.setBindGroup(2, this.frameGroup);
+    this.bindSurface(pass);
     pass.setIndexBuffer(this.indexBuffer, 'uint32');
     for (let b = 0; b < BUCKETS; b++) {
       pass.setBindGroup(1, this.bucketGroup, [BUCKET_STRIDE * b]);
@@ -732,13 +951,34 @@ export class InstancedTessellator {
     }
   }
 
+  /** Made on first use (a page that only draws never compiles it). */
+  private get headlessPipeline(): GPUComputePipeline {
+    this.headlessPipelineMade ??= this.device.createComputePipeline({
+      label: 'instanced headless',
+      layout: this.device.createPipelineLayout({
+        label: 'instanced headless',
+        bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, this.layouts.out]),
+      }),
+      compute: {
+        module: this.device.createShaderModule({ label: 'instanced headless', code: this.code(drawWgsl, headlessWgsl) }),
+        entryPoint: 'headless',
+      },
+    });
+    return this.headlessPipelineMade;
+  }
+
+  private drawFrameModule(): GPUShaderModule {
+    this.frameModule ??= this.device.createShaderModule({ label: 'instanced draw', code: this.code(drawWgsl, frameWgsl) });
+    return this.frameModule;
+  }
+
   private lit(): GPURenderPipeline {
     // The existing renderer's lit state: triangle list, no culling (open surfaces), depth less.
     this.litPipeline ??= this.device.createRenderPipeline({
       label: 'instanced lit',
       layout: this.renderLayout,
-      vertex: { module: this.drawModule, entryPoint: 'litVertex' },
-      fragment: { module: this.drawModule, entryPoint: 'litFragment', targets: [{ format: this.colorFormat }] },
+      vertex: { module: this.drawFrameModule(), entryPoint: 'litVertex' },
+      fragment: { module: this.drawFrameModule(), entryPoint: 'litFragment', targets: [{ format: this.colorFormat }] },
       primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'ccw' },
       depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
       multisample: { count: this.sampleCount },
@@ -751,11 +991,160 @@ export class InstancedTessellator {
     this.shadowPipeline ??= this.device.createRenderPipeline({
       label: 'instanced shadow',
       layout: this.renderLayout,
-      vertex: { module: this.drawModule, entryPoint: 'shadowVertex' },
+      vertex: { module: this.drawFrameModule(), entryPoint: 'shadowVertex' },
       primitive: { topology: 'triangle-list', cullMode: 'none' },
       depthStencil: { format: this.depthFormat, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
     });
     return this.shadowPipeline;
+  }
+
+  // ---- inside the demo renderer's passes (src/gpu/renderer.ts SurfaceDrawer) ------------------
+
+  private inRenderer?: {
+    res: ShadingResources;
+    module: GPUShaderModule;
+    /** Scene uniform only (the shadow pass: the shadow map is its attachment there). */
+    sceneGroup: GPUBindGroup;
+    /** Scene uniform, shadow map and sampler (the lit pass). */
+    litGroup: GPUBindGroup;
+    sceneLayout: GPUPipelineLayout;
+    litLayout: GPUPipelineLayout;
+    pipelines: Map<string, GPURenderPipeline>;
+  };
+
+  /**
+   * Draw inside a Renderer's passes (drawShadow, drawLit, drawWire), with its scene uniform, shadow
+   * map and lit shading (wgsl/render-instanced.wgsl prepends the renderer's own lit shader, its
+   * bindings moved to group 2). Call again for another renderer.
+   */
+  useRenderer(res: ShadingResources): void {
+    const device = this.device;
+    const F = GPUShaderStage.FRAGMENT,
+      VF = GPUShaderStage.VERTEX | F;
+    const sceneBgl = device.createBindGroupLayout({
+      label: 'instanced renderer scene',
+      entries: [{ binding: 0, visibility: VF, buffer: { type: 'uniform' } }],
+    });
+    const litBgl = device.createBindGroupLayout({
+      label: 'instanced renderer scene + shading',
+      entries: [
+        { binding: 0, visibility: VF, buffer: { type: 'uniform' } },
+        { binding: 1, visibility: F, texture: { sampleType: 'depth' } },
+        { binding: 2, visibility: F, sampler: { type: 'comparison' } },
+      ],
+    });
+    // The renderer's lit shader: scene (0, 0), shadow map and sampler (1, 0–1), its patch colours'
+    // buffers (2, 0–1, read by its own litVertex only) moved clear of this tessellator's groups
+    // (to 3, 10–11: group 3 bindings 0–1 are an ACC surface's).
+    const lit = rebind(RENDER_SHADERS.lit.join('\n'), { '0,0': [2, 0], '1,0': [2, 1], '1,1': [2, 2], '2,0': [3, 10], '2,1': [3, 11] });
+    const layout = (label: string, g: GPUBindGroupLayout) =>
+      device.createPipelineLayout({ label, bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, g]) });
+    this.inRenderer = {
+      res,
+      module: device.createShaderModule({ label: 'instanced in the renderer', code: this.code(drawWgsl, lit, renderInstancedWgsl) }),
+      sceneGroup: device.createBindGroup({
+        label: 'instanced renderer scene',
+        layout: sceneBgl,
+        entries: [{ binding: 0, resource: { buffer: res.scene } }],
+      }),
+      litGroup: device.createBindGroup({
+        label: 'instanced renderer scene + shading',
+        layout: litBgl,
+        entries: [
+          { binding: 0, resource: { buffer: res.scene } },
+          { binding: 1, resource: res.shadowMap },
+          { binding: 2, resource: res.shadowSampler },
+        ],
+      }),
+      sceneLayout: layout('instanced renderer (scene)', sceneBgl),
+      litLayout: layout('instanced renderer (lit)', litBgl),
+      pipelines: new Map(),
+    };
+  }
+
+  /** The renderer-pass pipelines, made on first use, with the renderer's states: a closed cage
+   * culls back faces in the lit pass and the faces towards the light in the shadow pass. */
+  private rendererPipeline(kind: 'lit' | 'shadow' | 'wire', closed: boolean): GPURenderPipeline {
+    const r = this.inRenderer!;
+    const key = `${kind} ${closed ? 'closed' : 'open'}`;
+    let p = r.pipelines.get(key);
+    if (p) return p;
+    const { module, res } = r;
+    const device = this.device;
+    const multisample = { count: res.sampleCount };
+    if (kind === 'shadow')
+      p = device.createRenderPipeline({
+        label: `instanced shadow (${key})`,
+        layout: r.sceneLayout,
+        vertex: { module, entryPoint: 'instancedShadowVertex' },
+        primitive: { topology: 'triangle-list', cullMode: closed ? 'front' : 'none', frontFace: 'ccw' },
+        depthStencil: { format: res.depthFormat, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
+      });
+    else if (kind === 'lit')
+      p = device.createRenderPipeline({
+        label: `instanced lit (${key})`,
+        layout: r.litLayout,
+        vertex: { module, entryPoint: 'instancedLitVertex' },
+        fragment: { module, entryPoint: 'litFragment', targets: [{ format: res.colorFormat }] },
+        primitive: { topology: 'triangle-list', cullMode: closed ? 'back' : 'none', frontFace: 'ccw' },
+        depthStencil: { format: res.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
+        multisample,
+      });
+    else
+      p = device.createRenderPipeline({
+        label: 'instanced wireframe',
+        layout: r.sceneLayout,
+        vertex: { module, entryPoint: 'instancedWireVertex' },
+        fragment: {
+          module,
+          entryPoint: 'instancedWireFragment',
+          targets: [
+            {
+              format: res.colorFormat,
+              blend: {
+                color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha', operation: 'add' },
+                alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha', operation: 'add' },
+              },
+            },
+          ],
+        },
+        primitive: { topology: 'line-list' },
+        depthStencil: { format: res.depthFormat, depthWriteEnabled: false, depthCompare: 'less-equal' },
+        multisample,
+      });
+    r.pipelines.set(key, p);
+    return p;
+  }
+
+  private drawBuckets(pass: GPURenderPassEncoder, kind: 'lit' | 'shadow' | 'wire', closed: boolean): void {
+    const m = this.mesh,
+      r = this.inRenderer;
+    if (!m || !r) return;
+    pass.setPipeline(this.rendererPipeline(kind, closed));
+    pass.setBindGroup(0, m.meshGroup);
+    pass.setBindGroup(2, kind === 'lit' ? r.litGroup : r.sceneGroup);
+    this.bindSurface(pass);
+    if (kind !== 'wire') pass.setIndexBuffer(this.indexBuffer, 'uint32');
+    for (let b = 0; b < BUCKETS; b++) {
+      pass.setBindGroup(1, this.bucketGroup, [BUCKET_STRIDE * b]);
+      if (kind === 'wire') pass.drawIndirect(this.drawArgs, WIRE_ARGS_OFFSET + 16 * b);
+      else pass.drawIndexedIndirect(this.drawArgs, 20 * b);
+    }
+  }
+
+  /** SurfaceDrawer: the shadow map pass (the surface evaluated again, from the light). */
+  drawShadow(pass: GPURenderPassEncoder, closed: boolean): void {
+    this.drawBuckets(pass, 'shadow', closed);
+  }
+
+  /** SurfaceDrawer: the lit pass (evaluated again, shaded as the renderer's stored mesh). */
+  drawLit(pass: GPURenderPassEncoder, closed: boolean): void {
+    this.drawBuckets(pass, 'lit', closed);
+  }
+
+  /** SurfaceDrawer: the wireframe overlay (every pattern triangle's edges, evaluated again). */
+  drawWire(pass: GPURenderPassEncoder): void {
+    this.drawBuckets(pass, 'wire', false);
   }
 
   /**
@@ -768,8 +1157,11 @@ export class InstancedTessellator {
     const device = this.device;
     const m = this.requireMesh();
     device.pushErrorScope('validation');
+    // GPU timestamps of the two passes (levels, evaluation), where the device has them.
+    const timed = device.features.has('timestamp-query');
+    const querySet = timed ? device.createQuerySet({ label: 'instanced headless timestamps', type: 'timestamp', count: 4 }) : undefined;
     let enc = device.createCommandEncoder({ label: 'instanced headless levels' });
-    this.encodeLevels(enc, lp);
+    this.encodeLevels(enc, lp, querySet && { querySet, beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 });
     device.queue.submit([enc.finish()]);
     const records = new Uint32Array(await readBuffer(device, this.drawArgs, 20 * BUCKETS));
     const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => records[5 * b + 1]);
@@ -783,23 +1175,21 @@ export class InstancedTessellator {
       nt += (counts[b] * e.indexCount) / 3;
     });
     const limit = device.limits.maxStorageBufferBindingSize;
-    if (12 * nv > limit || 12 * nt > limit) {
+    if (32 * nv > limit || 4 * nv + 12 * nt > limit) {
       throw new Error(
         `the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`,
       );
     }
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC;
+    // Two buffers (wgsl/instanced-headless.wgsl): 8 f32 per vertex; a patch per vertex, then the indices.
     const out = {
-      positions: device.createBuffer({ label: 'instanced headless positions', size: Math.max(16, 12 * nv), usage: S }),
-      normals: device.createBuffer({ label: 'instanced headless normals', size: Math.max(16, 12 * nv), usage: S }),
-      patch: device.createBuffer({ label: 'instanced headless patches', size: Math.max(16, 4 * nv), usage: S }),
-      uv: device.createBuffer({ label: 'instanced headless uv', size: Math.max(16, 8 * nv), usage: S }),
-      indices: device.createBuffer({ label: 'instanced headless indices', size: Math.max(16, 12 * nt), usage: S }),
+      f32: device.createBuffer({ label: 'instanced headless vertices', size: Math.max(16, 32 * nv), usage: S }),
+      u32: device.createBuffer({ label: 'instanced headless patches + indices', size: Math.max(16, 4 * nv + 12 * nt), usage: S }),
     };
     const outGroup = device.createBindGroup({
       label: 'instanced headless outputs',
       layout: this.layouts.out,
-      entries: [out.positions, out.normals, out.patch, out.uv, out.indices].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
+      entries: [out.f32, out.u32].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
     });
     // This run's bucket uniforms: the draw's, plus where each bucket's output goes.
     const bytes = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
@@ -826,13 +1216,18 @@ export class InstancedTessellator {
         outVertexBase: bases[b].v,
         outTriangleBase: bases[b].t,
         instances: counts[b],
+        outVertexTotal: nv,
       });
     });
     device.queue.writeBuffer(uniform, 0, bytes);
     enc = device.createCommandEncoder({ label: 'instanced headless' });
-    const cp = enc.beginComputePass({ label: 'instanced headless' });
+    const cp = enc.beginComputePass({
+      label: 'instanced headless',
+      timestampWrites: querySet && { querySet, beginningOfPassWriteIndex: 2, endOfPassWriteIndex: 3 },
+    });
     cp.setPipeline(this.headlessPipeline);
     cp.setBindGroup(0, m.meshGroup);
+    this.bindSurface(cp);
     cp.setBindGroup(2, outGroup);
     this.patterns.entries.forEach((e, b) => {
       const threads = counts[b] * Math.max(e.vertexCount, e.indexCount / 3);
@@ -841,30 +1236,52 @@ export class InstancedTessellator {
       cp.dispatchWorkgroups(...grid2d(Math.ceil(threads / 64)));
     });
     cp.end();
+    const resolve = querySet
+      ? device.createBuffer({
+          label: 'instanced headless timestamps',
+          size: 32,
+          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
+        })
+      : undefined;
+    if (querySet && resolve) enc.resolveQuerySet(querySet, 0, 4, resolve, 0);
     device.queue.submit([enc.finish()]);
     const error = await device.popErrorScope();
     if (error) throw new Error(`WebGPU validation error: ${error.message}`);
-    const [positions, normals, patch, uv, indices] = await Promise.all([
-      readBuffer(device, out.positions, 12 * nv),
-      readBuffer(device, out.normals, 12 * nv),
-      readBuffer(device, out.patch, 4 * nv),
-      readBuffer(device, out.uv, 8 * nv),
-      readBuffer(device, out.indices, 12 * nt),
-    ]);
+    const [f32, u32] = await Promise.all([readBuffer(device, out.f32, 32 * nv), readBuffer(device, out.u32, 4 * nv + 12 * nt)]);
+    const fv = new Float32Array(f32),
+      uw = new Uint32Array(u32);
+    const positions = new Float32Array(3 * nv),
+      normals = new Float32Array(3 * nv),
+      uv = new Float32Array(2 * nv);
+    for (let v = 0; v < nv; v++) {
+      positions.set(fv.subarray(8 * v, 8 * v + 3), 3 * v);
+      normals.set(fv.subarray(8 * v + 3, 8 * v + 6), 3 * v);
+      uv.set(fv.subarray(8 * v + 6, 8 * v + 8), 2 * v);
+    }
     const levels = await this.readLevels();
+    const timings: Record<string, number> = {};
+    if (resolve) {
+      const ticks = new BigInt64Array(await readBuffer(device, resolve, 32));
+      const span = (k: number) => Number(ticks[2 * k + 1] - ticks[2 * k]) / 1e6;
+      if (span(0) >= 0) timings.levels = span(0);
+      if (span(1) >= 0) timings.evaluate = span(1);
+      resolve.destroy();
+    }
+    querySet?.destroy();
     for (const b of [...Object.values(out), uniform]) b.destroy();
     return {
       vertexCount: nv,
       triangleCount: nt,
-      positions: new Float32Array(positions),
-      normals: new Float32Array(normals),
-      patch: new Uint32Array(patch),
-      uv: new Float32Array(uv),
-      indices: new Uint32Array(indices),
+      positions,
+      normals,
+      patch: uw.slice(0, nv),
+      uv,
+      indices: uw.slice(nv, nv + 3 * nt),
       counts,
       records,
       edgeLevels: levels.edgeLevels,
       patchLevels: levels.patchLevels,
+      timings,
     };
   }
 
@@ -885,6 +1302,9 @@ export class InstancedTessellator {
     if (!this.mesh) return;
     for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
     this.levelGroups.clear();
+    this.edgeViewSurface = undefined;
+    this.accGroup = undefined;
+    this.accPatches = undefined;
     this.mesh = undefined;
   }
 
@@ -899,7 +1319,7 @@ export class InstancedTessellator {
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
  * { mode: 'static', level: L }; `--adaptive` is { mode: 'dynamic', viewProj, viewport, lodScale }
  * with the CLI's camera (src/gpu/headless.ts headlessCamera gives one). Pass `tess` to reuse
- * compiled pipelines across calls.
+ * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation.
  */
 export async function tessellateInstanced(
   device: GPUDevice,
@@ -907,12 +1327,14 @@ export async function tessellateInstanced(
   prepared: PreparedMesh,
   lp: LevelParams,
   tess?: InstancedTessellator,
+  instancedMesh?: InstancedMesh,
+  acc?: AccPatches,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
-    const mesh = prepareInstanced(cage, prepared);
-    t.setMesh(mesh);
+    const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
+    t.setMesh(mesh, acc);
     return { mesh, out: await t.headless(lp) };
   } finally {
     if (own) t.destroy();

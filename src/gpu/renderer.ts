@@ -72,6 +72,35 @@ export interface DrawOptions {
   patchColours?: boolean;
   /** Wireframe opacity, 0..1. */
   wireOpacity?: number;
+  /**
+   * Split view: draw only the columns [x0, x1) of the target (fractions of its width), with the
+   * same camera: the first region of a frame clears, a later one keeps what the earlier drew
+   * (render() called once per region, each with its own shadow pass and, with timestamps, its
+   * own timing slot: slot 1's passes are reported as 'shadow 2' and 'lit 2').
+   */
+  region?: { x0: number; x1: number; first: boolean; slot: 0 | 1 };
+}
+
+/**
+ * Something that draws the surface itself in the shadow and lit passes instead of the stored
+ * mesh: the instanced tessellator (src/gpu/instanced.ts), which evaluates the surface again in
+ * every pass. It may set any bind group and pipeline; the renderer sets its own again after.
+ */
+export interface SurfaceDrawer {
+  drawShadow(pass: GPURenderPassEncoder, closed: boolean): void;
+  drawLit(pass: GPURenderPassEncoder, closed: boolean): void;
+  drawWire(pass: GPURenderPassEncoder): void;
+}
+
+/** What a SurfaceDrawer binds to shade as the renderer does (Renderer.shadingResources). */
+export interface ShadingResources {
+  /** The per-frame uniforms (SCENE_UNIFORMS). */
+  scene: GPUBuffer;
+  shadowMap: GPUTextureView;
+  shadowSampler: GPUSampler;
+  colorFormat: GPUTextureFormat;
+  depthFormat: GPUTextureFormat;
+  sampleCount: number;
 }
 
 const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
@@ -81,6 +110,8 @@ const MESH_BUFFERS: GPUVertexBufferLayout[] = [
   { arrayStride: 12, attributes: [{ shaderLocation: 1, offset: 0, format: 'float32x3' }] },
 ];
 const TIMED_PASSES = ['shadow', 'lit'] as const;
+/** Timing slots: one per region of a split view (DrawOptions.region.slot). */
+const TIMING_SLOTS = 2;
 
 /** The patch colours (declared in contract.ts, where the lit shader's palette comes from too). */
 export { PATCH_COLOURS } from './contract.ts';
@@ -96,6 +127,8 @@ export class Renderer {
   #sceneBindGroup: GPUBindGroup;
   #shadingBindGroup: GPUBindGroup;
   #shadowMap: GPUTexture;
+  #shadowSampler: GPUSampler;
+  #drawer: SurfaceDrawer | null = null;
 
   /** [open, closed] (setMesh's `closed`). */
   #shadowPipelines: GPURenderPipeline[] = [];
@@ -133,6 +166,8 @@ export class Renderer {
     read: GPUBuffer;
     state: 'idle' | 'copied' | 'mapping';
     last: Record<string, number>;
+    /** The slots the copied frame wrote. */
+    slots: number;
   } | null = null;
 
   static create(device: GPUDevice, options: RendererOptions): Renderer {
@@ -157,12 +192,12 @@ export class Renderer {
       usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.TEXTURE_BINDING,
     });
     // Hardware PCF: a linear comparison sampler blends four depth tests per tap.
-    const shadowSampler = device.createSampler({
+    const shadowSampler = (this.#shadowSampler = device.createSampler({
       label: 'shadow comparison sampler',
       compare: 'less-equal',
       magFilter: 'linear',
       minFilter: 'linear',
-    });
+    }));
     this.#wireArgs = device.createBuffer({
       label: 'wireframe draw args',
       size: 16,
@@ -309,12 +344,13 @@ export class Renderer {
     });
 
     if (options.timestamps) {
-      const count = TIMED_PASSES.length * 2;
+      const count = TIMED_PASSES.length * 2 * TIMING_SLOTS;
       this.#timing = {
         querySet: device.createQuerySet({ label: 'render timestamps', type: 'timestamp', count }),
+        // One 256-byte-aligned block per slot (resolveQuerySet's destination offset must be).
         resolve: device.createBuffer({
           label: 'render timestamps resolve',
-          size: count * 8,
+          size: 256 * (TIMING_SLOTS - 1) + 8 * TIMED_PASSES.length * 2,
           usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
         }),
         read: device.createBuffer({
@@ -324,6 +360,7 @@ export class Renderer {
         }),
         state: 'idle',
         last: {},
+        slots: 1,
       };
     }
   }
@@ -393,6 +430,24 @@ export class Renderer {
       : null;
   }
 
+  /** Draw the surface with `drawer` (in the shadow, lit and wireframe passes) instead of the
+   * stored mesh (setMesh); null: the stored mesh again. */
+  setDrawer(drawer: SurfaceDrawer | null): void {
+    this.#drawer = drawer;
+  }
+
+  /** The scene uniform, shadow map and formats a SurfaceDrawer shades with. */
+  get shadingResources(): ShadingResources {
+    return {
+      scene: this.#sceneBuffer,
+      shadowMap: this.#shadowMap.createView({ label: 'shadow map view (surface drawer)' }),
+      shadowSampler: this.#shadowSampler,
+      colorFormat: this.colorFormat,
+      depthFormat: DEPTH_FORMAT,
+      sampleCount: this.sampleCount,
+    };
+  }
+
   /** The cage overlay's lines (the renderer does not own them). */
   setCage(cage: CageLines | null): void {
     this.#cage = cage;
@@ -411,7 +466,8 @@ export class Renderer {
   render(encoder: GPUCommandEncoder, target: GPUTexture, view: View, options: DrawOptions): void {
     this.#ensureAttachments(target.width, target.height);
     this.#writeScene(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
-    const mesh = this.#mesh;
+    const drawer = this.#drawer;
+    const mesh = drawer ? null : this.#mesh;
     const timing = this.#timing;
 
     if (mesh && options.wireframe && this.#wireArgsBindGroup) {
@@ -423,6 +479,9 @@ export class Renderer {
       pass.end();
     }
 
+    const region = options.region;
+    const slot = region?.slot ?? 0;
+    const q = TIMED_PASSES.length * 2 * slot;
     const shadowPass = encoder.beginRenderPass({
       label: 'shadow pass',
       colorAttachments: [],
@@ -432,8 +491,9 @@ export class Renderer {
         depthLoadOp: 'clear',
         depthStoreOp: 'store',
       },
-      timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 } : undefined,
+      timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: q, endOfPassWriteIndex: q + 1 } : undefined,
     });
+    if (drawer) drawer.drawShadow(shadowPass, this.#closed);
     if (mesh) {
       shadowPass.setPipeline(this.#shadowPipelines[+this.#closed]);
       shadowPass.setBindGroup(0, this.#sceneBindGroup);
@@ -452,9 +512,11 @@ export class Renderer {
           view: msaa ? this.#msaaTexture!.createView({ label: 'msaa colour view' }) : targetView,
           resolveTarget: msaa ? targetView : undefined,
           clearValue: [0, 0, 0, 1],
-          loadOp: 'clear',
-          // The multisampled colour is only needed until it is resolved.
-          storeOp: msaa ? 'discard' : 'store',
+          // A later region of a split view draws over what the earlier ones left.
+          loadOp: region && !region.first ? 'load' : 'clear',
+          // The multisampled colour is only needed until it is resolved (a split view's next
+          // region loads it: it resolves the whole attachment again).
+          storeOp: msaa && !region ? 'discard' : 'store',
         },
       ],
       depthStencilAttachment: {
@@ -463,8 +525,13 @@ export class Renderer {
         depthLoadOp: 'clear',
         depthStoreOp: 'discard',
       },
-      timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: 2, endOfPassWriteIndex: 3 } : undefined,
+      timestampWrites: timing ? { querySet: timing.querySet, beginningOfPassWriteIndex: q + 2, endOfPassWriteIndex: q + 3 } : undefined,
     });
+    if (region) {
+      const x0 = Math.round(region.x0 * target.width),
+        x1 = Math.round(region.x1 * target.width);
+      pass.setScissorRect(x0, 0, Math.max(0, x1 - x0), target.height);
+    }
     pass.setBindGroup(0, this.#sceneBindGroup);
     pass.setBindGroup(1, this.#shadingBindGroup);
     pass.setPipeline(this.#backdropPipeline);
@@ -477,12 +544,21 @@ export class Renderer {
       pass.setIndexBuffer(mesh.indices, 'uint32');
       pass.drawIndexedIndirect(mesh.drawArgs, 0);
     }
+    if (drawer) {
+      drawer.drawLit(pass, this.#closed);
+      pass.setBindGroup(0, this.#sceneBindGroup);
+      pass.setBindGroup(1, this.#shadingBindGroup);
+    }
     pass.setPipeline(this.#groundPipeline);
     pass.draw(4);
     if (mesh && options.wireframe && this.#wireBindGroup) {
       pass.setPipeline(this.#wirePipeline);
       pass.setBindGroup(1, this.#wireBindGroup);
       pass.drawIndirect(this.#wireArgs, 0);
+    }
+    if (drawer && options.wireframe) {
+      drawer.drawWire(pass);
+      pass.setBindGroup(0, this.#sceneBindGroup);
     }
     const cage = this.#cage;
     if (cage && options.cage && cage.vertexCount > 0) {
@@ -495,11 +571,14 @@ export class Renderer {
     pass.end();
 
     if (timing) {
-      encoder.resolveQuerySet(timing.querySet, 0, TIMED_PASSES.length * 2, timing.resolve, 0);
-      // Copy only into an idle readback buffer: a mapped or mapping one cannot be written.
-      if (timing.state === 'idle') {
-        encoder.copyBufferToBuffer(timing.resolve, 0, timing.read, 0, timing.read.size);
+      const n = TIMED_PASSES.length * 2;
+      encoder.resolveQuerySet(timing.querySet, q, n, timing.resolve, 256 * slot);
+      // Copy only into an idle readback buffer: a mapped or mapping one cannot be written; a
+      // split view copies after its last region (slot 1).
+      if (timing.state === 'idle' && (!region || slot === TIMING_SLOTS - 1)) {
+        for (let k = 0; k < TIMING_SLOTS; k++) encoder.copyBufferToBuffer(timing.resolve, 256 * k, timing.read, 8 * n * k, 8 * n);
         timing.state = 'copied';
+        timing.slots = region ? TIMING_SLOTS : 1;
       }
     }
   }
@@ -518,11 +597,13 @@ export class Renderer {
         const ticks = new BigInt64Array(timing.read.getMappedRange().slice(0));
         timing.read.unmap();
         const out: Record<string, number> = {};
-        TIMED_PASSES.forEach((name, i) => {
-          const ns = Number(ticks[2 * i + 1] - ticks[2 * i]);
-          // Timestamps may be quantized or reordered; a negative span means "unknown".
-          if (ns >= 0) out[name] = ns / 1e6;
-        });
+        for (let slot = 0; slot < timing.slots; slot++)
+          TIMED_PASSES.forEach((name, i) => {
+            const k = TIMED_PASSES.length * slot + i;
+            const ns = Number(ticks[2 * k + 1] - ticks[2 * k]);
+            // Timestamps may be quantized or reordered; a negative span means "unknown".
+            if (ns >= 0) out[slot ? `${name} 2` : name] = ns / 1e6;
+          });
         timing.last = out;
       } catch {
         // The device was lost or destroyed while mapping: keep the last numbers.

@@ -1,0 +1,152 @@
+// The demo with the instanced power-of-two tessellator (`?tessellator=instanced`), in headless
+// Chromium on SwiftShader: it draws (lit, shadow and wireframe passes, the surface evaluated in
+// each) with no console errors, its bucket draw records equal the CPU's count, its stats show
+// what it draws per pass, and switching tessellators keeps the page working.
+import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
+import { collectErrors, ready } from './helpers.ts';
+
+interface Records {
+  gpu: number[];
+  cpu: number[] | null;
+  mode: string;
+  counts: { triangles: number; vertices: number; patches: number; levels: [number, number][] };
+}
+
+function records(page: Page): Promise<Records | null> {
+  return page.evaluate(() =>
+    (window as unknown as { tessellab: { instancedRecords(): Promise<Records | null> } }).tessellab.instancedRecords(),
+  );
+}
+
+const int = (n: number) => new Intl.NumberFormat('en-US').format(n);
+
+test('static level: the bucket draw records equal the CPU count; stats per pass; no console errors', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=creature&tessellator=instanced&mode=fixed&level=8&t=0');
+  await ready(page);
+  const r = await records(page);
+  expect(r).not.toBeNull();
+  expect(r!.mode).toBe('static');
+  expect(r!.cpu).not.toBeNull();
+  expect(r!.gpu).toEqual(r!.cpu);
+  // creature: 556 quad and 16 triangle patches, all at level 8 (8 × 8 × 2 and 8 × 8 triangles).
+  expect(r!.counts.patches).toBe(572);
+  expect(r!.counts.levels).toEqual([[8, 572]]);
+  expect(r!.counts.triangles).toBe(556 * 128 + 16 * 64);
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(r!.counts.triangles)} tris`, { timeout: 5_000 });
+  await expect(page.getByTestId('stats-output')).toContainText('instanced, static level 8');
+  await expect(page.getByTestId('stats-buckets')).toContainText('L8: 572');
+  await expect(page.getByTestId('stats-gpu')).not.toHaveText('…', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-surface')).toContainText('Phong');
+  expect(errors).toEqual([]);
+});
+
+test('dynamic LOD (adaptive): every patch in one bucket, mixed levels, no console errors', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=creature&tessellator=instanced&t=0&lod=2');
+  await ready(page);
+  const r = await records(page);
+  expect(r).not.toBeNull();
+  expect(r!.mode).toBe('dynamic');
+  expect(r!.counts.patches).toBe(572);
+  // Each record's pattern fields are the pattern table's whatever the view: they equal the
+  // static count's (only the instance counts depend on the view).
+  const sumInstances = [...Array(14).keys()].reduce((a, b) => a + r!.gpu[5 * b + 1], 0);
+  expect(sumInstances).toBe(572);
+  expect(r!.counts.levels.length).toBeGreaterThan(1);
+  await expect(page.getByTestId('stats-output')).toContainText('dynamic LOD 2', { timeout: 5_000 });
+  expect(errors).toEqual([]);
+});
+
+test('switching tessellators: compute and instanced on the same model, camera and page', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&surface=phong&mode=fixed&factor=8&level=8&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  const set = (kind: string) =>
+    page.evaluate(
+      (k) => (window as unknown as { tessellab: { demo: { setTessellator(k: string): void } } }).tessellab.demo.setTessellator(k),
+      kind,
+    );
+  await set('instanced');
+  // Matched settings: level 8 on the torus's 128 quads draws as many triangles as factor 8.
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  await expect(page.getByTestId('stats-output')).toContainText('instanced');
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  await set('compute');
+  await expect(page.getByTestId('stats-output')).not.toContainText('instanced', { timeout: 5_000 });
+  expect(await records(page)).toBeNull();
+  expect(errors).toEqual([]);
+});
+
+test('split view: compute on the left, instanced on the right, same cage and camera; both counted and timed; no console errors', async ({
+  page,
+}) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&surface=phong&split=1&mode=fixed&factor=8&level=8&t=0');
+  await ready(page);
+  // Matched settings: the same triangle count on both halves.
+  await expect(page.getByTestId('stats-output-compute')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  const timed = await page.evaluate(
+    () => (window as unknown as { tessellab: { demo: { gpu: { timestamps: boolean } } } }).tessellab.demo.gpu.timestamps,
+  );
+  if (timed) {
+    await expect(page.getByTestId('stats-gpu-compute')).toContainText(/shadow [\d.<]+ · lit [\d.<]+/, { timeout: 5_000 });
+    await expect(page.getByTestId('stats-gpu')).toContainText(/shadow [\d.<]+ · lit [\d.<]+/, { timeout: 5_000 });
+  }
+  // Both halves show the torus: bright (lit clay) pixels on each side of the canvas's middle.
+  const shot = PNG.sync.read(
+    await page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')], maskColor: '#000000' }),
+  );
+  const halves = [0, 0];
+  for (let y = 0; y < shot.height; y++)
+    for (let x = 0; x < shot.width; x++) {
+      const k = 4 * (y * shot.width + x);
+      if (shot.data[k] + shot.data[k + 1] + shot.data[k + 2] > 400) halves[x < shot.width / 2 ? 0 : 1]++;
+    }
+  expect(halves[0]).toBeGreaterThan(500);
+  expect(halves[1]).toBeGreaterThan(500);
+  expect(errors).toEqual([]);
+});
+
+test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the scheme refuses falls back to Phong and says why', async ({
+  page,
+}) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&tessellator=instanced&instsurface=gregory-acc&mode=fixed&level=8&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('gregory-acc', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  // The icosphere has a pentagon: no ACC patches; Phong instead, with the reason.
+  await page.goto('/?model=icosphere&tessellator=instanced&instsurface=pm-acc&mode=fixed&level=4&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('Phong', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-surface')).toContainText('ACC unavailable');
+  await expect(page.getByText('5 corners').first()).toBeVisible();
+  expect(errors).toEqual([]);
+});
+
+test('flat shading (the instanced tessellator) changes the picture, and back', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=torus&tessellator=instanced&mode=fixed&level=4&wire=0&t=0');
+  await ready(page);
+  const canvas = () => page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')] });
+  const set = (flat: boolean) =>
+    page.evaluate(
+      (f) => (window as unknown as { tessellab: { demo: { setInstancedFlat(f: boolean): void } } }).tessellab.demo.setInstancedFlat(f),
+      flat,
+    );
+  const before = await canvas();
+  await set(true);
+  await expect.poll(async () => Buffer.compare(await canvas(), before)).not.toBe(0);
+  await set(false);
+  await expect.poll(async () => Buffer.compare(await canvas(), before)).toBe(0);
+  expect(errors).toEqual([]);
+});

@@ -1,0 +1,164 @@
+/**
+ * The demo's instanced tessellator (src/gpu/instanced.ts, `?tessellator=instanced`): the shown
+ * model's patches on the GPU, drawn inside the renderer's shadow, lit and wireframe passes (it
+ * evaluates the surface again in each: the comparison with the compute tessellator, which draws
+ * its stored mesh), the level pass encoded before a frame's draws when the levels may have
+ * changed, and the bucket draw records read back after it for the stats and the e2e hook (the
+ * draws themselves never wait on a readback).
+ */
+import { InstancedTessellator, prepareInstanced, cpuLevels, BUCKETS, type InstancedMesh, type LevelParams } from '../gpu/instanced.ts';
+import { prepareMesh } from '../gpu/prepare.ts';
+import type { ShadingResources } from '../gpu/renderer.ts';
+import type { PackedPatterns } from '../pattern/pow2.ts';
+import type { Cage } from '../mesh/types.ts';
+import { AccPatches } from '../gpu/acc.ts';
+import type { InstancedSurface } from './params.ts';
+
+/** What one frame's draws hold, from the 14 bucket records. */
+export interface InstancedCounts {
+  /** The records as the GPU wrote them: 5 words per bucket (indexCount, instanceCount, firstIndex, baseVertex, 0). */
+  records: Uint32Array;
+  /** Triangles rasterised per pass (the snap's collapsed ones included). */
+  triangles: number;
+  /** Pattern vertices the vertex shader evaluates per pass. */
+  vertices: number;
+  patches: number;
+  /** Patches per level (quad and triangle buckets together), levels with none left out. */
+  levels: [number, number][];
+}
+
+/** The counts of a set of bucket records (pure: the unit tests check it). */
+export function countsFromRecords(records: Uint32Array, patterns: PackedPatterns): InstancedCounts {
+  let triangles = 0,
+    vertices = 0,
+    patches = 0;
+  const perLevel = new Map<number, number>();
+  patterns.entries.forEach((e, b) => {
+    const n = records[5 * b + 1];
+    triangles += (n * records[5 * b]) / 3;
+    vertices += n * e.vertexCount;
+    patches += n;
+    if (n) perLevel.set(e.level, (perLevel.get(e.level) ?? 0) + n);
+  });
+  return { records, triangles, vertices, patches, levels: [...perLevel].sort((a, b) => a[0] - b[0]) };
+}
+
+export class InstancedView {
+  readonly tess: InstancedTessellator;
+  #mesh: InstancedMesh | null = null;
+  #cage: Cage | null = null;
+  #staging: GPUBuffer;
+  #state: 'idle' | 'copied' | 'mapping' = 'idle';
+  /** Whether the latest encode's records are still to be copied (the staging buffer was busy). */
+  #owed = false;
+  /** The latest level parameters encoded. */
+  lastLevels: LevelParams | null = null;
+  /** The ACC patches of the cage (an ACC surface). */
+  #acc: AccPatches | null = null;
+  readonly #device: GPUDevice;
+
+  /** `surface`: Phong, or an ACC scheme (setCage then throws AccError for cages it refuses). */
+  constructor(
+    device: GPUDevice,
+    shading: ShadingResources,
+    readonly surface: InstancedSurface = 'phong',
+  ) {
+    this.#device = device;
+    this.tess = new InstancedTessellator(device, {
+      colorFormat: shading.colorFormat,
+      sampleCount: shading.sampleCount,
+      surface: surface === 'phong' ? 'evalSurface' : 'acc',
+    });
+    this.tess.useRenderer(shading);
+    this.#staging = device.createBuffer({
+      label: 'instanced records readback',
+      size: 20 * BUCKETS,
+      usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
+    });
+  }
+
+  get cage(): Cage | null {
+    return this.#cage;
+  }
+
+  get mesh(): InstancedMesh | null {
+    return this.#mesh;
+  }
+
+  /** Patches per patch colour (as wgsl/instanced-surface-*.wgsl patchColourIndex): regular,
+   * irregular quad, triangle (ACC: a regular patch is ACC kind 0; Phong: every quad). */
+  patchColourCounts(): [number, number, number, number] {
+    const m = this.#mesh;
+    const n: [number, number, number, number] = [0, 0, 0, 0];
+    if (!m) return n;
+    const kinds = this.#acc?.topology.patches;
+    for (let p = 0; p < m.patchCount; p++) {
+      const tri = (m.patches[8 * p + 1] & 1) === 1;
+      if (tri) n[2]++;
+      else if (!kinds || kinds[2 * m.patches[8 * p + 6]] === 0) n[0]++;
+      else n[1]++;
+    }
+    return n;
+  }
+
+  /** Upload a model's patches (its topology and positions; with an ACC surface, its ACC patches:
+   * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses). */
+  setCage(cage: Cage): void {
+    const mesh = prepareInstanced(cage, prepareMesh(cage));
+    const acc = this.surface === 'phong' ? null : new AccPatches(this.#device, cage, this.surface);
+    this.#acc?.destroy();
+    this.#acc = acc;
+    this.#mesh = mesh;
+    this.#cage = cage;
+    this.tess.setMesh(mesh, acc ?? undefined);
+  }
+
+  /** Encode the level pass (before the frame's render passes) and, when the reader is free, a copy of its records. */
+  encode(encoder: GPUCommandEncoder, lp: LevelParams): void {
+    this.tess.encodeLevels(encoder, lp);
+    this.lastLevels = lp;
+    this.#owed = true;
+    this.copyIfOwed(encoder);
+  }
+
+  /** Copy the latest records for reading, if they are owed and the reader is free. */
+  copyIfOwed(encoder: GPUCommandEncoder): void {
+    if (!this.#owed || this.#state !== 'idle') return;
+    encoder.copyBufferToBuffer(this.tess.drawArgs, 0, this.#staging, 0, 20 * BUCKETS);
+    this.#state = 'copied';
+    this.#owed = false;
+  }
+
+  get owed(): boolean {
+    return this.#owed;
+  }
+
+  /** After the copy was submitted: the counts, or null when there was nothing new to read. */
+  async read(): Promise<InstancedCounts | null> {
+    if (this.#state !== 'copied') return null;
+    this.#state = 'mapping';
+    try {
+      await this.#staging.mapAsync(GPUMapMode.READ);
+      const records = new Uint32Array(this.#staging.getMappedRange().slice(0));
+      this.#staging.unmap();
+      return countsFromRecords(records, this.tess.patterns);
+    } catch {
+      return null; // the device went away mid-read
+    } finally {
+      this.#state = 'idle';
+    }
+  }
+
+  /** The CPU's records for every patch at `level` (static mode): what the GPU's must equal. */
+  cpuRecords(level: number): Uint32Array | null {
+    const m = this.#mesh;
+    if (!m) return null;
+    return cpuLevels(m, new Uint32Array(m.patchCount).fill(level), this.tess.patterns).records;
+  }
+
+  destroy(): void {
+    this.tess.destroy();
+    this.#acc?.destroy();
+    this.#staging.destroy();
+  }
+}
