@@ -3,7 +3,7 @@
  * and normal error (degrees) against exact Catmull-Clark (src/subdiv) at the same (face, u, v),
  * max and RMS; control points stored per patch; and the across-edge position gap / normal jump.
  *
- *   node scripts/vite-run.mjs scripts/acc-errors.ts [samples per face, default 16] [--no-gpu]
+ *   node scripts/vite-run.mjs scripts/acc-errors.ts [samples per face, default 16] [--no-gpu] [--only=cube,torus]
  *
  * With a WebGPU adapter (Dawn; SwiftShader where there is no GPU: XDG_RUNTIME_DIR=/tmp
  * VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json) it also times the GPU patch build
@@ -32,9 +32,8 @@ import { cube, pentPrism } from '../tests/subdiv-fixtures.ts';
 import { makeCage } from '../src/mesh/index.ts';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
-const args = process.argv.slice(2);
-const perFace = Number(args.find((a) => /^\d+$/.test(a)) ?? 16);
-const useGpu = !args.includes('--no-gpu');
+let perFace = 16;
+let useGpu = true;
 
 const REPS = 20,
   ROUNDS = 5;
@@ -53,15 +52,6 @@ async function wallMs(device: GPUDevice, encode: (enc: GPUCommandEncoder) => voi
 }
 
 let gpu: { device: GPUDevice; adapterName: string; cc: Tessellator } | undefined;
-if (useGpu) {
-  try {
-    const { device, adapterName } = await createNodeDevice();
-    gpu = { device, adapterName, cc: Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' }) };
-    console.error(`GPU: ${adapterName}`);
-  } catch (e) {
-    console.error(`no GPU timing: ${(e as Error).message}`);
-  }
-}
 
 /** GPU patch-build ms of the exact Catmull-Clark peer for this cage, or why there is none. */
 async function ccBuildMs(cage: Cage): Promise<number | string> {
@@ -160,72 +150,89 @@ for (const m of ['suzanne', 'bigguy', 'monsterfrog', 'imrod']) {
 }
 
 const pct = (x: number) => `${(100 * x).toFixed(3)}%`;
-console.log(
-  `| cage | scheme | max pos | RMS pos | max normal | RMS normal | points/patch (quad, tri) | patch kinds | edge gap | smooth-edge normal jump | samples | build ms (GPU) | exact CC build ms (same run) |`,
-);
-console.log(`|---|---|---|---|---|---|---|---|---|---|---|---|---|`);
-for (const { name, cage: make, grid } of cages) {
-  const cage = make();
-  let refs: ReturnType<ExactAt['at']>[] | undefined;
-  let params: [number, number, number][] = [];
-  let exactMs = 0;
-  let ccMs: number | string | undefined;
-  for (const scheme of ACC_SCHEMES) {
-    let S: AccSurface;
+/** Entry point for scripts/vite-run.mjs: prints the markdown table; the return value is the exit code. */
+export async function main(argv: string[]): Promise<number> {
+  perFace = Number(argv.find((a) => /^\d+$/.test(a)) ?? 16);
+  useGpu = !argv.includes('--no-gpu');
+  const only = argv.find((a) => a.startsWith('--only='))?.slice(7);
+  if (useGpu) {
     try {
-      S = new AccSurface(cage, scheme);
+      const { device, adapterName } = await createNodeDevice();
+      gpu = { device, adapterName, cc: Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' }) };
+      console.error(`GPU: ${adapterName}`);
     } catch (e) {
-      if (!(e instanceof AccError)) throw e;
-      console.log(`| ${name} | ${scheme} | refused: ${e.message.replace(/^[a-z-]+: /, '').split(';')[0]} | | | | | | | | | | |`);
-      continue;
+      console.error(`no GPU timing: ${(e as Error).message}`);
     }
-    if (!refs) {
-      const t0 = performance.now();
-      const exact = new ExactAt(cage);
-      params = grid ? grid9(cage) : perFaceSamples(cage, perFace);
-      refs = params.map(([f, u, v]) => exact.at(f, u, v));
-      exactMs = performance.now() - t0;
-    }
-    const e = accErrors(S, refs, params);
-    const T = S.topology;
-    const kinds = new Map<number, number>();
-    let quadPts = 0,
-      quads = 0,
-      triPts = 0,
-      tris = 0;
-    for (let f = 0; f < T.nPatches; f++) {
-      const k = T.patches[2 * f];
-      kinds.set(k, (kinds.get(k) ?? 0) + 1);
-      const n = (f + 1 < T.nPatches ? T.patches[2 * f + 3] : T.nPoints) - T.patches[2 * f + 1];
-      if (T.faceSize[f] === 4) {
-        quadPts += n;
-        quads++;
-      } else {
-        triPts += n;
-        tris++;
-      }
-    }
-    const c = continuity(S, undefined, 8, smoothEdges(cage, 1)); // semi-sharp σ ≥ 1 is built sharp
-    const accMs = await accBuildMs(cage, scheme);
-    ccMs ??= await ccBuildMs(cage);
-    const ccCell = typeof ccMs === 'number' ? fmtMs(ccMs) : `— (${ccMs})`;
-    const accCell = accMs === undefined ? '—' : `${fmtMs(accMs)}${typeof ccMs === 'number' ? ` (${(accMs / ccMs).toFixed(2)}×)` : ''}`;
-    const kindText = [...kinds]
-      .sort((a, b) => a[0] - b[0])
-      .map(([k, n]) => `${KIND_NAMES[k]} ${n}`)
-      .join(', ');
-    const ppp = `${quads ? (quadPts / quads).toFixed(1) : '–'}, ${tris ? (triPts / tris).toFixed(0) : '–'}`;
-    const notes = [];
-    if (T.warnings.some((w) => w.includes('semi-sharp'))) notes.push('semi-sharp: σ ≥ 1 built sharp');
-    if (T.warnings.some((w) => w.includes('valence 2'))) notes.push('valence-2 vertices');
-    const warn = notes.length ? ` (${notes.join('; ')})` : '';
-    console.log(
-      `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} | ${accCell} | ${ccCell} |`,
-    );
-    if (scheme === 'pm-acc') console.error(`${name}: exact reference ${(exactMs / 1000).toFixed(1)} s`);
   }
-}
-if (gpu) {
-  gpu.cc.destroy();
-  gpu.device.destroy();
+  console.log(
+    `| cage | scheme | max pos | RMS pos | max normal | RMS normal | points/patch (quad, tri) | patch kinds | edge gap | smooth-edge normal jump | samples | build ms (GPU) | exact CC build ms (same run) |`,
+  );
+  console.log(`|---|---|---|---|---|---|---|---|---|---|---|---|---|`);
+  for (const { name, cage: make, grid } of cages) {
+    if (only && !only.split(',').some((o) => name.startsWith(o))) continue;
+    const cage = make();
+    let refs: ReturnType<ExactAt['at']>[] | undefined;
+    let params: [number, number, number][] = [];
+    let exactMs = 0;
+    let ccMs: number | string | undefined;
+    for (const scheme of ACC_SCHEMES) {
+      let S: AccSurface;
+      try {
+        S = new AccSurface(cage, scheme);
+      } catch (e) {
+        if (!(e instanceof AccError)) throw e;
+        console.log(`| ${name} | ${scheme} | refused: ${e.message.replace(/^[a-z-]+: /, '').split(';')[0]} | | | | | | | | | | |`);
+        continue;
+      }
+      if (!refs) {
+        const t0 = performance.now();
+        const exact = new ExactAt(cage);
+        params = grid ? grid9(cage) : perFaceSamples(cage, perFace);
+        refs = params.map(([f, u, v]) => exact.at(f, u, v));
+        exactMs = performance.now() - t0;
+      }
+      const e = accErrors(S, refs, params);
+      const T = S.topology;
+      const kinds = new Map<number, number>();
+      let quadPts = 0,
+        quads = 0,
+        triPts = 0,
+        tris = 0;
+      for (let f = 0; f < T.nPatches; f++) {
+        const k = T.patches[2 * f];
+        kinds.set(k, (kinds.get(k) ?? 0) + 1);
+        const n = (f + 1 < T.nPatches ? T.patches[2 * f + 3] : T.nPoints) - T.patches[2 * f + 1];
+        if (T.faceSize[f] === 4) {
+          quadPts += n;
+          quads++;
+        } else {
+          triPts += n;
+          tris++;
+        }
+      }
+      const c = continuity(S, undefined, 8, smoothEdges(cage, 1)); // semi-sharp σ ≥ 1 is built sharp
+      const accMs = await accBuildMs(cage, scheme);
+      ccMs ??= await ccBuildMs(cage);
+      const ccCell = typeof ccMs === 'number' ? fmtMs(ccMs) : `— (${ccMs})`;
+      const accCell = accMs === undefined ? '—' : `${fmtMs(accMs)}${typeof ccMs === 'number' ? ` (${(accMs / ccMs).toFixed(2)}×)` : ''}`;
+      const kindText = [...kinds]
+        .sort((a, b) => a[0] - b[0])
+        .map(([k, n]) => `${KIND_NAMES[k]} ${n}`)
+        .join(', ');
+      const ppp = `${quads ? (quadPts / quads).toFixed(1) : '–'}, ${tris ? (triPts / tris).toFixed(0) : '–'}`;
+      const notes = [];
+      if (T.warnings.some((w) => w.includes('semi-sharp'))) notes.push('semi-sharp: σ ≥ 1 built sharp');
+      if (T.warnings.some((w) => w.includes('valence 2'))) notes.push('valence-2 vertices');
+      const warn = notes.length ? ` (${notes.join('; ')})` : '';
+      console.log(
+        `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} | ${accCell} | ${ccCell} |`,
+      );
+      if (scheme === 'pm-acc') console.error(`${name}: exact reference ${(exactMs / 1000).toFixed(1)} s`);
+    }
+  }
+  if (gpu) {
+    gpu.cc.destroy();
+    gpu.device.destroy();
+  }
+  return 0;
 }
