@@ -1,6 +1,7 @@
 /**
  * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
- *   (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]`
+ *   (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc]
+ *   [--flat-baseline] [--demo-view] [--limit-px]`
  * `npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye … --target …]) …`
  * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
  * GPU) and writes the welded mesh: by default on the exact Catmull-Clark limit surface (with
@@ -24,6 +25,11 @@
  * their sum, "subdivisionMs" null), "drawnTriangles" (what a draw rasterises, collapsed ones
  * included) and "weldGap" (the largest distance between the two sides' copies of a point, over
  * the model's size).
+ * The compute tessellator also takes the three ACC schemes as its surface (closed or open quad and
+ * triangle cages; n-gons and holes are refused with exit code 2). --demo-view uses the demo's first
+ * view (its default orbit fitted to a 1280×720 canvas) as the camera; --limit-px (Catmull-Clark)
+ * measures how far the output vertices that face the eye are from the exact limit surface, in
+ * pixels of that camera (scripts/limit-distance.ts), into --stats as "limitPx" {max, p99, vertices}.
  * Bad input: a message and exit code 2.
  */
 import { readFileSync, writeFileSync, existsSync } from 'node:fs';
@@ -46,8 +52,11 @@ import {
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { AccPatches } from '../src/gpu/acc.ts';
 import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
+import { isAccSurface, type Surface } from '../src/gpu/tess-passes.ts';
+import { prepareAccSurface, type AccSurface } from '../src/gpu/acc-surface.ts';
+import { demoView, limitDistancePx } from './limit-distance.ts';
 
-const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong] [--flat-baseline]
+const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px]
        npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|bezier-acc|gregory-acc|pm-acc]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
@@ -73,6 +82,8 @@ function parse(argv: string[]) {
   let surface: string | undefined;
   let tessellator = 'compute';
   let level: number | undefined;
+  let demoView = false;
+  let limitPx = false;
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const value = () => {
@@ -132,6 +143,12 @@ function parse(argv: string[]) {
       case '--flat-baseline':
         o.flatBaseline = true;
         break;
+      case '--demo-view':
+        demoView = true;
+        break;
+      case '--limit-px':
+        limitPx = true;
+        break;
       default:
         if (a.startsWith('--')) throw new UsageError(`unknown option ${a}`);
         if (model) throw new UsageError(`one model only (got '${model}' and '${a}')`);
@@ -153,16 +170,19 @@ function parse(argv: string[]) {
     throw new UsageError(instanced ? 'give exactly one of --level L or --adaptive' : 'give exactly one of --fixed F or --adaptive');
   if (!out && !stats) throw new UsageError('--out (or --stats) is required');
   surface ??= instanced ? 'phong' : 'catmull-clark';
-  const acc = instanced && (ACC_SCHEMES as readonly string[]).includes(surface) ? (surface as AccScheme) : undefined;
-  if (surface !== 'phong' && surface !== 'catmull-clark' && !acc)
-    throw new UsageError(
-      `unknown surface '${surface}' (catmull-clark or phong; with --tessellator instanced also ${ACC_SCHEMES.join(', ')})`,
-    );
-  o.surface = acc ? 'phong' : (surface as 'phong' | 'catmull-clark');
+  const isAcc = (ACC_SCHEMES as readonly string[]).includes(surface);
+  const acc = instanced && isAcc ? (surface as AccScheme) : undefined;
+  if (surface !== 'phong' && surface !== 'catmull-clark' && !isAcc)
+    throw new UsageError(`unknown surface '${surface}' (catmull-clark, phong, ${ACC_SCHEMES.join(', ')})`);
+  // The instanced tessellator takes its ACC scheme as `acc`; the compute tessellator as its surface.
+  o.surface = acc ? 'phong' : (surface as Surface);
+  if ((demoView || limitPx) && instanced) throw new UsageError('--demo-view and --limit-px apply to the compute tessellator');
+  if (limitPx && surface !== 'catmull-clark') throw new UsageError('--limit-px measures against the exact Catmull-Clark surface only');
+  if (demoView && (o.eye || o.target)) throw new UsageError('--demo-view is a camera: not with --eye or --target');
   if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
   if ((o.mode === 'fixed' || level !== undefined) && (o.lodScale || o.eye || o.target))
     throw new UsageError('--lod, --eye and --target apply to --adaptive only');
-  return { model, o, out, params, stats, instanced, level, acc };
+  return { model, o, out, params, stats, instanced, level, acc, demoView, limitPx };
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -208,8 +228,26 @@ export async function main(argv: string[]): Promise<number> {
   const mesh = prepareMesh(cage);
   const started = performance.now();
   const cc = args.o.surface === 'catmull-clark' ? prepareCatmullClark(cage, mesh) : undefined;
+  let acc: AccSurface | undefined;
+  try {
+    acc = args.o.surface && isAccSurface(args.o.surface) ? prepareAccSurface(device, cage, mesh, args.o.surface) : undefined;
+  } catch (e) {
+    if (!(e instanceof AccError)) throw e;
+    console.error(`tessellate: ${args.model}: ${e.message}`);
+    device.destroy();
+    return 2;
+  }
   const cpuPrepMs = performance.now() - started;
-  const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc });
+  // The demo's first view (src/gpu/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
+  const view = args.demoView || args.limitPx ? demoView(mesh) : undefined;
+  if (args.demoView && view)
+    Object.assign(args.o, { eye: view.eye, target: view.target, fovY: view.fovY, viewportHeight: view.viewportHeight });
+  const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
+  const cam = headlessCamera(mesh, args.o);
+  const limit = args.limitPx
+    ? limitDistancePx(cage, mesh, r.out, { eye: cam.eye, target: [0, 0, 0], fovY: cam.fovY, viewportHeight: cam.viewportHeight })
+    : undefined;
+  acc?.patches.destroy();
   if (args.out)
     writeFileSync(
       args.out,
@@ -229,13 +267,18 @@ export async function main(argv: string[]): Promise<number> {
       JSON.stringify({
         faces: faceCount(cage),
         cpuPrepMs: Number(cpuPrepMs.toFixed(3)),
-        gpuBytes: cc ? cc.gpuBytes : 0,
+        gpuBytes: cc ? cc.gpuBytes : acc ? acc.patches.patchBuffer.size + acc.patches.pointBuffer.size + acc.patches.staticBuffer.size : 0,
         subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
         tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
         vertices: r.out.vertexCount,
         triangles: r.out.triangleCount,
+        ...(limit ? { limitPx: { max: Number(limit.maxPx.toFixed(4)), p99: Number(limit.p99Px.toFixed(4)), vertices: limit.count } } : {}),
         adapter: adapterName,
       }),
+    );
+  } else if (limit) {
+    console.error(
+      `tessellate: vertices facing the eye are at most ${limit.maxPx.toFixed(3)} px (p99 ${limit.p99Px.toFixed(3)}) from the exact limit`,
     );
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');

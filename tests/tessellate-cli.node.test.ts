@@ -233,6 +233,24 @@ describe('npm run tessellate', () => {
     expect(bad.stderr).toMatch(/5 corners/);
   });
 
+  it('--surface gregory-acc on the compute tessellator: a closed OBJ; an n-gon cage refused with exit code 2', () => {
+    const out = join(dir, 'creature-gregory.obj');
+    const r = run('public/models/creature.obj', '--fixed', '3', '--surface', 'gregory-acc', '--out', out);
+    expect(r.status, r.stderr).toBe(0);
+    expect(closedEverywhere(objOf(out).f).open).toBe(0);
+    const gear = run('public/models/gear.obj', '--fixed', '3', '--surface', 'pm-acc', '--out', join(dir, 'x.obj'));
+    expect(gear.status).toBe(2);
+    expect(gear.stderr).toMatch(/corners/);
+  });
+
+  it('--demo-view --limit-px: the demo’s first view (adaptive, flat baseline) within a pixel of the exact limit', () => {
+    const r = run('public/models/creature.obj', '--adaptive', '--flat-baseline', '--demo-view', '--limit-px', '--stats');
+    expect(r.status, r.stderr).toBe(0);
+    const s = JSON.parse(r.stdout.trim().split('\n').pop()!);
+    expect(s.limitPx.vertices).toBeGreaterThan(500);
+    expect(s.limitPx.max).toBeLessThanOrEqual(1.001);
+  });
+
   it('rejects bad input with a message and exit code 2', () => {
     const bad = join(dir, 'bad.obj');
     writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');
@@ -250,6 +268,8 @@ describe('npm run tessellate', () => {
       ['public/models/torus.obj', '--tessellator', 'instanced', '--level', '4', '--surface', 'catmull-clark', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--level', '4', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--tessellator', 'hull', '--level', '4', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--fixed', '2', '--surface', 'phong', '--limit-px', '--stats'],
+      ['public/models/torus.obj', '--adaptive', '--demo-view', '--eye', '1,2,3', '--stats'],
     ]) {
       const r = run(...args);
       expect(r.status, args.join(' ')).toBe(2);

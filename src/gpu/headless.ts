@@ -11,12 +11,15 @@ import type { FactorParams } from './types.ts';
 import { decodeBary, NO_OWNER } from './contract.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import { buildCatmullClark, type CatmullClarkData } from './cc/build.ts';
+import { isAccSurface, type Surface } from './tess-passes.ts';
+import { prepareAccSurface, type AccSurface } from './acc-surface.ts';
 import type { Cage } from '../mesh/types.ts';
 
 export interface HeadlessOptions {
   mode: 'fixed' | 'adaptive';
-  /** The surface: the Catmull-Clark limit surface (default) or Phong tessellation. */
-  surface?: 'catmull-clark' | 'phong';
+  /** The surface: the Catmull-Clark limit surface (default), Phong tessellation, or an ACC
+   * approximation of the limit surface ('bezier-acc', 'gregory-acc', 'pm-acc'). */
+  surface?: Surface;
   /** Catmull-Clark: blend towards the flat triangle at low tess factors (default off here, so
    * every vertex lies on the exact limit surface). */
   flatBaseline?: boolean;
@@ -58,14 +61,15 @@ export interface HeadlessResult {
   timings: Record<string, number>;
 }
 
-/** `prepared`: the mesh and Catmull-Clark data made by the caller (e.g. to time the preparation),
- * instead of making them here. */
+/** `prepared`: the mesh and Catmull-Clark data (or ACC patches) made by the caller (e.g. to time
+ * the preparation), instead of making them here. An ACC scheme throws AccError (src/subdiv/acc.ts)
+ * for a cage it does not take. */
 export async function tessellateOnce(
   device: GPUDevice,
   cage: Cage,
   o: HeadlessOptions,
   tess?: Tessellator,
-  prepared?: { mesh: PreparedMesh; cc?: CatmullClarkData },
+  prepared?: { mesh: PreparedMesh; cc?: CatmullClarkData; acc?: AccSurface },
 ): Promise<HeadlessResult> {
   const mesh = prepared?.mesh ?? prepareMesh(cage);
   const surface = o.surface ?? 'catmull-clark';
@@ -78,8 +82,11 @@ export async function tessellateOnce(
       surface,
       flatBaseline: o.flatBaseline ?? false,
     });
+  let ownAcc: AccSurface | undefined;
   try {
-    t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined);
+    // ACC patches made here are released here; the caller's are the caller's.
+    const acc = isAccSurface(t.surface) ? (prepared?.acc ?? (ownAcc = prepareAccSurface(device, cage, mesh, t.surface))) : undefined;
+    t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined, acc);
     device.pushErrorScope('validation');
     const enc = device.createCommandEncoder({ label: 'headless rebuild' });
     t.encode(enc, headlessCamera(mesh, o));
@@ -92,6 +99,7 @@ export async function tessellateOnce(
     return { mesh, out, edgeF, timings };
   } finally {
     if (own) t.destroy();
+    ownAcc?.patches.destroy();
   }
 }
 
