@@ -46,8 +46,8 @@ export interface DemoPorts<M extends { title: string }, D, P = void> {
   preparing(busy: boolean): void;
   /** A request failed; what was shown stays. `kept` is the model still shown, if any. */
   failed(title: string, message: string, kept: M | null): void;
-  /** Catmull-Clark was asked for but `model` has none: Phong is shown instead. */
-  fellBack(model: M, reason: string): void;
+  /** `surface` (Catmull-Clark or an ACC scheme) was asked for but `model` has none: Phong is shown instead. */
+  fellBack(model: M, reason: string, surface: Surface): void;
   /** A request was committed: `model` is shown (`previous` before it; the same object when only
    * the surface changed), with what the request carried. */
   shown(model: M, previous: M | null, placement: P | undefined): void;
@@ -105,9 +105,10 @@ export class DemoController<M extends { title: string }, D, P = void> {
     return this.#data;
   }
 
-  /** Why the shown model has no Catmull-Clark data, when it was asked for and refused. */
+  /** Why the shown model is not drawn as the surface asked for (Catmull-Clark data or an ACC
+   * scheme refused it), when it was asked for and refused. */
   get dataError(): string | null {
-    return this.#surface === 'catmull-clark' ? this.#dataError : null;
+    return this.#surface !== this.#shown && this.#surface !== 'cage' ? this.#dataError : null;
   }
 
   get preparing(): boolean {
@@ -220,8 +221,9 @@ export class DemoController<M extends { title: string }, D, P = void> {
     this.#data = data;
     this.#dataError = dataError;
     this.#shown = uploaded.shown;
-    // Say why Catmull-Clark is not shown when this request is what found out.
-    if (surface === 'catmull-clark' && dataError && uploaded.shown !== 'catmull-clark') this.#ports.fellBack(model, dataError);
+    // Say why the surface asked for is not shown when this request is what found out.
+    if (dataError && uploaded.shown !== surface && (surface === 'catmull-clark' || uploaded.dataError))
+      this.#ports.fellBack(model, dataError, surface);
     // The placement goes with the model's first showing (also when a surface change overtook its load).
     this.#ports.shown(model, previous, model !== previous ? placement : undefined);
     return true;
@@ -254,8 +256,18 @@ export class DemoController<M extends { title: string }, D, P = void> {
     this.#ports.loading(BUILDING);
   }
 
-  /** Upload for `surface`; where the Catmull-Clark upload refuses the model, Phong instead. */
+  /** Upload for `surface`; where the Catmull-Clark upload (or an ACC scheme, which needs no data
+   * prepared ahead: its patches are made at upload) refuses the model, Phong instead. */
   #upload(model: M, surface: Shown, data: D | null): { shown: Shown; dataError: string | null } {
+    if (surface !== 'catmull-clark' && surface !== 'phong' && surface !== 'cage') {
+      try {
+        this.#ports.upload(model, surface, null);
+        return { shown: surface, dataError: null };
+      } catch (e) {
+        this.#ports.upload(model, 'phong', null);
+        return { shown: 'phong', dataError: errorMessage(e) };
+      }
+    }
     if (surface === 'catmull-clark' && data) {
       try {
         this.#ports.upload(model, 'catmull-clark', data);

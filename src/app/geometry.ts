@@ -1,8 +1,8 @@
 /**
  * What fills the mesh buffers the renderer draws. Both sources produce a `TessellatedMesh`:
  *  - `CageGeometry`: the cage itself, fan-triangulated (the "before" view and a fallback);
- *  - `TessellatorGeometry`: the compute tessellator (Phong or Catmull-Clark), rebuilt when the
- *    camera, factors or model change.
+ *  - `TessellatorGeometry`: the compute tessellator (Phong, Catmull-Clark or an ACC scheme),
+ *    rebuilt when the camera, factors or model change.
  */
 import type { Cage } from '../mesh/types.ts';
 import type { FactorParams, TessellatedMesh } from '../gpu/types.ts';
@@ -10,8 +10,10 @@ import { destroyMesh, uploadCageMesh } from '../gpu/cage-mesh.ts';
 import { prepareMesh, Tessellator } from '../gpu/tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
+import { isAccSurface, type Surface } from '../gpu/tess-passes.ts';
+import { prepareAccSurface, type AccSurface } from '../gpu/acc-surface.ts';
 
-export type TessSurface = 'phong' | 'catmull-clark';
+export type TessSurface = Surface;
 
 export interface GeometrySource {
   readonly kind: 'cage' | 'tessellator';
@@ -69,9 +71,13 @@ export class TessellatorGeometry implements GeometrySource {
   readonly kind = 'tessellator';
   readonly surface: TessSurface;
   readonly #tessellator: Tessellator;
+  readonly #device: GPUDevice;
+  /** An ACC surface's patches for the cage shown (made at setCage, this object's to free). */
+  #acc: AccSurface | undefined;
   #hasMesh = false;
 
   constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong') {
+    this.#device = device;
     // The tables are baked in JavaScript from the same pattern code the tests check (~50 ms), once.
     bakedTables ??= bakeTables(MAX_FACTOR);
     this.surface = surface;
@@ -91,9 +97,15 @@ export class TessellatorGeometry implements GeometrySource {
     return this.#hasMesh ? this.#tessellator.output : null;
   }
 
+  /** An ACC scheme throws AccError (a message fit to show) for a cage it does not take; the
+   * cage shown before is then gone too, and the caller shows another surface. */
   setCage(cage: Cage, cc?: CatmullClarkData): void {
     this.#hasMesh = false;
-    this.#tessellator.setMesh(prepareMesh(cage), cc);
+    const prepared = prepareMesh(cage);
+    const acc = isAccSurface(this.surface) ? prepareAccSurface(this.#device, cage, prepared, this.surface) : undefined;
+    this.#acc?.patches.destroy();
+    this.#acc = acc;
+    this.#tessellator.setMesh(prepared, cc, acc);
     this.#hasMesh = true;
   }
 
@@ -111,5 +123,7 @@ export class TessellatorGeometry implements GeometrySource {
 
   destroy(): void {
     this.#tessellator.destroy();
+    this.#acc?.patches.destroy();
+    this.#acc = undefined;
   }
 }

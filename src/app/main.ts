@@ -32,6 +32,16 @@ import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 
+/** The surfaces by their names in the panel and in messages. */
+const SURFACE_NAMES: Record<DemoParams['surface'], string> = {
+  'catmull-clark': 'Catmull-Clark',
+  phong: 'Phong',
+  'bezier-acc': 'Bezier ACC',
+  'gregory-acc': 'Gregory ACC',
+  'pm-acc': 'Pm ACC',
+  cage: 'flat cage',
+};
+
 /** Turntable speed, radians per second. */
 const SPIN_SPEED = 0.35;
 
@@ -130,10 +140,10 @@ class TessellationDemo extends DemoBase {
         showToast(message, { kind: 'error', title });
         if (!kept) setPageState('error');
       },
-      fellBack: (model, reason) =>
+      fellBack: (model, reason, surface) =>
         showToast(`${reason}\n\nShowing the Phong surface instead.`, {
           kind: 'info',
-          title: `No Catmull-Clark surface for ${model.title}`,
+          title: `No ${SURFACE_NAMES[surface] ?? surface} surface for ${model.title}`,
           timeout: 10_000,
         }),
       shown: (model, previous, placement) => {
@@ -567,6 +577,7 @@ class TessellationDemo extends DemoBase {
       source: this.geometry?.kind ?? 'cage',
       surface: {
         shown: this.shownSurface,
+        asked: this.params.surface,
         fallback: this.controller.dataError,
         building: this.controller.preparing,
         kinds: this.cc ? kindCounts(this.cc.data.triKind) : undefined,
@@ -728,7 +739,7 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     demo.invalidateGeometry();
   };
   tess
-    .add(p, 'surface', { 'Catmull-Clark': 'catmull-clark', Phong: 'phong', 'flat cage': 'cage' })
+    .add(p, 'surface', Object.fromEntries(Object.entries(SURFACE_NAMES).map(([k, v]) => [v, k])))
     .name('surface')
     .onChange(() => {
       syncUrl(p);

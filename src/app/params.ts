@@ -7,7 +7,9 @@
 export type Mode = 'adaptive' | 'fixed';
 export type UpAxis = 'y' | 'z';
 /** What is drawn: the Catmull-Clark limit surface, Phong tessellation, or the cage's flat faces. */
-export type Surface = 'catmull-clark' | 'phong' | 'cage';
+export type Surface = 'catmull-clark' | 'phong' | 'cage' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+/** The three approximations of the Catmull-Clark limit (ACC) the compute tessellator also draws. */
+export const ACC_SURFACES = ['bezier-acc', 'gregory-acc', 'pm-acc'] as const;
 /** Who tessellates: the compute tessellator (built once, the stored mesh drawn in every pass) or
  * the instanced power-of-two tessellator (src/gpu/instanced.ts: re-evaluates in every pass). */
 export type TessellatorKind = 'compute' | 'instanced';
@@ -124,6 +126,7 @@ export function parseParams(search: string): DemoParams {
   if (surface === 'catmull-clark' || surface === 'cc' || surface === 'catmullclark') p.surface = 'catmull-clark';
   else if (surface === 'phong' || surface === 'tessellated') p.surface = 'phong';
   else if (surface === 'cage') p.surface = 'cage';
+  else if ((ACC_SURFACES as readonly string[]).includes(surface ?? '')) p.surface = surface as Surface;
   p.patches = bool(q.get('patches')) ?? p.patches;
   p.flat = bool(q.get('flat')) ?? p.flat;
   p.lod = num(q.get('lod'), LOD_RANGE.min, LOD_RANGE.max) ?? p.lod;

@@ -10,7 +10,9 @@ import type { InstancedCounts } from './instanced-view.ts';
 /** The surface drawn, and what the Catmull-Clark tables are (or why there are none). */
 export interface SurfaceStats {
   /** What is drawn now. */
-  shown: 'catmull-clark' | 'phong' | 'cage';
+  shown: 'catmull-clark' | 'phong' | 'cage' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+  /** The surface asked for (what `fallback` says is unavailable). */
+  asked?: 'catmull-clark' | 'phong' | 'cage' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
   /** Catmull-Clark was asked for but the build refused the model: the reason. */
   fallback?: string | null;
   /** The tables are being built (the previous picture stays meanwhile). */
@@ -81,7 +83,14 @@ function ms(x: number): string {
   return x < 0.01 ? '<0.01' : x.toFixed(2);
 }
 
-const SURFACE_NAMES = { 'catmull-clark': 'Catmull-Clark', phong: 'Phong', cage: 'flat cage' } as const;
+const SURFACE_NAMES = {
+  'catmull-clark': 'Catmull-Clark',
+  phong: 'Phong',
+  cage: 'flat cage',
+  'bezier-acc': 'Bezier ACC',
+  'gregory-acc': 'Gregory ACC',
+  'pm-acc': 'Pm ACC',
+} as const;
 
 /** Timing stages of the Catmull-Clark patch build; every other stage is tessellation. */
 const SUBDIVISION_STAGES = new Set(['subdivision']);
@@ -101,7 +110,7 @@ export function renderStats(s: StatsInput): string {
     const sf = s.surface;
     let text = `<b>${SURFACE_NAMES[sf.shown]}</b>`;
     if (sf.building) text += ' <span class="muted">preparing subdivision data…</span>';
-    if (sf.fallback) text += ` <span class="warn">Catmull-Clark unavailable: ${esc(sf.fallback)}</span>`;
+    if (sf.fallback) text += ` <span class="warn">${SURFACE_NAMES[sf.asked ?? 'catmull-clark']} unavailable: ${esc(sf.fallback)}</span>`;
     if (sf.shown === 'catmull-clark' && sf.kinds) {
       const [reg, irr, tri, crease] = sf.kinds;
       text += ` <span class="muted">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;
