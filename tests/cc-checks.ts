@@ -10,6 +10,10 @@ import { faceParam } from '../src/gpu/face-params.ts';
 import type { PreparedMesh } from '../src/gpu/prepare.ts';
 import { regionOf, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { angleBetween } from './tess-checks.ts';
+import { decodeBary } from '../src/gpu/contract.ts';
+import { readMesh, type MeshReadback } from '../src/gpu/readback.ts';
+import type { Tessellator } from '../src/gpu/tessellator.ts';
+import type { FactorParams } from '../src/gpu/types.ts';
 
 export interface ErrorStats {
   count: number;
@@ -128,4 +132,73 @@ export function randomSamples(mesh: PreparedMesh, n: number, seed = 1) {
     out.push({ t, w1, w2, w: [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536] });
   }
   return out;
+}
+
+/** One rebuild of `mesh` by a Catmull-Clark tessellator, read back; throws on a validation error. */
+export async function tessellateCC(
+  device: GPUDevice,
+  tess: Tessellator,
+  mesh: PreparedMesh,
+  cc: CatmullClarkData,
+  camera: FactorParams,
+): Promise<MeshReadback> {
+  device.pushErrorScope('validation');
+  tess.setMesh(mesh, cc);
+  const enc = device.createCommandEncoder({ label: 'cc check rebuild' });
+  tess.encode(enc, camera);
+  device.queue.submit([enc.finish()]);
+  const out = await readMesh(device, tess.output);
+  const error = await device.popErrorScope();
+  if (error) throw new Error(`WebGPU validation error: ${error.message}`);
+  return out;
+}
+
+export interface OutputErrors {
+  /** Distances (fractions of the diagonal) of the vertices held, ascending. */
+  errs: number[];
+  max: number;
+  p99: number;
+  /** Vertices with a non-finite position; vertices in a blended square (not held). */
+  nan: number;
+  blended: number;
+  worst: string;
+}
+
+/**
+ * Output vertices (every `step`-th of those the triangles use, so a sample of about `sample`)
+ * against the exact reference, outside the blended squares round extraordinary vertices.
+ */
+export function outputErrors(ref: CCReference, out: MeshReadback, sample: number): OutputErrors {
+  const used = new Uint8Array(out.vertexCount);
+  for (let i = 0; i < 3 * out.triangleCount; i++) used[out.indices[i]] = 1;
+  const step = Math.max(1, Math.floor(out.vertexCount / sample));
+  const errs: number[] = [];
+  let nan = 0,
+    blended = 0,
+    worst = '',
+    worstD = -1;
+  for (let v = 0; v < out.vertexCount; v += step) {
+    if (!used[v]) continue;
+    const [w0, w1, w2] = decodeBary(out.bary[v]);
+    const t = out.srcTri[v];
+    const w: [number, number, number] = [w0 / 65536, w1 / 65536, w2 / 65536];
+    const p = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
+    if (!p.every(Number.isFinite)) {
+      nan++;
+      continue;
+    }
+    const r = ref.at(t, w);
+    if (r.blended) {
+      blended++;
+      continue;
+    }
+    const d = Math.hypot(p[0] - r.ref.P[0], p[1] - r.ref.P[1], p[2] - r.ref.P[2]) / ref.mesh.size;
+    if (d > worstD) {
+      worstD = d;
+      worst = `tri ${t} face ${r.face} w ${w.map((x) => x.toFixed(5))}`;
+    }
+    errs.push(d);
+  }
+  errs.sort((a, b) => a - b);
+  return { errs, max: errs[errs.length - 1] ?? 0, p99: errs[Math.floor(0.99 * (errs.length - 1))] ?? 0, nan, blended, worst };
 }

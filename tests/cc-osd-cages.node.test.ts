@@ -11,13 +11,12 @@
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice, testCamera } from './gpu-device.ts';
-import { CCReference } from './cc-checks.ts';
+import { CCReference, outputErrors, tessellateCC } from './cc-checks.ts';
 import { Tessellator } from '../src/gpu/tessellator.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
-import { readMesh } from '../src/gpu/readback.ts';
+import type { MeshReadback } from '../src/gpu/readback.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { decodeBary } from '../src/gpu/contract.ts';
 import { loadCage } from '../src/mesh/index.ts';
 
 const DIR = '../shared/cages';
@@ -71,15 +70,11 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
         if (!/not supported|unsupported/i.test(msg)) failures.push(`${name}: ${msg}`);
         continue;
       }
-      device.pushErrorScope('validation');
-      tess.setMesh(mesh, cc);
-      const enc = device.createCommandEncoder();
-      tess.encode(enc, testCamera(mesh, 1.5 * mesh.size, 3));
-      device.queue.submit([enc.finish()]);
-      const out = await readMesh(device, tess.output);
-      const err = (await device.popErrorScope())?.message;
-      if (err) {
-        failures.push(`${name}: ${err}`);
+      let out: MeshReadback;
+      try {
+        out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 3));
+      } catch (e) {
+        failures.push(`${name}: ${(e as Error).message}`);
         continue;
       }
       const ref = new CCReference(cage, mesh, cc);
@@ -93,24 +88,8 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
         const same = [0, 1, 2].every((i) => out.positions[3 * v + i] === mesh.positions[3 * v + i]);
         if (!same || out.srcTri[v] !== 0xffffffff) failures.push(`${name}: unused vertex ${v} holds stale data`);
       }
-      const step = Math.max(1, Math.floor(out.vertexCount / SAMPLE));
-      let max = 0,
-        nan = 0,
-        checked = 0;
-      for (let v = 0; v < out.vertexCount; v += step) {
-        if (!used[v]) continue;
-        const b = out.bary[v];
-        const [, w1, w2] = decodeBary(b);
-        const r = ref.at(out.srcTri[v], [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536]);
-        const p = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
-        if (!p.every(Number.isFinite)) {
-          nan++;
-          continue;
-        }
-        if (r.blended) continue;
-        checked++;
-        max = Math.max(max, Math.hypot(p[0] - r.ref.P[0], p[1] - r.ref.P[1], p[2] - r.ref.P[2]) / mesh.size);
-      }
+      const { errs, max, nan } = outputErrors(ref, out, SAMPLE);
+      const checked = errs.length;
       const faces = cage.faceOffsets.length - 1;
       rows.push(
         `${name}: ${faces} faces, ${Math.round(cc.gpuBytes / faces)} B/face, levels ${cc.levels}, checked ${checked}, max ${max.toExponential(2)}`,

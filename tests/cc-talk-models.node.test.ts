@@ -10,13 +10,11 @@
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice, testCamera } from './gpu-device.ts';
-import { CCReference } from './cc-checks.ts';
+import { CCReference, outputErrors, tessellateCC } from './cc-checks.ts';
 import { Tessellator } from '../src/gpu/tessellator.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
-import { readMesh } from '../src/gpu/readback.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { decodeBary } from '../src/gpu/contract.ts';
 import { loadCage } from '../src/mesh/index.ts';
 
 const DIR = '../shared/cages';
@@ -58,46 +56,8 @@ describe.skipIf(!present)("Catmull-Clark on the talk's models", () => {
         surface: 'catmull-clark',
         flatBaseline: false,
       });
-      device.pushErrorScope('validation');
-      tess.setMesh(mesh, cc);
-      const enc = device.createCommandEncoder();
-      tess.encode(enc, testCamera(mesh, 1.5 * mesh.size, 3));
-      device.queue.submit([enc.finish()]);
-      const out = await readMesh(device, tess.output);
-      expect((await device.popErrorScope())?.message).toBeUndefined();
-
-      const ref = new CCReference(cage, mesh, cc);
-      const step = Math.max(1, Math.floor(out.vertexCount / SAMPLE));
-      const errs: number[] = [];
-      let blended = 0,
-        nan = 0,
-        worst = '',
-        worstD = 0;
-      for (let v = 0; v < out.vertexCount; v += step) {
-        const b = out.bary[v];
-        const [, w1, w2] = decodeBary(b);
-        const t = out.srcTri[v];
-        const w: [number, number, number] = [(65536 - w1 - w2) / 65536, w1 / 65536, w2 / 65536];
-        const r = ref.at(t, w);
-        const p = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
-        if (!p.every(Number.isFinite)) {
-          nan++;
-          continue;
-        }
-        if (r.blended) {
-          blended++;
-          continue;
-        }
-        const d = Math.hypot(p[0] - r.ref.P[0], p[1] - r.ref.P[1], p[2] - r.ref.P[2]) / mesh.size;
-        if (d > worstD) {
-          worstD = d;
-          worst = `tri ${t} face ${r.face} w ${w.map((x) => x.toFixed(5))}`;
-        }
-        errs.push(d);
-      }
-      errs.sort((a, b) => a - b);
-      const max = errs[errs.length - 1] ?? 0;
-      const p99 = errs[Math.floor(0.99 * (errs.length - 1))] ?? 0;
+      const out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 3));
+      const { errs, max, p99, nan, blended, worst } = outputErrors(new CCReference(cage, mesh, cc), out, SAMPLE);
       console.log(
         name,
         JSON.stringify({

@@ -17,7 +17,8 @@ import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
 import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './cc/shaders.ts';
 import { TESS_INPUTS, tessPrelude } from './contract.ts';
 import type { Cage } from '../mesh/index.ts';
-import { ACC_SURFACE_WGSL, type AccPatches, accBindingsWgsl, accFaceParam } from './acc.ts';
+import { ACC_SURFACE_WGSL, type AccPatches, accBindingsWgsl } from './acc.ts';
+import { accTriangleWords } from './acc-surface.ts';
 import type { PreparedMesh } from './prepare.ts';
 import { readBuffer } from './readback.ts';
 import type { Tessellator } from './tessellator.ts';
@@ -51,22 +52,10 @@ fn accErrors(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
 
 const pipelines = new WeakMap<GPUDevice, GPUComputePipeline>();
 
-/** Per cage triangle: its face << 6 | the ACC (u, v) of its corners (bit 2i: u_i, bit 2i + 1: v_i). */
+/** Per cage triangle: its face and the ACC (u, v) of its corners (contract.ts ACC_TRI_WORD:
+ * face << 6 | bit 2i: u_i, bit 2i + 1: v_i), as the compute tessellator's ACC surface reads them. */
 export function accTriangleMap(mesh: PreparedMesh, cage: Cage): Uint32Array {
-  const out = new Uint32Array(Math.max(1, mesh.triangleCount));
-  for (let t = 0; t < mesh.triangleCount; t++) {
-    let bits = 0,
-      face = 0;
-    for (let i = 0; i < 3; i++) {
-      const w: [number, number, number] = [0, 0, 0];
-      w[i] = 1;
-      const [f, u, v] = accFaceParam(mesh, cage, t, w);
-      face = f;
-      bits |= (u << (2 * i)) | (v << (2 * i + 1));
-    }
-    out[t] = (face << 6) | bits;
-  }
-  return out;
+  return mesh.triangleCount ? accTriangleWords(mesh, cage) : new Uint32Array(1);
 }
 
 export class AccErrorView {
