@@ -341,6 +341,11 @@ describe('shared constants', () => {
     // No packed word shifted by hand in the Catmull-Clark shaders.
     const surface = readFileSync(new URL('../wgsl/surface-cc.wgsl', import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
     for (const code of [cc, surface]) expect(code).not.toMatch(/>> \d+u\)? & |& (255|63|15|3|0xfff+)u\b/);
+    // The instanced tessellator's and the ACC build's compute shaders likewise (constantsWgsl).
+    for (const f of ['instanced-levels', 'instanced-headless', 'acc-build']) {
+      const code = readFileSync(new URL(`../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      expect(code, f).not.toMatch(/const (GRID_X|WORKGROUP_SIZE)\b|\b65535u?\b|\* 64u|workgroup_size\(64\)/);
+    }
     // What the old shaders typed by hand, now from the prelude.
     expect(GRID_X).toBe(65535);
     expect([WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE]).toEqual([64, 256]);

@@ -36,7 +36,6 @@ const KIND_GREGORY_TRI: u32 = 3u;
 const KIND_PM_QUAD: u32 = 4u;
 const KIND_PM_TRI: u32 = 5u;
 const KIND_PM_TRI_LS: u32 = 6u;
-const GRID_X: u32 = 65535u;
 const SECTOR_CREASE: u32 = 1u;
 const SECTOR_CORNER: u32 = 2u;
 const SECTOR_CONE: u32 = 3u;
@@ -352,9 +351,9 @@ fn pmPatch(m: u32, ls: bool) {
   if (m == 3u) { put(18u, centre); }
 }
 
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn buildPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let thread = (wid.y * GRID_X + wid.x) * 64u + lid;
+  let thread = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (thread >= bp.nPatches) { return; }
   let f = accStatic[bp.offOrder + thread];
   let kind = accPatchesB[2u * f];

@@ -13,9 +13,9 @@
 @group(2) @binding(2) var<storage, read_write> outU32: array<u32>;
 
 // One thread per (instance, pattern vertex) and per (instance, pattern triangle) of one bucket.
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn headless(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let g = (wid.y * 65535u + wid.x) * 64u + lid;
+  let g = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   let nv = bucket.vertexCount;
   let nt = bucket.triangleCount;
   if (g < bucket.instances * nv) {

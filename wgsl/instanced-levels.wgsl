@@ -26,9 +26,8 @@
 @group(0) @binding(3) var<storage, read_write> work: array<atomic<u32>>;
 @group(0) @binding(4) var<storage, read_write> drawArgs: array<u32>;
 
-const GRID_X: u32 = 65535u;
 
-fn flatIndex(wid: vec3<u32>, lid: u32) -> u32 { return (wid.y * GRID_X + wid.x) * 64u + lid; }
+fn flatIndex(wid: vec3<u32>, lid: u32) -> u32 { return (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid; }
 
 // A level as log2, rounded down to a power of two in [1, 64].
 fn levelLog2(L: u32) -> u32 { return min(firstLeadingBit(max(L, 1u)), LEVELS - 1u); }
@@ -41,7 +40,7 @@ fn wantedLog2(p: u32) -> u32 {
 fn edgeLog2(e: u32) -> u32 { return LEVELS - atomicLoad(&work[params.offEdgeCode + e]); }
 
 // Modes 0 and 1: every patch lowers its edges to its own level (max of 7 − log2 = min level).
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn patchEdges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let p = flatIndex(wid, lid);
   if (p >= params.nPatches) { return; }
@@ -57,13 +56,13 @@ fn patchEdges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_i
 // whose middle departs d pixels from its chord is matched by N uniform segments within d / N²
 // (exact for a quadratic), so N = sqrt(d / params.pixelError). L_e = the next power of two of
 // lodScale · max of the two, in [1, 64]. An edge with a point behind the eye takes staticLevel.
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn edgeView(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let e = flatIndex(wid, lid);
   if (e >= params.nEdges) { return; }
   let owner = staticBuf[params.offEdgeOwner + e];
-  let p = owner >> 2u;
-  let k = owner & 3u;
+  let p = instOwnerWord_patchId(owner);
+  let k = instOwnerWord_side(owner);
   let isTri = patchIsTri(p);
   var s: array<vec2<f32>, 3>;
   var behind = false;
@@ -85,7 +84,7 @@ fn edgeView(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
 }
 
 // Every patch: its pattern level, then a slot in its bucket's list.
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn bucketPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let p = flatIndex(wid, lid);
   if (p >= params.nPatches) { return; }

@@ -15,7 +15,7 @@
  */
 import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
 import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './cc/shaders.ts';
-import { TESS_INPUTS, tessPrelude } from './contract.ts';
+import { groupsFor, TESS_INPUTS, tessPrelude } from './contract.ts';
 import type { Cage } from '../mesh/index.ts';
 import { ACC_SURFACE_WGSL, type AccPatches, accBindingsWgsl } from './acc.ts';
 import { accTriangleWords } from './acc-surface.ts';
@@ -23,17 +23,13 @@ import type { PreparedMesh } from './prepare.ts';
 import { readBuffer } from './readback.ts';
 import type { Tessellator } from './tessellator.ts';
 
-const WG = 64;
-const GRID_X = 65535;
-const grid = (groups: number): [number, number] => (groups <= GRID_X ? [Math.max(1, groups), 1] : [GRID_X, Math.ceil(groups / GRID_X)]);
-
 const KERNEL = /* wgsl */ `
 @group(0) @binding(4) var<storage, read> errIn: array<u32>;          // (t, w1, w2) per point
 @group(0) @binding(5) var<storage, read_write> errOut: array<f32>;   // (distance, degrees) per point
 @group(0) @binding(6) var<storage, read> accTriMap: array<u32>;      // per cage triangle: face << 6 | (u_i, v_i) bits
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn accErrors(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let i = (wid.y * 65535u + wid.x) * 64u + lid;
+  let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (i >= arrayLength(&errIn) / 3u) { return; }
   let t = errIn[3u * i];
   let w1 = errIn[3u * i + 1u];
@@ -110,7 +106,7 @@ export class AccErrorView {
     pass.setPipeline(this.pipeline);
     pass.setBindGroup(0, g0);
     pass.setBindGroup(1, g1);
-    pass.dispatchWorkgroups(...grid(Math.ceil(count / WG)));
+    pass.dispatchWorkgroups(...groupsFor(count));
     pass.end();
   }
 

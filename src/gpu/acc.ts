@@ -36,12 +36,9 @@ import {
   valenceTable,
 } from '../subdiv/acc.ts';
 import { readBuffer } from './readback.ts';
+import { constantsWgsl, groupsFor } from './contract.ts';
 import { faceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
-
-const WG = 64;
-const GRID_X = 65535;
-const grid = (groups: number): [number, number] => (groups <= GRID_X ? [Math.max(1, groups), 1] : [GRID_X, Math.ceil(groups / GRID_X)]);
 
 /** Declarations of the two buffers surface-acc.wgsl reads, at the includer's group and bindings,
  * and the two accessors it reads them through (the compute tessellator defines the accessors over
@@ -142,7 +139,7 @@ export class AccPatches {
     device.queue.writeBuffer(this.paramsBuffer, 0, params);
     let pipe = buildPipelines.get(device);
     if (!pipe) {
-      const module = device.createShaderModule({ label: 'acc build', code: buildWgsl });
+      const module = device.createShaderModule({ label: 'acc build', code: [constantsWgsl, buildWgsl].join('\n') });
       pipe = device.createComputePipeline({ label: 'acc build', layout: 'auto', compute: { module, entryPoint: 'buildPatches' } });
       buildPipelines.set(device, pipe);
     }
@@ -174,7 +171,7 @@ export class AccPatches {
     const pass = encoder.beginComputePass({ label: `acc ${this.scheme} build` });
     pass.setPipeline(this.pipeline);
     pass.setBindGroup(0, this.group);
-    pass.dispatchWorkgroups(...grid(Math.ceil(this.topology.nPatches / WG)));
+    pass.dispatchWorkgroups(...groupsFor(this.topology.nPatches));
     pass.end();
   }
 
@@ -195,7 +192,7 @@ export class AccPatches {
       n = points.length;
     let pipe = samplePipelines.get(device);
     if (!pipe) {
-      const code = accBindingsWgsl(0, 0, 1) + ACC_SURFACE_WGSL + SAMPLE_KERNEL;
+      const code = constantsWgsl + accBindingsWgsl(0, 0, 1) + ACC_SURFACE_WGSL + SAMPLE_KERNEL;
       const module = device.createShaderModule({ label: 'acc samples', code });
       pipe = device.createComputePipeline({ label: 'acc samples', layout: 'auto', compute: { module, entryPoint: 'main' } });
       samplePipelines.set(device, pipe);
@@ -228,7 +225,7 @@ export class AccPatches {
     const pass = enc.beginComputePass({ label: 'acc samples' });
     pass.setPipeline(pipe);
     pass.setBindGroup(0, group);
-    pass.dispatchWorkgroups(...grid(Math.ceil(n / WG)));
+    pass.dispatchWorkgroups(...groupsFor(n));
     pass.end();
     device.queue.submit([enc.finish()]);
     const r = new Float32Array(await readBuffer(device, output, 24 * n));
@@ -262,9 +259,9 @@ export class AccPatches {
 const SAMPLE_KERNEL = /* wgsl */ `
 @group(0) @binding(2) var<storage, read> sampleIn: array<u32>;          // (patch, u bits, v bits)
 @group(0) @binding(3) var<storage, read_write> sampleOut: array<f32>;   // (pos, normal)
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let i = (wid.y * 65535u + wid.x) * 64u + lid;
+  let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (i >= arrayLength(&sampleIn) / 3u) { return; }
   let s = evalAccPatch(sampleIn[3u * i], bitcast<f32>(sampleIn[3u * i + 1u]), bitcast<f32>(sampleIn[3u * i + 2u]));
   for (var c = 0u; c < 3u; c++) {

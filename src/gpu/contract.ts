@@ -59,6 +59,19 @@ export function wgslConstants(constants: Readonly<Record<string, number>>): stri
     .concat('\n');
 }
 
+/** Workgroup counts as a 2D grid: WebGPU caps each dimension at GRID_X (an over-limit indirect
+ * dispatch silently does nothing; a direct one is a validation error). Shaders fold y back:
+ * (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid. */
+export function grid2d(groups: number): [number, number] {
+  if (groups <= GRID_X) return [Math.max(groups, 1), 1];
+  return [GRID_X, Math.ceil(groups / GRID_X)];
+}
+
+/** Workgroups of WORKGROUP_SIZE threads for one thread per item, folded into 2D. */
+export function groupsFor(items: number): [number, number] {
+  return grid2d(Math.ceil(items / WORKGROUP_SIZE));
+}
+
 /** The WGSL prelude of the shared constants. */
 export const constantsWgsl = wgslConstants(SHARED_CONSTANTS);
 

@@ -36,6 +36,7 @@ import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from './acc.ts';
 import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
+import { constantsWgsl, defineBits, grid2d, WORKGROUP_SIZE } from './contract.ts';
 import { readBuffer } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -96,6 +97,9 @@ export const INST_BUCKET = defineStruct('InstBucket', [
   ['outVertexTotal', 'u32'],
 ] as const);
 
+/** An edge's owner: the patch and which of its sides (edge k) it is (wgsl/instanced-levels.wgsl). */
+export const INST_OWNER_WORD = defineBits('InstOwnerWord', { side: [0, 2], patchId: [2, 30] });
+
 export const INST_FRAME = defineStruct('InstFrame', [
   ['viewProj', 'mat4x4<f32>'],
   ['lightViewProj', 'mat4x4<f32>'],
@@ -109,11 +113,6 @@ export const BUCKETS = 2 * POW2_LEVEL_COUNT;
 const BUCKET_STRIDE = 256;
 export const PATCH_WORDS = 8;
 const MODE = { static: 0, 'per-patch': 1, dynamic: 2 } as const;
-
-/** Workgroups as a 2D grid (each dimension is capped at 65535); the shaders fold y back. */
-function grid2d(groups: number): [number, number] {
-  return groups <= 65535 ? [Math.max(groups, 1), 1] : [65535, Math.ceil(groups / 65535)];
-}
 
 // ---- CPU side: patches and edges ------------------------------------------------------------
 
@@ -185,7 +184,7 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
         e = edgeVerts.length / 2;
         edgeIds.set(key, e);
         edgeVerts.push(Math.min(a, b), Math.max(a, b));
-        edgeOwner.push(4 * p + k);
+        edgeOwner.push(INST_OWNER_WORD.pack({ side: k, patchId: p }));
       }
       patches[o + 2 + k] = e;
       corners[4 * p + k] = a;
@@ -580,7 +579,8 @@ export class InstancedTessellator implements SurfaceDrawer {
     const surface = this.acc
       ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
       : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
-    const code = (...parts: string[]) => [INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
+    const code = (...parts: string[]) =>
+      [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
     this.code = code;
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
     const pipeline = (entryPoint: string) =>
@@ -1233,7 +1233,7 @@ export class InstancedTessellator implements SurfaceDrawer {
       const threads = counts[b] * Math.max(e.vertexCount, e.indexCount / 3);
       if (!threads) return;
       cp.setBindGroup(1, group, [BUCKET_STRIDE * b]);
-      cp.dispatchWorkgroups(...grid2d(Math.ceil(threads / 64)));
+      cp.dispatchWorkgroups(...grid2d(Math.ceil(threads / WORKGROUP_SIZE)));
     });
     cp.end();
     const resolve = querySet

@@ -41,7 +41,8 @@ import {
   CC_RANGE,
   EMIT_TRIANGLES_ARGS_OFFSET,
   type CcBuildBinding,
-  GRID_X,
+  grid2d,
+  groupsFor,
   SCAN_BLOCK,
   SCAN_GROUP,
   SCAN_PARAMS,
@@ -55,7 +56,6 @@ import {
   TESS_WORK,
   type TessBinding,
   type TessSizes,
-  WORKGROUP_SIZE,
 } from './contract.ts';
 import { outputCapacity } from './factors.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -65,17 +65,7 @@ import { PatternTables } from '../pattern/tables.ts';
 export { prepareMesh, type PreparedMesh } from './prepare.ts';
 export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPasses } from './tess-passes.ts';
 
-/** Workgroup counts as a 2D grid: WebGPU caps each dimension at 65535 (an over-limit
- * indirect dispatch silently does nothing; a direct one is a validation error). */
-export function grid2d(groups: number): [number, number] {
-  if (groups <= GRID_X) return [Math.max(groups, 1), 1];
-  return [GRID_X, Math.ceil(groups / GRID_X)];
-}
-
-/** Workgroups of WORKGROUP_SIZE threads for one thread per item, folded into 2D. */
-function groupsFor(items: number): [number, number] {
-  return grid2d(Math.ceil(items / WORKGROUP_SIZE));
-}
+export { grid2d } from './contract.ts';
 
 /** Compute passes one rebuild records (the patch build, factors and count + budget per attempt,
  * weld, plan + emit), each timed by a pair of timestamps. */

@@ -14,7 +14,7 @@ import { readBuffer } from '../readback.ts';
 const KERNEL = /* wgsl */ `
 @group(0) @binding(4) var<storage, read> samples: array<u32>;
 @group(0) @binding(5) var<storage, read_write> results: array<f32>;
-@compute @workgroup_size(64)
+@compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
   let i = gid.x;
   if (i >= arrayLength(&samples) / 3u) { return; }
