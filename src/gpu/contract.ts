@@ -117,6 +117,9 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
     if (used & mask) throw new Error(`${name}.${field} overlaps another field`);
     used |= mask;
   }
+  const fieldNames = entries.map(([f]) => f);
+  const fieldScale = entries.map(([, [at]]) => 2 ** at);
+  const fieldLimit = entries.map(([, [, bits]]) => 2 ** bits);
   const prefix = wgslPrefix(name);
   // Shifts and masks rather than extractBits/insertBits: the same bits, but Tint polyfills those
   // two builtins (clamping their offset and count) and a software GPU's compiler keeps the calls.
@@ -134,12 +137,16 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
     fields,
     wgsl,
     pack(values) {
+      // Hot (the Catmull-Clark preparation packs a word per refined point): plain arrays, no
+      // destructuring, no Number() of numbers.
       let w = 0;
-      for (const [f, [at, bits]] of entries) {
-        const raw: number | boolean = values[f];
-        const v = Number(raw);
-        if (!Number.isInteger(v) || v < 0 || v >= 2 ** bits) throw new Error(`${name}.${f} = ${raw} does not fit ${bits} bits`);
-        w += v * 2 ** at; // arithmetic, not <<: a field reaching bit 31 must stay positive
+      for (let i = 0; i < fieldNames.length; i++) {
+        const raw: number | boolean = values[fieldNames[i]];
+        const v = raw === true ? 1 : raw === false ? 0 : raw;
+        if (!(v >= 0 && v < fieldLimit[i]) || v !== Math.floor(v)) {
+          throw new Error(`${name}.${fieldNames[i]} = ${raw} does not fit ${entries[i][1][1]} bits`);
+        }
+        w += v * fieldScale[i]; // arithmetic, not <<: a field reaching bit 31 must stay positive
       }
       return w;
     },
