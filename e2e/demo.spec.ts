@@ -94,7 +94,15 @@ test('the patch-colour toggle changes the picture, and back', async ({ page }) =
   await expect(legend).toBeHidden();
   // The canvas, less the panels over it (timings change with every frame; the focus ring moves).
   const canvas = () => page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')] });
-  const before = await canvas();
+  // The masks are the panels' boxes at each shot, and the stats panel grows as its timings
+  // arrive: the reference is the first picture that the next one repeats.
+  let before = await canvas();
+  for (let i = 0; i < 40; i++) {
+    await page.waitForTimeout(250);
+    const again = await canvas();
+    if (Buffer.compare(again, before) === 0) break;
+    before = again;
+  }
   await control(page, 'patch colours').locator('input').check();
   await expect(legend).toBeVisible();
   await expect(legend).toContainText('crease');
