@@ -787,17 +787,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.mesh = { m, staticBuf, cageBuf, work, layout, meshGroup };
     const buckets = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
     const lists = this.listBases();
-    this.patterns.entries.forEach((e, b) => {
-      INST_BUCKET.write(new DataView(buckets, BUCKET_STRIDE * b), {
-        listBase: lists[b],
-        level: e.level,
-        domain: e.domain === 'tri' ? 1 : 0,
-        baseVertex: e.baseVertex,
-        firstIndex: e.firstIndex,
-        vertexCount: e.vertexCount,
-        triangleCount: e.indexCount / 3,
-      });
-    });
+    this.patterns.entries.forEach((_, b) => INST_BUCKET.write(new DataView(buckets, BUCKET_STRIDE * b), this.bucketFields(b, lists)));
     device.queue.writeBuffer(this.bucketUniform, 0, buckets);
   }
 
@@ -1204,15 +1194,9 @@ export class InstancedTessellator implements SurfaceDrawer {
       entries: [{ binding: 0, resource: { buffer: uniform, size: INST_BUCKET.size } }],
     });
     const lists = this.listBases();
-    this.patterns.entries.forEach((e, b) => {
+    this.patterns.entries.forEach((_, b) => {
       INST_BUCKET.write(new DataView(bytes, BUCKET_STRIDE * b), {
-        listBase: lists[b],
-        level: e.level,
-        domain: e.domain === 'tri' ? 1 : 0,
-        baseVertex: e.baseVertex,
-        firstIndex: e.firstIndex,
-        vertexCount: e.vertexCount,
-        triangleCount: e.indexCount / 3,
+        ...this.bucketFields(b, lists),
         outVertexBase: bases[b].v,
         outTriangleBase: bases[b].t,
         instances: counts[b],
@@ -1282,6 +1266,20 @@ export class InstancedTessellator implements SurfaceDrawer {
       edgeLevels: levels.edgeLevels,
       patchLevels: levels.patchLevels,
       timings,
+    };
+  }
+
+  /** Bucket b's pattern and patch list (INST_BUCKET fields shared by the draws and the headless pass). */
+  private bucketFields(b: number, lists: number[]) {
+    const e = this.patterns.entries[b];
+    return {
+      listBase: lists[b],
+      level: e.level,
+      domain: e.domain === 'tri' ? 1 : 0,
+      baseVertex: e.baseVertex,
+      firstIndex: e.firstIndex,
+      vertexCount: e.vertexCount,
+      triangleCount: e.indexCount / 3,
     };
   }
 

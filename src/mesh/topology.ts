@@ -114,24 +114,7 @@ export function buildHalfEdges(
   const nEdges = edgeHeA.length;
   const edgeVerts = Int32Array.from(edgeVertsA);
   // Vertex -> outgoing half-edges, vertex -> edges (CSR).
-  const vertHeOffsets = new Int32Array(nVerts + 1);
-  for (let h = 0; h < nHe; h++) vertHeOffsets[faceIndices[h] + 1]++;
-  for (let v = 0; v < nVerts; v++) vertHeOffsets[v + 1] += vertHeOffsets[v];
-  const vertHe = new Int32Array(nHe);
-  const fill = vertHeOffsets.slice(0, nVerts);
-  for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
-  const vertEdgeOffsets = new Int32Array(nVerts + 1);
-  for (let e = 0; e < nEdges; e++) {
-    vertEdgeOffsets[edgeVerts[2 * e] + 1]++;
-    vertEdgeOffsets[edgeVerts[2 * e + 1] + 1]++;
-  }
-  for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
-  const vertEdges = new Int32Array(2 * nEdges);
-  const fill2 = vertEdgeOffsets.slice(0, nVerts);
-  for (let e = 0; e < nEdges; e++) {
-    vertEdges[fill2[edgeVerts[2 * e]]++] = e;
-    vertEdges[fill2[edgeVerts[2 * e + 1]]++] = e;
-  }
+  const { vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges } = vertexAdjacency(nVerts, faceIndices, edgeVerts);
   return {
     he: {
       nVerts,
@@ -442,4 +425,37 @@ export function classify(topo: Topology, sharp: Sharpness): Classification {
     faceKind[f] = b - a !== 4 ? FaceKind.NonQuad : nearNQ ? FaceKind.QuadNextToNonQuad : allReg ? FaceKind.Regular : FaceKind.QuadIrregular;
   }
   return { faceKind, faceFlags, vertexRegular, vertexExtraordinary };
+}
+
+/**
+ * Vertex → outgoing half-edges and vertex → edges, as offset tables (CSR): half-edge h leaves
+ * faceIndices[h]; edge e joins edgeVerts[2e] and edgeVerts[2e + 1]. Shared by the cage's topology
+ * and the refined levels of src/gpu/cc/build.ts.
+ */
+export function vertexAdjacency(
+  nVerts: number,
+  faceIndices: ArrayLike<number>,
+  edgeVerts: ArrayLike<number>,
+): { vertHeOffsets: Int32Array; vertHe: Int32Array; vertEdgeOffsets: Int32Array; vertEdges: Int32Array } {
+  const nHe = faceIndices.length,
+    nEdges = edgeVerts.length / 2;
+  const vertHeOffsets = new Int32Array(nVerts + 1);
+  for (let h = 0; h < nHe; h++) vertHeOffsets[faceIndices[h] + 1]++;
+  for (let v = 0; v < nVerts; v++) vertHeOffsets[v + 1] += vertHeOffsets[v];
+  const vertHe = new Int32Array(nHe);
+  const fill = vertHeOffsets.slice(0, nVerts);
+  for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
+  const vertEdgeOffsets = new Int32Array(nVerts + 1);
+  for (let e = 0; e < nEdges; e++) {
+    vertEdgeOffsets[edgeVerts[2 * e] + 1]++;
+    vertEdgeOffsets[edgeVerts[2 * e + 1] + 1]++;
+  }
+  for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
+  const vertEdges = new Int32Array(2 * nEdges);
+  const fill2 = vertEdgeOffsets.slice(0, nVerts);
+  for (let e = 0; e < nEdges; e++) {
+    vertEdges[fill2[edgeVerts[2 * e]]++] = e;
+    vertEdges[fill2[edgeVerts[2 * e + 1]]++] = e;
+  }
+  return { vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges };
 }

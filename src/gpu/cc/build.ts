@@ -118,6 +118,7 @@ import {
   classify,
   computeSharpness,
   isRegularVertex,
+  vertexAdjacency,
   vertexRing,
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../prepare.ts';
@@ -435,24 +436,7 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
     edgeHe[e] = h;
     e++;
   }
-  const vertHeOffsets = new Int32Array(nVerts + 1);
-  for (let h = 0; h < nHe; h++) vertHeOffsets[faceIndices[h] + 1]++;
-  for (let v = 0; v < nVerts; v++) vertHeOffsets[v + 1] += vertHeOffsets[v];
-  const vertHe = new Int32Array(nHe);
-  const fill = vertHeOffsets.slice(0, nVerts);
-  for (let h = 0; h < nHe; h++) vertHe[fill[faceIndices[h]]++] = h;
-  const vertEdgeOffsets = new Int32Array(nVerts + 1);
-  for (let k = 0; k < nEdges; k++) {
-    vertEdgeOffsets[edgeVerts[2 * k] + 1]++;
-    vertEdgeOffsets[edgeVerts[2 * k + 1] + 1]++;
-  }
-  for (let v = 0; v < nVerts; v++) vertEdgeOffsets[v + 1] += vertEdgeOffsets[v];
-  const vertEdges = new Int32Array(2 * nEdges);
-  const fill2 = vertEdgeOffsets.slice(0, nVerts);
-  for (let k = 0; k < nEdges; k++) {
-    vertEdges[fill2[edgeVerts[2 * k]]++] = k;
-    vertEdges[fill2[edgeVerts[2 * k + 1]]++] = k;
-  }
+  const { vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges } = vertexAdjacency(nVerts, faceIndices, edgeVerts);
   return {
     nVerts,
     nFaces: nHp,
