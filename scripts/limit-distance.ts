@@ -36,7 +36,12 @@ export interface LimitDistance {
   worst: string;
 }
 
-export function limitDistancePx(cage: Cage, mesh: PreparedMesh, out: MeshReadback, view: DemoView): LimitDistance {
+export function limitDistancePx(
+  cage: Cage,
+  mesh: PreparedMesh,
+  out: MeshReadback,
+  view: Pick<DemoView, 'eye' | 'fovY' | 'viewportHeight'>,
+): LimitDistance {
   const S = new Surface(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
   const pixelAngle = view.fovY / view.viewportHeight;
   const used = new Uint8Array(out.vertexCount);

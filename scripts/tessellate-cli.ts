@@ -239,14 +239,11 @@ export async function main(argv: string[]): Promise<number> {
   }
   const cpuPrepMs = performance.now() - started;
   // The demo's first view (src/gpu/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
-  const view = args.demoView || args.limitPx ? demoView(mesh) : undefined;
-  if (args.demoView && view)
-    Object.assign(args.o, { eye: view.eye, target: view.target, fovY: view.fovY, viewportHeight: view.viewportHeight });
+  if (args.demoView) Object.assign(args.o, demoView(mesh));
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
-  const cam = headlessCamera(mesh, args.o);
-  const limit = args.limitPx
-    ? limitDistancePx(cage, mesh, r.out, { eye: cam.eye, target: [0, 0, 0], fovY: cam.fovY, viewportHeight: cam.viewportHeight })
-    : undefined;
+  // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
+  const cam = args.limitPx ? headlessCamera(mesh, args.o) : undefined;
+  const limit = cam ? limitDistancePx(cage, mesh, r.out, cam) : undefined;
   acc?.patches.destroy();
   if (args.out)
     writeFileSync(
