@@ -72,7 +72,7 @@ afterAll(() => {
 });
 
 /** Tessellate `cage` displaced by `map` with a tessellator over `surface`, read back. */
-async function run(surface: SurfaceKind, cage: Cage, map: HeightMap, e: Entry) {
+async function run(surface: SurfaceKind, cage: Cage, map: HeightMap, e: Entry, o: { fixed?: number; enabled?: boolean } = {}) {
   const device = await getDevice();
   const mesh = prepareMesh(cage);
   const tess = Tessellator.create(device, tables, { surface, flatBaseline: false, vertexCapacity: 1 << 18, triangleCapacity: 1 << 18 });
@@ -81,9 +81,9 @@ async function run(surface: SurfaceKind, cage: Cage, map: HeightMap, e: Entry) {
   const acc = surface.endsWith('-acc') ? prepareAccSurface(device, cage, mesh, surface as 'gregory-acc') : undefined;
   device.pushErrorScope('validation');
   tess.setMesh(mesh, cc, acc, prepareDisplacement(cage, mesh, map, e.wrap));
-  tess.setDisplacement({ scale: e.scale, midLevel: e.midLevel, enabled: true });
+  tess.setDisplacement({ scale: e.scale, midLevel: e.midLevel, enabled: o.enabled ?? true });
   const enc = device.createCommandEncoder();
-  tess.encode(enc, testCamera(mesh, 1.5 * mesh.size, FACTOR));
+  tess.encode(enc, testCamera(mesh, 1.5 * mesh.size, 'fixed' in o ? o.fixed : FACTOR));
   device.queue.submit([enc.finish()]);
   const out = await readMesh(device, tess.output);
   const edgeF = new Uint32Array(await readBuffer(device, tess.workBuffer, 4 * mesh.edgeCount, 4 * tess.workLayout.edgeF));
@@ -166,6 +166,27 @@ describe('displacement in the compute tessellator', () => {
   }
 
   const e = entries[0];
+  it(`the factor rule counts the heights (${e.model}, adaptive): no edge coarser than without them, some finer, none past 2 segments a texel`, async () => {
+    const { cage, map } = load(e);
+    const off = await run('catmull-clark', cage, map, e, { fixed: undefined, enabled: false });
+    const on = await run('catmull-clark', cage, map, e, { fixed: undefined, enabled: true });
+    const disp = prepareDisplacement(cage, off.mesh, map, e.wrap);
+    const texels = new Float32Array(disp.dispEdge.buffer);
+    let finer = 0;
+    for (let k = 0; k < off.mesh.edgeCount; k++) {
+      const a = off.edgeF[k] / 65536,
+        b = on.edgeF[k] / 65536;
+      expect(b).toBeGreaterThanOrEqual(a);
+      if (b > a) {
+        finer++;
+        expect(b).toBeLessThanOrEqual(2 * texels[3 * k + 2] * (1 + 1e-6) + 1e-4);
+      }
+    }
+    console.log(`${e.model}: ${finer} of ${off.mesh.edgeCount} edges finer; triangles ${off.out.triangleCount} → ${on.out.triangleCount}`);
+    expect(finer).toBeGreaterThan(0);
+    expect(on.out.triangleCount).toBeGreaterThan(off.out.triangleCount);
+  }, 300_000);
+
   for (const surface of ['phong', 'gregory-acc'] as const) {
     it(`${surface}, ${e.model}: every output vertex on the f64 surface + h·N, watertight`, async () => {
       const { cage, map } = load(e);
