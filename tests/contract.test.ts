@@ -348,7 +348,7 @@ describe('shared constants', () => {
     }
     // What the old shaders typed by hand, now from the prelude.
     expect(GRID_X).toBe(65535);
-    expect([WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE]).toEqual([64, 256]);
+    expect([WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE]).toEqual([64, 128]);
   });
 });
 

@@ -180,7 +180,7 @@ describe.each(SURFACES)('the pipeline with the $surface surface', (s) => {
 
   it('fails with compatibility mode’s own limits (why createGpu asks for PIPELINE_LIMITS)', async () => {
     const r = await runPipeline(devices['compatibility mode, its defaults'], cageOf(MODELS[0]), s);
-    expect(r.errors.join('\n')).toMatch(/workgroup_size|maxStorageBuffersInVertexStage/);
+    expect(r.errors.join('\n')).toMatch(/maxStorageBuffersInVertexStage/);
   });
 
   // Each of PIPELINE_LIMITS is needed: with all the others raised, the pipeline still fails.

@@ -1,10 +1,11 @@
 // Displacement over the surface (issue 12), in the same pass that evaluates the surface: the
-// weld and emit passes write surfaceAt(t, w) (wgsl/tess-outputs.wgsl), which is the surface
-// module's evalSurface moved along its normal by the height map:
+// weld and emit passes write surfaceAt(t, w) (wgsl/tess-outputs.wgsl), the surface module's
+// evalSurface passed through displacePoint here, which moves it along its normal by the map:
 //   P' = P + h·N,  h = (sample(uv) − dispMid)·dispScale,
 //   N' = normalize(N − ∇h), ∇h the surface gradient of h from the surface's tangents.
 // The CPU reference is src/subdiv/displace.ts (f64); the data layout and the seam rule are in
-// src/gpu/displacement.ts. Needs the tessellator's prelude, tess-common.wgsl and a surface module.
+// src/gpu/displacement.ts. Needs the tessellator's prelude and tess-common.wgsl (params,
+// staticBuf, cageBuf, SurfacePoint, the DispTriWord getters); nothing of the surface module.
 //
 // Parameters. Every surface gives its tangents along the triangle's own weights (SurfacePoint
 // du = ∂P/∂w1, dv = ∂P/∂w2, moving w0 = 1 − w1 − w2 with them), and the uv is interpolated over
@@ -146,10 +147,10 @@ fn dispUvFrame(t: u32, w: vec3<f32>) -> UvFrame {
   return UvFrame(f.uv, st1.x * f.d1 + st1.y * f.d2, st2.x * f.d1 + st2.y * f.d2);
 }
 
-// The surface point of triangle t at weights wFixed, displaced when params.dispOn.
-fn surfaceAt(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
-  let s = evalSurface(t, wFixed);
-  if (params.dispOn == 0u) { return s; }
+// s (a surface point of triangle t at weights wFixed, tangents along w1, w2) moved by the height
+// map, its normal tilted by the height's gradient (for callers that evaluate the surface
+// themselves).
+fn displacePoint(t: u32, wFixed: vec3<u32>, s: SurfacePoint) -> SurfacePoint {
   let f = dispUvFrame(t, vec3<f32>(wFixed) / 65536.0);
   let hs = sampleHeight(f.uv);
   let h = (hs.value - params.dispMid) * params.dispScale;

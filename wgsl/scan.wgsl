@@ -1,6 +1,6 @@
 // Exclusive prefix sum of n u32 values inside the `work` buffer, reduce-then-scan in three
 // direct dispatches (WebGPU gives no forward-progress guarantee, so no single-pass lookback):
-//   scanBlocks   each workgroup scans BLOCK = SCAN_WORKGROUP_SIZE × SCAN_ITEMS (256 × 16) values (16 consecutive ones per thread,
+//   scanBlocks   each workgroup scans BLOCK = SCAN_WORKGROUP_SIZE × SCAN_ITEMS (128 × 32) values (32 consecutive ones per thread,
 //                summed serially, so a big scan needs few workgroups and few barriers) and
 //                writes its block total
 //   scanSums     one workgroup scans the block totals and writes the grand total at out[n]

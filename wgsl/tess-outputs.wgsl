@@ -1,5 +1,12 @@
 // Writing one vertex of the output mesh (src/gpu/types.ts), for the weld and emit passes.
 
+// The surface point of triangle t at weights w, displaced when params.dispOn (wgsl/displace.wgsl).
+fn surfaceAt(t: u32, w: vec3<u32>) -> SurfacePoint {
+  let s = evalSurface(t, w);
+  if (params.dispOn == 0u) { return s; }
+  return displacePoint(t, w, s);
+}
+
 fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
   if (index >= params.vertexCapacity) { return; }
   let s = surfaceAt(t, w); // the surface, displaced when displacement is on (wgsl/displace.wgsl)

@@ -34,11 +34,12 @@ import { defineStruct } from './layout.ts';
 
 /** Threads per workgroup of the tessellator's one-thread-per-item passes. */
 export const WORKGROUP_SIZE = 64;
-/** Threads per workgroup of the prefix-sum passes (wgsl/scan.wgsl). */
-export const SCAN_WORKGROUP_SIZE = 256;
+/** Threads per workgroup of the prefix-sum passes (wgsl/scan.wgsl): 128, the most WebGPU's
+ * compatibility mode allows (maxComputeInvocationsPerWorkgroup), so no pass needs more. */
+export const SCAN_WORKGROUP_SIZE = 128;
 /** Values each scan thread sums serially (wgsl/scan.wgsl): one scan workgroup covers
- * SCAN_WORKGROUP_SIZE × SCAN_ITEMS values. */
-export const SCAN_ITEMS = 16;
+ * SCAN_WORKGROUP_SIZE × SCAN_ITEMS = 4096 values. */
+export const SCAN_ITEMS = 32;
 /** Widest dispatch in x (WebGPU's default maxComputeWorkgroupsPerDimension); wider ones fold into y. */
 export const GRID_X = 65535;
 

@@ -37,15 +37,13 @@ export type LimitName =
 
 /**
  * What the demo's passes need beyond WebGPU compatibility mode's defaults:
- *  - 256 invocations along x: wgsl/scan.wgsl runs @workgroup_size(256) (compat: 128);
  *  - 2 read-only storage buffers in the vertex stage: the renderer's wireframe (indices and
  *    positions) and patch colours (source triangles and kinds) bind group (compat: 0).
+ * (Every compute pass fits compat's 128 invocations: wgsl/scan.wgsl runs 128 threads.)
  * Core WebGPU's defaults meet all of them. tests/limits.node.test.ts checks that a device with the
  * compatibility-mode defaults fails without them and runs the whole pipeline with them.
  */
 export const PIPELINE_LIMITS: Partial<Record<LimitName, number>> = {
-  maxComputeInvocationsPerWorkgroup: 256,
-  maxComputeWorkgroupSizeX: 256,
   maxStorageBuffersInVertexStage: 2,
 };
 
