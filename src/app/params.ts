@@ -58,7 +58,25 @@ export interface DemoParams {
   instSurface: InstancedSurface;
   /** The instanced tessellator's flat shading (`flatshade=1`): each facet by its own normal. */
   flatShade: boolean;
+  /** The ACC error views (`errorview=geometry|normal`; the NVIDIA sample's "Geometry Error" and
+   * "Normal Error"): an ACC surface coloured by its error against the exact Catmull-Clark limit
+   * at each output vertex; 'off' for the usual colours. */
+  errorView: ErrorView;
+  /** The top of the error colour bar (`errrange=`), in the view's unit: a fraction of the
+   * bounding-box diagonal (geometry) or degrees (normal); null: the view's default. */
+  errRange: number | null;
+  /** Comparison view (`compare=`): the left half draws `surface`, the right half this one, same
+   * cage and camera; null: off. */
+  compare: CompareSurface | null;
 }
+
+export type ErrorView = 'off' | 'geometry' | 'normal';
+export const ERROR_VIEWS: readonly ErrorView[] = ['off', 'geometry', 'normal'];
+/** What `errrange` may be (fractions of the diagonal are small, degrees up to 180). */
+export const ERR_RANGE = { min: 1e-7, max: 180 } as const;
+/** What the comparison's right half may draw: a tessellated surface. */
+export type CompareSurface = 'catmull-clark' | 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+export const COMPARE_SURFACES: readonly CompareSurface[] = ['catmull-clark', 'phong', ...ACC_SURFACES];
 
 export type InstancedSurface = 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
 export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
@@ -91,6 +109,9 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   split: false,
   instSurface: 'phong',
   flatShade: false,
+  errorView: 'off',
+  errRange: null,
+  compare: null,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -145,6 +166,11 @@ export function parseParams(search: string): DemoParams {
   const instSurface = q.get('instsurface')?.trim().toLowerCase();
   p.flatShade = bool(q.get('flatshade')) ?? p.flatShade;
   if (instSurface && (INSTANCED_SURFACES as readonly string[]).includes(instSurface)) p.instSurface = instSurface as InstancedSurface;
+  const errorView = q.get('errorview')?.trim().toLowerCase();
+  if (errorView === 'geometry' || errorView === 'normal' || errorView === 'off') p.errorView = errorView;
+  else if (errorView === 'position' || errorView === 'geom') p.errorView = 'geometry';
+  p.errRange = num(q.get('errrange'), ERR_RANGE.min, ERR_RANGE.max);
+  p.compare = compareSurface(q.get('compare'));
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -175,12 +201,24 @@ export function formatParams(p: DemoParams): string {
   if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
   if (p.instSurface !== d.instSurface) q.set('instsurface', p.instSurface);
   if (p.flatShade !== d.flatShade) q.set('flatshade', p.flatShade ? '1' : '0');
+  if (p.errorView !== d.errorView) q.set('errorview', p.errorView);
+  if (p.errRange !== null) q.set('errrange', String(p.errRange));
+  if (p.compare !== null) q.set('compare', p.compare);
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));
   if (p.dist !== null) q.set('dist', String(round(p.dist, 2)));
   const s = q.toString();
   return s ? `?${s}` : '';
+}
+
+/** A comparison surface by its URL name (the surface names, `cc` for Catmull-Clark); null for
+ * anything else (`off`, `0`, an unknown name). */
+function compareSurface(v: string | null): CompareSurface | null {
+  const s = v?.trim().toLowerCase();
+  if (!s) return null;
+  if (s === 'cc' || s === 'catmullclark') return 'catmull-clark';
+  return (COMPARE_SURFACES as readonly string[]).includes(s) ? (s as CompareSurface) : null;
 }
 
 function round(x: number, digits: number): number {
