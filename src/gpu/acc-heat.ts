@@ -155,6 +155,8 @@ export class AccHeatPass {
   readonly #layout: ReturnType<typeof HEAT_AUX.layout>;
   readonly #pipelines: Record<'args' | 'errors' | 'totals', GPUComputePipeline>;
   #readState: 'idle' | 'copied' | 'mapping' = 'idle';
+  /** The last pass's totals are not copied yet (the readback buffer was busy). */
+  #copyOwed = false;
   #last: HeatTotals | null = null;
 
   /**
@@ -264,10 +266,21 @@ export class AccHeatPass {
     errors.dispatchWorkgroups(1);
     errors.end();
 
-    if (this.#readState === 'idle') {
-      encoder.copyBufferToBuffer(this.aux, 4 * this.#layout.offset.header, this.#read, 0, 4 * HEADER_WORDS);
-      this.#readState = 'copied';
-    }
+    this.#copyOwed = true;
+    this.copyIfOwed(encoder);
+  }
+
+  /** Whether the last pass's totals still wait for the readback buffer (copyIfOwed in a later frame). */
+  get copyOwed(): boolean {
+    return this.#copyOwed;
+  }
+
+  /** Copy the last pass's totals for reading if they are owed and the readback buffer is free. */
+  copyIfOwed(encoder: GPUCommandEncoder): void {
+    if (!this.#copyOwed || this.#readState !== 'idle') return;
+    encoder.copyBufferToBuffer(this.aux, 4 * this.#layout.offset.header, this.#read, 0, 4 * HEADER_WORDS);
+    this.#readState = 'copied';
+    this.#copyOwed = false;
   }
 
   /** Whether totals are waiting to be read (a frame submitted after encode() copied them). */
