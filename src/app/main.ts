@@ -1106,15 +1106,16 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       demo.setErrorView(p.errorView, range);
     });
   errRange.domElement.title = 'The error drawn red: a fraction of the diagonal (geometry) or degrees (normal).';
+  // Shown where they apply (an ACC surface, or a comparison already asked for): the other
+  // surfaces' panel stays as it was.
   const showErrors = () => {
-    const acc =
-      (ACC_SURFACES as readonly string[]).includes(p.surface) ||
-      (p.compare !== null && (ACC_SURFACES as readonly string[]).includes(p.compare));
+    const acc = isAcc(p.surface) || isAcc(p.compare);
     errView.show(acc);
     errRange.show(acc && p.errorView !== 'off');
+    compare.show(acc || p.compare !== null);
   };
   const compareState = { compare: p.compare ?? 'off' };
-  view
+  const compare = view
     .add(compareState, 'compare', { off: 'off', ...Object.fromEntries(COMPARE_SURFACES.map((c) => [SURFACE_NAMES[c], c])) })
     .name('compare (right half)')
     .onChange((v: string) => {
