@@ -8,7 +8,7 @@
 
 fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
   let s = evalAccPatch(patchWord(p, 6u), f32(i) / f32(P), f32(j) / f32(P));
-  return SurfacePoint(s.pos, s.normal);
+  return SurfacePoint(s.pos, s.normal, s.du, s.dv); // tangents along the patch's (u, v)
 }
 
 // Patch colours, the sample's "show irregular patches" (wgsl/render-instanced.wgsl;

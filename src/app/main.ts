@@ -23,7 +23,17 @@ import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
-import { ERR_RANGE, FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import {
+  DSCALE_RANGE,
+  ERR_RANGE,
+  FACTOR_RANGE,
+  formatParams,
+  isModelUrl,
+  LEVEL_CHOICES,
+  LOD_RANGE,
+  parseParams,
+  type DemoParams,
+} from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
 import type { LevelParams } from '../gpu/instanced.ts';
 import { AccError } from '../subdiv/acc.ts';
@@ -38,6 +48,8 @@ import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
+import { builtinHeight, decodeHeightImage, defaultHeightScale, fetchBuiltinHeight, type HeightEntry } from './displacement.ts';
+import { findEdge, uvCoverage, uvSeams } from '../mesh/index.ts';
 
 /** The surfaces by their names in the panel and in messages. */
 const SURFACE_NAMES: Record<DemoParams['surface'], string> = {
@@ -78,6 +90,9 @@ class TessellationDemo extends DemoBase {
   /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
    * the flat cage (for before/after). */
   #tess: Partial<Record<TessSurface, TessellatorGeometry>> = {};
+  /** Height maps by cage: the project's displaced models' (fetched with the OBJ) and PNGs the
+   * user dropped (src/app/displacement.ts). */
+  #heights = new WeakMap<LoadedModel['cage'], HeightEntry>();
   #flat: CageGeometry | null = null;
   #cageLines: CageLines | null = null;
   #counts: CountsReader | null = null;
@@ -343,7 +358,14 @@ class TessellationDemo extends DemoBase {
     if (this.#compareCage !== model.cage) {
       this.#compareCage = null;
       try {
-        this.#compare.setCage(model.cage, cc);
+        // Displaced as the left half is (the error views measure the surfaces before displacement).
+        this.#compare.setCage(model.cage, cc, this.#heights.get(model.cage)?.height ?? null);
+        const entry = this.#heights.get(model.cage);
+        this.#compare.setDisplacement({
+          enabled: this.params.disp && entry !== undefined,
+          scale: (entry?.scale ?? 0) * this.params.dscale,
+          midLevel: entry?.midLevel ?? 0.5,
+        });
       } catch (e) {
         this.#compareRefused = { cage: model.cage, surface: want, message: errorMessage(e) };
         showToast(errorMessage(e), {
@@ -719,7 +741,7 @@ class TessellationDemo extends DemoBase {
     const view = { viewProj, model: this.#modelMatrix, eye: m.eye };
     const options = {
       wireframe: this.params.wire,
-      cage: this.params.cage,
+      cage: this.params.cage || this.params.seams,
       patchColours: this.patchColours,
       heat: mainHeat ? heatView : null,
     };
@@ -911,7 +933,20 @@ class TessellationDemo extends DemoBase {
 
   /** Load one of the project's models (by name), a URL, or a file; the picker shows which. */
   loadBuiltin(name: string, camera?: CameraParams): Promise<boolean> {
-    return this.controller.loadModel(() => loadModelFromUrl(modelUrl(name), name), name, { camera, pick: name });
+    const dir = modelUrl(name).replace(/[^/]*$/, '');
+    const load = async (): Promise<LoadedModel> => {
+      // The height map comes with the OBJ, so the first upload already displaces.
+      const fetchHeight = async () => {
+        const d = await builtinHeight(name, dir);
+        return d ? fetchBuiltinHeight(d, dir) : null;
+      };
+      const [model, height] = await Promise.all([loadModelFromUrl(modelUrl(name), name), fetchHeight().catch((e: Error) => e)]);
+      if (height instanceof Error)
+        showToast(`${height.message}\n\nShowing ${name} undisplaced.`, { kind: 'info', title: 'No height map', timeout: 8000 });
+      else if (height) this.#heights.set(model.cage, height);
+      return model;
+    };
+    return this.controller.loadModel(load, name, { camera, pick: name });
   }
 
   loadUrl(url: string, camera?: CameraParams): Promise<boolean> {
@@ -920,7 +955,80 @@ class TessellationDemo extends DemoBase {
   }
 
   loadFile(file: File): Promise<boolean> {
+    if (/\.png$/i.test(file.name) || file.type.startsWith('image/')) return this.loadHeightMap(file);
     return this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
+  }
+
+  /**
+   * A user's PNG height map on the shown model. It needs uvs on every face corner; a file that
+   * is not an image (or a model without uvs) leaves the current map as it was and says why.
+   */
+  async loadHeightMap(file: Blob & { name: string }): Promise<boolean> {
+    const model = this.model;
+    const fail = (message: string) => {
+      showToast(`${message}\n\nThe height map shown before is kept.`, { kind: 'error', title: `Cannot use ${file.name}` });
+      return false;
+    };
+    if (!model) return fail('No model is shown yet.');
+    if (uvCoverage(model.cage) !== 'complete')
+      return fail(`${model.title} has no texture coordinates on every face corner (OBJ vt and f v/vt): a height map needs them.`);
+    let map: HeightEntry['height']['map'];
+    try {
+      map = await decodeHeightImage(file, file.name);
+    } catch (e) {
+      return fail((e as Error).message);
+    }
+    if (this.model !== model) return false; // another model came meanwhile
+    const before = this.#heights.get(model.cage);
+    const entry: HeightEntry = {
+      height: { map, wrap: 'repeat' },
+      scale: before?.scale ?? defaultHeightScale(model.cage.positions),
+      midLevel: before?.midLevel ?? 0.5,
+      source: file.name,
+    };
+    try {
+      for (const tess of this.#allTessellators()) tess.setHeightMap(model.cage, entry.height);
+    } catch (e) {
+      if (before) for (const tess of this.#allTessellators()) tess.setHeightMap(model.cage, before.height);
+      return fail((e as Error).message);
+    }
+    this.#heights.set(model.cage, entry);
+    this.applyDisplacement();
+    showToast(`${file.name}: ${map.width}×${map.height}, ${map.bits}-bit, on ${model.title}.`, { title: 'Height map', timeout: 4000 });
+    return true;
+  }
+
+  /** The tessellators holding the model: the surface drawn and the comparison's. */
+  #allTessellators(): TessellatorGeometry[] {
+    return [...Object.values(this.#tess), this.#compare].filter((t): t is TessellatorGeometry => !!t);
+  }
+
+  /** The displacement settings (panel, URL) on the tessellator drawn; a redraw. */
+  applyDisplacement(model = this.model): void {
+    const entry = model ? this.#heights.get(model.cage) : undefined;
+    for (const tess of this.#allTessellators()) {
+      tess.setDisplacement({
+        enabled: this.params.disp && entry !== undefined,
+        scale: (entry?.scale ?? 0) * this.params.dscale,
+        midLevel: entry?.midLevel ?? 0.5,
+      });
+    }
+    this.invalidateGeometry();
+  }
+
+  /** The cage overlay's lines: plain, or the UV-seam view. */
+  uploadCageOverlay(model = this.model): void {
+    const renderer = this.#renderer;
+    if (!model || !renderer) return;
+    let seam: ((a: number, b: number) => boolean) | undefined;
+    if (this.params.seams && uvCoverage(model.cage) !== 'none') {
+      const seams = uvSeams(model.cage, model.topology).edge;
+      seam = (a, b) => seams[findEdge(model.topology, a, b)] === 1;
+    }
+    this.#cageLines?.vertices.destroy();
+    this.#cageLines = uploadCageLines(this.gpu.device, model.cage, seam);
+    renderer.setCage(this.#cageLines);
+    this.requestFrame();
   }
 
   /** World bounds, light and camera for the current model and up axis. */
@@ -939,7 +1047,8 @@ class TessellationDemo extends DemoBase {
     const renderer = this.#renderer;
     if (!renderer || !this.#flat) return;
     this.#flat.setCage(model.cage);
-    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined);
+    const height = this.#heights.get(model.cage)?.height ?? null;
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined, height);
     this.#closed = isClosed(model.cage, model.topology);
     renderer.setMesh(this.#geometryFor(surface)?.output ?? null, this.#closed);
     // The mesh bound may be another one now: the error views bind their values again.
@@ -947,12 +1056,10 @@ class TessellationDemo extends DemoBase {
     renderer.setHeat(null);
     this.#compareDirty = true;
     renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
-    this.#cageLines?.vertices.destroy();
-    this.#cageLines = uploadCageLines(this.gpu.device, model.cage);
-    renderer.setCage(this.#cageLines);
     if (this.#bounds) renderer.setBounds(this.#bounds);
     this.#syncDrawer(model, surface);
-    this.invalidateGeometry();
+    this.uploadCageOverlay(model);
+    this.applyDisplacement(model);
   }
 
   #initialCamera(bounds: Bounds, p?: CameraParams): OrbitCamera {
@@ -1008,6 +1115,7 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   const state = {
     model: initialModel,
     open: () => openFile(demo),
+    openHeight: () => openFile(demo, '.png,image/png'),
     reset: () => demo.resetCamera(),
     share: () => {
       const url = demo.shareUrl();
@@ -1129,6 +1237,24 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   view.add(p, 'wire').name('wireframe').onChange(redraw);
   view.add(p, 'cage').name('cage overlay').onChange(redraw);
   view.add(p, 'spin').name('turntable').onChange(redraw);
+  // Displacement by the model's height map (the project's displaced models have one; drop or
+  // open a PNG for a model with uvs).
+  const disp = gui.addFolder('Displacement');
+  const displaced = () => {
+    syncUrl(p);
+    demo.applyDisplacement();
+  };
+  disp.add(p, 'disp').name('displace').onChange(displaced);
+  disp.add(p, 'dscale', DSCALE_RANGE.min, DSCALE_RANGE.max, 0.05).name('scale (× the map’s)').onChange(displaced);
+  disp
+    .add(p, 'seams')
+    .name('UV seams')
+    .onChange(() => {
+      syncUrl(p);
+      demo.uploadCageOverlay();
+    });
+  disp.add(state, 'openHeight').name('open a PNG height map…');
+  if (p.disp && p.dscale === 1 && !p.seams) disp.close();
   view.add(state, 'reset').name('reset camera');
   view.add(state, 'share').name('copy link to this view');
   // NVIDIA's instanced power-of-two tessellator beside the compute one (closed unless in use).
@@ -1183,10 +1309,10 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   };
 }
 
-function openFile(demo: TessellationDemo): void {
+function openFile(demo: TessellationDemo, accept = '.obj,text/plain'): void {
   const input = document.createElement('input');
   input.type = 'file';
-  input.accept = '.obj,text/plain';
+  input.accept = accept;
   input.addEventListener('change', () => {
     const file = input.files?.[0];
     if (file) void demo.loadFile(file);

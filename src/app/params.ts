@@ -68,6 +68,12 @@ export interface DemoParams {
   /** Comparison view (`compare=`): the left half draws `surface`, the right half this one, same
    * cage and camera; null: off. */
   compare: CompareSurface | null;
+  /** Displacement by the model's height map (`disp=0` turns it off; models without one ignore it). */
+  disp: boolean;
+  /** The height map's scale, as a multiple of the model's own (`dscale=`). */
+  dscale: number;
+  /** The UV-seam view (`seams=1`): the cage's edges, UV seams highlighted. */
+  seams: boolean;
 }
 
 export type ErrorView = 'off' | 'geometry' | 'normal';
@@ -85,6 +91,7 @@ export const LOD_RANGE = { min: 0.05, max: 8 } as const;
 export const FACTOR_RANGE = { min: 1, max: 64 } as const;
 export const CAPACITY_RANGE = { min: 0.01, max: 16 } as const;
 export const LEVEL_CHOICES = [1, 2, 4, 8, 16, 32, 64] as const;
+export const DSCALE_RANGE = { min: -4, max: 4 } as const;
 
 export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
@@ -112,6 +119,9 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   errorView: 'off',
   errRange: null,
   compare: null,
+  disp: true,
+  dscale: 1,
+  seams: false,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -171,6 +181,9 @@ export function parseParams(search: string): DemoParams {
   else if (errorView === 'position' || errorView === 'geom') p.errorView = 'geometry';
   p.errRange = num(q.get('errrange'), ERR_RANGE.min, ERR_RANGE.max);
   p.compare = compareSurface(q.get('compare'));
+  p.disp = bool(q.get('disp')) ?? p.disp;
+  p.dscale = num(q.get('dscale'), DSCALE_RANGE.min, DSCALE_RANGE.max) ?? p.dscale;
+  p.seams = bool(q.get('seams')) ?? p.seams;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -204,6 +217,9 @@ export function formatParams(p: DemoParams): string {
   if (p.errorView !== d.errorView) q.set('errorview', p.errorView);
   if (p.errRange !== null) q.set('errrange', String(p.errRange));
   if (p.compare !== null) q.set('compare', p.compare);
+  if (p.disp !== d.disp) q.set('disp', p.disp ? '1' : '0');
+  if (p.dscale !== d.dscale) q.set('dscale', String(round(p.dscale, 3)));
+  if (p.seams !== d.seams) q.set('seams', p.seams ? '1' : '0');
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));
