@@ -30,6 +30,8 @@ import { bakeTables } from '../src/pattern/tables.ts';
 import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
+import { prepareAccSurface, type AccSurface as AccSurfaceData } from '../src/gpu/acc-surface.ts';
+import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
 
 const REPEATS = 5;
 
@@ -101,8 +103,9 @@ export async function timeRebuild(
   o: HeadlessOptions,
   repeats: number,
   cc?: CatmullClarkData,
+  acc?: AccSurfaceData,
 ): Promise<Run> {
-  tess.setMesh(mesh, cc);
+  tess.setMesh(mesh, cc, acc);
   const samples: Record<string, number>[] = [];
   for (let i = 0; i < repeats + 1; i++) {
     const enc = device.createCommandEncoder({ label: 'bench rebuild' });
@@ -255,6 +258,77 @@ export async function main(argv: string[]): Promise<number> {
   }
   tess.destroy();
 
+  // Every surface of the compute tessellator on the same cage at the same fixed factor: the
+  // tessellation's stages (the patch builds apart: the exact surface's is timed, the ACC build
+  // runs outside the tessellator's timed passes; BENCHMARKS.md's ACC section times it).
+  const surfaceRows: string[] = [];
+  const surfaceTess = new Map<string, Tessellator>();
+  const surfaceOf = (surface: 'phong' | 'catmull-clark' | (typeof ACC_SCHEMES)[number]) => {
+    let t = surfaceTess.get(surface);
+    if (!t) surfaceTess.set(surface, (t = Tessellator.create(device, bakeTables(64), { surface, flatBaseline: false })));
+    return t;
+  };
+  // Round-robin: one rebuild of every surface per round, medians over the rounds, so that a
+  // shared machine's changing load falls on all of them alike.
+  const rounds = Math.max(repeats, REPEATS);
+  for (const file of models) {
+    const cage = loadCage(readFileSync(`public/models/${file}`, 'utf8')).cage;
+    const mesh = prepareMesh(cage);
+    const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
+    const entries: { name: string; tess: Tessellator; acc?: AccSurfaceData; samples: Record<string, number>[] }[] = [];
+    const refused = new Set<string>();
+    let ccData: CatmullClarkData | undefined;
+    try {
+      ccData = prepareCatmullClark(cage, mesh);
+    } catch {
+      refused.add('catmull-clark');
+    }
+    for (const name of ['phong', 'catmull-clark', ...ACC_SCHEMES] as const) {
+      if (refused.has(name)) continue;
+      let acc: AccSurfaceData | undefined;
+      if (name !== 'phong' && name !== 'catmull-clark') {
+        try {
+          acc = prepareAccSurface(device, cage, mesh, name);
+        } catch {
+          refused.add(name);
+          continue;
+        }
+      }
+      entries.push({ name, tess: surfaceOf(name), acc, samples: [] });
+    }
+    for (let round = 0; round < rounds + 1; round++) {
+      for (const e of entries) {
+        // Each tessellator holds one mesh at a time: set it again (CPU-side packing; not timed).
+        e.tess.setMesh(mesh, e.name === 'catmull-clark' ? ccData : undefined, e.acc);
+        const enc = device.createCommandEncoder({ label: 'bench surface rebuild' });
+        e.tess.encode(enc, cam);
+        device.queue.submit([enc.finish()]);
+        const t = await e.tess.readTimings();
+        if (round > 0) e.samples.push(t); // the first round warms up
+      }
+    }
+    const ms: Record<string, { tess: number; build: number }> = {};
+    for (const e of entries) {
+      const stages = Object.keys(e.samples[0] ?? {});
+      const med = (k: string) => median(e.samples.map((x) => x[k] ?? 0));
+      const build = stages.includes('subdivision') ? med('subdivision') : 0;
+      ms[e.name] = { tess: stages.filter((k) => k !== 'subdivision').reduce((a, k) => a + med(k), 0), build };
+      e.acc?.patches.destroy();
+    }
+    const exact = ms['catmull-clark'];
+    const cell = (name: string) => {
+      const m = ms[name];
+      if (!m) return 'refused';
+      if (name === 'catmull-clark') return `${m.tess.toFixed(3)} + ${m.build.toFixed(3)} build`;
+      return `${m.tess.toFixed(3)}${exact ? ` (${(m.tess / exact.tess).toFixed(2)}×)` : ''}`;
+    };
+    const out = new Uint32Array(await readBuffer(device, entries[0].tess.output.counts, 16));
+    const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${out[1]} | ${['phong', 'catmull-clark', ...ACC_SCHEMES].map(cell).join(' | ')} |`;
+    console.log(row);
+    surfaceRows.push(row);
+  }
+  for (const t of surfaceTess.values()) t.destroy();
+
   // Catmull-Clark: the talk's table (subdivision = the patch build from the cage, tessellation =
   // everything after it), and the draw passes per million triangles.
   const cc = Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' });
@@ -346,6 +420,20 @@ Written by \`npm run bench\` on ${new Date().toISOString().slice(0, 10)}.
 ${header}
 ${rule}
 ${rows.join('\n')}
+
+## Tessellation per surface at matched factors
+
+Every surface of the compute tessellator on the same cage, fixed factor ${fixedFactor} (so the same
+pattern: the same output counts), tessellation ms (factors, counts, weld, emit with the surface
+evaluated per vertex) and in brackets the ratio to exact Catmull-Clark's: medians of ${Math.max(repeats, REPEATS)} rounds
+that rebuild every surface once each (round-robin, after a warm-up round). The patch builds are
+apart: the exact surface's is given after its "+"; the ACC build runs outside the tessellator's
+timed passes (its time is in the ACC section below). Flat baseline off. On SwiftShader only the
+ratios mean anything. *refused*: the scheme does not take the cage (n-gons, holes).
+
+| model | cage tris | out tris | Phong ms | Catmull-Clark ms | Bezier ACC ms | Gregory ACC ms | Pm ACC ms |
+|---|---:|---:|---:|---:|---:|---:|---:|
+${surfaceRows.join('\n')}
 
 ## Catmull-Clark: the talk's table
 

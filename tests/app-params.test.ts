@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_PARAMS, FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams } from '../src/app/params.ts';
+import { DEFAULT_PARAMS, ERR_RANGE, FACTOR_RANGE, formatParams, isModelUrl, LOD_RANGE, parseParams } from '../src/app/params.ts';
 
 describe('URL parameters', () => {
   it('an empty query gives the defaults', () => {
@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&disp=0&dscale=2.5&seams=1',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&errorview=normal&errrange=2&compare=pm-acc&disp=0&dscale=2.5&seams=1',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -34,6 +34,9 @@ describe('URL parameters', () => {
       split: true,
       instSurface: 'gregory-acc',
       flatShade: true,
+      errorView: 'normal',
+      errRange: 2,
+      compare: 'pm-acc',
       disp: false,
       dscale: 2.5,
       seams: true,
@@ -124,6 +127,44 @@ describe('URL parameters', () => {
     expect(parseParams('?level=x').level).toBe(DEFAULT_PARAMS.level);
     expect(parseParams('?instsurface=bezier-acc').instSurface).toBe('bezier-acc');
     expect(parseParams('?instsurface=loop').instSurface).toBe('phong');
+  });
+
+  it('reads the ACC error view and its range (off and the default range unless asked; the range clamped)', () => {
+    expect(DEFAULT_PARAMS.errorView).toBe('off');
+    expect(DEFAULT_PARAMS.errRange).toBeNull();
+    expect(parseParams('?errorview=geometry').errorView).toBe('geometry');
+    expect(parseParams('?errorview=Normal').errorView).toBe('normal');
+    expect(parseParams('?errorview=position').errorView).toBe('geometry');
+    expect(parseParams('?errorview=off').errorView).toBe('off');
+    expect(parseParams('?errorview=heat').errorView).toBe('off');
+    expect(parseParams('?errrange=0.002').errRange).toBe(0.002);
+    expect(parseParams('?errrange=2.5').errRange).toBe(2.5);
+    expect(parseParams('?errrange=1000').errRange).toBe(ERR_RANGE.max);
+    expect(parseParams('?errrange=-1').errRange).toBe(ERR_RANGE.min);
+    expect(parseParams('?errrange=x').errRange).toBeNull();
+    expect(parseParams('?errrange=').errRange).toBeNull();
+  });
+
+  it('reads the comparison surface (a tessellated surface, or off)', () => {
+    expect(DEFAULT_PARAMS.compare).toBeNull();
+    expect(parseParams('?compare=gregory-acc').compare).toBe('gregory-acc');
+    expect(parseParams('?compare=PM-ACC').compare).toBe('pm-acc');
+    expect(parseParams('?compare=cc').compare).toBe('catmull-clark');
+    expect(parseParams('?compare=phong').compare).toBe('phong');
+    expect(parseParams('?compare=cage').compare).toBeNull();
+    expect(parseParams('?compare=off').compare).toBeNull();
+    expect(parseParams('?compare=loop').compare).toBeNull();
+  });
+
+  it('writes the error view, its range and the comparison back, and reads them again', () => {
+    const p = parseParams('?surface=bezier-acc&errorview=normal&errrange=3&compare=gregory-acc');
+    const q = formatParams(p);
+    expect(q).toContain('errorview=normal');
+    expect(q).toContain('errrange=3');
+    expect(q).toContain('compare=gregory-acc');
+    expect(parseParams(q)).toEqual(p);
+    expect(formatParams(DEFAULT_PARAMS)).toBe('');
+    expect(formatParams({ ...DEFAULT_PARAMS, errRange: 1e-4 })).toBe('?errrange=0.0001');
   });
 });
 

@@ -12,6 +12,7 @@ import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { isAccSurface, type Surface } from '../gpu/tess-passes.ts';
 import { prepareAccSurface, type AccSurface } from '../gpu/acc-surface.ts';
+import type { AccPatches } from '../gpu/acc.ts';
 import { prepareDisplacement, type DisplacementSettings } from '../gpu/displacement.ts';
 import type { PreparedMesh } from '../gpu/prepare.ts';
 import type { HeightMap, HeightWrap } from '../mesh/heightmap.ts';
@@ -76,6 +77,12 @@ const MAX_FACTOR = 64;
 
 let bakedTables: Uint32Array | null = null;
 
+/** The pattern tables every tessellator of the page uses (baked once). */
+export function patternTables(): Uint32Array {
+  bakedTables ??= bakeTables(MAX_FACTOR);
+  return bakedTables;
+}
+
 export class TessellatorGeometry implements GeometrySource {
   readonly kind = 'tessellator';
   readonly surface: TessSurface;
@@ -90,9 +97,8 @@ export class TessellatorGeometry implements GeometrySource {
   constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong') {
     this.#device = device;
     // The tables are baked in JavaScript from the same pattern code the tests check (~50 ms), once.
-    bakedTables ??= bakeTables(MAX_FACTOR);
     this.surface = surface;
-    this.#tessellator = Tessellator.create(device, bakedTables, { vertexCapacity: capacity, triangleCapacity: capacity, surface });
+    this.#tessellator = Tessellator.create(device, patternTables(), { vertexCapacity: capacity, triangleCapacity: capacity, surface });
   }
 
   /** Catmull-Clark: the flat-baseline blend at low tess factors (Tessellator.flatBaseline). */
@@ -102,6 +108,16 @@ export class TessellatorGeometry implements GeometrySource {
 
   set flatBaseline(on: boolean) {
     this.#tessellator.flatBaseline = on;
+  }
+
+  /** The ACC patches of the cage shown (an ACC surface; rebuilt by every encode), or undefined. */
+  get accPatches(): AccPatches | undefined {
+    return this.#hasMesh ? this.#acc?.patches : undefined;
+  }
+
+  /** The cage shown, prepared (its triangles are the output's srcTri). */
+  get prepared(): PreparedMesh | undefined {
+    return this.#hasMesh ? this.#tessellator.prepared : undefined;
   }
 
   get output(): TessellatedMesh | null {

@@ -23,10 +23,27 @@ import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
-import { DSCALE_RANGE, FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import {
+  DSCALE_RANGE,
+  ERR_RANGE,
+  FACTOR_RANGE,
+  formatParams,
+  isModelUrl,
+  LEVEL_CHOICES,
+  LOD_RANGE,
+  parseParams,
+  type DemoParams,
+} from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
 import type { LevelParams } from '../gpu/instanced.ts';
 import { AccError } from '../subdiv/acc.ts';
+import { HEAT_DEFAULT_RANGE, HEAT_RAMP, type HeatView } from '../gpu/acc-heat.ts';
+import type { Cage } from '../mesh/types.ts';
+import type { CatmullClarkData } from '../gpu/cc/build.ts';
+import { ErrorViews } from './error-views.ts';
+import { ACC_SURFACES, COMPARE_SURFACES, type CompareSurface } from './params.ts';
+import { degrees, percentOfDiagonal, type ErrorStats } from './stats.ts';
+import { errorMessage } from './controller.ts';
 import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
@@ -43,6 +60,11 @@ const SURFACE_NAMES: Record<DemoParams['surface'], string> = {
   'pm-acc': 'Pm ACC',
   cage: 'flat cage',
 };
+
+/** An ACC scheme (the surfaces the error views measure). */
+function isAcc(surface: string | null | undefined): surface is (typeof ACC_SURFACES)[number] {
+  return (ACC_SURFACES as readonly string[]).includes(surface ?? '');
+}
 
 /** Turntable speed, radians per second. */
 const SPIN_SPEED = 0.35;
@@ -82,6 +104,24 @@ class TessellationDemo extends DemoBase {
 
   /** Catmull-Clark data per cage (topology only, cached): the controller's surface data. */
   readonly #ccTables = new CcTableCache();
+  /** The same data once it has arrived (or why it cannot), for the error views' exact reference
+   * and a Catmull-Clark comparison, which the controller does not prepare it for. */
+  readonly #tablesDone = new WeakMap<Cage, CcTables | string>();
+  readonly #tablesAsked = new WeakSet<Cage>();
+
+  /** The ACC error views' passes (src/app/error-views.ts), made with the device. */
+  #errors: ErrorViews | null = null;
+  /** The error view's values the renderer has bound (their pass), to bind again only on change. */
+  #boundHeat: object | null = null;
+  /** The comparison view's right half (`compare=`): its own tessellator, the cage it holds, and
+   * the cage/surface it refused (drawn as nothing, with the reason in the stats). */
+  #compare: TessellatorGeometry | null = null;
+  #compareCage: Cage | null = null;
+  #compareDirty = true;
+  #compareRefused: { cage: Cage; surface: CompareSurface; message: string } | null = null;
+  #compareLabels: [HTMLElement, HTMLElement] | null = null;
+  /** Whether the model's cage is closed (the renderer culls back faces). */
+  #closed = false;
 
   /** The other factor mode's counts (an extra build, then the drawn one again), and when to redo it. */
   readonly #otherMode = new OtherModeProbe({
@@ -206,6 +246,8 @@ class TessellationDemo extends DemoBase {
     this.#flat = new CageGeometry(device);
     this.#counts = new CountsReader(device);
     this.#otherReader = new CountsReader(device);
+    this.#errors = new ErrorViews(device);
+    this.#boundHeat = null;
     this.#otherMode.reset();
     // After a device loss: upload the current model to the new device.
     this.controller.reupload();
@@ -221,6 +263,177 @@ class TessellationDemo extends DemoBase {
     this.#instancedCounts = null;
     this.#otherReader = null;
     this.#frameFactors = this.#builtFactors = null;
+    this.#errors = null;
+    this.#boundHeat = null;
+    this.#compare = null;
+    this.#compareCage = null;
+  }
+
+  /** The Catmull-Clark tables of `cage` if they have arrived; else asks for them (a frame is
+   * requested when they come) and answers null. A refused cage answers its reason. */
+  #tablesFor(cage: Cage): CatmullClarkData | string | null {
+    const done = this.#tablesDone.get(cage);
+    if (done !== undefined) return typeof done === 'string' ? done : done.data;
+    if (!this.#tablesAsked.has(cage)) {
+      this.#tablesAsked.add(cage);
+      this.#ccTables
+        .get(cage)
+        .then(
+          (t) => this.#tablesDone.set(cage, t),
+          (e: unknown) => this.#tablesDone.set(cage, errorMessage(e)),
+        )
+        .finally(() => {
+          // The error passes start with the next frame; a Catmull-Clark comparison builds then.
+          this.#compareDirty = true;
+          this.requestFrame();
+          this.updateStats(true);
+        });
+    }
+    return null;
+  }
+
+  /** The error views draw: asked for, and an ACC scheme is drawn by the compute tessellator. */
+  get errorViewActive(): boolean {
+    return (
+      this.params.errorView !== 'off' && isAcc(this.shownSurface) && this.model !== null && (!this.instancedActive || this.splitActive)
+    );
+  }
+
+  /** The comparison view: asked for, a surface is shown, and the instanced tessellator is off
+   * (its split view is the other use of the two halves). */
+  get compareActive(): boolean {
+    return this.params.compare !== null && this.shownSurface !== 'cage' && this.model !== null && !this.instancedActive;
+  }
+
+  /** The colour bar's top, in the view's unit. */
+  get errorRange(): number {
+    const view = this.params.errorView === 'normal' ? 'normal' : 'geometry';
+    return this.params.errRange ?? HEAT_DEFAULT_RANGE[view];
+  }
+
+  /** The comparison's surface (the panel, the URL); null: off. */
+  setCompare(surface: CompareSurface | null): void {
+    this.params.compare = surface;
+    this.#compare?.destroy();
+    this.#compare = null;
+    this.#compareCage = null;
+    this.#compareDirty = true;
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** The error view and its range (the panel, the URL). */
+  setErrorView(view: DemoParams['errorView'], range: number | null): void {
+    this.params.errorView = view;
+    this.params.errRange = range;
+    this.updateLegend();
+    this.invalidateGeometry();
+    this.updateStats(true);
+  }
+
+  /** The comparison's tessellator with the model's cage on it, made or re-uploaded as needed;
+   * null while its data is not there, or when it refused the cage. */
+  #compareGeometry(): TessellatorGeometry | null {
+    const model = this.model,
+      want = this.params.compare;
+    if (!model || !want) return null;
+    const refused = this.#compareRefused;
+    if (refused && refused.cage === model.cage && refused.surface === want) return null;
+    let cc: CatmullClarkData | undefined;
+    if (want === 'catmull-clark') {
+      const t = this.#tablesFor(model.cage);
+      if (t === null) return null;
+      if (typeof t === 'string') {
+        this.#compareRefused = { cage: model.cage, surface: want, message: t };
+        return null;
+      }
+      cc = t;
+    }
+    if (this.#compare && this.#compare.surface !== want) {
+      this.#compare.destroy();
+      this.#compare = null;
+    }
+    this.#compare ??= new TessellatorGeometry(this.gpu.device, this.params.capacity * 1e6, want);
+    if (this.#compareCage !== model.cage) {
+      this.#compareCage = null;
+      try {
+        // Displaced as the left half is (the error views measure the surfaces before displacement).
+        this.#compare.setCage(model.cage, cc, this.#heights.get(model.cage)?.height ?? null);
+        const entry = this.#heights.get(model.cage);
+        this.#compare.setDisplacement({
+          enabled: this.params.disp && entry !== undefined,
+          scale: (entry?.scale ?? 0) * this.params.dscale,
+          midLevel: entry?.midLevel ?? 0.5,
+        });
+      } catch (e) {
+        this.#compareRefused = { cage: model.cage, surface: want, message: errorMessage(e) };
+        showToast(errorMessage(e), {
+          kind: 'info',
+          title: `No ${SURFACE_NAMES[want]} surface to compare for ${model.title}`,
+          timeout: 10_000,
+        });
+        return null;
+      }
+      this.#compareCage = model.cage;
+      this.#compareDirty = true;
+    }
+    return this.#compare;
+  }
+
+  /** The error view's rows of the stats: the main surface and the comparison's right half. */
+  #errorStats(): ErrorStats[] {
+    const model = this.model,
+      errors = this.#errors;
+    if (!model || !errors || (this.params.errorView === 'off' && !this.compareActive)) return [];
+    const tables = this.#tablesDone.get(model.cage);
+    const unavailable = typeof tables === 'string' ? tables : null;
+    const out: ErrorStats[] = [];
+    const compare = this.compareActive;
+    const main = this.geometry instanceof TessellatorGeometry ? this.geometry : null;
+    if (isAcc(this.shownSurface) && (this.errorViewActive || compare))
+      out.push({ surface: this.shownSurface, side: compare ? 'left' : undefined, totals: errors.totals(main), unavailable });
+    const cmp = compare ? this.params.compare : null;
+    if (cmp && isAcc(cmp) && this.#compare && this.#compareCage === model.cage)
+      out.push({ surface: cmp, side: 'right', totals: errors.totals(this.#compare), unavailable });
+    return out;
+  }
+
+  /** The comparison's labels over the two halves: each surface and its max / RMS error. */
+  #updateCompareLabels(): void {
+    const on = this.compareActive && this.params.ui;
+    if (!on && !this.#compareLabels) return;
+    if (!this.#compareLabels) {
+      const make = (side: 'left' | 'right') => {
+        const el = document.createElement('div');
+        el.className = `compare-label ${side}`;
+        el.dataset.testid = `compare-${side}`;
+        document.body.append(el);
+        return el;
+      };
+      this.#compareLabels = [make('left'), make('right')];
+    }
+    const [left, right] = this.#compareLabels;
+    left.hidden = right.hidden = !on;
+    if (!on) return;
+    const stats = this.#errorStats();
+    const text = (surface: string, side: 'left' | 'right') => {
+      const name = SURFACE_NAMES[surface as DemoParams['surface']] ?? surface;
+      const e = stats.find((x) => x.side === side);
+      if (!isAcc(surface)) return surface === 'catmull-clark' ? `${name} · exact` : name;
+      if (!e?.totals) return `${name} · ${e?.unavailable ? 'no error view' : 'measuring…'}`;
+      const t = e.totals;
+      return this.params.errorView === 'normal'
+        ? `${name} · max ${degrees(t.maxAngle)} · RMS ${degrees(t.rmsAngle)}`
+        : `${name} · max ${percentOfDiagonal(t.maxDistance)} · RMS ${percentOfDiagonal(t.rmsDistance)}`;
+    };
+    left.textContent = text(this.shownSurface, 'left');
+    const cmp = this.params.compare!;
+    const refused = this.#compareRefused;
+    right.textContent =
+      refused && refused.cage === this.model?.cage && refused.surface === cmp
+        ? `${SURFACE_NAMES[cmp]} · unavailable for this cage`
+        : text(cmp, 'right');
   }
 
   /** The surface drawn now: the one asked for, but Phong where the model has no Catmull-Clark
@@ -366,6 +579,12 @@ class TessellationDemo extends DemoBase {
   updateLegend(): void {
     const legend = document.getElementById('legend');
     if (!legend) return;
+    this.#updateCompareLabels();
+    if (this.params.errorView !== 'off' && (this.errorViewActive || (this.compareActive && isAcc(this.params.compare)))) {
+      legend.hidden = false;
+      legend.innerHTML = this.#heatLegend(this.params.errorView);
+      return;
+    }
     legend.hidden = !this.patchColours;
     if (legend.hidden) return;
     const kinds = this.cc?.data.triKind ?? new Uint8Array();
@@ -392,6 +611,28 @@ class TessellationDemo extends DemoBase {
     legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
       (p) => `<li><span class="swatch" style="background:${hex(p.srgb)}"></span>${p.name} <span class="muted">${count[p.kind]}</span></li>`,
     ).join('')}</ul>`;
+  }
+
+  /** The heat map's legend: its name, the colour bar and its numbers, and the max / RMS. */
+  #heatLegend(view: HeatView): string {
+    const range = this.errorRange;
+    const fmt = (x: number) => (view === 'normal' ? degrees(x) : percentOfDiagonal(x));
+    const srgb = (c: readonly number[]) => `rgb(${c.map((x) => Math.round(255 * x)).join(', ')})`;
+    const stats = this.#errorStats().filter((e) => e.totals);
+    const totals = stats
+      .map((e) => {
+        const t = e.totals!;
+        const [max, rms] = view === 'normal' ? [t.maxAngle, t.rmsAngle] : [t.maxDistance, t.rmsDistance];
+        return `<li>${SURFACE_NAMES[e.surface]}${e.side ? ` (${e.side})` : ''}: max ${fmt(max)} · RMS ${fmt(rms)}</li>`;
+      })
+      .join('');
+    return (
+      `<strong>${view === 'normal' ? 'Normal error' : 'Geometry error'}</strong>` +
+      `<div class="heat-bar" data-testid="heat-bar" style="background: linear-gradient(to right, ${HEAT_RAMP.map(srgb).join(', ')})"></div>` +
+      `<div class="heat-ticks" data-testid="heat-ticks"><span>0</span><span>${fmt(range / 2)}</span><span>≥ ${fmt(range)}</span></div>` +
+      `<div class="muted">${view === 'normal' ? 'angle to the exact normal' : 'distance to the exact limit, of the diagonal'}</div>` +
+      (totals ? `<ul>${totals}</ul>` : '')
+    );
   }
 
   protected override isAnimating(): boolean {
@@ -452,6 +693,7 @@ class TessellationDemo extends DemoBase {
         this.#rebuilds++;
       } else instanced.copyIfOwed(encoder);
     }
+    const dirty = this.#geometryDirty;
     if (computeDrawn && this.#geometryDirty && geometry.output) {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
@@ -470,9 +712,55 @@ class TessellationDemo extends DemoBase {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
+    // The comparison's right half, rebuilt with the left one (and when it is new).
+    const compare = this.compareActive ? this.#compareGeometry() : null;
+    let compareRebuilt = false;
+    if (compare?.output && (dirty || this.#compareDirty)) {
+      compare.flatBaseline = this.params.flat;
+      compare.encode(encoder, factors);
+      this.#compareDirty = false;
+      compareRebuilt = true;
+      this.#rebuilds++;
+    }
+    // The error passes, after the builds they measure (and the first time, for a new pass).
+    const errors = this.#errors;
+    const main = computeDrawn && geometry instanceof TessellatorGeometry && isAcc(this.shownSurface) ? geometry : null;
+    const measured = [this.errorViewActive || compare ? main : null, compare && isAcc(compare.surface) ? compare : null];
+    errors?.retain(measured);
+    const tables = this.model && measured.some(Boolean) ? this.#tablesFor(this.model.cage) : null;
+    if (errors && this.model && tables && typeof tables !== 'string') {
+      measured.forEach((g, i) => {
+        if (g && errors.passFor(g, this.model!.cage, tables))
+          errors.encode(encoder, g, i ? compareRebuilt : this.#rebuiltThisFrame, factors);
+      });
+    }
+    const heatView = this.params.errorView === 'off' ? null : { view: this.params.errorView, range: this.errorRange };
+    const mainHeat = heatView && this.errorViewActive ? (errors?.ready(main) ?? null) : null;
+    this.#bindHeat(renderer, mainHeat);
+
     const view = { viewProj, model: this.#modelMatrix, eye: m.eye };
-    const options = { wireframe: this.params.wire, cage: this.params.cage || this.params.seams, patchColours: this.patchColours };
-    if (split && instanced) {
+    const options = {
+      wireframe: this.params.wire,
+      cage: this.params.cage || this.params.seams,
+      patchColours: this.patchColours,
+      heat: mainHeat ? heatView : null,
+    };
+    if (compare && geometry.output) {
+      // The same camera twice: the surface on the left half, the compared one on the right, each
+      // with its own shadow pass, timing slot and heat values.
+      renderer.render(encoder, target, view, { ...options, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
+      const cmpHeat = heatView && isAcc(compare.surface) ? (errors?.ready(compare) ?? null) : null;
+      renderer.setMesh(compare.output, this.#closed);
+      this.#bindHeat(renderer, cmpHeat);
+      renderer.render(encoder, target, view, {
+        ...options,
+        patchColours: options.patchColours && compare.surface === 'catmull-clark',
+        heat: cmpHeat ? heatView : null,
+        region: { x0: 0.5, x1: 1, first: false, slot: 1 },
+      });
+      renderer.setMesh(geometry.output, this.#closed);
+      this.#bindHeat(renderer, mainHeat);
+    } else if (split && instanced) {
       // The same camera twice: compute's stored mesh on the left half, the instanced
       // tessellator on the right, each with its own shadow pass and timing slot.
       renderer.setDrawer(null);
@@ -481,6 +769,13 @@ class TessellationDemo extends DemoBase {
       renderer.render(encoder, target, view, { ...options, region: { x0: 0.5, x1: 1, first: false, slot: 1 } });
       renderer.setDrawer(null);
     } else renderer.render(encoder, target, view, options);
+  }
+
+  /** Hand the renderer the values of `pass` (null: none), unless they are bound already. */
+  #bindHeat(renderer: Renderer, pass: { values: GPUBufferBinding } | null): void {
+    if (this.#boundHeat === pass) return;
+    renderer.setHeat(pass?.values ?? null);
+    this.#boundHeat = pass;
   }
 
   /**
@@ -538,6 +833,16 @@ class TessellationDemo extends DemoBase {
         if (counts) this.#instancedCounts = counts;
         this.updateStats();
         if (view.owed) this.requestFrame();
+      });
+    }
+    if (this.#errors) {
+      const errors = this.#errors;
+      void quietly(errors.read(), false).then((changed) => {
+        if (changed) {
+          this.updateStats();
+          this.updateLegend();
+        }
+        if (errors.copyOwed) this.requestFrame();
       });
     }
     void quietly(renderer?.readTimings(), {}).then((draw) => {
@@ -599,6 +904,16 @@ class TessellationDemo extends DemoBase {
       adapter: this.gpu.adapterName,
       memory: this.memory.counts,
       clamps: this.#clamps,
+      errors: this.#errorStats(),
+      compare: this.compareActive
+        ? {
+            surface: this.params.compare!,
+            refused:
+              this.#compareRefused?.cage === this.model?.cage && this.#compareRefused?.surface === this.params.compare
+                ? this.#compareRefused!.message
+                : null,
+          }
+        : null,
       instanced: this.instancedActive
         ? {
             split: this.splitActive,
@@ -672,9 +987,9 @@ class TessellationDemo extends DemoBase {
       source: file.name,
     };
     try {
-      for (const tess of Object.values(this.#tess)) tess?.setHeightMap(model.cage, entry.height);
+      for (const tess of this.#allTessellators()) tess.setHeightMap(model.cage, entry.height);
     } catch (e) {
-      if (before) for (const tess of Object.values(this.#tess)) tess?.setHeightMap(model.cage, before.height);
+      if (before) for (const tess of this.#allTessellators()) tess.setHeightMap(model.cage, before.height);
       return fail((e as Error).message);
     }
     this.#heights.set(model.cage, entry);
@@ -683,11 +998,16 @@ class TessellationDemo extends DemoBase {
     return true;
   }
 
+  /** The tessellators holding the model: the surface drawn and the comparison's. */
+  #allTessellators(): TessellatorGeometry[] {
+    return [...Object.values(this.#tess), this.#compare].filter((t): t is TessellatorGeometry => !!t);
+  }
+
   /** The displacement settings (panel, URL) on the tessellator drawn; a redraw. */
   applyDisplacement(model = this.model): void {
     const entry = model ? this.#heights.get(model.cage) : undefined;
-    for (const tess of Object.values(this.#tess)) {
-      tess?.setDisplacement({
+    for (const tess of this.#allTessellators()) {
+      tess.setDisplacement({
         enabled: this.params.disp && entry !== undefined,
         scale: (entry?.scale ?? 0) * this.params.dscale,
         midLevel: entry?.midLevel ?? 0.5,
@@ -729,7 +1049,12 @@ class TessellationDemo extends DemoBase {
     this.#flat.setCage(model.cage);
     const height = this.#heights.get(model.cage)?.height ?? null;
     if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined, height);
-    renderer.setMesh(this.#geometryFor(surface)?.output ?? null, isClosed(model.cage, model.topology));
+    this.#closed = isClosed(model.cage, model.topology);
+    renderer.setMesh(this.#geometryFor(surface)?.output ?? null, this.#closed);
+    // The mesh bound may be another one now: the error views bind their values again.
+    this.#boundHeat = null;
+    renderer.setHeat(null);
+    this.#compareDirty = true;
     renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
     if (this.#bounds) renderer.setBounds(this.#bounds);
     this.#syncDrawer(model, surface);
@@ -830,6 +1155,7 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
     .onChange(() => {
       syncUrl(p);
       showFlat();
+      showErrors();
       void demo.controller.setSurface(p.surface);
     });
   const flat = tess.add(p, 'flat').name('flat baseline').onChange(changed);
@@ -863,6 +1189,51 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       demo.updateLegend();
       redraw();
     });
+  // The ACC error views (the NVIDIA sample's names), for the ACC surfaces.
+  const errState = { range: demo.errorRange };
+  const errView = view
+    .add(p, 'errorView', { off: 'off', 'geometry error': 'geometry', 'normal error': 'normal' })
+    .name('error view')
+    .onChange((v: DemoParams['errorView']) => {
+      // A range typed for one unit means nothing in the other: back to the view's default.
+      p.errRange = null;
+      errState.range = demo.errorRange;
+      errRange.updateDisplay();
+      showErrors();
+      syncUrl(p);
+      demo.setErrorView(v, null);
+    });
+  const errRange = view
+    .add(errState, 'range')
+    .name('error range')
+    .onFinishChange((v: number) => {
+      const range = Number.isFinite(v) && v > 0 ? Math.min(ERR_RANGE.max, Math.max(ERR_RANGE.min, v)) : null;
+      errState.range = range ?? demo.errorRange;
+      errRange.updateDisplay();
+      syncUrl({ ...p, errRange: range });
+      demo.setErrorView(p.errorView, range);
+    });
+  errRange.domElement.title = 'The error drawn red: a fraction of the diagonal (geometry) or degrees (normal).';
+  // Shown where they apply (an ACC surface, or a comparison already asked for): the other
+  // surfaces' panel stays as it was.
+  const showErrors = () => {
+    const acc = isAcc(p.surface) || isAcc(p.compare);
+    errView.show(acc);
+    errRange.show(acc && p.errorView !== 'off');
+    compare.show(acc || p.compare !== null);
+  };
+  const compareState = { compare: p.compare ?? 'off' };
+  const compare = view
+    .add(compareState, 'compare', { off: 'off', ...Object.fromEntries(COMPARE_SURFACES.map((c) => [SURFACE_NAMES[c], c])) })
+    .name('compare (right half)')
+    .onChange((v: string) => {
+      const c = v === 'off' ? null : (v as CompareSurface);
+      p.compare = c;
+      syncUrl(p);
+      showErrors();
+      demo.setCompare(c);
+    });
+  showErrors();
   view.add(p, 'wire').name('wireframe').onChange(redraw);
   view.add(p, 'cage').name('cage overlay').onChange(redraw);
   view.add(p, 'spin').name('turntable').onChange(redraw);

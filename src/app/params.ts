@@ -58,6 +58,16 @@ export interface DemoParams {
   instSurface: InstancedSurface;
   /** The instanced tessellator's flat shading (`flatshade=1`): each facet by its own normal. */
   flatShade: boolean;
+  /** The ACC error views (`errorview=geometry|normal`; the NVIDIA sample's "Geometry Error" and
+   * "Normal Error"): an ACC surface coloured by its error against the exact Catmull-Clark limit
+   * at each output vertex; 'off' for the usual colours. */
+  errorView: ErrorView;
+  /** The top of the error colour bar (`errrange=`), in the view's unit: a fraction of the
+   * bounding-box diagonal (geometry) or degrees (normal); null: the view's default. */
+  errRange: number | null;
+  /** Comparison view (`compare=`): the left half draws `surface`, the right half this one, same
+   * cage and camera; null: off. */
+  compare: CompareSurface | null;
   /** Displacement by the model's height map (`disp=0` turns it off; models without one ignore it). */
   disp: boolean;
   /** The height map's scale, as a multiple of the model's own (`dscale=`). */
@@ -65,6 +75,14 @@ export interface DemoParams {
   /** The UV-seam view (`seams=1`): the cage's edges, UV seams highlighted. */
   seams: boolean;
 }
+
+export type ErrorView = 'off' | 'geometry' | 'normal';
+export const ERROR_VIEWS: readonly ErrorView[] = ['off', 'geometry', 'normal'];
+/** What `errrange` may be (fractions of the diagonal are small, degrees up to 180). */
+export const ERR_RANGE = { min: 1e-7, max: 180 } as const;
+/** What the comparison's right half may draw: a tessellated surface. */
+export type CompareSurface = 'catmull-clark' | 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+export const COMPARE_SURFACES: readonly CompareSurface[] = ['catmull-clark', 'phong', ...ACC_SURFACES];
 
 export type InstancedSurface = 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
 export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
@@ -98,6 +116,9 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   split: false,
   instSurface: 'phong',
   flatShade: false,
+  errorView: 'off',
+  errRange: null,
+  compare: null,
   disp: true,
   dscale: 1,
   seams: false,
@@ -155,6 +176,11 @@ export function parseParams(search: string): DemoParams {
   const instSurface = q.get('instsurface')?.trim().toLowerCase();
   p.flatShade = bool(q.get('flatshade')) ?? p.flatShade;
   if (instSurface && (INSTANCED_SURFACES as readonly string[]).includes(instSurface)) p.instSurface = instSurface as InstancedSurface;
+  const errorView = q.get('errorview')?.trim().toLowerCase();
+  if (errorView === 'geometry' || errorView === 'normal' || errorView === 'off') p.errorView = errorView;
+  else if (errorView === 'position' || errorView === 'geom') p.errorView = 'geometry';
+  p.errRange = num(q.get('errrange'), ERR_RANGE.min, ERR_RANGE.max);
+  p.compare = compareSurface(q.get('compare'));
   p.disp = bool(q.get('disp')) ?? p.disp;
   p.dscale = num(q.get('dscale'), DSCALE_RANGE.min, DSCALE_RANGE.max) ?? p.dscale;
   p.seams = bool(q.get('seams')) ?? p.seams;
@@ -188,6 +214,9 @@ export function formatParams(p: DemoParams): string {
   if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
   if (p.instSurface !== d.instSurface) q.set('instsurface', p.instSurface);
   if (p.flatShade !== d.flatShade) q.set('flatshade', p.flatShade ? '1' : '0');
+  if (p.errorView !== d.errorView) q.set('errorview', p.errorView);
+  if (p.errRange !== null) q.set('errrange', String(p.errRange));
+  if (p.compare !== null) q.set('compare', p.compare);
   if (p.disp !== d.disp) q.set('disp', p.disp ? '1' : '0');
   if (p.dscale !== d.dscale) q.set('dscale', String(round(p.dscale, 3)));
   if (p.seams !== d.seams) q.set('seams', p.seams ? '1' : '0');
@@ -197,6 +226,15 @@ export function formatParams(p: DemoParams): string {
   if (p.dist !== null) q.set('dist', String(round(p.dist, 2)));
   const s = q.toString();
   return s ? `?${s}` : '';
+}
+
+/** A comparison surface by its URL name (the surface names, `cc` for Catmull-Clark); null for
+ * anything else (`off`, `0`, an unknown name). */
+function compareSurface(v: string | null): CompareSurface | null {
+  const s = v?.trim().toLowerCase();
+  if (!s) return null;
+  if (s === 'cc' || s === 'catmullclark') return 'catmull-clark';
+  return (COMPARE_SURFACES as readonly string[]).includes(s) ? (s as CompareSurface) : null;
 }
 
 function round(x: number, digits: number): number {

@@ -6,6 +6,19 @@ import type { LoadedModel } from './models.ts';
 import type { MeshCounts } from './counts.ts';
 import type { GpuMemoryCounts } from '../gpu/tracked-device.ts';
 import type { InstancedCounts } from './instanced-view.ts';
+import type { HeatTotals } from '../gpu/acc-heat.ts';
+
+/** One ACC surface's error against the exact Catmull-Clark limit over its output vertices (the
+ * GPU error pass: src/gpu/acc-heat.ts), or why there is none. */
+export interface ErrorStats {
+  /** The surface measured ('bezier-acc', …) and where it is drawn (the comparison's halves). */
+  surface: SurfaceStats['shown'];
+  side?: 'left' | 'right';
+  /** Null while the first pass is read back. */
+  totals: HeatTotals | null;
+  /** Why it cannot be measured (no exact reference for this cage). */
+  unavailable?: string | null;
+}
 
 /** The surface drawn, and what the Catmull-Clark tables are (or why there are none). */
 export interface SurfaceStats {
@@ -49,6 +62,10 @@ export interface StatsInput {
   adapter: string;
   /** The page's live GPU buffers and textures (src/gpu/tracked-device.ts). */
   memory?: GpuMemoryCounts;
+  /** The ACC error views' max / RMS (the main surface, and the comparison's right half). */
+  errors?: ErrorStats[];
+  /** The comparison view's right half (`compare=`), and why it is not drawn if refused. */
+  compare?: { surface: SurfaceStats['shown']; refused?: string | null } | null;
   /** What the device's limits clamped (output buffers, budget), said once per device. */
   clamps?: string[];
   /** The instanced tessellator draws (`tessellator=instanced`): its draws' counts (null until
@@ -99,6 +116,28 @@ function row(label: string, value: string, testid?: string): string {
   return `<dt>${label}</dt><dd${testid ? ` data-testid="${testid}"` : ''}>${value}</dd>`;
 }
 
+/** A fraction of the diagonal as a percentage with 3 significant digits (0 stays 0). */
+export function percentOfDiagonal(x: number): string {
+  return x === 0 ? '0%' : `${x * 100 < 0.001 ? (x * 100).toExponential(2) : (x * 100).toPrecision(3)}%`;
+}
+
+/** Degrees with 3 significant digits. */
+export function degrees(x: number): string {
+  return x === 0 ? '0°' : `${x < 0.001 ? x.toExponential(2) : x.toPrecision(3)}°`;
+}
+
+function errorText(e: ErrorStats): string {
+  const name = `<b>${SURFACE_NAMES[e.surface]}</b>`;
+  if (e.unavailable) return `${name} <span class="warn">no error view: ${esc(e.unavailable)}</span>`;
+  const t = e.totals;
+  if (!t) return `${name} <span class="muted">measuring…</span>`;
+  return (
+    `${name} geometry max <span data-testid="err-max-geometry">${percentOfDiagonal(t.maxDistance)}</span> · RMS ${percentOfDiagonal(t.rmsDistance)}` +
+    ` · normal max <span data-testid="err-max-normal">${degrees(t.maxAngle)}</span> · RMS ${degrees(t.rmsAngle)}` +
+    ` <span class="muted">of the diagonal · ${int.format(t.vertices)} verts</span>`
+  );
+}
+
 export function renderStats(s: StatsInput): string {
   const rows: string[] = [];
   if (s.model) {
@@ -124,6 +163,18 @@ export function renderStats(s: StatsInput): string {
     else if (s.instanced && sf.shown !== 'cage') text = `<b>${instName}</b> <span class="muted">instanced tessellator</span>${refused}`;
     rows.push(row('surface', text, 'stats-surface'));
   }
+  if (s.compare) {
+    const cmp = s.compare;
+    rows.push(
+      row(
+        'compare',
+        `${s.surface ? SURFACE_NAMES[s.surface.shown] : '?'} (left) | <b>${SURFACE_NAMES[cmp.surface]}</b> (right)${cmp.refused ? ` <span class="warn">unavailable: ${esc(cmp.refused)}</span>` : ''}`,
+        'stats-compare',
+      ),
+    );
+  }
+  for (const e of s.errors ?? [])
+    rows.push(row(e.side ? `error (${e.side})` : 'error', errorText(e), e.side === 'right' ? 'stats-error-right' : 'stats-error'));
   const inst = s.instanced;
   const split = inst?.split ?? false;
   // The instanced tessellator stores no mesh: its counts are its draws', per pass. The split

@@ -25,6 +25,8 @@ import backdropWGSL from '../../wgsl/render-backdrop.wgsl?raw';
 import wireArgsWGSL from '../../wgsl/wire-args.wgsl?raw';
 import wireLinesWGSL from '../../wgsl/wire-lines.wgsl?raw';
 import wireCageWGSL from '../../wgsl/wire-cage.wgsl?raw';
+import heatWGSL from '../../wgsl/render-heat.wgsl?raw';
+import { HEAT_BIND_GROUP, HEAT_UNIFORMS, heatRenderWgsl, type HeatView } from './acc-heat.ts';
 import type { TessellatedMesh } from './types.ts';
 import { CAGE_LINE_STRIDE, type CageLines } from './cage-mesh.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
@@ -79,6 +81,12 @@ export interface DrawOptions {
    * own timing slot: slot 1's passes are reported as 'shadow 2' and 'lit 2').
    */
   region?: { x0: number; x1: number; first: boolean; slot: 0 | 1 };
+  /**
+   * The ACC error views: colour the stored mesh by the values of setHeat (instead of its clay or
+   * patch colours), `range` in the view's unit (fraction of the diagonal; degrees) drawn red.
+   * Ignored without values or while a SurfaceDrawer draws.
+   */
+  heat?: { view: HeatView; range: number } | null;
 }
 
 /**
@@ -147,6 +155,13 @@ export class Renderer {
   /** One u32 kind per source triangle (a single 0 when there are none). */
   #patchKinds: GPUBuffer;
   #patchBindGroup: GPUBindGroup | null = null;
+  /** The heat map (src/gpu/acc-heat.ts): [open, closed] pipelines, its layout, uniforms and the
+   * bind group of the values set (null: none). */
+  #heatPipelines: GPURenderPipeline[] = [];
+  #heatLayout: GPUBindGroupLayout;
+  #heatUniforms: GPUBuffer;
+  #heatData = new DataView(new ArrayBuffer(HEAT_UNIFORMS.size));
+  #heatBindGroup: GPUBindGroup | null = null;
 
   #wireArgs: GPUBuffer;
   #mesh: TessellatedMesh | null = null;
@@ -244,6 +259,22 @@ export class Renderer {
     const cageModule = module('cage');
     const wireArgsModule = module('wireArgs');
 
+    this.#heatLayout = device.createBindGroupLayout({ label: 'heat bind group layout', entries: [...HEAT_BIND_GROUP] });
+    this.#heatUniforms = device.createBuffer({
+      label: 'heat uniforms',
+      size: HEAT_UNIFORMS.size,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
+    // The lit pipeline's groups with the heat group in place of the patch colours' (group 2).
+    const heatLayout = device.createPipelineLayout({
+      label: 'heat pipeline layout',
+      bindGroupLayouts: [layouts.scene, layouts.shading, this.#heatLayout],
+    });
+    const heatModule = device.createShaderModule({
+      label: 'heat shader',
+      code: [sceneWgsl, commonWGSL, heatRenderWgsl, heatWGSL].join('\n'),
+    });
+
     const multisample = { count: this.sampleCount };
     const blend: GPUBlendState = {
       color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha', operation: 'add' },
@@ -279,6 +310,15 @@ export class Renderer {
         layout: pipelineLayout('lit'),
         vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
         fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
+        primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
+        depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
+        multisample,
+      });
+      this.#heatPipelines[+closed] = device.createRenderPipeline({
+        label: closed ? 'heat pipeline (closed: back faces culled)' : 'heat pipeline (open: two-sided)',
+        layout: heatLayout,
+        vertex: { module: heatModule, entryPoint: 'heatVertex', buffers: MESH_BUFFERS },
+        fragment: { module: heatModule, entryPoint: 'heatFragment', targets: opaqueTarget },
         primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
         depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
         multisample,
@@ -430,6 +470,24 @@ export class Renderer {
       : null;
   }
 
+  /**
+   * The heat map's values: 2 f32 per output vertex of the mesh (src/gpu/acc-heat.ts
+   * AccHeatPass.values), read by vertex index; null for none (DrawOptions.heat then draws the
+   * usual colours). Set again after setMesh when the mesh changes.
+   */
+  setHeat(values: GPUBufferBinding | null): void {
+    this.#heatBindGroup = values
+      ? this.device.createBindGroup({
+          label: 'heat bind group',
+          layout: this.#heatLayout,
+          entries: [
+            { binding: 0, resource: values },
+            { binding: 1, resource: { buffer: this.#heatUniforms } },
+          ],
+        })
+      : null;
+  }
+
   /** Draw the surface with `drawer` (in the shadow, lit and wireframe passes) instead of the
    * stored mesh (setMesh); null: the stored mesh again. */
   setDrawer(drawer: SurfaceDrawer | null): void {
@@ -536,9 +594,14 @@ export class Renderer {
     pass.setBindGroup(1, this.#shadingBindGroup);
     pass.setPipeline(this.#backdropPipeline);
     pass.draw(3);
-    if (mesh && this.#patchBindGroup) {
-      pass.setPipeline(this.#litPipelines[+this.#closed]);
-      pass.setBindGroup(2, this.#patchBindGroup);
+    const heat = mesh && options.heat && this.#heatBindGroup ? options.heat : null;
+    if (heat) {
+      HEAT_UNIFORMS.write(this.#heatData, { view: heat.view === 'normal' ? 1 : 0, range: heat.range });
+      this.device.queue.writeBuffer(this.#heatUniforms, 0, this.#heatData.buffer);
+    }
+    if (mesh && (heat || this.#patchBindGroup)) {
+      pass.setPipeline(heat ? this.#heatPipelines[+this.#closed] : this.#litPipelines[+this.#closed]);
+      pass.setBindGroup(2, heat ? this.#heatBindGroup : this.#patchBindGroup);
       pass.setVertexBuffer(0, mesh.positions);
       pass.setVertexBuffer(1, mesh.normals);
       pass.setIndexBuffer(mesh.indices, 'uint32');
@@ -619,6 +682,7 @@ export class Renderer {
     this.#shadowMap.destroy();
     this.#wireArgs.destroy();
     this.#patchKinds.destroy();
+    this.#heatUniforms.destroy();
     this.#msaaTexture?.destroy();
     this.#depthTexture?.destroy();
     if (this.#timing) {
