@@ -24,3 +24,22 @@ test('each ACC scheme draws the creature; the icosphere (a pentagon) falls back 
   await expect(page.getByText('5 corners').first()).toBeVisible();
   expect(errors).toEqual([]);
 });
+
+test('show irregular patches on an ACC surface: regular, irregular quads and triangles counted in the legend, the picture tinted', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const errors = collectErrors(page);
+  const shot = async (query: string) => {
+    await page.goto(`/?model=creature&surface=gregory-acc&mode=fixed&factor=4&t=0${query}`);
+    await ready(page);
+    return page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel'), page.getByTestId('legend')] });
+  };
+  const plain = await shot('');
+  const tinted = await shot('&patches=1');
+  const legend = page.getByTestId('legend');
+  await expect(legend).toContainText('Gregory ACC');
+  await expect(legend).toContainText('irregular quad');
+  expect(Buffer.compare(plain, tinted)).not.toBe(0);
+  expect(errors).toEqual([]);
+});

@@ -11,7 +11,7 @@ import { prepareMesh, Tessellator } from '../gpu/tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { isAccSurface, type Surface } from '../gpu/tess-passes.ts';
-import { prepareAccSurface, type AccSurface } from '../gpu/acc-surface.ts';
+import { accPatchKinds, prepareAccSurface, type AccSurface } from '../gpu/acc-surface.ts';
 import type { AccPatches } from '../gpu/acc.ts';
 import { prepareDisplacement, type DisplacementSettings } from '../gpu/displacement.ts';
 import type { PreparedMesh } from '../gpu/prepare.ts';
@@ -151,6 +151,12 @@ export class TessellatorGeometry implements GeometrySource {
   /** Scale, mid level, on/off: uniforms only. */
   setDisplacement(settings: Partial<DisplacementSettings>): void {
     this.#tessellator.setDisplacement(settings);
+  }
+
+  /** An ACC surface's patch kind per cage triangle (regular, irregular quad, triangle: the
+   * patch colours), or null for the other surfaces. */
+  get accPatchKinds(): Uint8Array | null {
+    return this.#acc && this.#last ? accPatchKinds(this.#acc, this.#last.prepared) : null;
   }
 
   /** Whether the output is displaced now. */

@@ -22,6 +22,7 @@ import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
+import { isAccSurface } from '../gpu/tess-passes.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
 import {
   DSCALE_RANGE,
@@ -572,7 +573,10 @@ class TessellationDemo extends DemoBase {
   /** Patch colours are on and there are patches to colour. */
   get patchColours(): boolean {
     // The instanced tessellator colours its patches by domain (quad, triangle) on any surface.
-    return this.params.patches && (this.shownSurface === 'catmull-clark' || this.instancedActive);
+    return (
+      this.params.patches &&
+      (this.shownSurface === 'catmull-clark' || isAccSurface(this.shownSurface as TessSurface) || this.instancedActive)
+    );
   }
 
   /** The legend of the patch colours, with each kind's share of the cage's triangles. */
@@ -606,6 +610,20 @@ class TessellationDemo extends DemoBase {
         `<li><span class="swatch" style="background:${hex(PATCH_COLOURS[k].srgb)}"></span>${name} <span class="muted">${n[k]}</span></li>`;
       const acc = inst.surface !== 'phong';
       legend.innerHTML = `<strong>Patches (instanced)</strong><ul>${entry(0, acc ? 'regular' : 'quad')}${acc ? entry(1, 'irregular quad') : ''}${entry(2, 'triangle')}</ul>`;
+      return;
+    }
+    const shown = this.shownSurface;
+    const accKinds = shown !== 'cage' ? this.#tess[shown]?.accPatchKinds : null;
+    if (accKinds) {
+      // An ACC surface (the sample's "show irregular patches"): regular, irregular quad, triangle.
+      const n = [0, 0, 0];
+      for (const k of accKinds) n[k]++;
+      legend.innerHTML = `<strong>Patches (${SURFACE_NAMES[shown]})</strong><ul>${[0, 1, 2]
+        .map(
+          (k) =>
+            `<li><span class="swatch" style="background:${hex(PATCH_COLOURS[k].srgb)}"></span>${PATCH_COLOURS[k].name} <span class="muted">${n[k]}</span></li>`,
+        )
+        .join('')}</ul>`;
       return;
     }
     legend.innerHTML = `<strong>Patches</strong><ul>${PATCH_COLOURS.map(
@@ -1055,7 +1073,8 @@ class TessellationDemo extends DemoBase {
     this.#boundHeat = null;
     renderer.setHeat(null);
     this.#compareDirty = true;
-    renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
+    const accKinds = surface !== 'cage' ? (this.#tess[surface]?.accPatchKinds ?? null) : null;
+    renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : accKinds);
     if (this.#bounds) renderer.setBounds(this.#bounds);
     this.#syncDrawer(model, surface);
     this.uploadCageOverlay(model);

@@ -5,7 +5,7 @@
  * ACC_TRI_WORD), which wgsl/surface-acc-tess.wgsl interpolates by the point's weights.
  */
 import type { Cage } from '../mesh/types.ts';
-import type { AccOptions, AccScheme } from '../subdiv/acc.ts';
+import { KIND_REGULAR, type AccOptions, type AccScheme } from '../subdiv/acc.ts';
 import { AccPatches, accFaceParam } from './acc.ts';
 import { ACC_TRI_WORD } from './contract.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -36,6 +36,22 @@ export function accTriangleWords(mesh: PreparedMesh, cage: Cage): Uint32Array {
       corners |= (u << (2 * i)) | (v << (2 * i + 1));
     }
     out[t] = ACC_TRI_WORD.pack({ corners, face });
+  }
+  return out;
+}
+
+/**
+ * The patch colours' kind (src/gpu/contract.ts PATCH_COLOURS: 0 regular, 1 irregular quad,
+ * 2 triangle) of every prepared triangle on an ACC surface, the NVIDIA sample's "show irregular
+ * patches": a regular patch is the plain bicubic (KIND_REGULAR), every other quad an irregular
+ * one, and triangles (Gregory or Pm triangles) their own colour.
+ */
+export function accPatchKinds(acc: AccSurface, mesh: PreparedMesh): Uint8Array {
+  const topo = acc.patches.topology;
+  const out = new Uint8Array(mesh.triangleCount);
+  for (let t = 0; t < mesh.triangleCount; t++) {
+    const f = mesh.triFace[t];
+    out[t] = topo.faceSize[f] === 3 ? 2 : topo.patches[2 * f] === KIND_REGULAR ? 0 : 1;
   }
   return out;
 }
