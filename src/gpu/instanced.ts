@@ -9,8 +9,9 @@
  *
  * Patches are cage faces: a quad face is one quad patch, any other face gives one triangle patch
  * per fan triangle of src/gpu/prepare.ts (a triangle face: itself). The surface is any WGSL module
- * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl; see
- * wgsl/instanced-common.wgsl for how the exact surfaces plug in).
+ * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl), the
+ * three ACC surfaces (src/gpu/acc.ts patches), or the exact Catmull-Clark surface through the
+ * compute tessellator's own evaluator and buffers (src/gpu/instanced-cc.ts says how).
  *
  * Passes (encodeLevels, one compute pass, no readback):
  *   clear      edge codes and bucket counts
@@ -33,6 +34,8 @@ import renderInstancedWgsl from '../../wgsl/render-instanced.wgsl?raw';
 import triSurfaceWgsl from '../../wgsl/instanced-surface-tri.wgsl?raw';
 import accSurfaceWgsl from '../../wgsl/instanced-surface-acc.wgsl?raw';
 import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from './acc.ts';
+import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSurfaceWgsl } from './instanced-cc.ts';
+import type { Tessellator } from './tessellator.ts';
 import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
@@ -456,9 +459,12 @@ export interface InstancedOptions {
    * 'acc': the ACC surfaces (Bezier, Gregory or Pm ACC, by the AccPatches handed to setMesh:
    * src/gpu/acc.ts builds them from the cage, wgsl/surface-acc.wgsl evaluates them through
    * wgsl/instanced-surface-acc.wgsl), their two buffers bound in a fourth bind group (group 3) in
-   * every pass. The exact Catmull-Clark surface is not plugged in yet.
+   * every pass. 'catmull-clark': the exact limit surface, evaluated by the compute tessellator's
+   * wgsl/surface-cc.wgsl over the buffers of a Catmull-Clark Tessellator handed to setMesh
+   * (src/gpu/instanced-cc.ts: ccSurfaceTessellator makes one), bound in group 3; encodeLevels runs
+   * its patch build first.
    */
-  surface?: 'evalSurface' | 'acc';
+  surface?: 'evalSurface' | 'acc' | 'catmull-clark';
   /** Render target format of the lit pipeline (default 'rgba8unorm'). */
   colorFormat?: GPUTextureFormat;
   /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
@@ -548,8 +554,13 @@ export class InstancedTessellator implements SurfaceDrawer {
   private readonly code: (...parts: string[]) => string;
   /** Whether the surface is ACC (group 3: its patches and control points). */
   readonly acc: boolean;
-  private accGroup?: GPUBindGroup;
+  /** Whether the surface is the exact Catmull-Clark one (group 3: a compute Tessellator's buffers). */
+  readonly cc: boolean;
+  /** Group 3 of an ACC or Catmull-Clark surface, for the current mesh. */
+  private surfaceGroup?: GPUBindGroup;
   private accPatches?: AccPatches;
+  /** The Catmull-Clark surface's lending tessellator (owned by the caller). */
+  private ccSource?: Tessellator;
   private frameModule?: GPUShaderModule;
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
@@ -576,9 +587,12 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.depthFormat = opts.depthFormat ?? 'depth32float';
     this.sampleCount = opts.sampleCount ?? 1;
     this.acc = opts.surface === 'acc';
+    this.cc = opts.surface === 'catmull-clark';
     const surface = this.acc
       ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
-      : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
+      : this.cc
+        ? instancedCCSurfaceWgsl()
+        : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
     const code = (...parts: string[]) =>
       [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
     this.code = code;
@@ -619,11 +633,13 @@ export class InstancedTessellator implements SurfaceDrawer {
         entries: [1, 2].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
       }),
       surface: device.createBindGroupLayout({
-        label: 'instanced ACC surface',
-        entries: [
-          { binding: 0, visibility: VC, buffer: ro },
-          { binding: 1, visibility: VC, buffer: ro },
-        ],
+        label: this.cc ? 'instanced Catmull-Clark surface' : 'instanced ACC surface',
+        entries: this.cc
+          ? ccSurfaceLayoutEntries(VC)
+          : [
+              { binding: 0, visibility: VC, buffer: ro },
+              { binding: 1, visibility: VC, buffer: ro },
+            ],
       }),
     };
     this.renderLayout = device.createPipelineLayout({
@@ -669,14 +685,20 @@ export class InstancedTessellator implements SurfaceDrawer {
     });
   }
 
-  /** A pipeline's bind group layouts, with the ACC surface's at group 3. */
+  /** A pipeline's bind group layouts, with the ACC or Catmull-Clark surface's at group 3. */
   private withSurface(groups: GPUBindGroupLayout[]): GPUBindGroupLayout[] {
-    return this.acc ? [...groups, this.layouts.surface] : groups;
+    return this.acc || this.cc ? [...groups, this.layouts.surface] : groups;
   }
 
-  /** Bind the ACC surface's buffers (group 3), where there is one. */
+  /** Bind the ACC or Catmull-Clark surface's buffers (group 3), where there is one. */
   private bindSurface(pass: GPURenderPassEncoder | GPUComputePassEncoder): void {
-    if (this.accGroup) pass.setBindGroup(3, this.accGroup);
+    if (this.surfaceGroup) pass.setBindGroup(3, this.surfaceGroup);
+  }
+
+  /** Group 3's entries for the current mesh (ACC patches, or the lending tessellator's buffers). */
+  private surfaceEntries(): GPUBindGroupEntry[] {
+    if (this.ccSource) return ccSurfaceEntries(this.ccSource);
+    return this.accPatches!.surfaceEntries(0, 1);
   }
 
   get instancedMesh(): InstancedMesh | undefined {
@@ -692,12 +714,21 @@ export class InstancedTessellator implements SurfaceDrawer {
   }
 
   /** Upload a cage's patches (topology once; updateCage for new positions). With an ACC surface,
-   * `acc`: its patches for the same cage (built here from the cage positions, and again by
-   * updateCage). */
-  setMesh(m: InstancedMesh, acc?: AccPatches): void {
+   * `source`: its AccPatches for the same cage (built here from the cage positions, and again by
+   * updateCage); with the Catmull-Clark surface, a Catmull-Clark Tessellator holding the same
+   * prepared mesh, flat baseline off, its Params uploaded (instanced-cc.ts ccSurfaceTessellator):
+   * its buffers are read by every pass, its patch build run by every encodeLevels. */
+  setMesh(m: InstancedMesh, source?: AccPatches | Tessellator): void {
     const device = this.device;
     this.releaseMesh();
+    const isTess = (s: AccPatches | Tessellator | undefined): s is Tessellator => s !== undefined && 'encodePatchBuild' in s;
+    const acc = this.acc && !isTess(source) ? source : undefined;
     if (this.acc && !acc) throw new Error('InstancedTessellator: an ACC surface needs its AccPatches (setMesh(mesh, acc))');
+    if (this.cc) {
+      if (!isTess(source))
+        throw new Error('InstancedTessellator: the Catmull-Clark surface needs a Catmull-Clark Tessellator (setMesh(mesh, tess))');
+      checkCCSource(source, m.prepared);
+    }
     const pr = m.prepared;
     const entries = new Uint32Array(4 * BUCKETS);
     this.patterns.entries.forEach((e, b) => entries.set([e.baseVertex, e.firstIndex, e.indexCount, e.vertexCount], 4 * b));
@@ -727,15 +758,17 @@ export class InstancedTessellator implements SurfaceDrawer {
     device.queue.writeBuffer(cageBuf, 0, cage);
     if (this.acc && acc) {
       this.accPatches = acc;
-      this.accGroup = device.createBindGroup({
-        label: 'instanced ACC surface',
-        layout: this.layouts.surface,
-        entries: acc.surfaceEntries(0, 1),
-      });
       const enc = device.createCommandEncoder({ label: 'instanced ACC build' });
       acc.encode(enc, cageBuf);
       device.queue.submit([enc.finish()]);
     }
+    if (this.cc && isTess(source)) this.ccSource = source;
+    if (this.acc || this.cc)
+      this.surfaceGroup = device.createBindGroup({
+        label: this.cc ? 'instanced Catmull-Clark surface' : 'instanced ACC surface',
+        layout: this.layouts.surface,
+        entries: this.surfaceEntries(),
+      });
 
     let w = 0;
     const take = (n: number) => {
@@ -791,11 +824,13 @@ export class InstancedTessellator implements SurfaceDrawer {
     device.queue.writeBuffer(this.bucketUniform, 0, buckets);
   }
 
-  /** New cage positions and vertex normals for the same topology. */
+  /** New cage positions and vertex normals for the same topology (the Catmull-Clark surface's
+   * lending tessellator gets them too; the next encodeLevels runs its patch build). */
   updateCage(positions: Float32Array, normals: Float32Array): void {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+    this.ccSource?.updateCage(positions, normals);
     if (this.accPatches) {
       const enc = this.device.createCommandEncoder({ label: 'instanced ACC build' });
       this.accPatches.encode(enc, m.cageBuf);
@@ -817,9 +852,12 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.device.queue.writeBuffer(m.work, 4 * m.layout.wanted, levels);
   }
 
-  /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it). */
+  /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it).
+   * With the Catmull-Clark surface, the lending tessellator's patch build first (its own pass):
+   * the dynamic rule and every draw after this read the refined points it writes. */
   encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams, timestampWrites?: GPUComputePassTimestampWrites): void {
     const m = this.requireMesh();
+    this.ccSource?.encodePatchBuild(encoder);
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
       viewport: [lp.viewport?.[0] ?? 1, lp.viewport?.[1] ?? 1, 0, 0],
@@ -837,8 +875,9 @@ export class InstancedTessellator implements SurfaceDrawer {
     const run = (name: keyof InstancedTessellator['levelPipelines'], groups: number, group: GPUBindGroup) => {
       cp.setPipeline(this.levelPipelines[name]);
       cp.setBindGroup(0, group);
-      // The dynamic rule evaluates the surface: an ACC surface's buffers (its auto layout's group 3).
-      if (name === 'edgeView' && this.accPatches) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
+      // The dynamic rule evaluates the surface: an ACC or Catmull-Clark surface's buffers (its
+      // auto layout's group 3).
+      if (name === 'edgeView' && (this.acc || this.cc)) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
@@ -852,9 +891,9 @@ export class InstancedTessellator implements SurfaceDrawer {
   private edgeViewSurface?: GPUBindGroup;
   private edgeViewSurfaceGroup(): GPUBindGroup {
     this.edgeViewSurface ??= this.device.createBindGroup({
-      label: 'instanced edgeView ACC surface',
+      label: 'instanced edgeView surface',
       layout: this.levelPipelines.edgeView.getBindGroupLayout(3),
-      entries: this.accPatches!.surfaceEntries(0, 1),
+      entries: this.surfaceEntries(),
     });
     return this.edgeViewSurface;
   }
@@ -869,8 +908,9 @@ export class InstancedTessellator implements SurfaceDrawer {
       const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
       const used: Record<string, number[]> = {
         patchEdges: [0, 1, 3],
-        // The cage buffer is read by the Phong surface; an ACC surface reads its own control points.
-        edgeView: this.acc ? [0, 1, 3] : [0, 1, 2, 3],
+        // The cage buffer is read by the Phong surface; an ACC or Catmull-Clark surface reads its
+        // own control points (group 3).
+        edgeView: this.acc || this.cc ? [0, 1, 3] : [0, 1, 2, 3],
         bucketPatches: [0, 1, 3],
         records: [0, 1, 3, 4],
       };
@@ -1301,8 +1341,9 @@ export class InstancedTessellator implements SurfaceDrawer {
     for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
     this.levelGroups.clear();
     this.edgeViewSurface = undefined;
-    this.accGroup = undefined;
+    this.surfaceGroup = undefined;
     this.accPatches = undefined;
+    this.ccSource = undefined;
     this.mesh = undefined;
   }
 
@@ -1326,13 +1367,13 @@ export async function tessellateInstanced(
   lp: LevelParams,
   tess?: InstancedTessellator,
   instancedMesh?: InstancedMesh,
-  acc?: AccPatches,
+  surface?: AccPatches | Tessellator,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
     const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
-    t.setMesh(mesh, acc);
+    t.setMesh(mesh, surface);
     return { mesh, out: await t.headless(lp) };
   } finally {
     if (own) t.destroy();
