@@ -152,3 +152,30 @@ test('flat shading (the instanced tessellator) changes the picture, and back', a
   await expect.poll(async () => Buffer.compare(await canvas(), before)).toBe(0);
   expect(errors).toEqual([]);
 });
+
+test('exact Catmull-Clark on both tessellators: the split view draws compute CC beside instanced CC, the same triangle count, no console errors', async ({
+  page,
+}) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=creature&surface=catmull-clark&split=1&instsurface=catmull-clark&mode=fixed&factor=8&level=8&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('instanced (right): catmull-clark', { timeout: 10_000 });
+  // Matched settings: level 8 draws 128 triangles a quad and 64 a triangle patch, as factor 8.
+  const tris = int(556 * 128 + 16 * 64);
+  await expect(page.getByTestId('stats-output-compute')).toContainText(`${tris} tris`, { timeout: 10_000 });
+  await expect(page.getByTestId('stats-output')).toContainText(`${tris} tris`, { timeout: 10_000 });
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  const shot = PNG.sync.read(
+    await page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')], maskColor: '#000000' }),
+  );
+  const halves = [0, 0];
+  for (let y = 0; y < shot.height; y++)
+    for (let x = 0; x < shot.width; x++) {
+      const k = 4 * (y * shot.width + x);
+      if (shot.data[k] + shot.data[k + 1] + shot.data[k + 2] > 400) halves[x < shot.width / 2 ? 0 : 1]++;
+    }
+  expect(halves[0]).toBeGreaterThan(500);
+  expect(halves[1]).toBeGreaterThan(500);
+  expect(errors).toEqual([]);
+});

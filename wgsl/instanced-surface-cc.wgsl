@@ -37,6 +37,13 @@ fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
   return ccEvalSurface(pt.t, pt.w);
 }
 
-// Patch colours (wgsl/render-instanced.wgsl; src/gpu/contract.ts PATCH_COLOURS order): quad
-// patches in the regular colour, triangle patches (triangles and n-gons' fans) in the triangle colour.
-fn patchColourIndex(p: u32) -> u32 { return select(0u, 2u, patchIsTri(p)); }
+// Patch colours (wgsl/render-instanced.wgsl; src/gpu/contract.ts PATCH_COLOURS order): a quad
+// that is one regular bicubic patch of the exact surface (region depth 0 in its CcTriWord:
+// src/gpu/cc/build.ts) in the regular colour, any other quad (at an extraordinary vertex, next to
+// a triangle, on a crease that needs refinement) in the irregular one, triangle patches
+// (triangles and n-gons' fans) in the triangle colour (src/app/instanced-view.ts counts the same).
+fn patchColourIndex(p: u32) -> u32 {
+  if (patchIsTri(p)) { return 2u; }
+  let info = ccStatic[ccParams.ccTri + 3u * patchWord(p, 0u) + 1u];
+  return select(1u, 0u, ccTriWord_depth(info) == 0u);
+}

@@ -801,7 +801,13 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       demo.setSplit(split);
     });
   inst
-    .add(p, 'instSurface', { Phong: 'phong', 'Bezier ACC': 'bezier-acc', 'Gregory ACC': 'gregory-acc', 'Pm ACC': 'pm-acc' })
+    .add(p, 'instSurface', {
+      Phong: 'phong',
+      'Catmull-Clark': 'catmull-clark',
+      'Bezier ACC': 'bezier-acc',
+      'Gregory ACC': 'gregory-acc',
+      'Pm ACC': 'pm-acc',
+    })
     .name('its surface')
     .onChange((v: DemoParams['instSurface']) => {
       syncUrl(p);
