@@ -42,13 +42,15 @@ test('static level: the bucket draw records equal the CPU count; stats per pass;
   expect(errors).toEqual([]);
 });
 
-test('dynamic LOD (adaptive): every patch in one bucket, mixed levels, no console errors', async ({ page }) => {
+test("dynamic LOD (adaptive, the compute tessellator's factor rule): every patch in one bucket, mixed levels, no console errors", async ({
+  page,
+}) => {
   const errors = collectErrors(page);
   await page.goto('/?model=creature&tessellator=instanced&t=0&lod=2');
   await ready(page);
   const r = await records(page);
   expect(r).not.toBeNull();
-  expect(r!.mode).toBe('dynamic');
+  expect(r!.mode).toBe('factor-rule');
   expect(r!.counts.patches).toBe(572);
   // Each record's pattern fields are the pattern table's whatever the view: they equal the
   // static count's (only the instance counts depend on the view).

@@ -15,7 +15,8 @@
  *
  * `--tessellator instanced` runs the instanced power-of-two tessellator (src/gpu/instanced.ts)
  * instead: its level pass (static `--level L`, L a power of two in 1..64, or `--adaptive`: each
- * edge's level from the view, the sample's dynamic LOD scaled by --lod), then a compute pass that
+ * edge's level by the compute tessellator's adaptive factor rule at the same camera and --lod,
+ * rounded up to a power of two: the two tessellators' counts compare), then a compute pass that
  * runs the draw's own WGSL vertex function over every instance of every bucket; the copies on
  * shared cage edges are welded by their cage parameter (weldInstanced) and the snap's collapsed
  * triangles left out, so the OBJ and --params are what a draw shows. Surfaces: phong (default),
@@ -48,6 +49,7 @@ import {
   weldInstanced,
   weldedToObj,
   weldedVertexParams,
+  factorRuleLevels,
   InstancedTessellator,
   type LevelParams,
 } from '../src/gpu/instanced.ts';
@@ -321,10 +323,9 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   let lp: LevelParams;
   if (args.level !== undefined) lp = { mode: 'static', level: args.level };
   else {
-    // The compute tessellator's adaptive camera (1080 px high, 16:9); the level of an edge behind
-    // the eye is 1.
-    const cam = headlessCamera(mesh, args.o);
-    lp = { mode: 'dynamic', viewProj: cam.viewProj, viewport: [1920, 1080], lodScale: args.o.lodScale ?? 1, level: 1 };
+    // The compute tessellator's adaptive camera (1080 px high, 16:9) and its factor rule (the same
+    // screen-space measure and LOD scale), each edge's factor rounded up to a power of two.
+    lp = factorRuleLevels(headlessCamera(mesh, args.o));
   }
   let acc: AccPatches | undefined;
   if (args.acc) {

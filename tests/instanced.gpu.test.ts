@@ -20,6 +20,8 @@ import {
   patchDomain,
   patchEdgeIds,
   cpuDynamicEdgeLevel,
+  cpuFactorRuleEdgeLevel,
+  factorRuleLevels,
   instancedVertexParams,
   BUCKETS,
   type LevelParams,
@@ -227,6 +229,43 @@ describe('instanced tessellator', () => {
     expect(covered).toBeGreaterThan(64 * 64 * 0.05);
     for (const t of [colour, depth, shadow]) t.destroy();
     read.destroy();
+  });
+
+  it("factor-rule levels: each edge's level is the compute tessellator's adaptive factor rounded up to a power of two (the CPU rule), crack-free", async () => {
+    const tess = await tessellator();
+    for (const text of [creature, pawn]) {
+      const m = load(text);
+      tess.setMesh(m);
+      const pr = m.prepared;
+      const cam = camera(m, 1.2 * pr.size);
+      const lp = factorRuleLevels({
+        mode: 'adaptive',
+        fixedFactor: 1,
+        lodScale: 2,
+        viewProj: cam.viewProj,
+        eye: cam.eye,
+        viewportHeight: 720,
+        fovY: Math.PI / 4,
+      });
+      const out = await tess.headless(lp);
+      const vec = (a: Float32Array, v: number) => [a[3 * v], a[3 * v + 1], a[3 * v + 2]] as [number, number, number];
+      let compared = 0;
+      for (let e = 0; e < m.edgeCount; e++) {
+        const cpu = cpuFactorRuleEdgeLevel(m, e, lp, (v) => ({ pos: vec(pr.positions, v), normal: vec(pr.normals, v) }));
+        // Skip a factor within f32 noise of an integer (where rounding up may go either way).
+        if (Math.abs(cpu.f - Math.round(cpu.f)) < 1e-4 * cpu.f && cpu.f > 1) continue;
+        expect(out.edgeLevels[e]).toBe(cpu.level);
+        compared++;
+      }
+      expect(compared).toBeGreaterThan(0.99 * m.edgeCount);
+      for (let p = 0; p < m.patchCount; p++) expect(out.patchLevels[p]).toBe(Math.max(...patchEdgeIds(m, p).map((e) => out.edgeLevels[e])));
+      expect(new Set(out.edgeLevels).size).toBeGreaterThan(1);
+      const r = checkHeadless(m, out, tess);
+      console.log(
+        `factor rule (lod 2): ${m.patchCount} patches, ${out.triangleCount} triangles drawn, levels ${[...new Set(out.edgeLevels)].sort((a, b) => a - b)}, largest gap ${r.gap.toExponential(2)}`,
+      );
+      expect(r.gap).toBeLessThan(1e-6);
+    }
   });
 
   it("inside the demo renderer's passes: shadow, lit and wireframe draws run clean, cover pixels, and the wire records follow the indexed ones", async () => {

@@ -47,3 +47,8 @@ fn patchColourIndex(p: u32) -> u32 {
   let info = ccStatic[ccParams.ccTri + 3u * patchWord(p, 0u) + 1u];
   return select(1u, 0u, ccTriWord_depth(info) == 0u);
 }
+
+// What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
+// limit position and normal there, written by the lending tessellator's patch build, as its own
+// factor rule reads them.
+fn factorPoint(v: u32) -> SurfacePoint { return SurfacePoint(ccFactorPos(v), ccFactorNormal(v)); }

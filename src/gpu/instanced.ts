@@ -17,6 +17,8 @@
  *   clear      edge codes and bucket counts
  *   patchEdges modes static / per-patch: each edge's level = min over its patches   one thread per patch
  *   edgeView   mode dynamic: each edge's level from the view                        one thread per edge
+ *   edgeFactorRule  mode factor-rule: each edge's level by the compute tessellator's
+ *              adaptive factor rule (the same screen-space measure)             one thread per edge
  *   bucket     each patch's level, a slot in its bucket's list                      one thread per patch
  *   records    14 drawIndexedIndirect records (quad and triangle × 7 levels)        one workgroup
  * Then encodeDraw (lit or shadow pass: 14 drawIndexedIndirect, the bucket's list base by dynamic
@@ -42,6 +44,8 @@ import { defineStruct } from './layout.ts';
 import { constantsWgsl, defineBits, grid2d, WORKGROUP_SIZE } from './contract.ts';
 import { readBuffer } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
+import { edgeFactor, type Vec3 } from './factors.ts';
+import type { FactorParams } from './types.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../mesh/types.ts';
 import {
@@ -59,6 +63,8 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['viewProj', 'mat4x4<f32>'],
   // x, y: viewport size in pixels (dynamic mode).
   ['viewport', 'vec4<f32>'],
+  // xyz: the eye in model space (factor-rule mode).
+  ['eye', 'vec4<f32>'],
   ['nPatches', 'u32'],
   ['nQuads', 'u32'],
   ['nTris', 'u32'],
@@ -68,6 +74,8 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['lodScale', 'f32'],
   ['targetPixels', 'f32'],
   ['pixelError', 'f32'],
+  // Factor-rule mode: radians per pixel (fovY / viewport height), as the compute tessellator's Params.
+  ['pixelAngle', 'f32'],
   // staticBuf word offsets (wgsl/instanced-common.wgsl), cageBuf float offset of the normals.
   ['offTriVerts', 'u32'],
   ['offPatches', 'u32'],
@@ -115,7 +123,7 @@ export const BUCKETS = 2 * POW2_LEVEL_COUNT;
 /** Bytes between two buckets' uniforms (minUniformBufferOffsetAlignment is at most 256). */
 const BUCKET_STRIDE = 256;
 export const PATCH_WORDS = 8;
-const MODE = { static: 0, 'per-patch': 1, dynamic: 2 } as const;
+const MODE = { static: 0, 'per-patch': 1, dynamic: 2, 'factor-rule': 3 } as const;
 
 // ---- CPU side: patches and edges ------------------------------------------------------------
 
@@ -300,6 +308,45 @@ export function cpuDynamicEdgeLevel(
 }
 
 /**
+ * The factor-rule mode for edge e on the CPU (wgsl/instanced-levels.wgsl edgeFactorRule): the
+ * compute tessellator's adaptive factor (src/gpu/factors.ts edgeFactor, double precision) at the
+ * edge's two cage vertices as `point` gives them (cage positions and normals; the limit's for
+ * Catmull-Clark), rounded up to a power of two. Returns the level and the factor.
+ */
+export function cpuFactorRuleEdgeLevel(
+  m: InstancedMesh,
+  e: number,
+  lp: LevelParams,
+  point: (v: number) => { pos: Vec3; normal: Vec3 },
+): { level: number; f: number } {
+  const a = point(m.edgeVerts[2 * e]),
+    b = point(m.edgeVerts[2 * e + 1]);
+  const f = edgeFactor(a.pos, b.pos, a.normal, b.normal, {
+    mode: 'adaptive',
+    fixedFactor: 1,
+    lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
+    viewProj: lp.viewProj ?? new Float32Array(16),
+    eye: lp.eye ?? [0, 0, 0],
+    pixelAngle: lp.pixelAngle ?? 1,
+    maxFactor: MAX_POW2_LEVEL,
+  });
+  const c = Math.ceil(f);
+  return { level: c <= 1 ? 1 : 2 ** Math.ceil(Math.log2(c)), f };
+}
+
+/** The factor-rule levels for the compute tessellator's camera and LOD scale (its FactorParams, as
+ * its adaptive mode reads them): the two tessellators then measure the view alike. */
+export function factorRuleLevels(f: FactorParams): LevelParams {
+  return {
+    mode: 'factor-rule',
+    viewProj: f.viewProj,
+    eye: [f.eye[0], f.eye[1], f.eye[2]],
+    pixelAngle: f.fovY / Math.max(1, f.viewportHeight),
+    lodScale: f.lodScale,
+  };
+}
+
+/**
  * Where each headless output vertex lies on its cage face, in the CPU reference's addressing
  * (src/gpu/face-params.ts: `f u v` on quads, `f k s t` on sub-faces of other faces), for the
  * CLI's --params.
@@ -475,8 +522,10 @@ export interface InstancedOptions {
 
 export interface LevelParams {
   /** static: every patch at `level`; per-patch: the levels given to setWanted; dynamic: per
-   * edge from the view (viewProj, viewport, lodScale, targetPixels, pixelError). */
-  mode: 'static' | 'per-patch' | 'dynamic';
+   * edge from the view (viewProj, viewport, lodScale, targetPixels, pixelError); factor-rule: per
+   * edge by the compute tessellator's adaptive rule (viewProj, eye, pixelAngle, lodScale:
+   * factorRuleLevels makes them from its FactorParams), rounded up to a power of two. */
+  mode: 'static' | 'per-patch' | 'dynamic' | 'factor-rule';
   /** The static level (also the dynamic mode's level for an edge behind the eye). Default 4. */
   level?: number;
   viewProj?: Float32Array;
@@ -486,6 +535,9 @@ export interface LevelParams {
   targetPixels?: number;
   /** Dynamic: allowed distance in pixels between the curve and its segments (default 0.5). */
   pixelError?: number;
+  /** Factor rule: the eye in model space, and radians per pixel (fovY / viewport height). */
+  eye?: [number, number, number];
+  pixelAngle?: number;
 }
 
 interface WorkLayout {
@@ -541,7 +593,7 @@ export class InstancedTessellator implements SurfaceDrawer {
   private readonly paramsBytes = new ArrayBuffer(INST_PARAMS.size);
   private readonly bucketUniform: GPUBuffer;
   private readonly frame: GPUBuffer;
-  private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'bucketPatches' | 'records', GPUComputePipeline>;
+  private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'edgeFactorRule' | 'bucketPatches' | 'records', GPUComputePipeline>;
   private readonly layouts: {
     mesh: GPUBindGroupLayout;
     bucket: GPUBindGroupLayout;
@@ -602,6 +654,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.levelPipelines = {
       patchEdges: pipeline('patchEdges'),
       edgeView: pipeline('edgeView'),
+      edgeFactorRule: pipeline('edgeFactorRule'),
       bucketPatches: pipeline('bucketPatches'),
       records: pipeline('records'),
     };
@@ -861,6 +914,8 @@ export class InstancedTessellator implements SurfaceDrawer {
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
       viewport: [lp.viewport?.[0] ?? 1, lp.viewport?.[1] ?? 1, 0, 0],
+      eye: [...(lp.eye ?? [0, 0, 0]), 0],
+      pixelAngle: lp.pixelAngle ?? 1,
       mode: MODE[lp.mode],
       staticLevel: lp.level ?? LEVEL_DEFAULTS.level,
       lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
@@ -878,14 +933,29 @@ export class InstancedTessellator implements SurfaceDrawer {
       // The dynamic rule evaluates the surface: an ACC or Catmull-Clark surface's buffers (its
       // auto layout's group 3).
       if (name === 'edgeView' && (this.acc || this.cc)) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
+      // The factor rule reads the limit at the cage vertices on Catmull-Clark (group 3).
+      if (name === 'edgeFactorRule' && this.cc) cp.setBindGroup(3, this.factorRuleSurfaceGroup());
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
     if (lp.mode === 'dynamic') run('edgeView', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeView'));
+    else if (lp.mode === 'factor-rule') run('edgeFactorRule', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeFactorRule'));
     else run('patchEdges', Math.ceil(nP / 64), this.levelGroupFor('patchEdges'));
     run('bucketPatches', Math.ceil(nP / 64), this.levelGroupFor('bucketPatches'));
     run('records', 1, this.levelGroupFor('records'));
     cp.end();
+  }
+
+  private factorRuleSurface?: GPUBindGroup;
+  /** Group 3 of the factor rule on Catmull-Clark: its auto layout holds what it reads, the lending
+   * tessellator's Params and cage arena (the vertex limits). */
+  private factorRuleSurfaceGroup(): GPUBindGroup {
+    this.factorRuleSurface ??= this.device.createBindGroup({
+      label: 'instanced edgeFactorRule surface',
+      layout: this.levelPipelines.edgeFactorRule.getBindGroupLayout(3),
+      entries: this.surfaceEntries().filter((e) => e.binding === 0 || e.binding === 2),
+    });
+    return this.factorRuleSurface;
   }
 
   private edgeViewSurface?: GPUBindGroup;
@@ -911,6 +981,8 @@ export class InstancedTessellator implements SurfaceDrawer {
         // The cage buffer is read by the Phong surface; an ACC or Catmull-Clark surface reads its
         // own control points (group 3).
         edgeView: this.acc || this.cc ? [0, 1, 3] : [0, 1, 2, 3],
+        // The cage's positions and normals, or on Catmull-Clark the lending tessellator's limits.
+        edgeFactorRule: this.cc ? [0, 1, 3] : [0, 1, 2, 3],
         bucketPatches: [0, 1, 3],
         records: [0, 1, 3, 4],
       };
@@ -1341,6 +1413,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
     this.levelGroups.clear();
     this.edgeViewSurface = undefined;
+    this.factorRuleSurface = undefined;
     this.surfaceGroup = undefined;
     this.accPatches = undefined;
     this.ccSource = undefined;
@@ -1356,8 +1429,8 @@ export class InstancedTessellator implements SurfaceDrawer {
 /**
  * The CLI's entry point (`npm run tessellate -- --tessellator instanced --level L | --adaptive`):
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
- * { mode: 'static', level: L }; `--adaptive` is { mode: 'dynamic', viewProj, viewport, lodScale }
- * with the CLI's camera (src/gpu/headless.ts headlessCamera gives one). Pass `tess` to reuse
+ * { mode: 'static', level: L }; `--adaptive` is factorRuleLevels of the CLI's camera
+ * (src/gpu/headless.ts headlessCamera). Pass `tess` to reuse
  * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation.
  */
 export async function tessellateInstanced(
