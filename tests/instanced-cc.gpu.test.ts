@@ -6,7 +6,9 @@
  * (src/subdiv, through tests/cc-checks.ts CCReference) at its face parameter, and against the
  * compute tessellator's evaluator run by its own sampler at the same (triangle, weights); the
  * crack check of issue 11 (both sides of every shared cage edge pair up within 1e-6 of the size);
- * the dynamic level rule on this surface; lit, shadow and wireframe draws in the renderer run clean.
+ * the dynamic level rule on this surface; the factor rule (the compute tessellator's measure) at
+ * the limit of the cage vertices, against the CPU rule at the exact limit; lit, shadow and
+ * wireframe draws in the renderer run clean; setMesh's refusals.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { getDevice, releaseDevice } from './gpu-device.ts';
@@ -20,10 +22,14 @@ import {
   InstancedTessellator,
   prepareInstanced,
   patchTriangle,
+  patchDomain,
   cpuLevels,
+  cpuFactorRuleEdgeLevel,
+  factorRuleLevels,
   type HeadlessInstanced,
   type InstancedMesh,
 } from '../src/gpu/instanced.ts';
+import { edgePoint } from '../src/pattern/pow2.ts';
 import { ccEvaluatorWgsl, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
 import type { Tessellator } from '../src/gpu/tessellator.ts';
 import { Renderer } from '../src/gpu/renderer.ts';
@@ -180,6 +186,49 @@ describe('instanced tessellator, exact Catmull-Clark surface', () => {
     target.destroy();
     read.destroy();
     renderer.destroy();
+  });
+
+  it("factor-rule levels on the limit: each edge's level is the compute tessellator's rule at the exact limit of its ends (CPU), rounded up to a power of two; crack-free", async () => {
+    const { t, m, ref } = await setUp(creature);
+    const cam = camera(m, 1.2 * m.prepared.size);
+    const lp = factorRuleLevels({
+      mode: 'adaptive',
+      fixedFactor: 1,
+      lodScale: 2,
+      viewProj: cam.viewProj,
+      eye: cam.eye,
+      viewportHeight: 720,
+      fovY: Math.PI / 4,
+    });
+    const out = await t.headless(lp);
+    // The exact limit position and normal at every cage vertex, from a patch corner that has it.
+    const limit = new Map<number, { pos: [number, number, number]; normal: [number, number, number] }>();
+    for (let p = 0; p < m.patchCount; p++) {
+      const dom = patchDomain(m, p);
+      for (let k = 0; k < (dom === 'tri' ? 3 : 4); k++) {
+        const v = m.corners[4 * p + k];
+        if (limit.has(v)) continue;
+        const [i, j] = edgePoint(dom, 1, k, 0);
+        const { t: tri, w } = patchTriangle(m, p, 1, i, j);
+        const r = ref.at(tri, [w[0] / 65536, w[1] / 65536, w[2] / 65536]).ref;
+        limit.set(v, { pos: r.P, normal: r.N });
+      }
+    }
+    let compared = 0;
+    for (let e = 0; e < m.edgeCount; e++) {
+      const cpu = cpuFactorRuleEdgeLevel(m, e, lp, (v) => limit.get(v)!);
+      // Skip a factor within f32 noise of an integer (where rounding up may go either way).
+      if (Math.abs(cpu.f - Math.round(cpu.f)) < 1e-4 * cpu.f && cpu.f > 1) continue;
+      expect(out.edgeLevels[e]).toBe(cpu.level);
+      compared++;
+    }
+    expect(compared).toBeGreaterThan(0.99 * m.edgeCount);
+    expect(new Set(out.edgeLevels).size).toBeGreaterThan(1);
+    const r = checkHeadless(m, out, t, false);
+    console.log(
+      `creature catmull-clark, factor rule (lod 2): ${out.triangleCount} triangles drawn, levels ${[...new Set(out.edgeLevels)].sort((a, b) => a - b)}, largest gap ${r.gap.toExponential(2)}`,
+    );
+    expect(r.gap).toBeLessThan(1e-6);
   });
 
   it('setMesh refuses a lending tessellator that blends to the flat baseline or holds another mesh', async () => {
