@@ -640,6 +640,18 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.sampleCount = opts.sampleCount ?? 1;
     this.acc = opts.surface === 'acc';
     this.cc = opts.surface === 'catmull-clark';
+    // Storage buffers per stage: group 0's three (topology + patterns, cage, work) and the
+    // surface's (ACC: 2; Catmull-Clark: the lending tessellator's static, cage and work) in the
+    // vertex stage; the headless pass adds its two outputs (8 with Catmull-Clark: core WebGPU's
+    // minimum). A device with fewer (compatibility mode) is refused here with the numbers rather
+    // than by a pipeline's validation error later.
+    const vertexStorage = 3 + (this.acc ? 2 : this.cc ? 3 : 0);
+    const limits = device.limits as GPUSupportedLimits & { maxStorageBuffersInVertexStage?: number };
+    const inVertex = limits.maxStorageBuffersInVertexStage ?? limits.maxStorageBuffersPerShaderStage;
+    if (inVertex < vertexStorage || limits.maxStorageBuffersPerShaderStage < vertexStorage + 2)
+      throw new Error(
+        `the instanced tessellator on this surface needs ${vertexStorage} storage buffers in the vertex stage and ${vertexStorage + 2} in compute; this device allows ${inVertex} and ${limits.maxStorageBuffersPerShaderStage}`,
+      );
     const surface = this.acc
       ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
       : this.cc
