@@ -1,7 +1,7 @@
 /**
  * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
  *   (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc]
- *   [--flat-baseline] [--demo-view] [--limit-px]`
+ *   [--flat-baseline] [--demo-view] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`
  * `npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye … --target …]) …`
  * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
  * GPU) and writes the welded mesh: by default on the exact Catmull-Clark limit surface (with
@@ -33,8 +33,15 @@
  * view (its default orbit fitted to a 1280×720 canvas) as the camera; --limit-px (Catmull-Clark)
  * measures how far the output vertices that face the eye are from the exact limit surface, in
  * pixels of that camera (scripts/limit-distance.ts), into --stats as "limitPx" {max, p99, vertices}.
+ * --displacement map.png --scale S moves every output vertex along the surface normal by
+ * h = (sample − M)·S (M = --mid, default 0.5), the map (8 or 16-bit PNG, greyscale or its red
+ * channel) sampled bilinearly at the cage's uvs (the model needs vt on every face corner),
+ * --wrap repeat (default) or clamp; any surface of the compute tessellator (src/gpu/displacement.ts).
  * Bad input: a message and exit code 2.
  */
+import { decodeHeightPng, HeightMapError } from '../src/mesh/heightmap-png.ts';
+import type { HeightWrap } from '../src/mesh/heightmap.ts';
+import { requireUvs } from '../src/mesh/uv.ts';
 import { readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { loadCage, CageError } from '../src/mesh/index.ts';
@@ -61,7 +68,7 @@ import { isAccSurface, type Surface } from '../src/gpu/tess-passes.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc-surface.ts';
 import { demoView, limitDistancePx } from './limit-distance.ts';
 
-const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px]
+const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
        npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
@@ -89,6 +96,10 @@ function parse(argv: string[]) {
   let level: number | undefined;
   let demoView = false;
   let limitPx = false;
+  let displacement: string | undefined;
+  let scale: number | undefined;
+  let mid = 0.5;
+  let wrap: HeightWrap = 'repeat';
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     const value = () => {
@@ -151,6 +162,25 @@ function parse(argv: string[]) {
       case '--demo-view':
         demoView = true;
         break;
+      case '--displacement':
+        displacement = value();
+        break;
+      case '--scale': {
+        scale = Number(value());
+        if (!Number.isFinite(scale)) throw new UsageError(`--scale: a number (world units per unit of height), got ${argv[i]}`);
+        break;
+      }
+      case '--mid': {
+        mid = Number(value());
+        if (!(mid >= 0 && mid <= 1)) throw new UsageError(`--mid: a height in [0, 1], got ${argv[i]}`);
+        break;
+      }
+      case '--wrap': {
+        const w = value();
+        if (w !== 'repeat' && w !== 'clamp') throw new UsageError(`--wrap: repeat or clamp, got ${w}`);
+        wrap = w;
+        break;
+      }
       case '--limit-px':
         limitPx = true;
         break;
@@ -190,7 +220,27 @@ function parse(argv: string[]) {
   if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
   if ((o.mode === 'fixed' || level !== undefined) && (o.lodScale || o.eye || o.target))
     throw new UsageError('--lod, --eye and --target apply to --adaptive only');
-  return { model, o, out, params, stats, instanced, level, acc, demoView, limitPx, instancedCC: instanced && surface === 'catmull-clark' };
+  if (displacement === undefined && (scale !== undefined || argv.includes('--mid') || argv.includes('--wrap')))
+    throw new UsageError('--scale, --mid and --wrap go with --displacement map.png');
+  if (displacement !== undefined && scale === undefined)
+    throw new UsageError('--displacement needs --scale S (world units per unit of height)');
+  if (displacement !== undefined && instanced)
+    throw new UsageError('--displacement applies to the compute tessellator (the instanced one does not displace yet)');
+  const disp = displacement === undefined ? undefined : { path: displacement, scale: scale as number, midLevel: mid, wrap };
+  return {
+    model,
+    o,
+    out,
+    params,
+    stats,
+    instanced,
+    level,
+    acc,
+    demoView,
+    limitPx,
+    disp,
+    instancedCC: instanced && surface === 'catmull-clark',
+  };
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -200,6 +250,12 @@ export async function main(argv: string[]): Promise<number> {
     args = parse(argv);
     if (!existsSync(args.model)) throw new UsageError(`no such file: ${args.model}`);
     cage = loadCage(readFileSync(args.model, 'utf8')).cage;
+    if (args.disp) {
+      if (!existsSync(args.disp.path)) throw new UsageError(`no such file: ${args.disp.path}`);
+      const map = decodeHeightPng(readFileSync(args.disp.path));
+      requireUvs(cage);
+      args.o.displacement = { map, scale: args.disp.scale, midLevel: args.disp.midLevel, wrap: args.disp.wrap };
+    }
   } catch (e) {
     if (e instanceof UsageError) {
       console.error(`tessellate: ${e.message}\n${USAGE}`);
@@ -207,6 +263,10 @@ export async function main(argv: string[]): Promise<number> {
     }
     if (e instanceof CageError) {
       console.error(`tessellate: ${argv.find((a) => !a.startsWith('--'))}: ${e.message}`);
+      return 2;
+    }
+    if (e instanceof HeightMapError) {
+      console.error(`tessellate: ${e.message}`);
       return 2;
     }
     throw e;
@@ -258,7 +318,7 @@ export async function main(argv: string[]): Promise<number> {
       args.out,
       meshToObj(
         r,
-        `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}, ${adapterName}`,
+        `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}${args.disp ? `, displaced by ${args.disp.path} (scale ${args.disp.scale}, mid ${args.disp.midLevel}, ${args.disp.wrap})` : ''}, ${adapterName}`,
       ),
     );
   if (args.params) {

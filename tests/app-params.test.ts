@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&disp=0&dscale=2.5&seams=1',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -34,7 +34,18 @@ describe('URL parameters', () => {
       split: true,
       instSurface: 'gregory-acc',
       flatShade: true,
+      disp: false,
+      dscale: 2.5,
+      seams: true,
     });
+  });
+
+  it('reads the displacement settings: on by default, scale clamped to [-4, 4], the seam view; and writes them back', () => {
+    expect(DEFAULT_PARAMS.disp).toBe(true);
+    expect(parseParams('dscale=100').dscale).toBe(4);
+    expect(parseParams('dscale=abc').dscale).toBe(1);
+    expect(formatParams(parseParams('disp=0&dscale=0.5&seams=1'))).toBe('?disp=0&dscale=0.5&seams=1');
+    expect(formatParams(parseParams('disp=1&dscale=1'))).toBe('');
   });
 
   it('reads the surface (Catmull-Clark by default; older links\' "tessellated" was Phong), patch colours and the flat baseline', () => {

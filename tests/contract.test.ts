@@ -588,6 +588,10 @@ describe("the tessellator's contract", () => {
     accTriangles: fc.nat(100_000),
     accPatchWords: fc.nat(100_000),
     accPoints: fc.nat(100_000),
+    heightWords: fc.nat(100_000),
+    dispTriangles: fc.nat(100_000),
+    dispEdges: fc.nat(100_000),
+    cornerUvs: fc.nat(100_000),
   }) as fc.Arbitrary<TessSizes>;
 
   it('each arena lays its arrays one after another, and its offsets reach Params at the fields the shaders read', () => {

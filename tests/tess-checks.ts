@@ -46,7 +46,8 @@ export function checkTessellation(
   opts: {
     closed: boolean;
     maxErrors?: number;
-    reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] };
+    /** The surface at (t, w); null where the caller holds the vertex to its own rule instead. */
+    reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] } | null;
   },
 ): TessReport {
   const problems: string[] = [];
@@ -100,6 +101,7 @@ export function checkTessellation(
     const pos = [out.positions[3 * v], out.positions[3 * v + 1], out.positions[3 * v + 2]];
     const nrm = [out.normals[3 * v], out.normals[3 * v + 1], out.normals[3 * v + 2]];
     if (pos.some((x) => !Number.isFinite(x)) || nrm.some((x) => !Number.isFinite(x))) add(`vertex ${v}: NaN or infinity`);
+    if (!ref) continue;
     const dp = Math.hypot(pos[0] - ref.pos[0], pos[1] - ref.pos[1], pos[2] - ref.pos[2]) / mesh.size;
     maxPositionError = Math.max(maxPositionError, dp);
     maxNormalError = Math.max(maxNormalError, angleBetween(nrm, ref.normal));

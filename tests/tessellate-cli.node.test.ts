@@ -4,6 +4,9 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { loadCage, DEFAULT_OPTIONS } from '../src/mesh/index.ts';
+import { decodeHeightPng } from '../src/mesh/heightmap-png.ts';
+import { DisplacedSurface, Surface } from '../src/subdiv/index.ts';
 
 const dir = mkdtempSync(join(tmpdir(), 'tessellab-cli-'));
 const run = (...args: string[]) =>
@@ -275,5 +278,59 @@ describe('npm run tessellate', () => {
       expect(r.status, args.join(' ')).toBe(2);
       expect(r.stderr).toMatch(/tessellate: /);
     }
+  });
+
+  it('--displacement map.png --scale S: every vertex on the f64 displaced limit at its --params; bad maps and cages without uvs refused', () => {
+    const model = 'public/models/brick-box.obj';
+    const png = 'public/models/brick-box-height.png';
+    const out = join(dir, 'displaced.obj');
+    const params = join(dir, 'displaced.json');
+    const r = run(model, '--fixed', '4', '--displacement', png, '--scale', '0.06', '--wrap', 'clamp', '--out', out, '--params', params);
+    expect(r.status, r.stderr).toBe(0);
+    const v = objOf(out).v;
+    const p = JSON.parse(readFileSync(params, 'utf8')).params as number[][];
+    expect(p.length).toBe(v.length);
+    const cage = loadCage(readFileSync(model, 'utf8')).cage;
+    const ref = new DisplacedSurface(
+      new Surface(cage, undefined, { ...DEFAULT_OPTIONS, ...cage.fileOptions }),
+      decodeHeightPng(readFileSync(png)),
+      {
+        scale: 0.06,
+        midLevel: 0.5,
+        wrap: 'clamp',
+      },
+    );
+    const lo = [0, 1, 2].map((c) => Math.min(...v.map((q) => q[c])));
+    const hi = [0, 1, 2].map((c) => Math.max(...v.map((q) => q[c])));
+    const diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    let worst = 0;
+    let moved = 0;
+    p.forEach((x, i) => {
+      const d = ref.at(x.length === 3 ? { face: x[0], u: x[1], v: x[2] } : { face: x[0], k: x[1], s: x[2], t: x[3] });
+      if (Math.abs(d.h) > 1e-3) moved++;
+      // Where the limit has no tangent plane (the box's corners) the direction is a convention:
+      // held to the distance |h| (tests/displacement.node.test.ts).
+      const e = d.base.normalDefined
+        ? Math.hypot(d.P[0] - v[i][0], d.P[1] - v[i][1], d.P[2] - v[i][2])
+        : Math.abs(Math.hypot(d.base.P[0] - v[i][0], d.base.P[1] - v[i][1], d.base.P[2] - v[i][2]) - Math.abs(d.h));
+      worst = Math.max(worst, e / diagonal);
+    });
+    console.log(
+      `tessellate --displacement vs the f64 reference: max ${worst.toExponential(2)} of the diagonal, ${moved} of ${v.length} moved`,
+    );
+    expect(worst).toBeLessThan(1e-5);
+    expect(moved).toBeGreaterThan(v.length / 4);
+
+    const bad = join(dir, 'bad.png');
+    writeFileSync(bad, 'not a png at all');
+    const b = run(model, '--fixed', '2', '--displacement', bad, '--scale', '1', '--stats');
+    expect(b.status).toBe(2);
+    expect(b.stderr).toMatch(/not a PNG/);
+    const n = run('public/models/creature.obj', '--fixed', '2', '--displacement', png, '--scale', '1', '--stats');
+    expect(n.status).toBe(2);
+    expect(n.stderr).toMatch(/texture coordinate|UVs/);
+    const u = run(model, '--fixed', '2', '--displacement', png, '--stats');
+    expect(u.status).toBe(2);
+    expect(u.stderr).toMatch(/needs --scale/);
   });
 });

@@ -8,7 +8,7 @@
 
 fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
   let s = evalAccPatch(patchWord(p, 6u), f32(i) / f32(P), f32(j) / f32(P));
-  return SurfacePoint(s.pos, s.normal);
+  return SurfacePoint(s.pos, s.normal, s.du, s.dv); // tangents along the patch's (u, v)
 }
 
 // Patch colours, the sample's "show irregular patches" (wgsl/render-instanced.wgsl;
@@ -22,4 +22,4 @@ fn patchColourIndex(p: u32) -> u32 {
 // What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
 // cage position and vertex normal, as the compute tessellator's factor rule reads them on an ACC
 // surface (src/gpu/tessellator.ts: offFactorPos is the cage's for every surface but Catmull-Clark).
-fn factorPoint(v: u32) -> SurfacePoint { return SurfacePoint(cagePos(v), cageNormal(v)); }
+fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(cagePos(v), cageNormal(v)); }

@@ -51,4 +51,4 @@ fn patchColourIndex(p: u32) -> u32 {
 // What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
 // limit position and normal there, written by the lending tessellator's patch build, as its own
 // factor rule reads them.
-fn factorPoint(v: u32) -> SurfacePoint { return SurfacePoint(ccFactorPos(v), ccFactorNormal(v)); }
+fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(ccFactorPos(v), ccFactorNormal(v)); }

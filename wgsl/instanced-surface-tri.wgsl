@@ -13,4 +13,4 @@ fn patchColourIndex(p: u32) -> u32 { return select(0u, 2u, patchIsTri(p)); }
 
 // What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
 // cage position and vertex normal, as the compute tessellator's Phong factor rule reads them.
-fn factorPoint(v: u32) -> SurfacePoint { return SurfacePoint(cagePos(v), cageNormal(v)); }
+fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(cagePos(v), cageNormal(v)); }

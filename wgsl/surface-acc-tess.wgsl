@@ -17,5 +17,8 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let uc = vec3<f32>(f32(c & 1u), f32((c >> 2u) & 1u), f32((c >> 4u) & 1u));
   let vc = vec3<f32>(f32((c >> 1u) & 1u), f32((c >> 3u) & 1u), f32((c >> 5u) & 1u));
   let a = evalAccPatch(accTriWord_face(m), dot(w, uc), dot(w, vc));
-  return SurfacePoint(a.pos, a.normal);
+  // (u, v) is linear in w: ∂(u, v)/∂w_i = (u_i − u_0, v_i − v_0).
+  let du = (uc.y - uc.x) * a.du + (vc.y - vc.x) * a.dv;
+  let dv = (uc.z - uc.x) * a.du + (vc.z - vc.x) * a.dv;
+  return SurfacePoint(a.pos, a.normal, du, dv);
 }

@@ -23,6 +23,10 @@
 struct AccSurfacePoint {
   pos: vec3<f32>,
   normal: vec3<f32>,
+  // Tangents along the patch's (u, v) whose cross product is the normal (Bezier ACC: the tangent
+  // patches'), for the displacement (wgsl/displace.wgsl).
+  du: vec3<f32>,
+  dv: vec3<f32>,
 }
 
 var<private> accQ: array<vec3<f32>, 16>;
@@ -191,7 +195,8 @@ fn evalAccPatch(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
       for (var i = 0u; i < 16u; i++) { accQ[i] = accPt(o + i); }
     }
     let r = accBicubic(u, v);
-    var n = cross(r[1], r[2]);
+    var tu = r[1];
+    var tv = r[2];
     if (kind == 1u) {
       // Tangent patches: T_u quadratic in u × cubic in v, T_v cubic in u × quadratic in v; middle
       // rows from the geometry patch (notes §2.3–2.4).
@@ -205,9 +210,10 @@ fn evalAccPatch(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
         Tu += b3v[c] * (b2u[0] * accPt(o + 16u + c) + b2u[1] * 3.0 * (accQ[2u + 4u * c] - accQ[1u + 4u * c]) + b2u[2] * accPt(o + 20u + c));
         Tv += b3u[c] * (b2v[0] * accPt(o + 24u + c) + b2v[1] * 3.0 * (accQ[c + 8u] - accQ[c + 4u]) + b2v[2] * accPt(o + 28u + c));
       }
-      n = cross(Tu, Tv);
+      tu = Tu;
+      tv = Tv;
     }
-    return AccSurfacePoint(r[0], accNormal(n));
+    return AccSurfacePoint(r[0], accNormal(cross(tu, tv)), tu, tv);
   }
   var stw: vec3<f32>;
   var du: vec3<f32>;
@@ -239,5 +245,5 @@ fn evalAccPatch(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
   let e = accQuartic(stw.x, stw.y, stw.z);
   let Pu = 4.0 * (du.x * e[1] + du.y * e[2] + du.z * e[3]);
   let Pv = 4.0 * (dv.x * e[1] + dv.y * e[2] + dv.z * e[3]);
-  return AccSurfacePoint(e[0], accNormal(cross(Pu, Pv)));
+  return AccSurfacePoint(e[0], accNormal(cross(Pu, Pv)), Pu, Pv);
 }

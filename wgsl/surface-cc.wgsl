@@ -67,6 +67,17 @@ fn ccNormal(pu: vec3<f32>, pv: vec3<f32>) -> vec3<f32> {
   return select(vec3<f32>(0.0, 0.0, 1.0), n / l, l > 0.0);
 }
 
+// Tangents along (x, y) from tangents along rot_r(x, y) (pu, pv): the chain rule through ccRot.
+// Rotations only, so the normal pu × pv is the same either way.
+fn ccRotTangents(r: u32, pu: vec3<f32>, pv: vec3<f32>) -> array<vec3<f32>, 2> {
+  switch (r) {
+    case 1u: { return array<vec3<f32>, 2>(-pv, pu); }
+    case 2u: { return array<vec3<f32>, 2>(-pu, -pv); }
+    case 3u: { return array<vec3<f32>, 2>(pv, -pu); }
+    default: { return array<vec3<f32>, 2>(pu, pv); }
+  }
+}
+
 // rot_r of the unit square (build.ts rot): rot_1(x, y) = (y, 1 − x).
 fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
   switch (r) {
@@ -92,7 +103,7 @@ fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
     bx = array<vec4<f32>, 2>(cw.value, cw.du);
   }
   let e = ccBicubicW(&cp, ccRegionWord_mask(w0), bx, y);
-  return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
+  return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), e[1], e[2]);
 }
 
 // The fans' slices (src/gpu/cc/build.ts, wgsl/cc-build.wgsl) hold per step k = 1..D the centre
@@ -301,7 +312,9 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
   if (t < 1.0) {
     // Inside the last square: the exact ring point on the ray, then the radial blend.
     if (t <= 0.0) {
-      return SurfacePoint(ccP(lb), ccNormal(ccP(lb + 1u), ccP(lb + 2u)));
+      // The vertex itself: its limit tangents stand in for the parametric ones (which vanish
+      // or blow up there), the CPU reference's convention (src/subdiv/displace.ts).
+      return SurfacePoint(ccP(lb), ccNormal(ccP(lb + 1u), ccP(lb + 2u)), ccP(lb + 1u), ccP(lb + 2u));
     }
     blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
     if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
@@ -315,11 +328,16 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
     if (b < 1.0) { which = 0u; ly = b; } else { which = 1u; }
   }
   let e = ccSubPatch(f, sec, L, which, lx, ly);
-  let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]));
+  // Tangents along the region's (x, y): the sub-patch's along (a, b) are 2^L times its own, and
+  // (a, b) = rot(x, y)·2^(L − off). Inside the last square the blend's tangents are taken as
+  // the ring point's (the radial blend has no useful parametric derivative at that scale).
+  let tg = ccRotTangents(ccRegionWord_rot(w0), e[1], e[2]);
+  let sc = exp2(f32(L) - f32(off));
+  let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), sc * tg[0], sc * tg[1]);
   if (blend >= 1.0) { return q; }
   let p0 = ccP(lb);
   let n0 = ccNormal(ccP(lb + 1u), ccP(lb + 2u));
-  return SurfacePoint(p0 + blend * (q.pos - p0), normalize(mix(n0, q.normal, blend)));
+  return SurfacePoint(p0 + blend * (q.pos - p0), normalize(mix(n0, q.normal, blend)), q.du, q.dv);
 }
 
 fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
@@ -332,11 +350,20 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   let w1 = staticBuf[params.ccRegions + 2u * reg + 1u];
   let x = x0 * fs - f32(i);
   let y = y0 * fs - f32(j);
+  // Tangents come back along the region's (x, y); the face's are fs times those.
+  var sp: SurfacePoint;
   if (ccRegionWord_kind(w0) == 1u) {
     let l = ccRot(ccRegionWord_rot(w0), x, y);
-    return ccRegularPatch(w0, w1, l.x, l.y);
+    sp = ccRegularPatch(w0, w1, l.x, l.y);
+    let tg = ccRotTangents(ccRegionWord_rot(w0), sp.du, sp.dv);
+    sp.du = tg[0];
+    sp.dv = tg[1];
+  } else {
+    sp = ccSector(w0, w1, x, y);
   }
-  return ccSector(w0, w1, x, y);
+  sp.du *= fs;
+  sp.dv *= fs;
+  return sp;
 }
 
 // Corner k of the regular n-gon whose table starts at `poly` (computed on the CPU in f64).
@@ -346,10 +373,16 @@ fn ccCorner(poly: u32, n: u32, k: u32) -> vec2<f32> {
 }
 
 // Sub-face k of an n-gon and (s,t): the kite round corner k of the regular n-gon, inverted by
-// Newton (the map is bilinear and the kites are convex).
-fn ccNgonParam(poly: u32, n: u32, fan: u32, w: vec3<f32>) -> vec3<f32> {
-  let p = w.x * ccCorner(poly, n, 0u) + w.y * ccCorner(poly, n, fan) + w.z * ccCorner(poly, n, fan + 1u);
-  if (length(p) < 1e-6) { return vec3<f32>(0.0, 1.0, 1.0); }
+// Newton (the map is bilinear and the kites are convex). Also (∂s/∂w_i, ∂t/∂w_i) for the
+// tangents: J⁻¹ (corner − corner 0) with J the kite map's Jacobian at the solution.
+struct CCNgonParam { kst: vec3<f32>, d1: vec2<f32>, d2: vec2<f32> }
+
+fn ccNgonParam(poly: u32, n: u32, fan: u32, w: vec3<f32>) -> CCNgonParam {
+  let c0 = ccCorner(poly, n, 0u);
+  let q1 = ccCorner(poly, n, fan) - c0;
+  let q2 = ccCorner(poly, n, fan + 1u) - c0;
+  let p = w.x * c0 + w.y * ccCorner(poly, n, fan) + w.z * ccCorner(poly, n, fan + 1u);
+  if (length(p) < 1e-6) { return CCNgonParam(vec3<f32>(0.0, 1.0, 1.0), vec2<f32>(0.0), vec2<f32>(0.0)); }
   // The kite of the corner nearest in angle (largest dot product).
   var k = 0u;
   var best = -2.0;
@@ -372,7 +405,16 @@ fn ccNgonParam(poly: u32, n: u32, fan: u32, w: vec3<f32>) -> vec3<f32> {
     s -= (f.x * dt.y - f.y * dt.x) / det;
     t -= (ds.x * f.y - ds.y * f.x) / det;
   }
-  return vec3<f32>(f32(k), clamp(s, 0.0, 1.0), clamp(t, 0.0, 1.0));
+  let ds = (1.0 - t) * (B - A) + t * (C - D);
+  let dt = (1.0 - s) * (D - A) + s * (C - B);
+  let det = ds.x * dt.y - ds.y * dt.x;
+  var d1 = vec2<f32>(0.0);
+  var d2 = vec2<f32>(0.0);
+  if (det != 0.0) {
+    d1 = vec2<f32>(q1.x * dt.y - q1.y * dt.x, ds.x * q1.y - ds.y * q1.x) / det;
+    d2 = vec2<f32>(q2.x * dt.y - q2.y * dt.x, ds.x * q2.y - ds.y * q2.x) / det;
+  }
+  return CCNgonParam(vec3<f32>(f32(k), clamp(s, 0.0, 1.0), clamp(t, 0.0, 1.0)), d1, d2);
 }
 
 fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
@@ -384,13 +426,25 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let dd = ccTriWord_depth(info);
   // The face parameter (sub-face k, x, y), then one call of the region evaluator (a single
   // call site keeps the inlined shader small).
+  // (x, y)'s derivatives along w1 and w2 carry the region's tangents to the triangle's.
   var kxy: vec3<f32>;
+  var d1: vec2<f32>;
+  var d2: vec2<f32>;
   if (n == 4u) {
-    kxy = select(vec3<f32>(0.0, w.y, w.y + w.z), vec3<f32>(0.0, w.y + w.z, w.z), fan == 1u);
+    let first = fan == 1u;
+    kxy = select(vec3<f32>(0.0, w.y, w.y + w.z), vec3<f32>(0.0, w.y + w.z, w.z), first);
+    d1 = select(vec2<f32>(1.0, 1.0), vec2<f32>(1.0, 0.0), first);
+    d2 = select(vec2<f32>(0.0, 1.0), vec2<f32>(1.0, 1.0), first);
   } else {
-    kxy = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, w);
+    let np = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, w);
+    kxy = np.kst;
+    d1 = np.d1;
+    d2 = np.d2;
   }
-  let sp = ccEvalRegion(first, dd, u32(kxy.x), kxy.y, kxy.z);
+  var sp = ccEvalRegion(first, dd, u32(kxy.x), kxy.y, kxy.z);
+  let px = sp.du;
+  sp.du = d1.x * px + d1.y * sp.dv;
+  sp.dv = d2.x * px + d2.y * sp.dv;
   if (params.ccFlat == 0u) { return sp; }
   // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a
   // tess factor interpolated from the three edges (on an edge: that edge's factor, so both
@@ -418,5 +472,8 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let sagPx = length(sp.pos - flat) / (max(length(sp.pos - params.eye.xyz), 1e-6) * params.pixelAngle);
   let k = max(clamp((F - 1.0) / 3.0, 0.0, 1.0), 1.0 - 1.0 / max(params.lodScale * sagPx, 1.0));
   let nm = mix(fn0, sp.normal, k);
-  return SurfacePoint(mix(flat, sp.pos, k), select(sp.normal, normalize(nm), length(nm) > 1e-6));
+  // Tangents: the blend's with k held (k's own derivative ignored: it is a display blend).
+  let fu = factorPos(v1) - factorPos(v0);
+  let fv = factorPos(v2) - factorPos(v0);
+  return SurfacePoint(mix(flat, sp.pos, k), select(sp.normal, normalize(nm), length(nm) > 1e-6), mix(fu, sp.du, k), mix(fv, sp.dv, k));
 }

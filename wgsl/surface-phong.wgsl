@@ -22,6 +22,13 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let phong = w.x * q0 + w.y * q1 + w.z * q2;
   let n = w.x * n0 + w.y * n1 + w.z * n2;
   let len = length(n);
-  return SurfacePoint(mix(p, phong, PHONG_ALPHA), select(n0, n / len, len > 0.0));
+  // Tangents along w1, w2: ∂p = p_i − p0, ∂q_j = ∂p − (∂p·n_j) n_j, ∂phong = q_i − q0 + Σ w_j ∂q_j.
+  let e1 = p1 - p0;
+  let e2 = p2 - p0;
+  let dq1 = e1 - (w.x * dot(e1, n0) * n0 + w.y * dot(e1, n1) * n1 + w.z * dot(e1, n2) * n2);
+  let dq2 = e2 - (w.x * dot(e2, n0) * n0 + w.y * dot(e2, n1) * n1 + w.z * dot(e2, n2) * n2);
+  let du = mix(e1, q1 - q0 + dq1, PHONG_ALPHA);
+  let dv = mix(e2, q2 - q0 + dq2, PHONG_ALPHA);
+  return SurfacePoint(mix(p, phong, PHONG_ALPHA), select(n0, n / len, len > 0.0), du, dv);
 }
 

@@ -111,7 +111,10 @@ fn cageNormal(v: u32) -> vec3<f32> { return cageVec3(params.offNormals + 3u * v)
 fn factorPos(v: u32) -> vec3<f32> { return cageVec3(params.offFactorPos + 3u * v); }
 fn factorNormal(v: u32) -> vec3<f32> { return cageVec3(params.offFactorNormal + 3u * v); }
 
-struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32> }
+// A point of the surface, its unit normal, and its tangents along the triangle's weights
+// (du = ∂P/∂w1, dv = ∂P/∂w2, w0 = 1 − w1 − w2 moving with them), which the displacement pairs
+// with the uv's derivatives along the same weights (wgsl/displace.wgsl).
+struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32>, du: vec3<f32>, dv: vec3<f32> }
 
 // A BaryWord (src/gpu/contract.ts): (w1, w2) in 16 bits each; a corner of the source triangle
 // is stored as a sentinel whose fields would sum past 2^16.

@@ -27,9 +27,25 @@ fn adaptiveFactor(e: u32) -> f32 {
   let toEye0 = params.eye.xyz - p0;
   let toEye1 = params.eye.xyz - p1;
   let away = dot(n0, toEye0) < -0.1 * length(toEye0) && dot(n1, toEye1) < -0.1 * length(toEye1);
-  if (away || sphereOutsideFrustum(mid, 0.5 * length(d) + err)) { return 1.0; }
+  // Displacement (src/gpu/displacement.ts): the heights on the edge's faces lie in
+  // [lo, hi]·scale after the mid level; the sphere grows by the largest |h|, and the edge gets at
+  // least as many segments as its height variation spans pixels (times lodScale), up to two per
+  // texel along it (the talk's "1 texel = 2 triangles"): detail a pixel or more high is sampled.
+  var reach = 0.0;
+  var amplitude = 0.0;
+  var texels = 0.0;
+  if (params.dispOn != 0u) {
+    let lo = bitcast<f32>(staticBuf[params.offDispEdge + 3u * e]);
+    let hi = bitcast<f32>(staticBuf[params.offDispEdge + 3u * e + 1u]);
+    texels = bitcast<f32>(staticBuf[params.offDispEdge + 3u * e + 2u]);
+    reach = abs(params.dispScale) * max(abs(lo - params.dispMid), abs(hi - params.dispMid));
+    amplitude = abs(params.dispScale) * (hi - lo);
+  }
+  if (away || sphereOutsideFrustum(mid, 0.5 * length(d) + err + reach)) { return 1.0; }
   let dist = max(length(mid - params.eye.xyz), 1e-6);
-  return sqrt(params.lodScale * err / (dist * params.pixelAngle));
+  let surface = sqrt(params.lodScale * err / (dist * params.pixelAngle));
+  let detail = min(2.0 * texels, params.lodScale * amplitude / (dist * params.pixelAngle));
+  return max(surface, detail);
 }
 
 @compute @workgroup_size(WORKGROUP_SIZE)

@@ -2,7 +2,7 @@
 
 fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
   if (index >= params.vertexCapacity) { return; }
-  let s = evalSurface(t, w);
+  let s = surfaceAt(t, w); // the surface, displaced when displacement is on (wgsl/displace.wgsl)
   outPositions[3u * index] = s.pos.x;
   outPositions[3u * index + 1u] = s.pos.y;
   outPositions[3u * index + 2u] = s.pos.z;

@@ -12,6 +12,15 @@ import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { isAccSurface, type Surface } from '../gpu/tess-passes.ts';
 import { prepareAccSurface, type AccSurface } from '../gpu/acc-surface.ts';
+import { prepareDisplacement, type DisplacementSettings } from '../gpu/displacement.ts';
+import type { PreparedMesh } from '../gpu/prepare.ts';
+import type { HeightMap, HeightWrap } from '../mesh/heightmap.ts';
+
+/** A height map over a cage's uvs, and how it is addressed outside [0, 1]. */
+export interface CageHeightMap {
+  map: HeightMap;
+  wrap: HeightWrap;
+}
 
 export type TessSurface = Surface;
 
@@ -75,6 +84,8 @@ export class TessellatorGeometry implements GeometrySource {
   /** An ACC surface's patches for the cage shown (made at setCage, this object's to free). */
   #acc: AccSurface | undefined;
   #hasMesh = false;
+  /** What the cage shown was set with, so a height map can be added to it (setHeightMap). */
+  #last: { cage: Cage; prepared: PreparedMesh; cc?: CatmullClarkData; height: CageHeightMap | null } | null = null;
 
   constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong') {
     this.#device = device;
@@ -99,14 +110,36 @@ export class TessellatorGeometry implements GeometrySource {
 
   /** An ACC scheme throws AccError (a message fit to show) for a cage it does not take; the
    * cage shown before is then gone too, and the caller shows another surface. */
-  setCage(cage: Cage, cc?: CatmullClarkData): void {
+  setCage(cage: Cage, cc?: CatmullClarkData, height: CageHeightMap | null = null): void {
     this.#hasMesh = false;
+    this.#last = null;
     const prepared = prepareMesh(cage);
     const acc = isAccSurface(this.surface) ? prepareAccSurface(this.#device, cage, prepared, this.surface) : undefined;
     this.#acc?.patches.destroy();
     this.#acc = acc;
-    this.#tessellator.setMesh(prepared, cc, acc);
+    this.#tessellator.setMesh(prepared, cc, acc, height ? prepareDisplacement(cage, prepared, height.map, height.wrap) : undefined);
+    this.#last = { cage, prepared, cc, height };
     this.#hasMesh = true;
+  }
+
+  /** A height map for the cage shown (null: none): its uvs and texels go to the GPU again
+   * (the topology is not redone). Throws (a CageError naming the face) without uvs. */
+  setHeightMap(cage: Cage, height: CageHeightMap | null): void {
+    const last = this.#last;
+    if (!last || last.cage !== cage || last.height === height) return;
+    const disp = height ? prepareDisplacement(cage, last.prepared, height.map, height.wrap) : undefined;
+    this.#tessellator.setMesh(last.prepared, last.cc, this.#acc, disp);
+    last.height = height;
+  }
+
+  /** Scale, mid level, on/off: uniforms only. */
+  setDisplacement(settings: Partial<DisplacementSettings>): void {
+    this.#tessellator.setDisplacement(settings);
+  }
+
+  /** Whether the output is displaced now. */
+  get displaced(): boolean {
+    return this.#tessellator.displaced;
   }
 
   encode(encoder: GPUCommandEncoder, params: FactorParams): void {

@@ -23,7 +23,7 @@ import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
-import { FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
+import { DSCALE_RANGE, FACTOR_RANGE, formatParams, isModelUrl, LEVEL_CHOICES, LOD_RANGE, parseParams, type DemoParams } from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
 import { factorRuleLevels, type LevelParams } from '../gpu/instanced.ts';
 import { AccError } from '../subdiv/acc.ts';
@@ -31,6 +31,8 @@ import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
+import { builtinHeight, decodeHeightImage, defaultHeightScale, fetchBuiltinHeight, type HeightEntry } from './displacement.ts';
+import { findEdge, uvCoverage, uvSeams } from '../mesh/index.ts';
 
 /** The surfaces by their names in the panel and in messages. */
 const SURFACE_NAMES: Record<DemoParams['surface'], string> = {
@@ -66,6 +68,9 @@ class TessellationDemo extends DemoBase {
   /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
    * the flat cage (for before/after). */
   #tess: Partial<Record<TessSurface, TessellatorGeometry>> = {};
+  /** Height maps by cage: the project's displaced models' (fetched with the OBJ) and PNGs the
+   * user dropped (src/app/displacement.ts). */
+  #heights = new WeakMap<LoadedModel['cage'], HeightEntry>();
   #flat: CageGeometry | null = null;
   #cageLines: CageLines | null = null;
   #counts: CountsReader | null = null;
@@ -467,7 +472,7 @@ class TessellationDemo extends DemoBase {
       this.#countsOwed = false;
     }
     const view = { viewProj, model: this.#modelMatrix, eye: m.eye };
-    const options = { wireframe: this.params.wire, cage: this.params.cage, patchColours: this.patchColours };
+    const options = { wireframe: this.params.wire, cage: this.params.cage || this.params.seams, patchColours: this.patchColours };
     if (split && instanced) {
       // The same camera twice: compute's stored mesh on the left half, the instanced
       // tessellator on the right, each with its own shadow pass and timing slot.
@@ -614,7 +619,20 @@ class TessellationDemo extends DemoBase {
 
   /** Load one of the project's models (by name), a URL, or a file; the picker shows which. */
   loadBuiltin(name: string, camera?: CameraParams): Promise<boolean> {
-    return this.controller.loadModel(() => loadModelFromUrl(modelUrl(name), name), name, { camera, pick: name });
+    const dir = modelUrl(name).replace(/[^/]*$/, '');
+    const load = async (): Promise<LoadedModel> => {
+      // The height map comes with the OBJ, so the first upload already displaces.
+      const fetchHeight = async () => {
+        const d = await builtinHeight(name, dir);
+        return d ? fetchBuiltinHeight(d, dir) : null;
+      };
+      const [model, height] = await Promise.all([loadModelFromUrl(modelUrl(name), name), fetchHeight().catch((e: Error) => e)]);
+      if (height instanceof Error)
+        showToast(`${height.message}\n\nShowing ${name} undisplaced.`, { kind: 'info', title: 'No height map', timeout: 8000 });
+      else if (height) this.#heights.set(model.cage, height);
+      return model;
+    };
+    return this.controller.loadModel(load, name, { camera, pick: name });
   }
 
   loadUrl(url: string, camera?: CameraParams): Promise<boolean> {
@@ -623,7 +641,75 @@ class TessellationDemo extends DemoBase {
   }
 
   loadFile(file: File): Promise<boolean> {
+    if (/\.png$/i.test(file.name) || file.type.startsWith('image/')) return this.loadHeightMap(file);
     return this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
+  }
+
+  /**
+   * A user's PNG height map on the shown model. It needs uvs on every face corner; a file that
+   * is not an image (or a model without uvs) leaves the current map as it was and says why.
+   */
+  async loadHeightMap(file: Blob & { name: string }): Promise<boolean> {
+    const model = this.model;
+    const fail = (message: string) => {
+      showToast(`${message}\n\nThe height map shown before is kept.`, { kind: 'error', title: `Cannot use ${file.name}` });
+      return false;
+    };
+    if (!model) return fail('No model is shown yet.');
+    if (uvCoverage(model.cage) !== 'complete')
+      return fail(`${model.title} has no texture coordinates on every face corner (OBJ vt and f v/vt): a height map needs them.`);
+    let map: HeightEntry['height']['map'];
+    try {
+      map = await decodeHeightImage(file, file.name);
+    } catch (e) {
+      return fail((e as Error).message);
+    }
+    if (this.model !== model) return false; // another model came meanwhile
+    const before = this.#heights.get(model.cage);
+    const entry: HeightEntry = {
+      height: { map, wrap: 'repeat' },
+      scale: before?.scale ?? defaultHeightScale(model.cage.positions),
+      midLevel: before?.midLevel ?? 0.5,
+      source: file.name,
+    };
+    try {
+      for (const tess of Object.values(this.#tess)) tess?.setHeightMap(model.cage, entry.height);
+    } catch (e) {
+      if (before) for (const tess of Object.values(this.#tess)) tess?.setHeightMap(model.cage, before.height);
+      return fail((e as Error).message);
+    }
+    this.#heights.set(model.cage, entry);
+    this.applyDisplacement();
+    showToast(`${file.name}: ${map.width}×${map.height}, ${map.bits}-bit, on ${model.title}.`, { title: 'Height map', timeout: 4000 });
+    return true;
+  }
+
+  /** The displacement settings (panel, URL) on the tessellator drawn; a redraw. */
+  applyDisplacement(model = this.model): void {
+    const entry = model ? this.#heights.get(model.cage) : undefined;
+    for (const tess of Object.values(this.#tess)) {
+      tess?.setDisplacement({
+        enabled: this.params.disp && entry !== undefined,
+        scale: (entry?.scale ?? 0) * this.params.dscale,
+        midLevel: entry?.midLevel ?? 0.5,
+      });
+    }
+    this.invalidateGeometry();
+  }
+
+  /** The cage overlay's lines: plain, or the UV-seam view. */
+  uploadCageOverlay(model = this.model): void {
+    const renderer = this.#renderer;
+    if (!model || !renderer) return;
+    let seam: ((a: number, b: number) => boolean) | undefined;
+    if (this.params.seams && uvCoverage(model.cage) !== 'none') {
+      const seams = uvSeams(model.cage, model.topology).edge;
+      seam = (a, b) => seams[findEdge(model.topology, a, b)] === 1;
+    }
+    this.#cageLines?.vertices.destroy();
+    this.#cageLines = uploadCageLines(this.gpu.device, model.cage, seam);
+    renderer.setCage(this.#cageLines);
+    this.requestFrame();
   }
 
   /** World bounds, light and camera for the current model and up axis. */
@@ -642,15 +728,14 @@ class TessellationDemo extends DemoBase {
     const renderer = this.#renderer;
     if (!renderer || !this.#flat) return;
     this.#flat.setCage(model.cage);
-    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined);
+    const height = this.#heights.get(model.cage)?.height ?? null;
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined, height);
     renderer.setMesh(this.#geometryFor(surface)?.output ?? null, isClosed(model.cage, model.topology));
     renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : null);
-    this.#cageLines?.vertices.destroy();
-    this.#cageLines = uploadCageLines(this.gpu.device, model.cage);
-    renderer.setCage(this.#cageLines);
     if (this.#bounds) renderer.setBounds(this.#bounds);
     this.#syncDrawer(model, surface);
-    this.invalidateGeometry();
+    this.uploadCageOverlay(model);
+    this.applyDisplacement(model);
   }
 
   #initialCamera(bounds: Bounds, p?: CameraParams): OrbitCamera {
@@ -706,6 +791,7 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   const state = {
     model: initialModel,
     open: () => openFile(demo),
+    openHeight: () => openFile(demo, '.png,image/png'),
     reset: () => demo.resetCamera(),
     share: () => {
       const url = demo.shareUrl();
@@ -781,6 +867,24 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   view.add(p, 'wire').name('wireframe').onChange(redraw);
   view.add(p, 'cage').name('cage overlay').onChange(redraw);
   view.add(p, 'spin').name('turntable').onChange(redraw);
+  // Displacement by the model's height map (the project's displaced models have one; drop or
+  // open a PNG for a model with uvs).
+  const disp = gui.addFolder('Displacement');
+  const displaced = () => {
+    syncUrl(p);
+    demo.applyDisplacement();
+  };
+  disp.add(p, 'disp').name('displace').onChange(displaced);
+  disp.add(p, 'dscale', DSCALE_RANGE.min, DSCALE_RANGE.max, 0.05).name('scale (× the map’s)').onChange(displaced);
+  disp
+    .add(p, 'seams')
+    .name('UV seams')
+    .onChange(() => {
+      syncUrl(p);
+      demo.uploadCageOverlay();
+    });
+  disp.add(state, 'openHeight').name('open a PNG height map…');
+  if (p.disp && p.dscale === 1 && !p.seams) disp.close();
   view.add(state, 'reset').name('reset camera');
   view.add(state, 'share').name('copy link to this view');
   // NVIDIA's instanced power-of-two tessellator beside the compute one (closed unless in use).
@@ -841,10 +945,10 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
   };
 }
 
-function openFile(demo: TessellationDemo): void {
+function openFile(demo: TessellationDemo, accept = '.obj,text/plain'): void {
   const input = document.createElement('input');
   input.type = 'file';
-  input.accept = '.obj,text/plain';
+  input.accept = accept;
   input.addEventListener('change', () => {
     const file = input.files?.[0];
     if (file) void demo.loadFile(file);

@@ -24,8 +24,8 @@ export const BUILTIN_MODELS: ModelEntry[] = [
   { name: 'gear', label: 'Gear' },
   { name: 'icosphere', label: 'Icosphere ball' },
   { name: 'sheet', label: 'Open sheet' },
-  // With UVs and a height map (public/models/displaced.json), shown undisplaced until the
-  // surface shaders displace.
+  // With UVs and a height map (public/models/displaced.json), displaced by the surface pass
+  // (src/app/displacement.ts fetches the map with the OBJ).
   { name: 'brick-box', label: 'Brick box (UVs)' },
   { name: 'creature-wrinkles', label: 'Creature (UVs)' },
 ];

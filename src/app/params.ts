@@ -59,6 +59,12 @@ export interface DemoParams {
   instSurface: InstancedSurface;
   /** The instanced tessellator's flat shading (`flatshade=1`): each facet by its own normal. */
   flatShade: boolean;
+  /** Displacement by the model's height map (`disp=0` turns it off; models without one ignore it). */
+  disp: boolean;
+  /** The height map's scale, as a multiple of the model's own (`dscale=`). */
+  dscale: number;
+  /** The UV-seam view (`seams=1`): the cage's edges, UV seams highlighted. */
+  seams: boolean;
 }
 
 export type InstancedSurface = 'phong' | 'catmull-clark' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
@@ -68,6 +74,7 @@ export const LOD_RANGE = { min: 0.05, max: 8 } as const;
 export const FACTOR_RANGE = { min: 1, max: 64 } as const;
 export const CAPACITY_RANGE = { min: 0.01, max: 16 } as const;
 export const LEVEL_CHOICES = [1, 2, 4, 8, 16, 32, 64] as const;
+export const DSCALE_RANGE = { min: -4, max: 4 } as const;
 
 export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
@@ -92,6 +99,9 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   split: false,
   instSurface: 'phong',
   flatShade: false,
+  disp: true,
+  dscale: 1,
+  seams: false,
 });
 
 function num(v: string | null, min: number, max: number): number | null {
@@ -146,6 +156,9 @@ export function parseParams(search: string): DemoParams {
   const instSurface = q.get('instsurface')?.trim().toLowerCase();
   p.flatShade = bool(q.get('flatshade')) ?? p.flatShade;
   if (instSurface && (INSTANCED_SURFACES as readonly string[]).includes(instSurface)) p.instSurface = instSurface as InstancedSurface;
+  p.disp = bool(q.get('disp')) ?? p.disp;
+  p.dscale = num(q.get('dscale'), DSCALE_RANGE.min, DSCALE_RANGE.max) ?? p.dscale;
+  p.seams = bool(q.get('seams')) ?? p.seams;
   p.t = num(q.get('t'), 0, 1e6);
   if (p.t === null && bool(q.get('freeze')) === true) p.t = 0;
   p.yaw = num(q.get('yaw'), -1e4, 1e4);
@@ -176,6 +189,9 @@ export function formatParams(p: DemoParams): string {
   if (p.split !== d.split) q.set('split', p.split ? '1' : '0');
   if (p.instSurface !== d.instSurface) q.set('instsurface', p.instSurface);
   if (p.flatShade !== d.flatShade) q.set('flatshade', p.flatShade ? '1' : '0');
+  if (p.disp !== d.disp) q.set('disp', p.disp ? '1' : '0');
+  if (p.dscale !== d.dscale) q.set('dscale', String(round(p.dscale, 3)));
+  if (p.seams !== d.seams) q.set('seams', p.seams ? '1' : '0');
   if (p.t !== null) q.set('t', String(p.t));
   if (p.yaw !== null) q.set('yaw', String(round(p.yaw, 1)));
   if (p.pitch !== null) q.set('pitch', String(round(p.pitch, 1)));

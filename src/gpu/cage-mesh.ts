@@ -162,8 +162,15 @@ export const CAGE_LINE_STRIDE = 16;
 /** Smooth edges, and crease edges (infinitely sharp at the end of the ramp). RGBA, 0..255, sRGB. */
 const CAGE_SMOOTH = [255, 138, 61, 255];
 const CAGE_CREASE = [86, 196, 255, 255];
+/** The UV-seam view: seam edges (src/mesh/uv.ts uvSeams) stand out, the others recede. */
+const CAGE_SEAM = [255, 60, 200, 255];
+const CAGE_NOT_SEAM = [90, 90, 90, 255];
 
-export function cageLineVertices(cage: Cage): { data: ArrayBuffer; vertexCount: number; edgeCount: number } {
+/** `seam(a, b)`, when given, draws the UV-seam view: seam edges in CAGE_SEAM, the rest dim. */
+export function cageLineVertices(
+  cage: Cage,
+  seam?: (a: number, b: number) => boolean,
+): { data: ArrayBuffer; vertexCount: number; edgeCount: number } {
   const { pairs, sharpness } = cageEdges(cage);
   const edgeCount = sharpness.length;
   const data = new ArrayBuffer(edgeCount * 2 * CAGE_LINE_STRIDE);
@@ -171,7 +178,11 @@ export function cageLineVertices(cage: Cage): { data: ArrayBuffer; vertexCount: 
   const u8 = new Uint8Array(data);
   for (let e = 0; e < edgeCount; e++) {
     const s = Math.min(1, sharpness[e] / 2); // semi-sharp edges in between
-    const colour = CAGE_SMOOTH.map((c, i) => Math.round(c + (CAGE_CREASE[i] - c) * s));
+    const colour = seam
+      ? seam(pairs[2 * e], pairs[2 * e + 1])
+        ? CAGE_SEAM
+        : CAGE_NOT_SEAM
+      : CAGE_SMOOTH.map((c, i) => Math.round(c + (CAGE_CREASE[i] - c) * s));
     for (let end = 0; end < 2; end++) {
       const v = pairs[2 * e + end];
       const at = (2 * e + end) * CAGE_LINE_STRIDE;
@@ -182,8 +193,8 @@ export function cageLineVertices(cage: Cage): { data: ArrayBuffer; vertexCount: 
   return { data, vertexCount: edgeCount * 2, edgeCount };
 }
 
-export function uploadCageLines(device: GPUDevice, cage: Cage): CageLines {
-  const { data, vertexCount, edgeCount } = cageLineVertices(cage);
+export function uploadCageLines(device: GPUDevice, cage: Cage, seam?: (a: number, b: number) => boolean): CageLines {
+  const { data, vertexCount, edgeCount } = cageLineVertices(cage, seam);
   const vertices = device.createBuffer({
     label: 'cage overlay lines',
     size: Math.max(CAGE_LINE_STRIDE, data.byteLength),

@@ -438,6 +438,13 @@ export interface TessSizes {
   /** Words of the ACC patch table (2 per patch) and ACC control points, 0 without an ACC surface. */
   accPatchWords: number;
   accPoints: number;
+  /** Displacement (src/gpu/displacement.ts), all 0 without it: words of the packed height map,
+   * triangles with a DISP_TRI word pair (all of them), edges with three factor words (all of
+   * them), and face corners with a uv (2 floats each). */
+  heightWords: number;
+  dispTriangles: number;
+  dispEdges: number;
+  cornerUvs: number;
 }
 
 /**
@@ -446,7 +453,19 @@ export interface TessSizes {
  * within, cc/build.ts, reach the shaders as the cc* fields of Params).
  */
 export const TESS_STATIC = defineArena<
-  'tables' | 'triVerts' | 'triEdges' | 'triPatternFrame' | 'edgeVerts' | 'edgeOwner' | 'vertexOwner' | 'cc' | 'accTri' | 'accPatches',
+  | 'tables'
+  | 'triVerts'
+  | 'triEdges'
+  | 'triPatternFrame'
+  | 'edgeVerts'
+  | 'edgeOwner'
+  | 'vertexOwner'
+  | 'cc'
+  | 'accTri'
+  | 'accPatches'
+  | 'heightTexels'
+  | 'dispTri'
+  | 'dispEdge',
   TessSizes
 >([
   ['tables', (s) => s.tableWords],
@@ -459,7 +478,22 @@ export const TESS_STATIC = defineArena<
   ['cc', (s) => s.ccWords],
   ['accTri', (s) => s.accTriangles],
   ['accPatches', (s) => s.accPatchWords],
+  // Displacement (src/gpu/displacement.ts has the layout): the height map's texels packed 4
+  // (8-bit) or 2 (16-bit) to a word, row-major from the image's top row; per triangle two words
+  // (its face's first corner in cornerUvs, then DISP_TRI_WORD); per edge three f32 words for
+  // the factor rule (the lowest and highest height SAMPLE over its faces, its length in texels).
+  ['heightTexels', (s) => s.heightWords],
+  ['dispTri', (s) => 2 * s.dispTriangles],
+  ['dispEdge', (s) => 3 * s.dispEdges],
 ]);
+
+/**
+ * Word 2t + 1 of dispTri (word 2t is the first corner of the triangle's face in cornerUvs): the
+ * face's corner count and which fan triangle of it t is (prepare.ts: corners (0, fan, fan + 1)),
+ * from which wgsl/displace.wgsl maps the triangle's weights to the face parameter that the uvs
+ * are interpolated over (src/mesh/uv.ts: bilinear on quads, the kite sub-faces on other faces).
+ */
+export const DISP_TRI_WORD = defineBits('DispTriWord', { corners: [0, 16], fan: [16, 16] });
 
 /**
  * Per triangle with an ACC surface (wgsl/surface-acc-tess.wgsl): its ACC patch (= cage face) and
@@ -474,7 +508,10 @@ export const ACC_TRI_WORD = defineBits('AccTriWord', { corners: [0, 6], face: [6
  * with the Catmull-Clark surface, its refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts))
  * and the limit positions and normals of the cage vertices (wgsl/cc-build.wgsl writes them).
  */
-export const TESS_CAGE = defineArena<'positions' | 'normals' | 'ctrl' | 'limitPositions' | 'limitNormals' | 'accPoints', TessSizes>([
+export const TESS_CAGE = defineArena<
+  'positions' | 'normals' | 'ctrl' | 'limitPositions' | 'limitNormals' | 'accPoints' | 'cornerUvs',
+  TessSizes
+>([
   ['positions', (s) => 3 * s.vertices],
   ['normals', (s) => 3 * s.vertices],
   ['ctrl', (s) => 3 * s.ccPoints],
@@ -483,6 +520,9 @@ export const TESS_CAGE = defineArena<'positions' | 'normals' | 'ctrl' | 'limitPo
   // ACC control points (4 floats each: xyz, w unused), copied from the ACC patch build's buffer
   // every frame, so the emit passes read no more storage buffers than with the other surfaces.
   ['accPoints', (s) => 4 * s.accPoints],
+  // Displacement: the uv of every face corner (2 floats, at 2h for corner h = faceOffsets[f] + j:
+  // src/mesh/uv.ts faceCornerUvs), so a seam is just two corners with different uvs.
+  ['cornerUvs', (s) => 2 * s.cornerUvs],
 ]);
 
 /**
@@ -577,6 +617,15 @@ export const TESS_PARAMS = defineStruct('Params', [
   ['ccSliceGroups', 'u32'],
   ['ccMaxDepth', 'u32'],
   ['ccFlat', 'u32', 'Blend from the flat triangle by tess factor (TessellatorOptions.flatBaseline).'],
+  // Displacement (src/gpu/displacement.ts, wgsl/displace.wgsl): h = (sample − dispMid)·dispScale
+  // along the surface normal; the map is dispWidth × dispHeight texels of dispBits bits.
+  ['dispOn', 'u32', '1: displace every output vertex (and count the heights in the factor rule).'],
+  ['dispBits', 'u32', '8 or 16.'],
+  ['dispWidth', 'u32'],
+  ['dispHeight', 'u32'],
+  ['dispWrap', 'u32', '0: repeat, 1: clamp to edge (src/mesh/heightmap.ts).'],
+  ['dispScale', 'f32'],
+  ['dispMid', 'f32'],
 ] as const);
 
 /** Words of the tessellator's fixed-size outputs: drawIndexedIndirect's arguments, the counts
@@ -650,6 +699,7 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     BARY_WORD.wgsl,
     OWNER_WORD.wgsl,
     ACC_TRI_WORD.wgsl,
+    DISP_TRI_WORD.wgsl,
     tableHeaderWgsl('staticBuf', 'params'),
   ].join('\n');
 }

@@ -2,6 +2,8 @@
  * The tessellation pipeline without a browser: cage in, welded mesh out (OBJ, and the
  * parameter of every vertex on its cage face). Used by `npm run tessellate` and the benchmark.
  */
+import type { HeightMap, HeightWrap } from '../mesh/heightmap.ts';
+import { prepareDisplacement } from './displacement.ts';
 import { mat4 } from 'gl-matrix';
 import { Tessellator } from './tessellator.ts';
 import { prepareMesh, type PreparedMesh } from './prepare.ts';
@@ -31,6 +33,9 @@ export interface HeadlessOptions {
   fovY?: number;
   vertexCapacity?: number;
   triangleCapacity?: number;
+  /** Displace by a height map over the cage's uvs (src/gpu/displacement.ts): h = (sample −
+   * midLevel)·scale along the surface normal. */
+  displacement?: { map: HeightMap; scale: number; midLevel: number; wrap: HeightWrap };
 }
 
 /** A camera for adaptive mode: the given eye and target, or a three-quarter view that frames the model. */
@@ -86,7 +91,10 @@ export async function tessellateOnce(
   try {
     // ACC patches made here are released here; the caller's are the caller's.
     const acc = isAccSurface(t.surface) ? (prepared?.acc ?? (ownAcc = prepareAccSurface(device, cage, mesh, t.surface))) : undefined;
-    t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined, acc);
+    const d = o.displacement;
+    const disp = d ? prepareDisplacement(cage, mesh, d.map, d.wrap) : undefined;
+    t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined, acc, disp);
+    if (d) t.setDisplacement({ scale: d.scale, midLevel: d.midLevel, enabled: true });
     device.pushErrorScope('validation');
     const enc = device.createCommandEncoder({ label: 'headless rebuild' });
     t.encode(enc, headlessCamera(mesh, o));

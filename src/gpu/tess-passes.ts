@@ -15,6 +15,7 @@ import planWgsl from '../../wgsl/tess-plan.wgsl?raw';
 import emitWgsl from '../../wgsl/tess-emit.wgsl?raw';
 import scanWgsl from '../../wgsl/scan.wgsl?raw';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
+import displaceWgsl from '../../wgsl/displace.wgsl?raw';
 import { CC_BUILD_WGSL as ccBuildWgsl, CC_SURFACE_WGSL as ccSurfaceWgsl } from './cc/shaders.ts';
 import accTessWgsl from '../../wgsl/surface-acc-tess.wgsl?raw';
 import { ACC_SURFACE_WGSL } from './acc.ts';
@@ -62,9 +63,10 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     factors: code(factorsWgsl),
     count: code(patternWgsl, countWgsl),
     budget: code(budgetWgsl),
-    weld: code(surfaceWgsl, outputsWgsl, weldWgsl),
+    // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
+    weld: code(surfaceWgsl, displaceWgsl, outputsWgsl, weldWgsl),
     plan: code(patternWgsl, planWgsl),
-    emit: code(surfaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
+    emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
     // The patch build's own prelude (contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
     ccBuild: ccBuildWgsl,
   };

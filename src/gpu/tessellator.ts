@@ -31,6 +31,7 @@
  */
 import type { CatmullClarkData } from './cc/build.ts';
 import type { AccSurface } from './acc-surface.ts';
+import type { DisplacementData, DisplacementSettings } from './displacement.ts';
 import { isAccSurface, type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './tess-passes.ts';
 import { PassTimer } from './pass-timer.ts';
 import {
@@ -136,6 +137,8 @@ export class Tessellator {
   private readonly scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
   private readonly scanLayout: GPUBindGroupLayout;
   private mesh?: MeshState;
+  private hasDisplacement = false;
+  private displacement: DisplacementSettings = { scale: 0, midLevel: 0, enabled: true };
   private readonly timer?: PassTimer;
 
   static create(device: GPUDevice, tables: Uint32Array, opts: TessellatorOptions = {}): Tessellator {
@@ -203,19 +206,46 @@ export class Tessellator {
     if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }
 
+  /**
+   * Displacement settings (uniforms only: the map and uvs came with setMesh). Takes effect at the
+   * next encode; without displacement data in the mesh, `enabled` has no effect.
+   */
+  setDisplacement(settings: Partial<DisplacementSettings>): void {
+    this.displacement = { ...this.displacement, ...settings };
+    this.writeDisplacementParams();
+  }
+
+  /** Whether output vertices are displaced now (data in the mesh and enabled). */
+  get displaced(): boolean {
+    return this.hasDisplacement && this.displacement.enabled;
+  }
+
+  private writeDisplacementParams(): void {
+    TESS_PARAMS.write(new DataView(this.paramsBytes), {
+      dispOn: this.displaced ? 1 : 0,
+      dispScale: this.displacement.scale,
+      dispMid: this.displacement.midLevel,
+    });
+  }
+
   /** Upload a prepared mesh: topology once; positions may be updated later (updateCage). The
    * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
-  setMesh(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): void {
+  setMesh(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface, displacement?: DisplacementData): void {
     const ccData = this.validate(prepared, cc, acc);
     const accData = isAccSurface(this.surface) ? acc : undefined;
-    const packed = this.pack(prepared, ccData, accData);
+    const packed = this.pack(prepared, ccData, accData, displacement);
     this.releaseMesh();
     this.mesh = this.bind(prepared, ccData, packed, accData);
   }
 
   /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
    * (into paramsBytes; encode() uploads them). Throws when the scratch buffer would not bind. */
-  private pack(prepared: PreparedMesh, cc: CatmullClarkData | undefined, acc: AccSurface | undefined): Packed {
+  private pack(
+    prepared: PreparedMesh,
+    cc: CatmullClarkData | undefined,
+    acc: AccSurface | undefined,
+    disp: DisplacementData | undefined,
+  ): Packed {
     const sizes: TessSizes = {
       vertices: prepared.vertexCount,
       edges: prepared.edgeCount,
@@ -228,6 +258,10 @@ export class Tessellator {
       accTriangles: acc ? prepared.triangleCount : 0,
       accPatchWords: acc?.patches.topology.patches.length ?? 0,
       accPoints: acc?.patches.topology.nPoints ?? 0,
+      heightWords: disp?.heightTexels.length ?? 0,
+      dispTriangles: disp ? prepared.triangleCount : 0,
+      dispEdges: disp ? prepared.edgeCount : 0,
+      cornerUvs: disp ? disp.cornerUvs.length / 2 : 0,
     };
 
     const staticLayout = TESS_STATIC.layout(sizes);
@@ -242,12 +276,16 @@ export class Tessellator {
       cc: cc?.words,
       accTri: acc?.triangles,
       accPatches: acc?.patches.topology.patches,
+      heightTexels: disp?.heightTexels,
+      dispTri: disp?.dispTri,
+      dispEdge: disp?.dispEdge,
     });
     const cageLayout = TESS_CAGE.layout(sizes);
     // The refined points and the limits are written by the patch build.
     const cageWords = packArena(TESS_CAGE.names, cageLayout, new Float32Array(cageLayout.words), {
       positions: prepared.positions,
       normals: prepared.normals,
+      cornerUvs: disp?.cornerUvs,
     });
     const workLayout = TESS_WORK.layout(sizes);
     if (4 * workLayout.words > this.device.limits.maxStorageBufferBindingSize) {
@@ -282,7 +320,13 @@ export class Tessellator {
       nFans: cc?.fanCount ?? 0,
       ccSliceGroups: cc?.sliceWorkgroups ?? 0,
       ccMaxDepth: cc?.maxDepth ?? 0,
+      dispBits: disp?.map.bits ?? 8,
+      dispWidth: disp?.map.width ?? 1,
+      dispHeight: disp?.map.height ?? 1,
+      dispWrap: disp?.wrap === 'clamp' ? 1 : 0,
     });
+    this.hasDisplacement = disp !== undefined;
+    this.writeDisplacementParams();
 
     return { staticWords, cageWords, workLayout, normalsOffset: cageLayout.offset.normals, accPointsOffset: cageLayout.offset.accPoints };
   }

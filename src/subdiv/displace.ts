@@ -17,7 +17,9 @@
 // At an irregular vertex (SurfacePoint.atVertex) ∂P/∂u, ∂P/∂v are limit tangents, not
 // parametric derivatives (those are 0 or ∞ there), so N' there uses them as they are and is a
 // convention, not a derivative (`normalExact` false). Where the limit normal is undefined
-// (cone points) there is no direction to displace along: P' = P and N' is NaN.
+// (a corner of sharp creases, a cone point) the point moves along its owner face's one-sided
+// normal (the sector normal the evaluator returns, as the GPU does), `normalExact` false; only
+// where the evaluator has no normal at all does it stay: P' = P and N' is NaN.
 //
 // Seam rule (crack-free by construction, matching the compute tessellator's weld): a point on
 // a cage edge or at a cage vertex takes its uv, height and normal from ONE face, its owner:
@@ -156,7 +158,11 @@ export class DisplacedSurface {
     const dhdv = scale * (hs.dU * uvp.dUvdv[0] + hs.dV * uvp.dUvdv[1]);
     const N0 = base.N;
     let P: V3, N: V3;
-    if (!base.normalDefined) {
+    // The direction to displace along: the limit normal, or where the surface has no tangent
+    // plane (a corner of sharp creases, a cone point) the one-sided normal of this face's sector
+    // when the evaluator gives one (the GPU displaces a weld vertex along its owner face's, the
+    // same); with no normal at all the point stays.
+    if (!N0.every(Number.isFinite)) {
       P = [...base.P];
       N = [NaN, NaN, NaN];
     } else {
