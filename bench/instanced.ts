@@ -1,13 +1,17 @@
 /**
- * `npm run bench:instanced [-- --level L] [--models a,b] [--repeats N] [--rounds R] [--out BENCHMARKS.md]`: the
+ * `npm run bench:instanced [-- --level L] [--surface phong|catmull-clark] [--models a,b] [--repeats N] [--rounds R] [--out BENCHMARKS.md]`: the
  * compute tessellator against the instanced power-of-two tessellator (src/gpu/instanced.ts), per
- * project model, at matched settings: the Phong surface, compute fixed factor L and instanced
+ * project model, at matched settings: the Phong surface (or with --surface catmull-clark the exact
+ * limit, flat baseline off, on both: the instanced one through the compute tessellator's
+ * evaluator, src/gpu/instanced-cc.ts), compute fixed factor L and instanced
  * static level L (the same points on every cage triangle: tests/tessellate-cli.node.test.ts
  * checks it; the same triangle count on quads, n-gons and triangles alike). Measured inside one
  * program, on one device, with GPU timestamps:
  *
  *   build ms      compute: its whole rebuild (factors … emit), once per change of the view or
- *                 cage; instanced: its level pass (levels, buckets, draw records)
+ *                 cage; instanced: its level pass (levels, buckets, draw records); Catmull-Clark:
+ *                 both include the patch build (the instanced one runs the lending tessellator's,
+ *                 untimed there: the compute run's 'subdivision' stage of the same pass is added)
  *   lit pass      1920×1080 rgba8 + depth, no culling for both (the instanced tessellator's own
  *                 lit pipeline culls nothing); compute draws its stored buffers, instanced
  *                 evaluates the surface in the vertex shader
@@ -15,7 +19,9 @@
  *   lit + 4 shadows, and per 1M triangles: a frame with four shadow-casting lights
  *   memory held   compute: the stored mesh (32 bytes a vertex, 12 a triangle; its work buffers and
  *                 capacity slack not counted); instanced: every buffer it holds (topology,
- *                 patterns, cage, level work and bucket lists, records, uniforms)
+ *                 patterns, cage, level work and bucket lists, records, uniforms); Catmull-Clark:
+ *                 both plus the tables and refined points they read (the compute tessellator's
+ *                 static and cage arenas; the lending tessellator's arenas, its work included)
  *
  * Each cell is the smallest of R rounds (default 3; each round times compute then instanced, each
  * a median of N frames): SwiftShader shares the CPU with whatever else runs, and contention only
@@ -35,11 +41,16 @@ import { readBuffer } from '../src/gpu/readback.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { loadCage } from '../src/mesh/index.ts';
 import { InstancedTessellator, prepareInstanced, BUCKETS, type LevelParams } from '../src/gpu/instanced.ts';
+import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
+import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
 import { timeRebuild } from './bench.ts';
 
-const SECTION = '## Compute against instanced tessellation, pass by pass';
+const SECTIONS = {
+  phong: '## Compute against instanced tessellation, pass by pass',
+  'catmull-clark': '## Compute against instanced tessellation on the exact Catmull-Clark surface, pass by pass',
+} as const;
 
 function median(xs: number[]): number {
   return [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
@@ -123,6 +134,13 @@ export async function main(argv: string[]): Promise<number> {
     console.error(`bench:instanced: --level: a power of two in [1, 64], got ${option(argv, '--level')}`);
     return 2;
   }
+  const surface = option(argv, '--surface') ?? 'phong';
+  if (surface !== 'phong' && surface !== 'catmull-clark') {
+    console.error(`bench:instanced: --surface phong or catmull-clark, got ${surface}`);
+    return 2;
+  }
+  const SECTION = SECTIONS[surface];
+  const cc = surface === 'catmull-clark';
   const repeats = Number(option(argv, '--repeats') ?? 3);
   const rounds = Number(option(argv, '--rounds') ?? 3);
   const only = option(argv, '--models')
@@ -140,8 +158,8 @@ export async function main(argv: string[]): Promise<number> {
     .map((f) => f.replace('.obj', ''))
     .sort()
     .filter((m) => !only || only.includes(m));
-  const compute = Tessellator.create(device, bakeTables(64), { surface: 'phong' });
-  const instanced = new InstancedTessellator(device);
+  const compute = Tessellator.create(device, bakeTables(64), { surface, flatBaseline: false });
+  const instanced = new InstancedTessellator(device, { surface: cc ? 'catmull-clark' : 'evalSurface' });
   const header =
     '| model | cage faces | patches | tessellator | tris drawn | build ms | lit pass ms | shadow pass ms | lit + 4 shadows ms | lit + 4 shadows per 1M tris | memory held |';
   const rule = '|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|';
@@ -158,17 +176,27 @@ export async function main(argv: string[]): Promise<number> {
     const best = { cBuild: Infinity, cLit: Infinity, cShadow: Infinity, iBuild: Infinity, iLit: Infinity, iShadow: Infinity };
     let c = { vertices: 0, triangles: 0 };
     let iTris = 0;
+    let ccData: ReturnType<typeof buildCatmullClark> | undefined;
+    try {
+      ccData = cc ? buildCatmullClark(cage, mesh) : undefined;
+    } catch (e) {
+      console.log(`| ${name} | ${faces} | ${im.patchCount} | refused: ${(e as Error).message} |`);
+      continue;
+    }
+    const source = ccData ? ccSurfaceTessellator(device, mesh, ccData) : undefined;
+    let ccBytes = { compute: 0, instanced: 0 };
     for (let round = 0; round < rounds; round++) {
-      const cr = await timeRebuild(device, compute, mesh, { mode: 'fixed', fixedFactor: level, surface: 'phong' }, repeats);
+      const cr = await timeRebuild(device, compute, mesh, { mode: 'fixed', fixedFactor: level, surface }, repeats, ccData);
       const cd = await timeDrawPasses(device, compute.output, cam.viewProj, benchLightViewProj(mesh), repeats, 'none');
-      instanced.setMesh(im);
+      instanced.setMesh(im, source);
       const ir = await timeInstanced(device, instanced, mesh, { mode: 'static', level }, repeats);
       c = cr;
       iTris = ir.triangles;
+      if (source) ccBytes = { compute: compute.staticBuffer.size + compute.cageBuffer.size, instanced: ccSourceBytes(source) };
       best.cBuild = Math.min(best.cBuild, cr.total);
       best.cLit = Math.min(best.cLit, cd.litMs);
       best.cShadow = Math.min(best.cShadow, cd.shadowMs);
-      best.iBuild = Math.min(best.iBuild, ir.buildMs);
+      best.iBuild = Math.min(best.iBuild, ir.buildMs + (cr.stages.subdivision ?? 0));
       best.iLit = Math.min(best.iLit, ir.litMs);
       best.iShadow = Math.min(best.iShadow, ir.shadowMs);
     }
@@ -182,10 +210,11 @@ export async function main(argv: string[]): Promise<number> {
         best.cBuild,
         best.cLit,
         best.cShadow,
-        c.vertices * BYTES_PER_VERTEX + c.triangles * BYTES_PER_TRIANGLE,
+        c.vertices * BYTES_PER_VERTEX + c.triangles * BYTES_PER_TRIANGLE + ccBytes.compute,
       ),
-      line(`instanced, level ${level}`, iTris, best.iBuild, best.iLit, best.iShadow, instanced.gpuBytes),
+      line(`instanced, level ${level}`, iTris, best.iBuild, best.iLit, best.iShadow, instanced.gpuBytes + ccBytes.instanced),
     ];
+    source?.destroy();
     for (const r of rowsHere) console.log(r);
     rows.push(...rowsHere);
   }
@@ -195,17 +224,17 @@ export async function main(argv: string[]): Promise<number> {
 
   const section = `${SECTION}
 
-Written by \`npm run bench:instanced -- --level ${level}\` on ${new Date().toISOString().slice(0, 10)} (${adapterName}; GPU timestamps;
+Written by \`npm run bench:instanced -- --level ${level}${cc ? ' --surface catmull-clark' : ''}\` on ${new Date().toISOString().slice(0, 10)} (${adapterName}; GPU timestamps;
 each cell the smallest of ${rounds} rounds, each a median of ${repeats} frames after a warm-up: under SwiftShader the CPU is
 shared with whatever else runs, and contention only adds time; load average ${loadavg()[0].toFixed(1)} on ${cpus().length} cores as the run
 ended). The talk's comparison against a per-pass tessellator, inside one program:
 the compute tessellator builds once and every pass draws its stored mesh; the instanced power-of-two tessellator
 (NVIDIA 2009) keeps no mesh and evaluates the surface again in the vertex shader of every pass. Matched settings:
-the Phong surface, compute fixed factor ${level} against instanced static level ${level} (the same points on every cage
+${cc ? "the exact Catmull-Clark limit (flat baseline off; the instanced tessellator runs the compute tessellator's evaluator over its tables and refined points)" : 'the Phong surface'}, compute fixed factor ${level} against instanced static level ${level} (the same points on every cage
 triangle, so the same triangle count). *build ms*: compute, its whole rebuild (needed when the view or cage
-changes); instanced, its level pass (levels, buckets, draw records). *lit pass*: 1920×1080, no culling for
+changes); instanced, its level pass (levels, buckets, draw records)${cc ? " plus the patch build (the compute run's subdivision stage: the same pass on the same data)" : ''}. *lit pass*: 1920×1080, no culling for
 either; *shadow pass*: 2048², depth only. *memory held*: compute, its stored mesh (32 bytes a vertex, 12 a
-triangle; work buffers and capacity slack not counted); instanced, every buffer it holds. On SwiftShader (a
+triangle; work buffers and capacity slack not counted); instanced, every buffer it holds${cc ? '; both plus the Catmull-Clark tables and refined points they read' : ''}. On SwiftShader (a
 CPU rasteriser) the vertex shader's cost is paid per vertex on the CPU: the ratios between rows are what
 carry over, not the milliseconds; real-GPU timings are still owed.
 

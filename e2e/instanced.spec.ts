@@ -42,13 +42,15 @@ test('static level: the bucket draw records equal the CPU count; stats per pass;
   expect(errors).toEqual([]);
 });
 
-test('dynamic LOD (adaptive): every patch in one bucket, mixed levels, no console errors', async ({ page }) => {
+test("dynamic LOD (adaptive, the compute tessellator's factor rule): every patch in one bucket, mixed levels, no console errors", async ({
+  page,
+}) => {
   const errors = collectErrors(page);
   await page.goto('/?model=creature&tessellator=instanced&t=0&lod=2');
   await ready(page);
   const r = await records(page);
   expect(r).not.toBeNull();
-  expect(r!.mode).toBe('dynamic');
+  expect(r!.mode).toBe('factor-rule');
   expect(r!.counts.patches).toBe(572);
   // Each record's pattern fields are the pattern table's whatever the view: they equal the
   // static count's (only the instance counts depend on the view).
@@ -150,5 +152,32 @@ test('flat shading (the instanced tessellator) changes the picture, and back', a
   await expect.poll(async () => Buffer.compare(await canvas(), before)).not.toBe(0);
   await set(false);
   await expect.poll(async () => Buffer.compare(await canvas(), before)).toBe(0);
+  expect(errors).toEqual([]);
+});
+
+test('exact Catmull-Clark on both tessellators: the split view draws compute CC beside instanced CC, the same triangle count, no console errors', async ({
+  page,
+}) => {
+  const errors = collectErrors(page);
+  await page.goto('/?model=creature&surface=catmull-clark&split=1&instsurface=catmull-clark&mode=fixed&factor=8&level=8&t=0');
+  await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('instanced (right): catmull-clark', { timeout: 10_000 });
+  // Matched settings: level 8 draws 128 triangles a quad and 64 a triangle patch, as factor 8.
+  const tris = int(556 * 128 + 16 * 64);
+  await expect(page.getByTestId('stats-output-compute')).toContainText(`${tris} tris`, { timeout: 10_000 });
+  await expect(page.getByTestId('stats-output')).toContainText(`${tris} tris`, { timeout: 10_000 });
+  const r = await records(page);
+  expect(r!.gpu).toEqual(r!.cpu);
+  const shot = PNG.sync.read(
+    await page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')], maskColor: '#000000' }),
+  );
+  const halves = [0, 0];
+  for (let y = 0; y < shot.height; y++)
+    for (let x = 0; x < shot.width; x++) {
+      const k = 4 * (y * shot.width + x);
+      if (shot.data[k] + shot.data[k + 1] + shot.data[k + 2] > 400) halves[x < shot.width / 2 ? 0 : 1]++;
+    }
+  expect(halves[0]).toBeGreaterThan(500);
+  expect(halves[1]).toBeGreaterThan(500);
   expect(errors).toEqual([]);
 });

@@ -15,12 +15,15 @@
  *
  * `--tessellator instanced` runs the instanced power-of-two tessellator (src/gpu/instanced.ts)
  * instead: its level pass (static `--level L`, L a power of two in 1..64, or `--adaptive`: each
- * edge's level from the view, the sample's dynamic LOD scaled by --lod), then a compute pass that
+ * edge's level by the compute tessellator's adaptive factor rule at the same camera and --lod,
+ * rounded up to a power of two: the two tessellators' counts compare), then a compute pass that
  * runs the draw's own WGSL vertex function over every instance of every bucket; the copies on
  * shared cage edges are welded by their cage parameter (weldInstanced) and the snap's collapsed
- * triangles left out, so the OBJ and --params are what a draw shows. Surfaces: phong (default) and
+ * triangles left out, so the OBJ and --params are what a draw shows. Surfaces: phong (default),
  * the three ACC schemes (--surface bezier-acc | gregory-acc | pm-acc; closed quad and triangle
- * cages); the exact Catmull-Clark surface is not plugged into it yet. Its --stats line has "tessellator": "instanced",
+ * cages) and the exact Catmull-Clark limit (--surface catmull-clark: the compute tessellator's
+ * evaluator over its buffers, src/gpu/instanced-cc.ts; its CPU preparation is in "cpuPrepMs", its
+ * tables and refined points in "gpuBytes"). Its --stats line has "tessellator": "instanced",
  * "patches", "levelsMs" and "evaluateMs" (GPU timestamps of the two passes; "tessellationMs" is
  * their sum, "subdivisionMs" null), "drawnTriangles" (what a draw rasterises, collapsed ones
  * included) and "weldGap" (the largest distance between the two sides' copies of a point, over
@@ -53,18 +56,20 @@ import {
   weldInstanced,
   weldedToObj,
   weldedVertexParams,
+  factorRuleLevels,
   InstancedTessellator,
   type LevelParams,
 } from '../src/gpu/instanced.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { AccPatches } from '../src/gpu/acc.ts';
+import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
 import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
 import { isAccSurface, type Surface } from '../src/gpu/tess-passes.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc-surface.ts';
 import { demoView, limitDistancePx } from './limit-distance.ts';
 
 const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
-       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|bezier-acc|gregory-acc|pm-acc]`;
+       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
@@ -189,10 +194,13 @@ function parse(argv: string[]) {
   const instanced = tessellator === 'instanced';
   if (instanced) {
     if (o.mode === 'fixed') throw new UsageError('--tessellator instanced takes --level L (a power of two), not --fixed');
-    if (surface !== undefined && surface !== 'phong' && !(ACC_SCHEMES as readonly string[]).includes(surface))
-      throw new UsageError(
-        `--tessellator instanced: --surface phong, ${ACC_SCHEMES.join(', ')} (the exact Catmull-Clark surface is not plugged in yet; got ${surface})`,
-      );
+    if (
+      surface !== undefined &&
+      surface !== 'phong' &&
+      surface !== 'catmull-clark' &&
+      !(ACC_SCHEMES as readonly string[]).includes(surface)
+    )
+      throw new UsageError(`--tessellator instanced: --surface phong, catmull-clark, ${ACC_SCHEMES.join(', ')} (got ${surface})`);
     if (o.flatBaseline) throw new UsageError('--flat-baseline applies to the compute tessellator only');
   } else if (level !== undefined)
     throw new UsageError('--level applies to --tessellator instanced (the compute tessellator takes --fixed F)');
@@ -219,7 +227,20 @@ function parse(argv: string[]) {
   if (displacement !== undefined && instanced)
     throw new UsageError('--displacement applies to the compute tessellator (the instanced one does not displace yet)');
   const disp = displacement === undefined ? undefined : { path: displacement, scale: scale as number, midLevel: mid, wrap };
-  return { model, o, out, params, stats, instanced, level, acc, demoView, limitPx, disp };
+  return {
+    model,
+    o,
+    out,
+    params,
+    stats,
+    instanced,
+    level,
+    acc,
+    demoView,
+    limitPx,
+    disp,
+    instancedCC: instanced && surface === 'catmull-clark',
+  };
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -350,14 +371,21 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   const mesh = prepareMesh(cage);
   const started = performance.now();
   const im = prepareInstanced(cage, mesh);
+  // The exact surface: the compute tessellator's Catmull-Clark tables, its buffers lent.
+  let cc: CatmullClarkData | undefined;
+  try {
+    cc = args.instancedCC ? prepareCatmullClark(cage, mesh) : undefined;
+  } catch (e) {
+    console.error(`tessellate: ${args.model}: ${(e as Error).message}`);
+    return 2;
+  }
   const cpuPrepMs = performance.now() - started;
   let lp: LevelParams;
   if (args.level !== undefined) lp = { mode: 'static', level: args.level };
   else {
-    // The compute tessellator's adaptive camera (1080 px high, 16:9); the level of an edge behind
-    // the eye is 1.
-    const cam = headlessCamera(mesh, args.o);
-    lp = { mode: 'dynamic', viewProj: cam.viewProj, viewport: [1920, 1080], lodScale: args.o.lodScale ?? 1, level: 1 };
+    // The compute tessellator's adaptive camera (1080 px high, 16:9) and its factor rule (the same
+    // screen-space measure and LOD scale), each edge's factor rounded up to a power of two.
+    lp = factorRuleLevels(headlessCamera(mesh, args.o));
   }
   let acc: AccPatches | undefined;
   if (args.acc) {
@@ -371,24 +399,31 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
       throw e;
     }
   }
-  const tess = new InstancedTessellator(device, { surface: acc ? 'acc' : 'evalSurface' });
+  const tess = new InstancedTessellator(device, { surface: acc ? 'acc' : cc ? 'catmull-clark' : 'evalSurface' });
+  const ccSource = cc ? ccSurfaceTessellator(device, mesh, cc) : undefined;
   let r: Awaited<ReturnType<typeof tessellateInstanced>>;
   try {
-    r = await tessellateInstanced(device, cage, mesh, lp, tess, im, acc);
+    r = await tessellateInstanced(device, cage, mesh, lp, tess, im, acc ?? ccSource);
   } catch (e) {
     tess.destroy();
+    ccSource?.destroy();
     console.error(`tessellate: ${(e as Error).message}`);
     return 1;
   }
-  const gpuBytes = tess.gpuBytes + (acc ? acc.patchBuffer.size + acc.pointBuffer.size + acc.staticBuffer.size : 0);
+  const gpuBytes =
+    tess.gpuBytes +
+    (acc ? acc.patchBuffer.size + acc.pointBuffer.size + acc.staticBuffer.size : 0) +
+    (ccSource ? ccSourceBytes(ccSource) : 0);
   tess.destroy();
   acc?.destroy();
+  ccSource?.destroy();
+  const surfaceName = args.acc ?? (cc ? 'catmull-clark' : 'phong');
   const w = weldInstanced(im, r.out);
   const what = args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`;
   if (args.out)
     writeFileSync(
       args.out,
-      weldedToObj(w, `tessellab: ${args.model}, instanced tessellator, ${args.acc ?? 'phong'} surface, ${what}, ${adapterName}`),
+      weldedToObj(w, `tessellab: ${args.model}, instanced tessellator, ${surfaceName} surface, ${what}, ${adapterName}`),
     );
   if (args.params) writeParams(args.params, weldedVertexParams(im, cage, r.out, w));
   if (args.stats) {
@@ -415,7 +450,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');
   console.error(
-    `tessellate: instanced, ${args.acc ?? 'phong'}, ${what}: ${w.vertexCount} vertices, ${w.triangleCount} triangles (${r.out.triangleCount} drawn, ${w.collapsed} collapsed by the snap; ${im.patchCount} patches) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
+    `tessellate: instanced, ${surfaceName}, ${what}: ${w.vertexCount} vertices, ${w.triangleCount} triangles (${r.out.triangleCount} drawn, ${w.collapsed} collapsed by the snap; ${im.patchCount} patches) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
   return 0;
 }

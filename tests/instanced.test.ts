@@ -16,6 +16,7 @@ import {
   patchCanonical,
   patchTriangle,
   PATCH_WORDS,
+  InstancedTessellator,
 } from '../src/gpu/instanced.ts';
 import { pow2Pattern, vertexEdges } from '../src/pattern/pow2.ts';
 import creature from '../public/models/creature.obj?raw';
@@ -128,4 +129,19 @@ describe('instanced patches, levels and snap on the CPU', () => {
       }
     });
   }
+});
+
+describe('instanced tessellator: storage buffers per stage', () => {
+  // Only the limits are read before the check (no GPU needed): a compatibility-mode device
+  // allows few storage buffers in the vertex stage.
+  const device = (inVertex: number | undefined, perStage: number) =>
+    ({ limits: { maxStorageBuffersInVertexStage: inVertex, maxStorageBuffersPerShaderStage: perStage } }) as unknown as GPUDevice;
+  it('refuses a device with too few, with the numbers: Phong 3 in the vertex stage, ACC 5, Catmull-Clark 6 (8 in compute)', () => {
+    expect(() => new InstancedTessellator(device(2, 8))).toThrow(
+      /needs 3 storage buffers in the vertex stage and 5 in compute; this device allows 2 and 8/,
+    );
+    expect(() => new InstancedTessellator(device(4, 8), { surface: 'acc' })).toThrow(/needs 5 .* and 7 in compute/);
+    expect(() => new InstancedTessellator(device(5, 8), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 8 in compute/);
+    expect(() => new InstancedTessellator(device(undefined, 7), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 8 in compute/);
+  });
 });

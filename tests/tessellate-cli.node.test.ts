@@ -268,7 +268,7 @@ describe('npm run tessellate', () => {
       ['public/models/torus.obj', '--fixed', '2'], // neither --out nor --stats
       ['public/models/torus.obj', '--tessellator', 'instanced', '--fixed', '4', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--tessellator', 'instanced', '--level', '3', '--out', join(dir, 'x.obj')],
-      ['public/models/torus.obj', '--tessellator', 'instanced', '--level', '4', '--surface', 'catmull-clark', '--out', join(dir, 'x.obj')],
+      ['public/models/torus.obj', '--tessellator', 'instanced', '--level', '4', '--surface', 'loop', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--level', '4', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--tessellator', 'hull', '--level', '4', '--out', join(dir, 'x.obj')],
       ['public/models/torus.obj', '--fixed', '2', '--surface', 'phong', '--limit-px', '--stats'],

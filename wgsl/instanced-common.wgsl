@@ -39,6 +39,9 @@ const LEVELS: u32 = 7u; // 1, 2, 4, … 64
 const MAX_LEVEL: u32 = 64u;
 
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32>, du: vec3<f32>, dv: vec3<f32> } // as wgsl/tess-common.wgsl
+// What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule; each
+// surface module's factorPoint).
+struct FactorPoint { pos: vec3<f32>, normal: vec3<f32> }
 
 fn triVert(t: u32, i: u32) -> u32 { return staticBuf[params.offTriVerts + 3u * t + i]; }
 fn cageVec3(o: u32) -> vec3<f32> { return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]); }

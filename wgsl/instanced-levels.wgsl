@@ -18,10 +18,11 @@
 //     indexCount (two line ends per triangle edge), instanceCount, 0, 0
 //
 // Modes (params.mode): 0 static (every patch wants params.staticLevel), 1 per patch (the wanted
-// array), 2 dynamic (per edge, from the view: distance and curvature). In modes 0 and 1 an edge's
-// level is the minimum over its patches' levels and a patch keeps its own level; in mode 2 the
-// edge's level is computed once per edge and the patch's level is the maximum over its edges
-// (notes §6.2). Either way both patches of an edge read the same stored value.
+// array), 2 dynamic (per edge, from the view: distance and curvature), 3 factor rule (per edge,
+// the compute tessellator's adaptive rule). In modes 0 and 1 an edge's level is the minimum over
+// its patches' levels and a patch keeps its own level; in modes 2 and 3 the edge's level is
+// computed once per edge and the patch's level is the maximum over its edges (notes §6.2).
+// Either way both patches of an edge read the same stored value.
 
 @group(0) @binding(3) var<storage, read_write> work: array<atomic<u32>>;
 @group(0) @binding(4) var<storage, read_write> drawArgs: array<u32>;
@@ -83,13 +84,65 @@ fn edgeView(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
   atomicStore(&work[params.offEdgeCode + e], LEVELS - lg);
 }
 
+// Mode 3: the compute tessellator's adaptive factor rule (wgsl/tess-factors.wgsl adaptiveFactor,
+// src/gpu/factors.ts edgeFactor: the same screen-space measure, the same points), so that the two
+// tessellators' triangle counts compare at one LOD scale. From the edge's two cage vertices'
+// factorPoint (the surface's: the cage's positions and normals for Phong and ACC, the limit
+// positions and normals at the cage vertices for Catmull-Clark, as the compute tessellator reads
+// them): the Phong midpoint's offset e from the chord, k = sqrt(lodScale·|e| / (dist·pixelAngle)),
+// 1 for an edge outside the frustum or facing away; then L_e = the next power of two ≥ ceil(k) in
+// [1, 64] (rounded up: at least the compute tessellator's segments, so its pixel error bound holds).
+fn edgeEnd(p: u32, isTri: bool, k: u32, t: u32) -> u32 {
+  let ij = edgePoint(isTri, 1u, k, t);
+  let pt = patchTriangle(p, 1u, ij.x, ij.y);
+  return triVert(pt.t, select(select(2u, 1u, pt.w.y == ONE), 0u, pt.w.x == ONE));
+}
+
+fn factorSphereOutside(c: vec3<f32>, r: f32) -> bool {
+  let m = transpose(params.viewProj); // rows of viewProj
+  let planes = array<vec4<f32>, 6>(m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]);
+  for (var i = 0u; i < 6u; i++) {
+    let q = planes[i];
+    if (dot(q.xyz, c) + q.w < -r * length(q.xyz)) { return true; }
+  }
+  return false;
+}
+
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn edgeFactorRule(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let e = flatIndex(wid, lid);
+  if (e >= params.nEdges) { return; }
+  let owner = staticBuf[params.offEdgeOwner + e];
+  let p = instOwnerWord_patchId(owner);
+  let k = instOwnerWord_side(owner);
+  let isTri = patchIsTri(p);
+  let a = factorPoint(edgeEnd(p, isTri, k, 0u));
+  let b = factorPoint(edgeEnd(p, isTri, k, 1u));
+  let d = b.pos - a.pos;
+  let off = (PHONG_ALPHA / 4.0) * (dot(d, b.normal) * b.normal - dot(d, a.normal) * a.normal);
+  let err = length(off);
+  let mid = 0.5 * (a.pos + b.pos) + off;
+  let toEye0 = params.eye.xyz - a.pos;
+  let toEye1 = params.eye.xyz - b.pos;
+  let away = dot(a.normal, toEye0) < -0.1 * length(toEye0) && dot(b.normal, toEye1) < -0.1 * length(toEye1);
+  var f = 1.0;
+  if (!(away || factorSphereOutside(mid, 0.5 * length(d) + err))) {
+    let dist = max(length(mid - params.eye.xyz), 1e-6);
+    f = sqrt(params.lodScale * err / (dist * params.pixelAngle));
+  }
+  f = select(1.0, min(f, f32(MAX_LEVEL)), f >= 1.0); // NaN and ≤ 1: 1
+  let m = u32(ceil(f));
+  let lg = select(0u, firstLeadingBit(m - 1u) + 1u, m > 1u); // the next power of two ≥ m
+  atomicStore(&work[params.offEdgeCode + e], LEVELS - lg);
+}
+
 // Every patch: its pattern level, then a slot in its bucket's list.
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn bucketPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let p = flatIndex(wid, lid);
   if (p >= params.nPatches) { return; }
   var lg = 0u;
-  if (params.mode == 2u) {
+  if (params.mode >= 2u) {
     for (var k = 0u; k < patchEdgeCount(p); k++) { lg = max(lg, edgeLog2(patchEdge(p, k))); }
   } else {
     lg = wantedLog2(p);

@@ -18,3 +18,8 @@ fn patchColourIndex(p: u32) -> u32 {
   if (accPatches[2u * patchWord(p, 6u)] == 0u) { return 0u; }
   return select(1u, 2u, patchIsTri(p));
 }
+
+// What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
+// cage position and vertex normal, as the compute tessellator's factor rule reads them on an ACC
+// surface (src/gpu/tessellator.ts: offFactorPos is the cage's for every surface but Catmull-Clark).
+fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(cagePos(v), cageNormal(v)); }

@@ -10,3 +10,7 @@ fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
 // Patch colours (wgsl/render-instanced.wgsl; src/gpu/contract.ts PATCH_COLOURS order): quad
 // patches in the regular colour, triangle patches in the triangle colour.
 fn patchColourIndex(p: u32) -> u32 { return select(0u, 2u, patchIsTri(p)); }
+
+// What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
+// cage position and vertex normal, as the compute tessellator's Phong factor rule reads them.
+fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(cagePos(v), cageNormal(v)); }

@@ -12,7 +12,16 @@ import type { ShadingResources } from '../gpu/renderer.ts';
 import type { PackedPatterns } from '../pattern/pow2.ts';
 import type { Cage } from '../mesh/types.ts';
 import { AccPatches } from '../gpu/acc.ts';
+import { AccError } from '../subdiv/acc.ts';
+import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
+import { CC_TRI_WORD } from '../gpu/cc/words.ts';
+import { ccSurfaceTessellator } from '../gpu/instanced-cc.ts';
+import type { Tessellator } from '../gpu/tessellator.ts';
 import type { InstancedSurface } from './params.ts';
+
+/** The Catmull-Clark preparation refused the cage (a message fit to show). An AccError, so that
+ * the page's fallback for a cage an ACC scheme refuses (Phong, with the reason) takes it too. */
+export class CatmullClarkRefused extends AccError {}
 
 /** What one frame's draws hold, from the 14 bucket records. */
 export interface InstancedCounts {
@@ -55,9 +64,13 @@ export class InstancedView {
   lastLevels: LevelParams | null = null;
   /** The ACC patches of the cage (an ACC surface). */
   #acc: AccPatches | null = null;
+  /** The exact surface: the cage's Catmull-Clark tables, and the compute Tessellator that lends
+   * the instanced one its buffers and patch build (src/gpu/instanced-cc.ts; this view owns it). */
+  #cc: { data: CatmullClarkData; tess: Tessellator } | null = null;
   readonly #device: GPUDevice;
 
-  /** `surface`: Phong, or an ACC scheme (setCage then throws AccError for cages it refuses). */
+  /** `surface`: Phong, an ACC scheme (setCage then throws AccError for cages it refuses) or the
+   * exact Catmull-Clark surface (CatmullClarkRefused, likewise). */
   constructor(
     device: GPUDevice,
     shading: ShadingResources,
@@ -67,7 +80,7 @@ export class InstancedView {
     this.tess = new InstancedTessellator(device, {
       colorFormat: shading.colorFormat,
       sampleCount: shading.sampleCount,
-      surface: surface === 'phong' ? 'evalSurface' : 'acc',
+      surface: surface === 'phong' ? 'evalSurface' : surface === 'catmull-clark' ? 'catmull-clark' : 'acc',
     });
     this.tess.useRenderer(shading);
     this.#staging = device.createBuffer({
@@ -86,15 +99,19 @@ export class InstancedView {
   }
 
   /** Patches per patch colour (as wgsl/instanced-surface-*.wgsl patchColourIndex): regular,
-   * irregular quad, triangle (ACC: a regular patch is ACC kind 0; Phong: every quad). */
+   * irregular quad, triangle (ACC: a regular patch is ACC kind 0; Catmull-Clark: a quad of region
+   * depth 0, one bicubic patch; Phong: every quad). */
   patchColourCounts(): [number, number, number, number] {
     const m = this.#mesh;
     const n: [number, number, number, number] = [0, 0, 0, 0];
     if (!m) return n;
     const kinds = this.#acc?.topology.patches;
+    const cc = this.#cc?.data;
     for (let p = 0; p < m.patchCount; p++) {
       const tri = (m.patches[8 * p + 1] & 1) === 1;
+      const t = m.patches[8 * p];
       if (tri) n[2]++;
+      else if (cc) n[CC_TRI_WORD.get(cc.words[cc.offTri + 3 * t + 1], 'depth') === 0 ? 0 : 1]++;
       else if (!kinds || kinds[2 * m.patches[8 * p + 6]] === 0) n[0]++;
       else n[1]++;
     }
@@ -104,13 +121,28 @@ export class InstancedView {
   /** Upload a model's patches (its topology and positions; with an ACC surface, its ACC patches:
    * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses). */
   setCage(cage: Cage): void {
-    const mesh = prepareInstanced(cage, prepareMesh(cage));
-    const acc = this.surface === 'phong' ? null : new AccPatches(this.#device, cage, this.surface);
+    const prepared = prepareMesh(cage);
+    const mesh = prepareInstanced(cage, prepared);
+    const isAcc = this.surface !== 'phong' && this.surface !== 'catmull-clark';
+    const acc = isAcc ? new AccPatches(this.#device, cage, this.surface as Exclude<InstancedSurface, 'phong' | 'catmull-clark'>) : null;
+    let cc: { data: CatmullClarkData; tess: Tessellator } | null = null;
+    if (this.surface === 'catmull-clark') {
+      // Topology only, as the page's own cache prepares it (src/app/cc-tables.ts): tens of ms.
+      let data: CatmullClarkData;
+      try {
+        data = buildCatmullClark(cage, prepared);
+      } catch (e) {
+        throw new CatmullClarkRefused((e as Error).message);
+      }
+      cc = { data, tess: ccSurfaceTessellator(this.#device, prepared, data) };
+    }
     this.#acc?.destroy();
     this.#acc = acc;
+    this.#cc?.tess.destroy();
+    this.#cc = cc;
     this.#mesh = mesh;
     this.#cage = cage;
-    this.tess.setMesh(mesh, acc ?? undefined);
+    this.tess.setMesh(mesh, acc ?? cc?.tess);
   }
 
   /** Encode the level pass (before the frame's render passes) and, when the reader is free, a copy of its records. */
@@ -159,6 +191,7 @@ export class InstancedView {
   destroy(): void {
     this.tess.destroy();
     this.#acc?.destroy();
+    this.#cc?.tess.destroy();
     this.#staging.destroy();
   }
 }

@@ -36,7 +36,7 @@ import {
   type DemoParams,
 } from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
-import type { LevelParams } from '../gpu/instanced.ts';
+import { factorRuleLevels, type LevelParams } from '../gpu/instanced.ts';
 import { AccError } from '../subdiv/acc.ts';
 import { HEAT_DEFAULT_RANGE, HEAT_RAMP, type HeatView } from '../gpu/acc-heat.ts';
 import type { Cage } from '../mesh/types.ts';
@@ -537,10 +537,11 @@ class TessellationDemo extends DemoBase {
   }
 
   /** The instanced tessellator's level parameters for this frame: fixed → every patch at the
-   * static level; adaptive → each edge's level from the view (its LOD scale), in model space. */
-  #instancedLevels(modelViewProj: Float32Array, width: number, height: number): LevelParams {
+   * static level; adaptive → each edge's level by the compute tessellator's factor rule at the
+   * same camera and LOD scale (model space), rounded up to a power of two. */
+  #instancedLevels(factors: FactorParams): LevelParams {
     if (this.params.mode === 'fixed') return { mode: 'static', level: this.params.level };
-    return { mode: 'dynamic', viewProj: modelViewProj, viewport: [width, height], lodScale: this.params.lod, level: 1 };
+    return factorRuleLevels(factors);
   }
 
   /** Test hook: the GPU's bucket draw records of the latest level pass, and the CPU's count for
@@ -706,7 +707,7 @@ class TessellationDemo extends DemoBase {
       // The instanced tessellator draws: its level pass when the levels may have changed.
       if (this.params.spin && this.params.mode === 'adaptive') this.#geometryDirty = true;
       if (this.#geometryDirty) {
-        instanced.encode(encoder, this.#instancedLevels(modelViewProj, target.width, target.height));
+        instanced.encode(encoder, this.#instancedLevels(factors));
         if (!computeDrawn) this.#geometryDirty = false;
         this.#rebuilds++;
       } else instanced.copyIfOwed(encoder);
@@ -1295,7 +1296,13 @@ function buildPanel(demo: TessellationDemo, initialModel: string): Panel {
       demo.setSplit(split);
     });
   inst
-    .add(p, 'instSurface', { Phong: 'phong', 'Bezier ACC': 'bezier-acc', 'Gregory ACC': 'gregory-acc', 'Pm ACC': 'pm-acc' })
+    .add(p, 'instSurface', {
+      Phong: 'phong',
+      'Catmull-Clark': 'catmull-clark',
+      'Bezier ACC': 'bezier-acc',
+      'Gregory ACC': 'gregory-acc',
+      'Pm ACC': 'pm-acc',
+    })
     .name('its surface')
     .onChange((v: DemoParams['instSurface']) => {
       syncUrl(p);

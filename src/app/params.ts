@@ -53,8 +53,9 @@ export interface DemoParams {
   /** Split view: the compute tessellator on the left half, the instanced one on the right, same
    * cage, camera and settings (whatever `tessellator` says). */
   split: boolean;
-  /** The instanced tessellator's surface (`instsurface=`): Phong or one of the ACC schemes
-   * (closed quad and triangle cages; elsewhere it falls back to Phong and says why). */
+  /** The instanced tessellator's surface (`instsurface=`): Phong, the exact Catmull-Clark limit,
+   * or one of the ACC schemes (closed quad and triangle cages; elsewhere it falls back to Phong
+   * and says why). */
   instSurface: InstancedSurface;
   /** The instanced tessellator's flat shading (`flatshade=1`): each facet by its own normal. */
   flatShade: boolean;
@@ -84,8 +85,8 @@ export const ERR_RANGE = { min: 1e-7, max: 180 } as const;
 export type CompareSurface = 'catmull-clark' | 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
 export const COMPARE_SURFACES: readonly CompareSurface[] = ['catmull-clark', 'phong', ...ACC_SURFACES];
 
-export type InstancedSurface = 'phong' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
-export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
+export type InstancedSurface = 'phong' | 'catmull-clark' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
+export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'catmull-clark', 'bezier-acc', 'gregory-acc', 'pm-acc'];
 
 export const LOD_RANGE = { min: 0.05, max: 8 } as const;
 export const FACTOR_RANGE = { min: 1, max: 64 } as const;

@@ -9,13 +9,16 @@
  *
  * Patches are cage faces: a quad face is one quad patch, any other face gives one triangle patch
  * per fan triangle of src/gpu/prepare.ts (a triangle face: itself). The surface is any WGSL module
- * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl; see
- * wgsl/instanced-common.wgsl for how the exact surfaces plug in).
+ * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl), the
+ * three ACC surfaces (src/gpu/acc.ts patches), or the exact Catmull-Clark surface through the
+ * compute tessellator's own evaluator and buffers (src/gpu/instanced-cc.ts says how).
  *
  * Passes (encodeLevels, one compute pass, no readback):
  *   clear      edge codes and bucket counts
  *   patchEdges modes static / per-patch: each edge's level = min over its patches   one thread per patch
  *   edgeView   mode dynamic: each edge's level from the view                        one thread per edge
+ *   edgeFactorRule  mode factor-rule: each edge's level by the compute tessellator's
+ *              adaptive factor rule (the same screen-space measure)             one thread per edge
  *   bucket     each patch's level, a slot in its bucket's list                      one thread per patch
  *   records    14 drawIndexedIndirect records (quad and triangle × 7 levels)        one workgroup
  * Then encodeDraw (lit or shadow pass: 14 drawIndexedIndirect, the bucket's list base by dynamic
@@ -33,12 +36,16 @@ import renderInstancedWgsl from '../../wgsl/render-instanced.wgsl?raw';
 import triSurfaceWgsl from '../../wgsl/instanced-surface-tri.wgsl?raw';
 import accSurfaceWgsl from '../../wgsl/instanced-surface-acc.wgsl?raw';
 import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from './acc.ts';
+import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSurfaceWgsl } from './instanced-cc.ts';
+import type { Tessellator } from './tessellator.ts';
 import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
 import { constantsWgsl, defineBits, grid2d, WORKGROUP_SIZE } from './contract.ts';
 import { readBuffer } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
+import { edgeFactor, type Vec3 } from './factors.ts';
+import type { FactorParams } from './types.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../mesh/types.ts';
 import {
@@ -56,6 +63,8 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['viewProj', 'mat4x4<f32>'],
   // x, y: viewport size in pixels (dynamic mode).
   ['viewport', 'vec4<f32>'],
+  // xyz: the eye in model space (factor-rule mode).
+  ['eye', 'vec4<f32>'],
   ['nPatches', 'u32'],
   ['nQuads', 'u32'],
   ['nTris', 'u32'],
@@ -65,6 +74,8 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['lodScale', 'f32'],
   ['targetPixels', 'f32'],
   ['pixelError', 'f32'],
+  // Factor-rule mode: radians per pixel (fovY / viewport height), as the compute tessellator's Params.
+  ['pixelAngle', 'f32'],
   // staticBuf word offsets (wgsl/instanced-common.wgsl), cageBuf float offset of the normals.
   ['offTriVerts', 'u32'],
   ['offPatches', 'u32'],
@@ -112,7 +123,7 @@ export const BUCKETS = 2 * POW2_LEVEL_COUNT;
 /** Bytes between two buckets' uniforms (minUniformBufferOffsetAlignment is at most 256). */
 const BUCKET_STRIDE = 256;
 export const PATCH_WORDS = 8;
-const MODE = { static: 0, 'per-patch': 1, dynamic: 2 } as const;
+const MODE = { static: 0, 'per-patch': 1, dynamic: 2, 'factor-rule': 3 } as const;
 
 // ---- CPU side: patches and edges ------------------------------------------------------------
 
@@ -297,6 +308,45 @@ export function cpuDynamicEdgeLevel(
 }
 
 /**
+ * The factor-rule mode for edge e on the CPU (wgsl/instanced-levels.wgsl edgeFactorRule): the
+ * compute tessellator's adaptive factor (src/gpu/factors.ts edgeFactor, double precision) at the
+ * edge's two cage vertices as `point` gives them (cage positions and normals; the limit's for
+ * Catmull-Clark), rounded up to a power of two. Returns the level and the factor.
+ */
+export function cpuFactorRuleEdgeLevel(
+  m: InstancedMesh,
+  e: number,
+  lp: LevelParams,
+  point: (v: number) => { pos: Vec3; normal: Vec3 },
+): { level: number; f: number } {
+  const a = point(m.edgeVerts[2 * e]),
+    b = point(m.edgeVerts[2 * e + 1]);
+  const f = edgeFactor(a.pos, b.pos, a.normal, b.normal, {
+    mode: 'adaptive',
+    fixedFactor: 1,
+    lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
+    viewProj: lp.viewProj ?? new Float32Array(16),
+    eye: lp.eye ?? [0, 0, 0],
+    pixelAngle: lp.pixelAngle ?? 1,
+    maxFactor: MAX_POW2_LEVEL,
+  });
+  const c = Math.ceil(f);
+  return { level: c <= 1 ? 1 : 2 ** Math.ceil(Math.log2(c)), f };
+}
+
+/** The factor-rule levels for the compute tessellator's camera and LOD scale (its FactorParams, as
+ * its adaptive mode reads them): the two tessellators then measure the view alike. */
+export function factorRuleLevels(f: FactorParams): LevelParams {
+  return {
+    mode: 'factor-rule',
+    viewProj: f.viewProj,
+    eye: [f.eye[0], f.eye[1], f.eye[2]],
+    pixelAngle: f.fovY / Math.max(1, f.viewportHeight),
+    lodScale: f.lodScale,
+  };
+}
+
+/**
  * Where each headless output vertex lies on its cage face, in the CPU reference's addressing
  * (src/gpu/face-params.ts: `f u v` on quads, `f k s t` on sub-faces of other faces), for the
  * CLI's --params.
@@ -456,9 +506,12 @@ export interface InstancedOptions {
    * 'acc': the ACC surfaces (Bezier, Gregory or Pm ACC, by the AccPatches handed to setMesh:
    * src/gpu/acc.ts builds them from the cage, wgsl/surface-acc.wgsl evaluates them through
    * wgsl/instanced-surface-acc.wgsl), their two buffers bound in a fourth bind group (group 3) in
-   * every pass. The exact Catmull-Clark surface is not plugged in yet.
+   * every pass. 'catmull-clark': the exact limit surface, evaluated by the compute tessellator's
+   * wgsl/surface-cc.wgsl over the buffers of a Catmull-Clark Tessellator handed to setMesh
+   * (src/gpu/instanced-cc.ts: ccSurfaceTessellator makes one), bound in group 3; encodeLevels runs
+   * its patch build first.
    */
-  surface?: 'evalSurface' | 'acc';
+  surface?: 'evalSurface' | 'acc' | 'catmull-clark';
   /** Render target format of the lit pipeline (default 'rgba8unorm'). */
   colorFormat?: GPUTextureFormat;
   /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
@@ -469,8 +522,10 @@ export interface InstancedOptions {
 
 export interface LevelParams {
   /** static: every patch at `level`; per-patch: the levels given to setWanted; dynamic: per
-   * edge from the view (viewProj, viewport, lodScale, targetPixels, pixelError). */
-  mode: 'static' | 'per-patch' | 'dynamic';
+   * edge from the view (viewProj, viewport, lodScale, targetPixels, pixelError); factor-rule: per
+   * edge by the compute tessellator's adaptive rule (viewProj, eye, pixelAngle, lodScale:
+   * factorRuleLevels makes them from its FactorParams), rounded up to a power of two. */
+  mode: 'static' | 'per-patch' | 'dynamic' | 'factor-rule';
   /** The static level (also the dynamic mode's level for an edge behind the eye). Default 4. */
   level?: number;
   viewProj?: Float32Array;
@@ -480,6 +535,9 @@ export interface LevelParams {
   targetPixels?: number;
   /** Dynamic: allowed distance in pixels between the curve and its segments (default 0.5). */
   pixelError?: number;
+  /** Factor rule: the eye in model space, and radians per pixel (fovY / viewport height). */
+  eye?: [number, number, number];
+  pixelAngle?: number;
 }
 
 interface WorkLayout {
@@ -535,7 +593,7 @@ export class InstancedTessellator implements SurfaceDrawer {
   private readonly paramsBytes = new ArrayBuffer(INST_PARAMS.size);
   private readonly bucketUniform: GPUBuffer;
   private readonly frame: GPUBuffer;
-  private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'bucketPatches' | 'records', GPUComputePipeline>;
+  private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'edgeFactorRule' | 'bucketPatches' | 'records', GPUComputePipeline>;
   private readonly layouts: {
     mesh: GPUBindGroupLayout;
     bucket: GPUBindGroupLayout;
@@ -548,8 +606,13 @@ export class InstancedTessellator implements SurfaceDrawer {
   private readonly code: (...parts: string[]) => string;
   /** Whether the surface is ACC (group 3: its patches and control points). */
   readonly acc: boolean;
-  private accGroup?: GPUBindGroup;
+  /** Whether the surface is the exact Catmull-Clark one (group 3: a compute Tessellator's buffers). */
+  readonly cc: boolean;
+  /** Group 3 of an ACC or Catmull-Clark surface, for the current mesh. */
+  private surfaceGroup?: GPUBindGroup;
   private accPatches?: AccPatches;
+  /** The Catmull-Clark surface's lending tessellator (owned by the caller). */
+  private ccSource?: Tessellator;
   private frameModule?: GPUShaderModule;
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
@@ -576,9 +639,24 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.depthFormat = opts.depthFormat ?? 'depth32float';
     this.sampleCount = opts.sampleCount ?? 1;
     this.acc = opts.surface === 'acc';
+    this.cc = opts.surface === 'catmull-clark';
+    // Storage buffers per stage: group 0's three (topology + patterns, cage, work) and the
+    // surface's (ACC: 2; Catmull-Clark: the lending tessellator's static, cage and work) in the
+    // vertex stage; the headless pass adds its two outputs (8 with Catmull-Clark: core WebGPU's
+    // minimum). A device with fewer (compatibility mode) is refused here with the numbers rather
+    // than by a pipeline's validation error later.
+    const vertexStorage = 3 + (this.acc ? 2 : this.cc ? 3 : 0);
+    const limits = device.limits as GPUSupportedLimits & { maxStorageBuffersInVertexStage?: number };
+    const inVertex = limits.maxStorageBuffersInVertexStage ?? limits.maxStorageBuffersPerShaderStage;
+    if (inVertex < vertexStorage || limits.maxStorageBuffersPerShaderStage < vertexStorage + 2)
+      throw new Error(
+        `the instanced tessellator on this surface needs ${vertexStorage} storage buffers in the vertex stage and ${vertexStorage + 2} in compute; this device allows ${inVertex} and ${limits.maxStorageBuffersPerShaderStage}`,
+      );
     const surface = this.acc
       ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
-      : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
+      : this.cc
+        ? instancedCCSurfaceWgsl()
+        : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
     const code = (...parts: string[]) =>
       [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
     this.code = code;
@@ -588,6 +666,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.levelPipelines = {
       patchEdges: pipeline('patchEdges'),
       edgeView: pipeline('edgeView'),
+      edgeFactorRule: pipeline('edgeFactorRule'),
       bucketPatches: pipeline('bucketPatches'),
       records: pipeline('records'),
     };
@@ -619,11 +698,13 @@ export class InstancedTessellator implements SurfaceDrawer {
         entries: [1, 2].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
       }),
       surface: device.createBindGroupLayout({
-        label: 'instanced ACC surface',
-        entries: [
-          { binding: 0, visibility: VC, buffer: ro },
-          { binding: 1, visibility: VC, buffer: ro },
-        ],
+        label: this.cc ? 'instanced Catmull-Clark surface' : 'instanced ACC surface',
+        entries: this.cc
+          ? ccSurfaceLayoutEntries(VC)
+          : [
+              { binding: 0, visibility: VC, buffer: ro },
+              { binding: 1, visibility: VC, buffer: ro },
+            ],
       }),
     };
     this.renderLayout = device.createPipelineLayout({
@@ -669,14 +750,20 @@ export class InstancedTessellator implements SurfaceDrawer {
     });
   }
 
-  /** A pipeline's bind group layouts, with the ACC surface's at group 3. */
+  /** A pipeline's bind group layouts, with the ACC or Catmull-Clark surface's at group 3. */
   private withSurface(groups: GPUBindGroupLayout[]): GPUBindGroupLayout[] {
-    return this.acc ? [...groups, this.layouts.surface] : groups;
+    return this.acc || this.cc ? [...groups, this.layouts.surface] : groups;
   }
 
-  /** Bind the ACC surface's buffers (group 3), where there is one. */
+  /** Bind the ACC or Catmull-Clark surface's buffers (group 3), where there is one. */
   private bindSurface(pass: GPURenderPassEncoder | GPUComputePassEncoder): void {
-    if (this.accGroup) pass.setBindGroup(3, this.accGroup);
+    if (this.surfaceGroup) pass.setBindGroup(3, this.surfaceGroup);
+  }
+
+  /** Group 3's entries for the current mesh (ACC patches, or the lending tessellator's buffers). */
+  private surfaceEntries(): GPUBindGroupEntry[] {
+    if (this.ccSource) return ccSurfaceEntries(this.ccSource);
+    return this.accPatches!.surfaceEntries(0, 1);
   }
 
   get instancedMesh(): InstancedMesh | undefined {
@@ -692,12 +779,21 @@ export class InstancedTessellator implements SurfaceDrawer {
   }
 
   /** Upload a cage's patches (topology once; updateCage for new positions). With an ACC surface,
-   * `acc`: its patches for the same cage (built here from the cage positions, and again by
-   * updateCage). */
-  setMesh(m: InstancedMesh, acc?: AccPatches): void {
+   * `source`: its AccPatches for the same cage (built here from the cage positions, and again by
+   * updateCage); with the Catmull-Clark surface, a Catmull-Clark Tessellator holding the same
+   * prepared mesh, flat baseline off, its Params uploaded (instanced-cc.ts ccSurfaceTessellator):
+   * its buffers are read by every pass, its patch build run by every encodeLevels. */
+  setMesh(m: InstancedMesh, source?: AccPatches | Tessellator): void {
     const device = this.device;
     this.releaseMesh();
+    const isTess = (s: AccPatches | Tessellator | undefined): s is Tessellator => s !== undefined && 'encodePatchBuild' in s;
+    const acc = this.acc && !isTess(source) ? source : undefined;
     if (this.acc && !acc) throw new Error('InstancedTessellator: an ACC surface needs its AccPatches (setMesh(mesh, acc))');
+    if (this.cc) {
+      if (!isTess(source))
+        throw new Error('InstancedTessellator: the Catmull-Clark surface needs a Catmull-Clark Tessellator (setMesh(mesh, tess))');
+      checkCCSource(source, m.prepared);
+    }
     const pr = m.prepared;
     const entries = new Uint32Array(4 * BUCKETS);
     this.patterns.entries.forEach((e, b) => entries.set([e.baseVertex, e.firstIndex, e.indexCount, e.vertexCount], 4 * b));
@@ -727,15 +823,17 @@ export class InstancedTessellator implements SurfaceDrawer {
     device.queue.writeBuffer(cageBuf, 0, cage);
     if (this.acc && acc) {
       this.accPatches = acc;
-      this.accGroup = device.createBindGroup({
-        label: 'instanced ACC surface',
-        layout: this.layouts.surface,
-        entries: acc.surfaceEntries(0, 1),
-      });
       const enc = device.createCommandEncoder({ label: 'instanced ACC build' });
       acc.encode(enc, cageBuf);
       device.queue.submit([enc.finish()]);
     }
+    if (this.cc && isTess(source)) this.ccSource = source;
+    if (this.acc || this.cc)
+      this.surfaceGroup = device.createBindGroup({
+        label: this.cc ? 'instanced Catmull-Clark surface' : 'instanced ACC surface',
+        layout: this.layouts.surface,
+        entries: this.surfaceEntries(),
+      });
 
     let w = 0;
     const take = (n: number) => {
@@ -791,11 +889,13 @@ export class InstancedTessellator implements SurfaceDrawer {
     device.queue.writeBuffer(this.bucketUniform, 0, buckets);
   }
 
-  /** New cage positions and vertex normals for the same topology. */
+  /** New cage positions and vertex normals for the same topology (the Catmull-Clark surface's
+   * lending tessellator gets them too; the next encodeLevels runs its patch build). */
   updateCage(positions: Float32Array, normals: Float32Array): void {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+    this.ccSource?.updateCage(positions, normals);
     if (this.accPatches) {
       const enc = this.device.createCommandEncoder({ label: 'instanced ACC build' });
       this.accPatches.encode(enc, m.cageBuf);
@@ -817,12 +917,17 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.device.queue.writeBuffer(m.work, 4 * m.layout.wanted, levels);
   }
 
-  /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it). */
+  /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it).
+   * With the Catmull-Clark surface, the lending tessellator's patch build first (its own pass):
+   * the dynamic rule and every draw after this read the refined points it writes. */
   encodeLevels(encoder: GPUCommandEncoder, lp: LevelParams, timestampWrites?: GPUComputePassTimestampWrites): void {
     const m = this.requireMesh();
+    this.ccSource?.encodePatchBuild(encoder);
     INST_PARAMS.write(new DataView(this.paramsBytes), {
       viewProj: lp.viewProj ?? new Float32Array(16),
       viewport: [lp.viewport?.[0] ?? 1, lp.viewport?.[1] ?? 1, 0, 0],
+      eye: [...(lp.eye ?? [0, 0, 0]), 0],
+      pixelAngle: lp.pixelAngle ?? 1,
       mode: MODE[lp.mode],
       staticLevel: lp.level ?? LEVEL_DEFAULTS.level,
       lodScale: lp.lodScale ?? LEVEL_DEFAULTS.lodScale,
@@ -837,24 +942,40 @@ export class InstancedTessellator implements SurfaceDrawer {
     const run = (name: keyof InstancedTessellator['levelPipelines'], groups: number, group: GPUBindGroup) => {
       cp.setPipeline(this.levelPipelines[name]);
       cp.setBindGroup(0, group);
-      // The dynamic rule evaluates the surface: an ACC surface's buffers (its auto layout's group 3).
-      if (name === 'edgeView' && this.accPatches) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
+      // The dynamic rule evaluates the surface: an ACC or Catmull-Clark surface's buffers (its
+      // auto layout's group 3).
+      if (name === 'edgeView' && (this.acc || this.cc)) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
+      // The factor rule reads the limit at the cage vertices on Catmull-Clark (group 3).
+      if (name === 'edgeFactorRule' && this.cc) cp.setBindGroup(3, this.factorRuleSurfaceGroup());
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
     if (lp.mode === 'dynamic') run('edgeView', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeView'));
+    else if (lp.mode === 'factor-rule') run('edgeFactorRule', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeFactorRule'));
     else run('patchEdges', Math.ceil(nP / 64), this.levelGroupFor('patchEdges'));
     run('bucketPatches', Math.ceil(nP / 64), this.levelGroupFor('bucketPatches'));
     run('records', 1, this.levelGroupFor('records'));
     cp.end();
   }
 
+  private factorRuleSurface?: GPUBindGroup;
+  /** Group 3 of the factor rule on Catmull-Clark: its auto layout holds what it reads, the lending
+   * tessellator's Params and cage arena (the vertex limits). */
+  private factorRuleSurfaceGroup(): GPUBindGroup {
+    this.factorRuleSurface ??= this.device.createBindGroup({
+      label: 'instanced edgeFactorRule surface',
+      layout: this.levelPipelines.edgeFactorRule.getBindGroupLayout(3),
+      entries: this.surfaceEntries().filter((e) => e.binding === 0 || e.binding === 2),
+    });
+    return this.factorRuleSurface;
+  }
+
   private edgeViewSurface?: GPUBindGroup;
   private edgeViewSurfaceGroup(): GPUBindGroup {
     this.edgeViewSurface ??= this.device.createBindGroup({
-      label: 'instanced edgeView ACC surface',
+      label: 'instanced edgeView surface',
       layout: this.levelPipelines.edgeView.getBindGroupLayout(3),
-      entries: this.accPatches!.surfaceEntries(0, 1),
+      entries: this.surfaceEntries(),
     });
     return this.edgeViewSurface;
   }
@@ -869,8 +990,11 @@ export class InstancedTessellator implements SurfaceDrawer {
       const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
       const used: Record<string, number[]> = {
         patchEdges: [0, 1, 3],
-        // The cage buffer is read by the Phong surface; an ACC surface reads its own control points.
-        edgeView: this.acc ? [0, 1, 3] : [0, 1, 2, 3],
+        // The cage buffer is read by the Phong surface; an ACC or Catmull-Clark surface reads its
+        // own control points (group 3).
+        edgeView: this.acc || this.cc ? [0, 1, 3] : [0, 1, 2, 3],
+        // The cage's positions and normals, or on Catmull-Clark the lending tessellator's limits.
+        edgeFactorRule: this.cc ? [0, 1, 3] : [0, 1, 2, 3],
         bucketPatches: [0, 1, 3],
         records: [0, 1, 3, 4],
       };
@@ -1301,8 +1425,10 @@ export class InstancedTessellator implements SurfaceDrawer {
     for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
     this.levelGroups.clear();
     this.edgeViewSurface = undefined;
-    this.accGroup = undefined;
+    this.factorRuleSurface = undefined;
+    this.surfaceGroup = undefined;
     this.accPatches = undefined;
+    this.ccSource = undefined;
     this.mesh = undefined;
   }
 
@@ -1315,8 +1441,8 @@ export class InstancedTessellator implements SurfaceDrawer {
 /**
  * The CLI's entry point (`npm run tessellate -- --tessellator instanced --level L | --adaptive`):
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
- * { mode: 'static', level: L }; `--adaptive` is { mode: 'dynamic', viewProj, viewport, lodScale }
- * with the CLI's camera (src/gpu/headless.ts headlessCamera gives one). Pass `tess` to reuse
+ * { mode: 'static', level: L }; `--adaptive` is factorRuleLevels of the CLI's camera
+ * (src/gpu/headless.ts headlessCamera). Pass `tess` to reuse
  * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation.
  */
 export async function tessellateInstanced(
@@ -1326,13 +1452,13 @@ export async function tessellateInstanced(
   lp: LevelParams,
   tess?: InstancedTessellator,
   instancedMesh?: InstancedMesh,
-  acc?: AccPatches,
+  surface?: AccPatches | Tessellator,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
     const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
-    t.setMesh(mesh, acc);
+    t.setMesh(mesh, surface);
     return { mesh, out: await t.headless(lp) };
   } finally {
     if (own) t.destroy();
