@@ -86,8 +86,8 @@ fn ngonCorner(n: u32, k: u32) -> vec2<f32> {
 }
 
 fn dispUvFrame(t: u32, w: vec3<f32>) -> UvFrame {
-  let h0 = staticBuf[params.offDispTri + 2u * t];
-  let info = staticBuf[params.offDispTri + 2u * t + 1u];
+  let h0 = staticBuf[params.offDispTri + 3u * t];
+  let info = staticBuf[params.offDispTri + 3u * t + 1u];
   let n = dispTriWord_corners(info);
   let fan = dispTriWord_fan(info);
   if (n == 4u) {

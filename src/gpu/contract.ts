@@ -440,7 +440,7 @@ export interface TessSizes {
   accPatchWords: number;
   accPoints: number;
   /** Displacement (src/gpu/displacement.ts), all 0 without it: words of the packed height map,
-   * triangles with a DISP_TRI word pair (all of them), edges with three factor words (all of
+   * triangles with three DISP_TRI words (all of them), edges with three factor words (all of
    * them), and face corners with a uv (2 floats each). */
   heightWords: number;
   dispTriangles: number;
@@ -480,16 +480,17 @@ export const TESS_STATIC = defineArena<
   ['accTri', (s) => s.accTriangles],
   ['accPatches', (s) => s.accPatchWords],
   // Displacement (src/gpu/displacement.ts has the layout): the height map's texels packed 4
-  // (8-bit) or 2 (16-bit) to a word, row-major from the image's top row; per triangle two words
-  // (its face's first corner in cornerUvs, then DISP_TRI_WORD); per edge three f32 words for
+  // (8-bit) or 2 (16-bit) to a word, row-major from the image's top row; per triangle three
+  // words (its face's first corner in cornerUvs, DISP_TRI_WORD, the face); per edge three f32 words for
   // the factor rule (the lowest and highest height SAMPLE over its faces, its length in texels).
   ['heightTexels', (s) => s.heightWords],
-  ['dispTri', (s) => 2 * s.dispTriangles],
+  ['dispTri', (s) => 3 * s.dispTriangles],
   ['dispEdge', (s) => 3 * s.dispEdges],
 ]);
 
 /**
- * Word 2t + 1 of dispTri (word 2t is the first corner of the triangle's face in cornerUvs): the
+ * Word 3t + 1 of dispTri (word 3t is the first corner of the triangle's face in cornerUvs, word
+ * 3t + 2 the face): the
  * face's corner count and which fan triangle of it t is (prepare.ts: corners (0, fan, fan + 1)),
  * from which wgsl/displace.wgsl maps the triangle's weights to the face parameter that the uvs
  * are interpolated over (src/mesh/uv.ts: bilinear on quads, the kite sub-faces on other faces).

@@ -8,9 +8,10 @@
  *   TESS_STATIC heightTexels  the map's raw texels, row-major from the image's top row, 4 per
  *                             word for 8-bit maps (texel i at bits 8·(i mod 4) of word i/4), 2
  *                             per word for 16-bit ones: 1 or 2 bytes a texel, as the talk counts.
- *   TESS_STATIC dispTri       per triangle: its face's first corner (faceOffsets[f]), then
- *                             DISP_TRI_WORD (the face's corner count, the fan index k of its
- *                             triangle (0, k, k + 1): src/gpu/prepare.ts).
+ *   TESS_STATIC dispTri       per triangle three words: its face's first corner
+ *                             (faceOffsets[f]), DISP_TRI_WORD (the face's corner count, the fan
+ *                             index k of its triangle (0, k, k + 1): src/gpu/prepare.ts), and the
+ *                             face f itself (for surfaces addressed by face, e.g. ACC patches).
  *   TESS_STATIC dispEdge      per edge, three f32 words for the factor rule: the lowest and
  *                             highest SAMPLE value (in [0, 1]) a lookup on either face of the edge
  *                             can return (src/mesh/uv.ts faceSampleRange), and the edge's length
@@ -75,7 +76,7 @@ export function prepareDisplacement(cage: Cage, mesh: PreparedMesh, map: HeightM
   const cornerUvs = faceCornerUvs(cage);
   const range = faceSampleRange(cage, map, wrap);
   const nt = mesh.triangleCount;
-  const dispTri = new Uint32Array(2 * nt);
+  const dispTri = new Uint32Array(3 * nt);
   const edgeLo = new Float32Array(mesh.edgeCount).fill(1);
   const edgeHi = new Float32Array(mesh.edgeCount).fill(0);
   const edgeTexels = new Float32Array(mesh.edgeCount);
@@ -86,8 +87,9 @@ export function prepareDisplacement(cage: Cage, mesh: PreparedMesh, map: HeightM
     const h0 = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - h0;
     if (n > 0xffff) throw new RangeError(`face ${f} has ${n} corners; displacement handles up to 65535`);
-    dispTri[2 * t] = h0;
-    dispTri[2 * t + 1] = DISP_TRI_WORD.pack({ corners: n, fan });
+    dispTri[3 * t] = h0;
+    dispTri[3 * t + 1] = DISP_TRI_WORD.pack({ corners: n, fan });
+    dispTri[3 * t + 2] = f;
     // The triangle's corners are the face's corners 0, fan, fan + 1.
     const corner = [h0, h0 + fan, h0 + fan + 1];
     for (let i = 0; i < 3; i++) {
