@@ -122,7 +122,7 @@ test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the sche
   const errors = collectErrors(page);
   await page.goto('/?model=torus&tessellator=instanced&instsurface=gregory-acc&mode=fixed&level=8&t=0');
   await ready(page);
-  await expect(page.getByTestId('stats-surface')).toContainText('gregory-acc', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-surface')).toContainText('Gregory ACC', { timeout: 5_000 });
   await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
   const r = await records(page);
   expect(r!.gpu).toEqual(r!.cpu);
@@ -130,7 +130,7 @@ test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the sche
   await page.goto('/?model=icosphere&tessellator=instanced&instsurface=pm-acc&mode=fixed&level=4&t=0');
   await ready(page);
   await expect(page.getByTestId('stats-surface')).toContainText('Phong', { timeout: 5_000 });
-  await expect(page.getByTestId('stats-surface')).toContainText('ACC unavailable');
+  await expect(page.getByTestId('stats-surface')).toContainText('Pm ACC unavailable'); // the scheme asked for, by name
   await expect(page.getByText('5 corners').first()).toBeVisible();
   expect(errors).toEqual([]);
 });
@@ -161,7 +161,7 @@ test('exact Catmull-Clark on both tessellators: the split view draws compute CC 
   const errors = collectErrors(page);
   await page.goto('/?model=creature&surface=catmull-clark&split=1&instsurface=catmull-clark&mode=fixed&factor=8&level=8&t=0');
   await ready(page);
-  await expect(page.getByTestId('stats-surface')).toContainText('instanced (right): catmull-clark', { timeout: 10_000 });
+  await expect(page.getByTestId('stats-surface')).toContainText('instanced (right): Catmull-Clark', { timeout: 10_000 });
   // Matched settings: level 8 draws 128 triangles a quad and 64 a triangle patch, as factor 8.
   const tris = int(556 * 128 + 16 * 64);
   await expect(page.getByTestId('stats-output-compute')).toContainText(`${tris} tris`, { timeout: 10_000 });

@@ -937,6 +937,7 @@ class TessellationDemo extends DemoBase {
         ? {
             split: this.splitActive,
             surface: this.#instanced?.surface ?? 'phong',
+            asked: this.params.instSurface,
             fallback:
               this.#instancedRefused &&
               this.#instancedRefused.cage === this.model?.cage &&

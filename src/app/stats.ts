@@ -74,8 +74,10 @@ export interface StatsInput {
     counts: InstancedCounts | null;
     setting: string;
     split?: boolean;
-    /** Its surface (Phong or an ACC scheme), and why not the one asked for, if refused. */
+    /** Its surface (Phong, Catmull-Clark or an ACC scheme), the one asked for, and why not that
+     * one, if refused. */
     surface?: string;
+    asked?: string;
     fallback?: string | null;
   } | null;
 }
@@ -156,9 +158,12 @@ export function renderStats(s: StatsInput): string {
       if (sf.tablesMs !== undefined) text += ` · prepared in ${sf.tablesMs < 10 ? sf.tablesMs.toFixed(1) : Math.round(sf.tablesMs)} ms`;
       text += '</span>';
     }
-    // The instanced tessellator evaluates Phong only so far (the exact surfaces are not plugged in).
-    const instName = esc(s.instanced?.surface === 'phong' || !s.instanced?.surface ? 'Phong' : s.instanced.surface);
-    const refused = s.instanced?.fallback ? ` <span class="warn">ACC unavailable: ${esc(s.instanced.fallback)}</span>` : '';
+    // The instanced tessellator's surface by its name (any the compute one has but the flat cage).
+    const named = (k: string | undefined) => esc(k && k in SURFACE_NAMES ? SURFACE_NAMES[k as keyof typeof SURFACE_NAMES] : (k ?? 'Phong'));
+    const instName = named(s.instanced?.surface ?? 'phong');
+    const refused = s.instanced?.fallback
+      ? ` <span class="warn">${named(s.instanced.asked)} unavailable: ${esc(s.instanced.fallback)}</span>`
+      : '';
     if (s.instanced?.split && sf.shown !== 'cage') text += ` <span class="muted">· instanced (right): ${instName}</span>${refused}`;
     else if (s.instanced && sf.shown !== 'cage') text = `<b>${instName}</b> <span class="muted">instanced tessellator</span>${refused}`;
     rows.push(row('surface', text, 'stats-surface'));
