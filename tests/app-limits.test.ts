@@ -23,4 +23,15 @@ describe('output limits', () => {
       `output buffers: ${Math.floor(DEFAULTS.maxStorageBufferBindingSize / 12).toLocaleString('en-US')} vertices and triangles (16,000,000 asked for); the budget scales factors to fit`,
     ]);
   });
+
+  it('compatibility mode with no vertex-stage storage: says which views are not available', () => {
+    const m = clampMessages(
+      ['maxStorageBuffersInVertexStage: 0 of the 8 asked for'],
+      { ...DEFAULTS, maxStorageBuffersInVertexStage: 0 },
+      4e6,
+    );
+    expect(m[0]).toBe('maxStorageBuffersInVertexStage: 0 of the 8 asked for');
+    expect(m[1]).toMatch(/wireframe, patch colours, error heat maps and the instanced tessellator are not available/);
+    expect(clampMessages([], { ...DEFAULTS, maxStorageBuffersInVertexStage: 2 }, 4e6)).toEqual([]);
+  });
 });

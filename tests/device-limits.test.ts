@@ -5,7 +5,7 @@
  * naming each limit that falls short (a compatibility-mode adapter as the specification sets it).
  */
 import { describe, expect, it } from 'vitest';
-import { createGpu, GpuUnavailableError, PIPELINE_LIMITS, planLimits } from '../src/gpu/device.ts';
+import { createGpu, OPTIONAL_LIMITS, PIPELINE_LIMITS, planLimits } from '../src/gpu/device.ts';
 
 /** WebGPU's default limits, and compatibility mode's where they are lower (the spec's table). */
 const CORE = {
@@ -50,29 +50,33 @@ describe('planLimits', () => {
   });
 
   it('requests minimums as they are; names each one the adapter lacks', () => {
-    expect(planLimits(CORE, PIPELINE_LIMITS, {}).short).toEqual([]);
-    expect(planLimits(CORE, PIPELINE_LIMITS, {}).requiredLimits).toMatchObject(PIPELINE_LIMITS);
-    // Compute fits compatibility mode's 128 invocations (wgsl/scan.wgsl runs 128 threads); the
-    // vertex-stage storage buffers are what is left.
-    expect(planLimits(COMPAT, PIPELINE_LIMITS, {}).short).toEqual(['maxStorageBuffersInVertexStage is 0, the demo needs 2']);
+    const need = { maxComputeInvocationsPerWorkgroup: 256, maxStorageBuffersInVertexStage: 2 };
+    expect(planLimits(CORE, need, {}).short).toEqual([]);
+    expect(planLimits(CORE, need, {}).requiredLimits).toMatchObject(need);
+    expect(planLimits(COMPAT, need, {}).short).toEqual([
+      'maxComputeInvocationsPerWorkgroup is 128, the demo needs 256',
+      'maxStorageBuffersInVertexStage is 0, the demo needs 2',
+    ]);
+    // The demo's own: nothing beyond compatibility mode's defaults.
+    expect(PIPELINE_LIMITS).toEqual({});
+    expect(planLimits(COMPAT, PIPELINE_LIMITS, {}).short).toEqual([]);
   });
 
   it('skips limits the adapter does not know (implementations without compatibility mode)', () => {
     const { maxStorageBuffersInVertexStage: _, ...older } = CORE;
-    const p = planLimits(older, PIPELINE_LIMITS, {});
+    const p = planLimits(older, { maxStorageBuffersInVertexStage: 2 }, OPTIONAL_LIMITS);
     expect(p.short).toEqual([]);
     expect('maxStorageBuffersInVertexStage' in p.requiredLimits).toBe(false);
   });
 });
 
 describe('createGpu on small adapters', () => {
-  it('refuses a compatibility-mode adapter with the specification’s limits, naming them', async () => {
+  it('takes a compatibility-mode adapter with the specification’s limits, and says what it cut', async () => {
     const { gpu, requested } = fakeGpu(COMPAT);
-    const e = await createGpu({ gpu }).catch((x) => x);
-    expect(e).toBeInstanceOf(GpuUnavailableError);
-    expect(e.problem).toBe('limit');
-    expect(e.message).toContain('maxStorageBuffersInVertexStage is 0, the demo needs 2');
-    expect(requested).toEqual([]);
+    const ctx = await createGpu({ gpu });
+    expect(requested.length).toBe(1);
+    expect(requested[0].requiredLimits).toMatchObject({ maxStorageBuffersInVertexStage: 0 });
+    expect(ctx.clamps).toEqual(['maxStorageBuffersInVertexStage: 0 of the 8 asked for']);
   });
 
   it('on an adapter with default limits, asks for no more than it has and reports the clamp', async () => {

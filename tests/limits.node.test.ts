@@ -5,16 +5,20 @@
  *  - WebGPU compatibility mode (Dawn's featureLevel: 'compatibility'), whose limits are those of
  *    the specification's table (gpuweb proposals/compatibility-mode.md, "Lower limits", and the
  *    vertex/fragment-stage storage limits): checked below, so the test knows what it runs under.
- *    As created by createGpu (which requests PIPELINE_LIMITS where the adapter has them) it must
- *    run; with the mode's own defaults it must fail, which is why createGpu refuses such a device
- *    (tests/device-limits.test.ts) rather than letting the page draw nothing.
+ *    With the mode's own defaults it must run: the compute passes fit 128 invocations and the
+ *    tessellate, shadow and lit passes read no storage in the vertex stage; the renderer leaves
+ *    out what does (wireframe, patch colours, heat maps: Renderer.vertexStorage). As created by
+ *    createGpu (which asks for OPTIONAL_LIMITS up to what the adapter has) it runs with all of it.
+ *    And the page's canvas copy for that mode (src/gpu/srgb-blit.ts) encodes sRGB as an -srgb
+ *    view would.
  * Table-driven over models and surfaces: a surface is one line of SURFACES.
  *
  * Node only (Dawn has compatibility mode; Chromium gives it only behind a flag).
  */
 import { readFileSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { createGpu, PIPELINE_LIMITS, type GpuContext } from '../src/gpu/device.ts';
+import { createGpu, OPTIONAL_LIMITS, PIPELINE_LIMITS, type GpuContext } from '../src/gpu/device.ts';
+import { SRGB_TARGET_FORMAT, SrgbBlit } from '../src/gpu/srgb-blit.ts';
 import { Tessellator, prepareMesh, type PreparedMesh } from '../src/gpu/tessellator.ts';
 import { Renderer } from '../src/gpu/renderer.ts';
 import { uploadCageLines } from '../src/gpu/cage-mesh.ts';
@@ -130,13 +134,14 @@ async function runPipeline(device: GPUDevice, cage: Cage, s: (typeof SURFACES)[n
     pixels = new Uint8Array(read.getMappedRange().slice(0));
     read.unmap();
   }
+  const vertexStorage = renderer.vertexStorage;
   renderer.destroy();
   tess.destroy();
   lines.vertices.destroy();
   target.destroy();
   read.destroy();
   const at = (x: number, y: number) => Array.from(pixels!.subarray(y * bytesPerRow + 4 * x, y * bytesPerRow + 4 * x + 4));
-  return { errors, counts, at };
+  return { errors, counts, at, vertexStorage };
 }
 
 describe('the devices are what they say', () => {
@@ -147,23 +152,64 @@ describe('the devices are what they say', () => {
     expect(d.features.has('core-features-and-limits')).toBe(true);
   });
 
-  it('compatibility mode: the specification’s limits, and only PIPELINE_LIMITS raised by createGpu', () => {
+  it('compatibility mode: the specification’s limits; createGpu raises only OPTIONAL_LIMITS, up to the adapter’s', async () => {
     const plain = devices['compatibility mode, its defaults'];
     const ours = devices['compatibility mode, from createGpu'];
+    expect(PIPELINE_LIMITS).toEqual({});
     expect(plain.features.has('core-features-and-limits')).toBe(false);
     expect(ours.features.has('core-features-and-limits')).toBe(false);
     expect(contexts[0].compatibility).toBe(true);
+    const adapter = (await gpu.requestAdapter({ featureLevel: 'compatibility' }))!;
     for (const [name, value] of Object.entries(COMPAT_LIMITS)) {
       expect(plain.limits[name as keyof GPUSupportedLimits], name).toBe(value);
-      const raised = (PIPELINE_LIMITS as Record<string, number | undefined>)[name];
-      expect(ours.limits[name as keyof GPUSupportedLimits], name).toBe(raised ?? value);
+      const wanted = (OPTIONAL_LIMITS as Record<string, number | undefined>)[name];
+      const max = adapter.limits[name as keyof GPUSupportedLimits] as number;
+      expect(ours.limits[name as keyof GPUSupportedLimits], name).toBe(wanted === undefined ? value : Math.min(wanted, max));
     }
     expect(ours.limits.maxStorageBufferBindingSize).toBe(DEFAULT_STORAGE_BINDING);
+  });
+
+  it('compatibility mode: the page’s canvas copy (SrgbBlit) writes what an -srgb view would, within 1/255', async () => {
+    const device = devices['compatibility mode, its defaults'];
+    device.pushErrorScope('validation');
+    const blit = new SrgbBlit(device, 'rgba8unorm');
+    const src = blit.target(64, 4);
+    // Linear ramps written into the -srgb picture (stored encoded), then copied to a plain target.
+    const texels = new Uint8Array(64 * 4 * 4);
+    for (let i = 0; i < texels.length; i++) texels[i] = (i * 37) % 256;
+    for (let i = 3; i < texels.length; i += 4) texels[i] = 255;
+    device.queue.writeTexture({ texture: src }, texels, { bytesPerRow: 256 }, [64, 4]);
+    const dst = device.createTexture({
+      label: 'blit test canvas',
+      size: [64, 4],
+      format: 'rgba8unorm',
+      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC,
+    });
+    const read = device.createBuffer({
+      label: 'blit test pixels',
+      size: 256 * 4,
+      usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
+    });
+    const encoder = device.createCommandEncoder({ label: 'blit test' });
+    blit.encode(encoder, dst);
+    encoder.copyTextureToBuffer({ texture: dst }, { buffer: read, bytesPerRow: 256 }, [64, 4]);
+    device.queue.submit([encoder.finish()]);
+    expect((await device.popErrorScope())?.message).toBeUndefined();
+    await read.mapAsync(GPUMapMode.READ);
+    const out = new Uint8Array(read.getMappedRange().slice(0));
+    read.unmap();
+    expect(SRGB_TARGET_FORMAT).toBe('rgba8unorm-srgb');
+    let worst = 0;
+    for (let i = 0; i < texels.length; i++) worst = Math.max(worst, Math.abs(out[i] - texels[i]));
+    expect(worst).toBeLessThanOrEqual(1);
+    blit.destroy();
+    dst.destroy();
+    read.destroy();
   });
 });
 
 describe.each(SURFACES)('the pipeline with the $surface surface', (s) => {
-  for (const device of ['default limits', 'compatibility mode, from createGpu']) {
+  for (const device of ['default limits', 'compatibility mode, its defaults', 'compatibility mode, from createGpu']) {
     it.each(MODELS)(`runs on ${device}: %s tessellated and drawn, no validation errors`, async (model) => {
       const r = await runPipeline(devices[device], cageOf(model), s);
       expect(r.errors).toEqual([]);
@@ -178,24 +224,11 @@ describe.each(SURFACES)('the pipeline with the $surface surface', (s) => {
     });
   }
 
-  it('fails with compatibility mode’s own limits (why createGpu asks for PIPELINE_LIMITS)', async () => {
-    const r = await runPipeline(devices['compatibility mode, its defaults'], cageOf(MODELS[0]), s);
-    expect(r.errors.join('\n')).toMatch(/maxStorageBuffersInVertexStage/);
-  });
-
-  // Each of PIPELINE_LIMITS is needed: with all the others raised, the pipeline still fails.
-  it.each(Object.keys(PIPELINE_LIMITS))('fails on compatibility mode with every PIPELINE_LIMITS but %s', async (left) => {
-    const adapter = (await gpu.requestAdapter({ featureLevel: 'compatibility' }))!;
-    const requiredLimits = Object.fromEntries(Object.entries(PIPELINE_LIMITS).filter(([name]) => name !== left)) as Record<string, number>;
-    const device = await adapter.requestDevice({ label: `compatibility without ${left}`, requiredLimits });
-    try {
-      const r = await runPipeline(device, cageOf(MODELS[0]), s);
-      expect(r.errors.length).toBeGreaterThan(0);
-      expect(r.errors.join('\n')).toMatch(
-        left === 'maxStorageBuffersInVertexStage' ? /maxStorageBuffersInVertexStage/ : /workgroup|invocations/i,
-      );
-    } finally {
-      device.destroy();
-    }
+  it('on compatibility mode’s own limits the renderer leaves out what reads storage in the vertex stage, and only that', async () => {
+    const compat = await runPipeline(devices['compatibility mode, its defaults'], cageOf(MODELS[0]), s);
+    const core = await runPipeline(devices['default limits'], cageOf(MODELS[0]), s);
+    expect(compat.errors).toEqual([]);
+    expect(compat.vertexStorage).toBe(false);
+    expect(core.vertexStorage).toBe(true);
   });
 });

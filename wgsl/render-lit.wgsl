@@ -24,14 +24,25 @@ fn patchColour(w: vec4f) -> vec3f {
   return c / max(dot(w, vec4f(1.0)), 1e-6);
 }
 
-@vertex
-fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
+fn litPlain(position: vec3f, normal: vec3f) -> VertexOut {
   let world = modelToWorld(position);
   var out: VertexOut;
   out.clip = scene.viewProj * vec4f(world, 1.0);
   out.world = world;
   out.normal = (scene.model * vec4f(normal, 0.0)).xyz;
   out.patchWeights = vec4f(0.0);
+  return out;
+}
+
+// Where the vertex stage may read no storage buffers (WebGPU compatibility mode): no patch colours.
+@vertex
+fn litVertexPlain(@location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
+  return litPlain(position, normal);
+}
+
+@vertex
+fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @location(1) normal: vec3f) -> VertexOut {
+  var out = litPlain(position, normal);
   if (scene.viewport.w > 0.5 && index < arrayLength(&srcTri)) {
     let t = srcTri[index];
     if (t < arrayLength(&patchKind)) {

@@ -6,6 +6,7 @@
  * Frames are drawn on demand: only when something changed (camera, size, settings) or while
  * animating. `frozenTime` (the URL's ?t=) pins the clock for deterministic screenshots.
  */
+import { SRGB_TARGET_FORMAT, SrgbBlit } from '../gpu/srgb-blit.ts';
 import { createGpu, GpuUnavailableError, type GpuContext, type LimitName } from '../gpu/device.ts';
 import { GpuMemory, trackDevice } from '../gpu/tracked-device.ts';
 import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
@@ -37,6 +38,8 @@ export abstract class DemoBase {
   memory = new GpuMemory();
   context!: GPUCanvasContext;
   /** The canvas texture's format, and the view format the renderer draws with (its -srgb twin). */
+  /** Compatibility mode: the -srgb picture drawn, then copied to the canvas (null in core). */
+  #blit: SrgbBlit | null = null;
   canvasFormat!: GPUTextureFormat;
   renderFormat!: GPUTextureFormat;
   camera: OrbitCamera | null = null;
@@ -128,15 +131,6 @@ export abstract class DemoBase {
         showToast(error.message, { kind: 'error', title: 'WebGPU error' });
       },
     });
-    if (gpu.compatibility) {
-      gpu.destroy();
-      // The canvas is drawn through an -srgb view of its texture (below): compatibility mode
-      // allows no format reinterpretation (and no bgra8unorm-srgb).
-      throw new GpuUnavailableError(
-        'limit',
-        'This GPU offers WebGPU only in compatibility mode, and the demo draws through an sRGB view of the canvas, which that mode does not allow.',
-      );
-    }
     const tracked = trackDevice(gpu.device);
     this.memory = tracked.memory;
     this.gpu = { ...gpu, device: tracked.device };
@@ -144,12 +138,16 @@ export abstract class DemoBase {
     this.canvasFormat = navigator.gpu.getPreferredCanvasFormat();
     // Draw through an -srgb view: lighting stays linear, blending and MSAA resolve happen in
     // linear space, and the canvas (whose own format cannot be -srgb) stores encoded values.
-    this.renderFormat = `${this.canvasFormat}-srgb` as GPUTextureFormat;
+    // Compatibility mode allows no view formats: draw into an -srgb picture and copy it to the
+    // canvas with the encoding done in a shader (src/gpu/srgb-blit.ts).
+    this.#blit?.destroy();
+    this.#blit = gpu.compatibility ? new SrgbBlit(this.gpu.device, this.canvasFormat) : null;
+    this.renderFormat = this.#blit ? SRGB_TARGET_FORMAT : (`${this.canvasFormat}-srgb` as GPUTextureFormat);
     this.context.configure({
       // The platform checks that this is a real GPUDevice: not the counting stand-in.
       device: tracked.real,
       format: this.canvasFormat,
-      viewFormats: [this.renderFormat],
+      viewFormats: this.#blit ? [] : [this.renderFormat],
       alphaMode: 'opaque',
     });
     await this.onInit();
@@ -197,7 +195,10 @@ export abstract class DemoBase {
 
     const device = this.gpu.device;
     const encoder = device.createCommandEncoder({ label: 'frame encoder' });
-    this.onFrame(encoder, this.context.getCurrentTexture(), this.time);
+    const canvasTexture = this.context.getCurrentTexture();
+    const target = this.#blit ? this.#blit.target(canvasTexture.width, canvasTexture.height) : canvasTexture;
+    this.onFrame(encoder, target, this.time);
+    this.#blit?.encode(encoder, canvasTexture);
     device.queue.submit([encoder.finish()]);
     push(this.#jsSamples, performance.now() - now);
     this.timing.frameMs = average(this.#frameSamples);

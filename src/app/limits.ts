@@ -21,10 +21,15 @@ export function wantedOutputLimits(capacity: number): Partial<Record<LimitName, 
  */
 export function clampMessages(
   deviceClamps: readonly string[],
-  limits: { maxStorageBufferBindingSize: number; maxBufferSize: number },
+  limits: { maxStorageBufferBindingSize: number; maxBufferSize: number; maxStorageBuffersInVertexStage?: number },
   capacity: number,
 ): string[] {
   const out = [...deviceClamps];
+  // src/gpu/renderer.ts vertexStorage; src/gpu/instanced.ts checks its own count when asked for.
+  if ((limits.maxStorageBuffersInVertexStage ?? 8) < 2)
+    out.push(
+      'no storage buffers in the vertex stage (WebGPU compatibility mode): the wireframe, patch colours, error heat maps and the instanced tessellator are not available; the surfaces draw as usual',
+    );
   const fits = outputCapacity(limits, { vertexCapacity: capacity, triangleCapacity: capacity });
   if (fits.vertexCapacity < capacity) {
     const n = (x: number) => x.toLocaleString('en-US');

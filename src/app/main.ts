@@ -455,12 +455,17 @@ class TessellationDemo extends DemoBase {
   /** The instanced tessellator draws, alone or in the split view (asked for, and a surface
    * rather than the flat cage is shown). */
   get instancedActive(): boolean {
-    return (this.params.tessellator === 'instanced' || this.params.split) && this.shownSurface !== 'cage' && this.model !== null;
+    return (
+      (this.params.tessellator === 'instanced' || this.params.split) &&
+      this.shownSurface !== 'cage' &&
+      this.model !== null &&
+      (this.#renderer?.vertexStorage ?? true)
+    );
   }
 
   /** The split view: compute on the left half, instanced on the right, same cage and camera. */
   get splitActive(): boolean {
-    return this.params.split && this.shownSurface !== 'cage' && this.model !== null;
+    return this.params.split && this.instancedActive;
   }
 
   /** Hand the renderer the instanced tessellator (the model's patches uploaded) or take it back,
@@ -470,6 +475,9 @@ class TessellationDemo extends DemoBase {
     if (!renderer) return;
     renderer.setDrawer(null);
     if ((this.params.tessellator !== 'instanced' && !this.params.split) || surface === 'cage' || !model) return;
+    // It evaluates in the vertex stage, from storage: not on a device without vertex-stage storage
+    // (compatibility mode; the clamp message says so once), where the compute tessellator draws.
+    if (!renderer.vertexStorage) return;
     // Its surface: the one asked for, or Phong where this cage refused that ACC scheme.
     const want = this.params.instSurface;
     const refused = this.#instancedRefused;

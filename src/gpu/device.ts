@@ -36,15 +36,22 @@ export type LimitName =
   | 'maxComputeWorkgroupSizeX';
 
 /**
- * What the demo's passes need beyond WebGPU compatibility mode's defaults:
- *  - 2 read-only storage buffers in the vertex stage: the renderer's wireframe (indices and
- *    positions) and patch colours (source triangles and kinds) bind group (compat: 0).
- * (Every compute pass fits compat's 128 invocations: wgsl/scan.wgsl runs 128 threads.)
- * Core WebGPU's defaults meet all of them. tests/limits.node.test.ts checks that a device with the
- * compatibility-mode defaults fails without them and runs the whole pipeline with them.
+ * What the demo's passes need beyond WebGPU compatibility mode's defaults: nothing. Every compute
+ * pass fits compat's 128 invocations (wgsl/scan.wgsl runs 128 threads), and the tessellate, shadow
+ * and lit passes read no storage buffers in the vertex stage (compat: 0 by default).
+ * tests/limits.node.test.ts runs the whole pipeline on a device with compatibility mode's own limits.
  */
-export const PIPELINE_LIMITS: Partial<Record<LimitName, number>> = {
-  maxStorageBuffersInVertexStage: 2,
+export const PIPELINE_LIMITS: Partial<Record<LimitName, number>> = {};
+
+/**
+ * What the demo asks for where the adapter has it, and works without (GpuContext.clamps says what
+ * was cut): storage buffers in the vertex stage, of which compatibility mode gives none by
+ * default. The wireframe, the patch colours and the heat maps read per-vertex data from storage (2:
+ * src/gpu/renderer.ts vertexStorage); the instanced tessellator evaluates its surface from it (up
+ * to 6: src/gpu/instanced.ts). Core WebGPU gives 8.
+ */
+export const OPTIONAL_LIMITS: Partial<Record<LimitName, number>> = {
+  maxStorageBuffersInVertexStage: 8,
 };
 
 export interface DeviceOptions {
@@ -114,7 +121,7 @@ export async function createGpu(options: DeviceOptions): Promise<GpuContext> {
   const { requiredLimits, clamps, short } = planLimits(
     adapter.limits,
     { ...PIPELINE_LIMITS, ...options.minimumLimits },
-    options.wantedLimits ?? {},
+    { ...OPTIONAL_LIMITS, ...options.wantedLimits },
   );
   if (short.length) {
     throw new GpuUnavailableError('limit', `This GPU's limits are below what the demo needs: ${short.join('; ')}.`);

@@ -129,6 +129,14 @@ export class Renderer {
   readonly colorFormat: GPUTextureFormat;
   readonly sampleCount: number;
   readonly shadowMapSize: number;
+  /**
+   * Whether the vertex stage may read storage buffers: always in core WebGPU; in compatibility
+   * mode only where maxStorageBuffersInVertexStage allows (its default is 0). The wireframe, the
+   * patch colours and the heat maps read per-vertex data from storage by vertex index; without it
+   * they are not drawn (render() ignores those options) and the lit pass draws its plain colours
+   * through a vertex stage that reads vertex buffers only (litVertexPlain).
+   */
+  readonly vertexStorage: boolean;
 
   #sceneBuffer: GPUBuffer;
   #sceneData = new DataView(new ArrayBuffer(SCENE_UNIFORMS.size));
@@ -144,13 +152,13 @@ export class Renderer {
   #closed = false;
   #groundPipeline: GPURenderPipeline;
   #backdropPipeline: GPURenderPipeline;
-  #wirePipeline: GPURenderPipeline;
+  #wirePipeline: GPURenderPipeline | null = null;
   #wireArgsPipeline: GPUComputePipeline;
   #cageHiddenPipeline: GPURenderPipeline;
   #cageVisiblePipeline: GPURenderPipeline;
   /** Two read-only storage buffers for the vertex stage: the wireframe's indices and positions,
    * and the patch colours' source triangles and kinds share it. */
-  #vertexStorageLayout: GPUBindGroupLayout;
+  #vertexStorageLayout: GPUBindGroupLayout | null = null;
   #wireArgsLayout: GPUBindGroupLayout;
   /** One u32 kind per source triangle (a single 0 when there are none). */
   #patchKinds: GPUBuffer;
@@ -158,7 +166,7 @@ export class Renderer {
   /** The heat map (src/gpu/acc-heat.ts): [open, closed] pipelines, its layout, uniforms and the
    * bind group of the values set (null: none). */
   #heatPipelines: GPURenderPipeline[] = [];
-  #heatLayout: GPUBindGroupLayout;
+  #heatLayout: GPUBindGroupLayout | null = null;
   #heatUniforms: GPUBuffer;
   #heatData = new DataView(new ArrayBuffer(HEAT_UNIFORMS.size));
   #heatBindGroup: GPUBindGroup | null = null;
@@ -194,6 +202,7 @@ export class Renderer {
     this.colorFormat = options.colorFormat;
     this.sampleCount = options.sampleCount ?? 4;
     this.shadowMapSize = options.shadowMapSize ?? 2048;
+    this.vertexStorage = vertexStorageBuffers(device) >= 2;
 
     this.#sceneBuffer = device.createBuffer({
       label: 'scene uniforms',
@@ -221,9 +230,11 @@ export class Renderer {
 
     const layouts = {} as Record<RenderBindGroup, GPUBindGroupLayout>;
     for (const [name, entries] of Object.entries(RENDER_BIND_GROUPS) as [RenderBindGroup, readonly GPUBindGroupLayoutEntry[]][]) {
+      // A vertex-visible storage layout is itself invalid where the vertex stage has none.
+      if (name === 'vertexStorage' && !this.vertexStorage) continue;
       layouts[name] = device.createBindGroupLayout({ label: `${name} bind group layout`, entries: [...entries] });
     }
-    this.#vertexStorageLayout = layouts.vertexStorage;
+    this.#vertexStorageLayout = layouts.vertexStorage ?? null;
     this.#wireArgsLayout = layouts.wireArgs;
     this.#patchKinds = device.createBuffer({
       label: 'patch kinds (none)',
@@ -247,7 +258,8 @@ export class Renderer {
     const pipelineLayout = (name: RenderPipelineName) =>
       device.createPipelineLayout({
         label: `${name} pipeline layout`,
-        bindGroupLayouts: RENDER_PIPELINE_GROUPS[name].map((g) => layouts[g]),
+        // Without vertex-stage storage the lit pipeline has no patch-colour group (litVertexPlain).
+        bindGroupLayouts: RENDER_PIPELINE_GROUPS[name].filter((g) => layouts[g]).map((g) => layouts[g]),
       });
     const module = (name: RenderPipelineName) =>
       device.createShaderModule({ label: `${name} shader`, code: RENDER_SHADERS[name].join('\n') });
@@ -255,21 +267,24 @@ export class Renderer {
     const litModule = module('lit');
     const groundModule = module('ground');
     const backdropModule = module('backdrop');
-    const wireModule = module('wireframe');
+    const wireModule = this.vertexStorage ? module('wireframe') : null;
     const cageModule = module('cage');
     const wireArgsModule = module('wireArgs');
 
-    this.#heatLayout = device.createBindGroupLayout({ label: 'heat bind group layout', entries: [...HEAT_BIND_GROUP] });
+    if (this.vertexStorage)
+      this.#heatLayout = device.createBindGroupLayout({ label: 'heat bind group layout', entries: [...HEAT_BIND_GROUP] });
     this.#heatUniforms = device.createBuffer({
       label: 'heat uniforms',
       size: HEAT_UNIFORMS.size,
       usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
     // The lit pipeline's groups with the heat group in place of the patch colours' (group 2).
-    const heatLayout = device.createPipelineLayout({
-      label: 'heat pipeline layout',
-      bindGroupLayouts: [layouts.scene, layouts.shading, this.#heatLayout],
-    });
+    const heatLayout = this.#heatLayout
+      ? device.createPipelineLayout({
+          label: 'heat pipeline layout',
+          bindGroupLayouts: [layouts.scene, layouts.shading, this.#heatLayout],
+        })
+      : null;
     const heatModule = device.createShaderModule({
       label: 'heat shader',
       code: [sceneWgsl, commonWGSL, heatRenderWgsl, heatWGSL].join('\n'),
@@ -308,12 +323,13 @@ export class Renderer {
       this.#litPipelines[+closed] = device.createRenderPipeline({
         label: closed ? 'lit pipeline (closed: back faces culled)' : 'lit pipeline (open: two-sided)',
         layout: pipelineLayout('lit'),
-        vertex: { module: litModule, entryPoint: 'litVertex', buffers: MESH_BUFFERS },
+        vertex: { module: litModule, entryPoint: this.vertexStorage ? 'litVertex' : 'litVertexPlain', buffers: MESH_BUFFERS },
         fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
         primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
         depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
         multisample,
       });
+      if (!heatLayout) continue;
       this.#heatPipelines[+closed] = device.createRenderPipeline({
         label: closed ? 'heat pipeline (closed: back faces culled)' : 'heat pipeline (open: two-sided)',
         layout: heatLayout,
@@ -342,15 +358,16 @@ export class Renderer {
       depthStencil: overlayDepth('always'),
       multisample,
     });
-    this.#wirePipeline = device.createRenderPipeline({
-      label: 'wireframe pipeline',
-      layout: pipelineLayout('wireframe'),
-      vertex: { module: wireModule, entryPoint: 'wireVertex' },
-      fragment: { module: wireModule, entryPoint: 'wireFragment', targets: blendedTarget },
-      primitive: { topology: 'line-list' },
-      depthStencil: overlayDepth('less-equal'),
-      multisample,
-    });
+    if (wireModule)
+      this.#wirePipeline = device.createRenderPipeline({
+        label: 'wireframe pipeline',
+        layout: pipelineLayout('wireframe'),
+        vertex: { module: wireModule, entryPoint: 'wireVertex' },
+        fragment: { module: wireModule, entryPoint: 'wireFragment', targets: blendedTarget },
+        primitive: { topology: 'line-list' },
+        depthStencil: overlayDepth('less-equal'),
+        multisample,
+      });
     const cageLayout = pipelineLayout('cage');
     const cagePipeline = (label: string, opacity: number, compare: GPUCompareFunction) =>
       device.createRenderPipeline({
@@ -413,7 +430,7 @@ export class Renderer {
     this.#wireBindGroup = null;
     this.#wireArgsBindGroup = null;
     this.#patchBindGroup = null;
-    if (!mesh) return;
+    if (!mesh || !this.#vertexStorageLayout) return;
     this.#bindPatches();
     this.#wireBindGroup = this.device.createBindGroup({
       label: 'wireframe bind group',
@@ -458,16 +475,17 @@ export class Renderer {
 
   #bindPatches(): void {
     const mesh = this.#mesh;
-    this.#patchBindGroup = mesh
-      ? this.device.createBindGroup({
-          label: 'patch colours bind group',
-          layout: this.#vertexStorageLayout,
-          entries: [
-            { binding: 0, resource: { buffer: mesh.srcTri } },
-            { binding: 1, resource: { buffer: this.#patchKinds } },
-          ],
-        })
-      : null;
+    this.#patchBindGroup =
+      mesh && this.#vertexStorageLayout
+        ? this.device.createBindGroup({
+            label: 'patch colours bind group',
+            layout: this.#vertexStorageLayout,
+            entries: [
+              { binding: 0, resource: { buffer: mesh.srcTri } },
+              { binding: 1, resource: { buffer: this.#patchKinds } },
+            ],
+          })
+        : null;
   }
 
   /**
@@ -476,16 +494,17 @@ export class Renderer {
    * usual colours). Set again after setMesh when the mesh changes.
    */
   setHeat(values: GPUBufferBinding | null): void {
-    this.#heatBindGroup = values
-      ? this.device.createBindGroup({
-          label: 'heat bind group',
-          layout: this.#heatLayout,
-          entries: [
-            { binding: 0, resource: values },
-            { binding: 1, resource: { buffer: this.#heatUniforms } },
-          ],
-        })
-      : null;
+    this.#heatBindGroup =
+      values && this.#heatLayout
+        ? this.device.createBindGroup({
+            label: 'heat bind group',
+            layout: this.#heatLayout,
+            entries: [
+              { binding: 0, resource: values },
+              { binding: 1, resource: { buffer: this.#heatUniforms } },
+            ],
+          })
+        : null;
   }
 
   /** Draw the surface with `drawer` (in the shadow, lit and wireframe passes) instead of the
@@ -599,9 +618,9 @@ export class Renderer {
       HEAT_UNIFORMS.write(this.#heatData, { view: heat.view === 'normal' ? 1 : 0, range: heat.range });
       this.device.queue.writeBuffer(this.#heatUniforms, 0, this.#heatData.buffer);
     }
-    if (mesh && (heat || this.#patchBindGroup)) {
+    if (mesh && (heat || this.#patchBindGroup || !this.vertexStorage)) {
       pass.setPipeline(heat ? this.#heatPipelines[+this.#closed] : this.#litPipelines[+this.#closed]);
-      pass.setBindGroup(2, heat ? this.#heatBindGroup : this.#patchBindGroup);
+      if (this.vertexStorage) pass.setBindGroup(2, heat ? this.#heatBindGroup : this.#patchBindGroup);
       pass.setVertexBuffer(0, mesh.positions);
       pass.setVertexBuffer(1, mesh.normals);
       pass.setIndexBuffer(mesh.indices, 'uint32');
@@ -614,7 +633,7 @@ export class Renderer {
     }
     pass.setPipeline(this.#groundPipeline);
     pass.draw(4);
-    if (mesh && options.wireframe && this.#wireBindGroup) {
+    if (mesh && options.wireframe && this.#wireBindGroup && this.#wirePipeline) {
       pass.setPipeline(this.#wirePipeline);
       pass.setBindGroup(1, this.#wireBindGroup);
       pass.drawIndirect(this.#wireArgs, 0);
@@ -730,4 +749,11 @@ export class Renderer {
     });
     this.device.queue.writeBuffer(this.#sceneBuffer, 0, this.#sceneData.buffer);
   }
+}
+
+/** Storage buffers the vertex stage may read: the compatibility-mode limit where the
+ * implementation has it (older ones do not, and are all core: the per-stage limit then). */
+export function vertexStorageBuffers(device: GPUDevice): number {
+  const limits = device.limits as GPUSupportedLimits & { maxStorageBuffersInVertexStage?: number };
+  return limits.maxStorageBuffersInVertexStage ?? limits.maxStorageBuffersPerShaderStage;
 }
