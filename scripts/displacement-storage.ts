@@ -14,19 +14,12 @@
 //   a new package). The cage OBJ is a fixed cost, listed for honesty.
 import { readFileSync } from 'node:fs';
 import { loadCage, uvTexelCoverage } from '../src/mesh/index.ts';
-import type { HeightMap } from '../src/mesh/heightmap.ts';
+import type { DisplacedModelEntry, HeightMap } from '../src/mesh/heightmap.ts';
 import { decodeHeightPng, encodeHeightPng } from '../src/mesh/heightmap-png.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { clampedTriangle } from '../src/pattern/clamped.ts';
 
-interface Entry {
-  model: string;
-  heightMap: string;
-  bits: 8 | 16;
-  scale: number;
-  midLevel: number;
-  wrap: 'repeat' | 'clamp';
-}
+type Entry = DisplacedModelEntry;
 
 const dir = new URL('../public/models/', import.meta.url);
 const list = JSON.parse(readFileSync(new URL('displaced.json', dir), 'utf8')) as Entry[];

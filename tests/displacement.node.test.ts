@@ -40,7 +40,7 @@ import { decodeBary } from '../src/gpu/contract.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { DEFAULT_OPTIONS, loadCage, uvAtSubFace, type Cage } from '../src/mesh/index.ts';
 import { decodeHeightPng } from '../src/mesh/heightmap-png.ts';
-import { type HeightMap, type HeightWrap, sampleHeight } from '../src/mesh/heightmap.ts';
+import { type DisplacedModelEntry, type HeightMap, sampleHeight } from '../src/mesh/heightmap.ts';
 import { DisplacedSurface, Surface } from '../src/subdiv/index.ts';
 import { AccSurface } from '../src/subdiv/acc.ts';
 import type { Surface as SurfaceKind } from '../src/gpu/tess-passes.ts';
@@ -49,14 +49,7 @@ const POSITION_TOL = 1e-5; // × the model's bounding-box diagonal
 const NORMAL_TOL_DEG = 0.05;
 const FACTOR = 6;
 
-interface Entry {
-  model: string;
-  heightMap: string;
-  bits: 8 | 16;
-  scale: number;
-  midLevel: number;
-  wrap: HeightWrap;
-}
+type Entry = DisplacedModelEntry;
 const dir = new URL('../public/models/', import.meta.url);
 const entries = JSON.parse(readFileSync(new URL('displaced.json', dir), 'utf8')) as Entry[];
 const load = (e: Entry) => ({

@@ -6,7 +6,7 @@
  * the Node decoder). The 2D canvas is 8-bit, so a 16-bit PNG is displaced at 8 bits here (the CLI
  * reads all 16).
  */
-import { heightMapFromRgba, type HeightMap, type HeightWrap } from '../mesh/heightmap.ts';
+import { heightMapFromRgba, type DisplacedModelEntry, type HeightMap } from '../mesh/heightmap.ts';
 import type { CageHeightMap } from './geometry.ts';
 
 /** A height map as the demo holds it for one cage: the map, and its own scale and mid level
@@ -19,14 +19,7 @@ export interface HeightEntry {
   source: string;
 }
 
-interface DisplacedModel {
-  model: string;
-  heightMap: string;
-  bits: 8 | 16;
-  scale: number;
-  midLevel: number;
-  wrap: HeightWrap;
-}
+type DisplacedModel = DisplacedModelEntry;
 
 let index: Promise<DisplacedModel[]> | null = null;
 

@@ -18,6 +18,17 @@
 
 export type HeightWrap = 'repeat' | 'clamp';
 
+/** One entry of public/models/displaced.json (written by scripts/models.ts): a project model, its
+ * height map's file and bit depth, and its displacement h = (sample − midLevel)·scale, wrap. */
+export interface DisplacedModelEntry {
+  model: string;
+  heightMap: string;
+  bits: 8 | 16;
+  scale: number;
+  midLevel: number;
+  wrap: HeightWrap;
+}
+
 export interface HeightMap {
   width: number;
   height: number;
