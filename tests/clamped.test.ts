@@ -2,10 +2,12 @@
  * The clamped parallelogram (src/pattern/clamped.ts).
  *
  * Why the gap strip can never flip (the argument the tiling property tests back up): in the
- * (u, v) frame the strip is the polygon B → P → E_1 → … → E_nl = C → (right edge) → B with
- * P = (u_{nb−1}, 0) and E_j = (max(0, c − v_j), v_j), where c ≤ min(u_{nb−1}, v_{nl−1}). Walking it in
- * that order every turn is clockwise or straight: at P the cross product of (−1, 0) and
- * (e_1 − u_{nb−1}, v_1) is −v_1 ≤ 0; at E_1 it is c − u_{nb−1} ≤ 0; along the clamp line the E_j are collinear; where the clamp
+ * (u, v) frame the strip is the polygon B → u_{nb−1} → … → P → E_1 → … → E_nl = C → (right edge)
+ * → B with P = (u_{k_0}, 0), the first bottom point at or past the clamp line (u_{k_0} ≥ c; the
+ * bottom points after it are collinear, straight turns), and E_j = (max(0, c − v_j), v_j), where
+ * c ≤ min(u_{nb−1}, v_{nl−1}). Walking it in that order every turn is clockwise or straight: at P
+ * the cross product of (−1, 0) and (e_1 − u_{k_0}, v_1) is −v_1 ≤ 0; at E_1 it is c − u_{k_0} ≤ 0;
+ * along the clamp line the E_j are collinear; where the clamp
  * line meets u = 0 the turn is c − v_{j+1} ≤ 0; the left edge is straight; C and B turn
  * clockwise. A convex polygon is triangulated without overlap by any merge of two boundary
  * chains that advances monotonically along both, whatever the merge order, and stays so while

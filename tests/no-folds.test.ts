@@ -12,12 +12,18 @@
  * normals every uniform tessellation passes (factors 1, 2, 8, 32 give no fold on any model), so
  * a fold is the pattern's: a sliver whose three vertices lie on one curve of the surface.
  *
- * NOT MET: zero. Folds come from the clamped pattern's gap strip (triangles whose three vertices
- * lie nearly on one line in the domain: a cage edge or the clamp line, curved on the surface).
- * A cap-avoiding greedy strip cut brought them down (creature 311 → 26, creased-box, gear and
- * icosphere to 0), but replayed per output triangle on the GPU it made the emit pass 5–45×
- * slower, so it was taken back out until the plan pass can store the strip's moves once per
- * triangle. Until then this is a ratchet at today's counts: a change that folds more fails.
+ * NOT MET: zero, and not reachable with the pattern's vertices. Folds come from triangles whose
+ * three vertices lie nearly on one line in the domain (a cage edge or the clamp line, curved on
+ * the surface), and from needles along a long chord of a strongly curved cage triangle. The gap
+ * strip is cut by a cap-avoiding greedy (src/pattern/clamped.ts gapMergeSteps; the plan pass
+ * makes its moves once per cage triangle and stores them, the emit pass reads them), which took
+ * the counts from (creature 311, creased-box 20, gear 27, icosphere 11, pawn 11) to the ones
+ * below. What is left cannot all go: e.g. creature, camera 0, cage triangle 367 at factors
+ * (1.0765, 1, 1): its vertices are the three corners and edge 0's two points near its ends, and
+ * every one of the five triangulations of those five points folds a triangle (its corner normals
+ * lie almost in the cage triangle's plane: 0.04 and 0.08 from it), so no split rule over these
+ * vertices reaches zero there. This is a ratchet at the counts measured now: a change that folds
+ * more fails.
  */
 import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
@@ -30,13 +36,9 @@ const MODELS = new URL('../public/models/', import.meta.url);
 
 /** Folded triangles allowed over the 6 cameras (all others: 0), as measured with today's pattern. */
 const RESIDUAL: Record<string, { allowed: number }> = {
-  'creature.obj': { allowed: 311 },
-  'creature-wrinkles.obj': { allowed: 311 }, // the creature's cage with UVs
-  'creased-box.obj': { allowed: 20 },
-  'brick-box.obj': { allowed: 20 }, // the creased box's cage with UVs
-  'gear.obj': { allowed: 27 },
-  'icosphere.obj': { allowed: 11 },
-  'pawn.obj': { allowed: 11 },
+  'creature.obj': { allowed: 26 },
+  'creature-wrinkles.obj': { allowed: 26 }, // the creature's cage with UVs
+  'pawn.obj': { allowed: 5 },
 };
 
 /** A small deterministic generator (LCG), so the cameras are the same on every run. */

@@ -1,11 +1,16 @@
 // Plan, once the budget has accepted the counts: one thread per cage triangle writes its
 // pattern's rows (rows 0..nl at the triangle's row offset from the prefix sums), two words each:
-//   k_j  the columns the row keeps (row 0: nb − 1; row nl, the corner C: 0)
+//   k_j  the columns the row keeps (row 0: #{u_i < c}, or nb − 1 with a single right segment;
+//        row nl, the corner C: 0)
 //   S_j  Σ_{j'<j} k_j', from which the emit passes find a row by binary search:
 //        interior vertices before row j (j ≥ 1) = S_j − k_0,
 //        grid triangles before row strip j     = 2·S_j + k_j − k_0.
-// With the rows planned, every output vertex and triangle is written by its own thread (emit):
-// no workgroup memory and no barriers, so the work is spread evenly whatever the factors.
+// and the gap matching's moves (tess-pattern.wgsl gapStepInner), one bit each (1: the inner
+// chain advances), gapMoveWords words from t · gapMoveWords() in work's gapMoves. The moves
+// depend on all the strip's points, so they are made here once per cage triangle and not
+// replayed by every output triangle. With the rows and moves planned, every output vertex and
+// triangle is written by its own thread (emit): no workgroup memory and no barriers, so the work
+// is spread evenly whatever the factors.
 
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
@@ -13,13 +18,43 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
   if (t >= params.nTris || !emitEnabled()) { return; }
   let L = triLines(t);
   let first = work[params.offTriRowBase + t];
+  let k0 = rowZeroKept(L);
   var cum = 0u;
   for (var j = 0u; j <= L.left.n; j++) {
     var k = 0u;
-    if (j == 0u) { k = L.bottom.n - 1u; } else if (j < L.left.n) { k = keptColumns(L.bottom, rowEnd(L, j)); }
+    if (j == 0u) { k = k0; } else if (j < L.left.n) { k = keptColumns(L.bottom, rowEnd(L, j)); }
     let o = params.offRows + 2u * (first + j);
     work[o] = k;
     work[o + 1u] = cum;
     cum += k;
   }
+
+  // The gap matching, on a sliding window of the chains' points (each point read once).
+  let G = gapOf(L, k0);
+  var w = GapWindow(innerPoint(L, G.tail, 0u), innerPoint(L, G.tail, min(1u, G.nI)), innerPoint(L, G.tail, min(2u, G.nI)),
+                    outerPoint(L, 0u), outerPoint(L, min(1u, G.nO)), outerPoint(L, min(2u, G.nO)));
+  var a = 0u;
+  var b = 0u;
+  let moves = G.nI + G.nO - 1u; // the last move closes at C and is never emitted
+  let base = params.offGapMoves + t * gapMoveWords();
+  var word = 0u;
+  for (var m = 0u; m < moves; m++) {
+    if (gapStepInner(G, a, b, w)) {
+      word |= 1u << (m & 31u);
+      a++;
+      w.i0 = w.i1;
+      w.i1 = w.i2;
+      w.i2 = innerPoint(L, G.tail, min(a + 2u, G.nI));
+    } else {
+      b++;
+      w.o0 = w.o1;
+      w.o1 = w.o2;
+      w.o2 = outerPoint(L, min(b + 2u, G.nO));
+    }
+    if ((m & 31u) == 31u) {
+      work[base + (m >> 5u)] = word;
+      word = 0u;
+    }
+  }
+  if ((moves & 31u) != 0u) { work[base + (moves >> 5u)] = word; }
 }

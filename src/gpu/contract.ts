@@ -488,7 +488,8 @@ export const TESS_CAGE = defineArena<'positions' | 'normals' | 'ctrl' | 'limitPo
 /**
  * work (u32 scratch, rewritten every rebuild): per-edge and per-triangle counts and their
  * exclusive prefix sums (n + 1 words: the total at n), the planned rows (two words per row,
- * at most maxFactor + 1 rows a triangle), the scans' block sums, the budget state (BUDGET).
+ * at most maxFactor + 1 rows a triangle), each triangle's gap-strip moves (gapMoveWords words a
+ * triangle), the scans' block sums, the budget state (BUDGET).
  */
 export const TESS_WORK = defineArena<
   | 'edgeF'
@@ -503,6 +504,7 @@ export const TESS_WORK = defineArena<
   | 'triRowCount'
   | 'triRowBase'
   | 'rows'
+  | 'gapMoves'
   | 'sums'
   | 'budget',
   TessSizes
@@ -519,9 +521,20 @@ export const TESS_WORK = defineArena<
   ['triRowCount', (s) => s.triangles],
   ['triRowBase', (s) => s.triangles + 1],
   ['rows', (s) => 2 * (s.maxFactor + 1) * s.triangles],
+  ['gapMoves', (s) => gapMoveWords(s.maxFactor) * s.triangles],
   ['sums', (s) => SCANS * scanSumsWords(Math.max(s.edges, s.triangles))],
   ['budget', () => Object.keys(BUDGET).length],
 ]);
+
+/**
+ * Words of one triangle's gap-strip moves (wgsl/tess-plan.wgsl writes them, one bit a move, as
+ * src/pattern/clamped.ts gapMergeSteps; the emit reads them): a strip has at most
+ * (nb − 1) + nl + nr − 1 moves and a line at most maxFactor + 1 segments (3 on [1, 2]), so
+ * 3·(maxFactor + 1) bits are enough. wgsl/tess-pattern.wgsl gapMoveWords computes the same.
+ */
+export function gapMoveWords(maxFactor: number): number {
+  return Math.ceil((3 * (maxFactor + 1)) / 32);
+}
 
 /** Block-sum words one scan of up to n values needs (its blocks, and one spare). */
 export function scanSumsWords(n: number): number {
