@@ -75,6 +75,12 @@ fn outerVertex(T: Tri, b: u32) -> u32 {
   return edgeVertex(triEdge(T.t, T.L.f.right), T.L.f.flipRight, b, T.L.right.n);
 }
 
+// Point p of the strip polygon (tess-pattern.wgsl stripPoint) as an output vertex.
+fn stripVertex(T: Tri, nI: u32, nO: u32, p: u32) -> u32 {
+  if (p <= nI) { return innerVertex(T, p); }
+  return outerVertex(T, nO - (p - nI));
+}
+
 fn writeTriangle(index: u32, mirrored: bool, a: u32, b: u32, c: u32) {
   if (index >= params.triangleCapacity) { return; }
   outIndices[3u * index] = a;
@@ -122,10 +128,19 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
     }
     return;
   }
-  // The gap strip: move g of the gap matching, as the plan pass stored it (one bit a move, 1 =
-  // inner); the moves before it say where the front edge I_a–O_b is.
   let g = local - grid;
   let mergeBase = params.offGapMoves + t * gapMoveWords();
+  let tail = L.bottom.n - 1u - T.k0;
+  let nI = tail + nl;
+  let nO = L.right.n;
+  if (nI + nO + 1u <= STRIP_DP_VERTICES) {
+    // A small strip: triangle g of its exact triangulation, (i, j, m) in 16 bits (tess-plan.wgsl).
+    let rec = (work[mergeBase + (g >> 1u)] >> (16u * (g & 1u))) & 0xffffu;
+    writeTriangle(r, mirrored, stripVertex(T, nI, nO, rec & 15u), stripVertex(T, nI, nO, (rec >> 4u) & 15u), stripVertex(T, nI, nO, (rec >> 8u) & 15u));
+    return;
+  }
+  // A large strip: move g of the gap matching, as the plan pass stored it (one bit a move, 1 =
+  // inner); the moves before it say where the front edge I_a–O_b is.
   var a = 0u;
   for (var m = 0u; m < (g >> 5u); m++) { a += countOneBits(work[mergeBase + m]); }
   let word = work[mergeBase + (g >> 5u)];

@@ -50,10 +50,13 @@ fn rowEnd(L: TriLines, j: u32) -> u32 {
   return select(0u, L.c - v, L.c > v);
 }
 
-// Columns row 0 keeps in the grid (clamped.ts assembleClamped k[0]): the bottom points before
-// the clamp line and the first one at or past it; all of them but B with a single right segment.
+// Columns row 0 keeps in the grid (clamped.ts rowZeroKept): the bottom points before the clamp
+// line and the first one at or past it; all of them but B with a single right segment when the
+// strip would be too large for the exact triangulation.
 fn rowZeroKept(L: TriLines) -> u32 {
-  return select(keptColumns(L.bottom, L.c), L.bottom.n - 1u, L.right.n == 1u);
+  let k0 = keptColumns(L.bottom, L.c);
+  let big = L.bottom.n - 1u - k0 + L.left.n + L.right.n + 1u > STRIP_DP_VERTICES;
+  return select(k0, L.bottom.n - 1u, L.right.n == 1u && big);
 }
 
 // ---- the gap matching (clamped.ts gapMergeSteps, capLevel: the same integers) ----------------
@@ -63,8 +66,42 @@ fn rowZeroKept(L: TriLines) -> u32 {
 // makes the moves once per triangle and stores one bit each (gapMoveWords words a triangle); the
 // emit pass finds move g by counting bits.
 
-// Words of a triangle's moves in work's gapMoves: contract.ts gapMoveWords, the same formula.
-fn gapMoveWords() -> u32 { return (3u * (params.maxFactor + 1u) + 31u) / 32u; }
+// Words of a triangle's gap strip in work's gapMoves: contract.ts gapMoveWords, the same formula
+// (the greedy's moves, a bit each, or a small strip's triangles, 16 bits each).
+fn gapMoveWords() -> u32 { return max((3u * (params.maxFactor + 1u) + 31u) / 32u, (STRIP_DP_VERTICES - 2u + 1u) / 2u); }
+
+// ---- the exact triangulation of a small strip (clamped.ts stripTriangulation, angleLevel) -----
+// Strips of at most STRIP_DP_VERTICES points (I_0..I_nI = C, then O_{nO−1}..O_1, B; the constant
+// comes from the contract, ≤ 16) are triangulated to the least Σ 16^angleLevel; the plan pass
+// stores each triangle (i, j, m) as i | j << 4 | m << 8 in 16 bits, two to a word.
+
+// A vector scaled to at most 8 significant bits by an arithmetic shift (clamped.ts coarse8).
+fn coarse8(d: vec2<i32>) -> vec2<i32> {
+  let m = u32(max(abs(d.x), abs(d.y)));
+  let shift = u32(max(0, i32(32u - countLeadingZeros(m)) - 8));
+  return d >> vec2<u32>(shift);
+}
+
+// angleLevel at vertex o: thresholds 180° − φ as 1024·tan φ (clamped.ts TAN_1024).
+fn angleLevelAt(o: vec2<i32>, x: vec2<i32>, y: vec2<i32>) -> u32 {
+  let a = coarse8(x - o);
+  let b = coarse8(y - o);
+  let d = a.x * b.x + a.y * b.y;
+  if (d >= 0 || all(a == vec2<i32>(0)) || all(b == vec2<i32>(0))) { return 0u; }
+  let c = abs(a.x * b.y - a.y * b.x) * 1024; // < 2^27
+  return select(0u, 1u, c < 591 * -d) + select(0u, 1u, c < 274 * -d) + select(0u, 1u, c < 144 * -d)
+       + select(0u, 1u, c < 72 * -d) + select(0u, 1u, c < 36 * -d) + select(0u, 1u, c < 18 * -d);
+}
+
+fn angleLevel(p: vec2<i32>, q: vec2<i32>, r: vec2<i32>) -> u32 {
+  return max(angleLevelAt(p, q, r), max(angleLevelAt(q, r, p), angleLevelAt(r, p, q)));
+}
+
+// Point p of the strip polygon: the inner chain, then the outer chain backwards from C.
+fn stripPoint(L: TriLines, tail: u32, nI: u32, nO: u32, p: u32) -> vec2<i32> {
+  if (p <= nI) { return innerPoint(L, tail, p); }
+  return outerPoint(L, nO - (p - nI));
+}
 
 // A vector scaled to at most 5 significant bits by an arithmetic shift (clamped.ts coarse).
 fn coarse(d: vec2<i32>) -> vec2<i32> {

@@ -12,6 +12,54 @@
 // triangle is written by its own thread (emit): no workgroup memory and no barriers, so the work
 // is spread evenly whatever the factors.
 
+// clamped.ts stripTriangulation: the interval recursion over the polygon's points (best cost and
+// split of each interval, n ≤ 16), then its triangles in the order of a depth-first walk.
+fn planSmallStrip(L: TriLines, G: Gap, n: u32, base: u32) {
+  var pts: array<vec2<i32>, STRIP_DP_VERTICES>;
+  for (var p = 0u; p < n; p++) { pts[p] = stripPoint(L, G.tail, G.nI, G.nO, p); }
+  var cost: array<u32, STRIP_DP_VERTICES * STRIP_DP_VERTICES>;
+  var split: array<u32, STRIP_DP_VERTICES * STRIP_DP_VERTICES>;
+  for (var i = 0u; i + 1u < n; i++) { cost[i * n + i + 1u] = 0u; }
+  for (var len = 2u; len < n; len++) {
+    for (var i = 0u; i + len < n; i++) {
+      let j = i + len;
+      var best = 0xffffffffu;
+      for (var m = i + 1u; m < j; m++) {
+        // 16^level ≤ 2^24, and at most 14 triangles: no overflow.
+        let c = cost[i * n + m] + cost[m * n + j] + (1u << (4u * angleLevel(pts[i], pts[j], pts[m])));
+        if (c < best) {
+          best = c;
+          split[i * n + j] = m;
+        }
+      }
+      cost[i * n + j] = best;
+    }
+  }
+  // Depth-first from (0, n − 1), lower half first: a stack of intervals, at most n deep.
+  var stack: array<u32, STRIP_DP_VERTICES>;
+  stack[0] = n - 1u; // (i << 8) | j with i = 0
+  var top = 1u;
+  var g = 0u;
+  var word = 0u;
+  while (top > 0u) {
+    top--;
+    let i = stack[top] >> 8u;
+    let j = stack[top] & 0xffu;
+    if (j - i < 2u) { continue; }
+    let m = split[i * n + j];
+    word |= (i | (j << 4u) | (m << 8u)) << (16u * (g & 1u));
+    if ((g & 1u) == 1u) {
+      work[base + (g >> 1u)] = word;
+      word = 0u;
+    }
+    g++;
+    stack[top] = (m << 8u) | j;
+    stack[top + 1u] = (i << 8u) | m;
+    top += 2u;
+  }
+  if ((g & 1u) == 1u) { work[base + (g >> 1u)] = word; }
+}
+
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let t = flatIndex(wid, lid);
@@ -29,14 +77,19 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
     cum += k;
   }
 
-  // The gap matching, on a sliding window of the chains' points (each point read once).
   let G = gapOf(L, k0);
+  let base = params.offGapMoves + t * gapMoveWords();
+  let n = G.nI + G.nO + 1u; // the strip polygon's points
+  if (n <= STRIP_DP_VERTICES) {
+    planSmallStrip(L, G, n, base);
+    return;
+  }
+  // The gap matching, on a sliding window of the chains' points (each point read once).
   var w = GapWindow(innerPoint(L, G.tail, 0u), innerPoint(L, G.tail, min(1u, G.nI)), innerPoint(L, G.tail, min(2u, G.nI)),
                     outerPoint(L, 0u), outerPoint(L, min(1u, G.nO)), outerPoint(L, min(2u, G.nO)));
   var a = 0u;
   var b = 0u;
   let moves = G.nI + G.nO - 1u; // the last move closes at C and is never emitted
-  let base = params.offGapMoves + t * gapMoveWords();
   var word = 0u;
   for (var m = 0u; m < moves; m++) {
     if (gapStepInner(G, a, b, w)) {

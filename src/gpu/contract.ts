@@ -27,6 +27,7 @@
  */
 import { ONE } from '../pattern/fixed.ts';
 import { TABLE_HEADER_FIELDS } from '../pattern/tables.ts';
+import { STRIP_DP_VERTICES } from '../pattern/clamped.ts';
 import { defineStruct } from './layout.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -397,6 +398,7 @@ export const TESS_CONSTANTS = {
   NO_OWNER,
   BARY_CORNER1,
   BARY_CORNER2,
+  STRIP_DP_VERTICES,
   ...Object.fromEntries(Object.entries(BUDGET).map(([k, v]) => [`BUDGET_${k}`, v])),
   BUDGET_WORDS: Object.keys(BUDGET).length,
 } as Readonly<Record<string, number>>;
@@ -527,13 +529,15 @@ export const TESS_WORK = defineArena<
 ]);
 
 /**
- * Words of one triangle's gap-strip moves (wgsl/tess-plan.wgsl writes them, one bit a move, as
- * src/pattern/clamped.ts gapMergeSteps; the emit reads them): a strip has at most
- * (nb − 1) + nl + nr − 1 moves and a line at most maxFactor + 1 segments (3 on [1, 2]), so
- * 3·(maxFactor + 1) bits are enough. wgsl/tess-pattern.wgsl gapMoveWords computes the same.
+ * Words of one triangle's gap strip (wgsl/tess-plan.wgsl writes them, the emit reads them): a
+ * large strip's moves, one bit a move, as src/pattern/clamped.ts gapMergeSteps (at most
+ * (nb − 1) + nl + nr − 1 moves, and a line has at most maxFactor + 1 segments, 3 on [1, 2], so
+ * 3·(maxFactor + 1) bits are enough), or a small strip's triangles (clamped.ts
+ * stripTriangulation, at most STRIP_DP_VERTICES − 2 of them, 16 bits each).
+ * wgsl/tess-pattern.wgsl gapMoveWords computes the same.
  */
 export function gapMoveWords(maxFactor: number): number {
-  return Math.ceil((3 * (maxFactor + 1)) / 32);
+  return Math.max(Math.ceil((3 * (maxFactor + 1)) / 32), Math.ceil((STRIP_DP_VERTICES - 2) / 2));
 }
 
 /** Block-sum words one scan of up to n values needs (its blocks, and one spare). */

@@ -34,22 +34,28 @@
  *      would pass the line collapse onto E_j and are merged into it. Row 0 is the bottom edge
  *      itself, never clamped, so no edge vertex ever moves: its grid part is u_0..u_{k_0}, with
  *      u_{k_0} the first point at or past the clamp line (k_0 ≤ nb − 1 since c ≤ u_{nb−1}); the
- *      points after it belong to the gap strip. (With a single right segment, k_0 = nb − 1: the
- *      strip then has only B and C to cut from.) Row nl is corner C.
+ *      points after it belong to the gap strip. (With a single right segment and a strip too
+ *      large for step 4's exact triangulation, k_0 = nb − 1: the greedy could then only fan the
+ *      strip from B and C; rowZeroKept.) Row nl is corner C.
  *      Between rows j and j+1, column i gives a "lower" triangle if i < k_j and an "upper"
  *      one if i < k_{j+1} (k_j = columns kept in row j), so a quad disappears exactly when it
  *      has collapsed.
  *   4. Gap strip: what is left, between the inner chain u_{nb−1}, …, u_{k_0} (the bottom's tail,
  *      walked back from B), E_1, …, E_nl = C and the right edge B = O_0, O_1, …, O_nr = C, is a
  *      convex polygon (the turn at u_{k_0} is u_{k_0} − c ≥ 0; the others are shown in the notes
- *      of tests/clamped.test.ts), so any monotone merge of the two chains triangulates it
- *      without a flip. The merge ("gap matching", gapMergeSteps) is a greedy walk from B on the
- *      current positions that avoids CAPS: triangles whose three distinct vertices lie nearly on
- *      one line. In the domain they are harmless, but their vertices lie on a curve of the
- *      surface (an edge, the clamp line) and the flat triangle through them folds under it:
- *      the dark dotted lines of issue 13. (The merge before it compared the points' final
+ *      of tests/clamped.test.ts), so any triangulation of it has no flip. It is cut to avoid
+ *      CAPS: triangles whose three distinct vertices lie nearly on one line. In the domain they
+ *      are harmless, but their vertices lie on a curve of the surface (an edge, the clamp line)
+ *      and the flat triangle through them folds under it: the dark dotted lines of issue 13.
+ *      A strip of at most STRIP_DP_VERTICES points (what adaptive factors near 1–3 make, where
+ *      the folds were) gets the exact triangulation of least Σ 16^angleLevel
+ *      (stripTriangulation), which may also join two points of one chain; a larger one a
+ *      monotone merge of the two chains by a greedy walk from B on the current positions
+ *      (gapMergeSteps, "gap matching"). Both are pure functions of the points, so of the three
+ *      factors and the frame; the GPU's plan pass computes them once per cage triangle and
+ *      stores them for the emit pass. (The merge before them compared the points' final
  *      places, which never changes while points slide, but fanned a point born at a corner to
- *      every point of the next edge.) At powers of two it reproduces the uniform grid.
+ *      every point of the next edge.) At powers of two they reproduce the uniform grid.
  *
  * Hable adds a centre point while the left factor is below 2 because his parallelogram breaks
  * while the left edge's points slide in from both ends. Here every sliding left point simply
@@ -260,6 +266,96 @@ export function gapStepInner(inner: readonly FramePoint[], outer: readonly Frame
   return halfDist2(outer[b], inner[a + 1]) < halfDist2(inner[a], outer[b + 1]);
 }
 
+/**
+ * Columns row 0 keeps in the grid: the bottom points before the clamp line and the first one at
+ * or past it (k_0 = #{u_i < c} ≤ nb − 1, since c ≤ u_{nb−1}); the rest are the gap strip's. A
+ * strip too large for the exact triangulation with a single right segment can only be fanned
+ * from B and C by the greedy, and a bottom tail there would be a fan of caps from B: then the
+ * bottom stays in the grid (k_0 = nb − 1, fanned from E_1).
+ */
+export function rowZeroKept(bottom: readonly number[], nl: number, nr: number, c: number): number {
+  const nb = bottom.length - 1;
+  let k0 = 0;
+  while (bottom[k0] < c) k0++;
+  if (nr === 1 && nb - 1 - k0 + nl + nr + 1 > STRIP_DP_VERTICES) k0 = nb - 1;
+  return k0;
+}
+
+/** Strips of at most this many vertices are triangulated exactly (stripTriangulation); larger
+ * ones by the greedy gap matching. At most 16: the GPU stores a polygon index in 4 bits (the
+ * WGSL reads the number from src/gpu/contract.ts TESS_CONSTANTS). */
+export const STRIP_DP_VERTICES = 16;
+
+/** 1024·tan φ for φ = 30°, 15°, 8°, 4°, 2°, 1° (rounded): angleLevel's thresholds 180° − φ. */
+const TAN_1024 = [591, 274, 144, 72, 36, 18];
+
+/** A vector scaled down to at most 8 significant bits (|components| ≤ 255) by a power of two. */
+function coarse8(du: number, dv: number): [number, number] {
+  const shift = Math.max(0, 32 - Math.clz32(Math.max(Math.abs(du), Math.abs(dv))) - 8);
+  return [du >> shift, dv >> shift];
+}
+
+/**
+ * How close to 180° the largest angle of triangle p q r is: the number of the thresholds 150°,
+ * 165°, 172°, 176°, 178°, 179° it passes (0..6; 0 for a zero-length side, which is a degenerate
+ * triangle, not a cap). At a vertex with sides a, b it tests |a × b|·1024 < 1024·tan φ·(−a·b) on
+ * the sides' directions to 8 bits: every product is below 2^27, so the WGSL gets the same in i32.
+ */
+export function angleLevel(p: FramePoint, q: FramePoint, r: FramePoint): number {
+  return Math.max(angleLevelAt(p, q, r), angleLevelAt(q, r, p), angleLevelAt(r, p, q));
+}
+
+function angleLevelAt(o: FramePoint, x: FramePoint, y: FramePoint): number {
+  const [au, av] = coarse8(x[0] - o[0], x[1] - o[1]);
+  const [bu, bv] = coarse8(y[0] - o[0], y[1] - o[1]);
+  const dot = au * bu + av * bv;
+  if (dot >= 0 || (au === 0 && av === 0) || (bu === 0 && bv === 0)) return 0;
+  const cross = Math.abs(au * bv - av * bu) * 1024;
+  let level = 0;
+  for (const t of TAN_1024) if (cross < t * -dot) level++;
+  return level;
+}
+
+/**
+ * The exact triangulation of a small gap strip: the polygon's points in order around it (the
+ * strip is convex, walked clockwise in the frame), triangulated to the least Σ 16^angleLevel
+ * over its triangles (so the flattest cap counts most: almost the least largest angle) by the
+ * usual interval recursion, the first best split on ties. Unlike the greedy it may join two
+ * points of one chain, which is what a strip with few right points and a corner-born point needs
+ * (a cap whichever way a chain merge goes). The triangles (i, j, m), polygon indices with
+ * i < m < j (positive in the frame), in the order of a depth-first walk from (0, n − 1), lower
+ * half first: the order wgsl/tess-plan.wgsl stores them in.
+ */
+export function stripTriangulation(pts: readonly FramePoint[]): [number, number, number][] {
+  const n = pts.length;
+  const cost = new Array<number>(n * n).fill(0);
+  const split = new Array<number>(n * n).fill(0);
+  for (let len = 2; len < n; len++) {
+    for (let i = 0; i + len < n; i++) {
+      const j = i + len;
+      let best = Number.POSITIVE_INFINITY;
+      for (let m = i + 1; m < j; m++) {
+        const cst = cost[i * n + m] + cost[m * n + j] + 2 ** (4 * angleLevel(pts[i], pts[j], pts[m]));
+        if (cst < best) {
+          best = cst;
+          split[i * n + j] = m;
+        }
+      }
+      cost[i * n + j] = best;
+    }
+  }
+  const out: [number, number, number][] = [];
+  const stack: [number, number][] = [[0, n - 1]];
+  while (stack.length) {
+    const [i, j] = stack.pop() as [number, number];
+    if (j - i < 2) continue;
+    const m = split[i * n + j];
+    out.push([i, j, m]);
+    stack.push([m, j], [i, m]);
+  }
+  return out;
+}
+
 /** A line's gap at its far end: the larger of its last two segments (ONE for one segment). */
 export function endGap(x: number[]): number {
   const n = x.length - 1;
@@ -286,11 +382,7 @@ export function assembleClamped(bottom: number[], left: number[], right: number[
   // past the clamp line, u_{k_0}).
   const k = new Array<number>(nl + 1);
   const end = new Array<number>(nl + 1);
-  k[0] = 0;
-  while (bottom[k[0]] < c) k[0]++; // c ≤ u_{nb−1}, so k_0 ≤ nb − 1
-  // With a single right segment the strip can only be fanned from B and C, and a bottom tail
-  // there would be a fan of caps from B: keep the bottom in the grid (fanned from E_1).
-  if (nr === 1) k[0] = nb - 1;
+  k[0] = rowZeroKept(bottom, nl, nr, c);
   end[0] = bottom[k[0]];
   for (let j = 1; j <= nl; j++) {
     const e = Math.max(0, c - left[j]);
@@ -338,12 +430,19 @@ export function assembleClamped(bottom: number[], left: number[], right: number[
   const at2 = (v: number): FramePoint => [bary[3 * v + 1], bary[3 * v + 2]];
   const innerPts = Array.from({ length: nI + 1 }, (_, a) => at2(inner(a)));
   const outerPts = Array.from({ length: nr + 1 }, (_, b) => at2(outer(b)));
-  let a = 0;
-  let b = 0;
-  for (const advanceInner of gapMergeSteps(innerPts, outerPts)) {
-    const t = advanceInner ? [inner(a), outer(b), inner(++a)] : [inner(a), outer(b), outer(++b)];
-    if (t[0] === t[1] || t[1] === t[2] || t[0] === t[2]) continue; // the last move, closing at C
-    tris.push(t[0], t[1], t[2]);
+  if (nI + nr + 1 <= STRIP_DP_VERTICES) {
+    // A small strip: the best triangulation of the whole polygon (I_0..I_nI = C, then O_{nr−1}..O_1, B).
+    const poly = (p: number) => (p <= nI ? inner(p) : outer(nr - (p - nI)));
+    const pts = Array.from({ length: nI + nr + 1 }, (_, p) => at2(poly(p)));
+    for (const [i, j, m] of stripTriangulation(pts)) tris.push(poly(i), poly(j), poly(m));
+  } else {
+    let a = 0;
+    let b = 0;
+    for (const advanceInner of gapMergeSteps(innerPts, outerPts)) {
+      const t = advanceInner ? [inner(a), outer(b), inner(++a)] : [inner(a), outer(b), outer(++b)];
+      if (t[0] === t[1] || t[1] === t[2] || t[0] === t[2]) continue; // the last move, closing at C
+      tris.push(t[0], t[1], t[2]);
+    }
   }
 
   return { bary, triangles: tris, vertexCount: bary.length / 3, triangleCount: tris.length / 3, c, gridTriangleCount };
