@@ -82,10 +82,9 @@ fn coarse8(d: vec2<i32>) -> vec2<i32> {
   return d >> vec2<u32>(shift);
 }
 
-// angleLevel at vertex o: thresholds 180° − φ as 1024·tan φ (clamped.ts TAN_1024).
-fn angleLevelAt(o: vec2<i32>, x: vec2<i32>, y: vec2<i32>) -> u32 {
-  let a = coarse8(x - o);
-  let b = coarse8(y - o);
+// angleLevel at a vertex whose sides have the coarse8 directions a and b: thresholds 180° − φ as
+// 1024·tan φ (clamped.ts TAN_1024).
+fn angleLevelDirs(a: vec2<i32>, b: vec2<i32>) -> u32 {
   let d = a.x * b.x + a.y * b.y;
   if (d >= 0 || all(a == vec2<i32>(0)) || all(b == vec2<i32>(0))) { return 0u; }
   let c = abs(a.x * b.y - a.y * b.x) * 1024; // < 2^27
@@ -93,9 +92,6 @@ fn angleLevelAt(o: vec2<i32>, x: vec2<i32>, y: vec2<i32>) -> u32 {
        + select(0u, 1u, c < 72 * -d) + select(0u, 1u, c < 36 * -d) + select(0u, 1u, c < 18 * -d);
 }
 
-fn angleLevel(p: vec2<i32>, q: vec2<i32>, r: vec2<i32>) -> u32 {
-  return max(angleLevelAt(p, q, r), max(angleLevelAt(q, r, p), angleLevelAt(r, p, q)));
-}
 
 // Point p of the strip polygon: the inner chain, then the outer chain backwards from C.
 fn stripPoint(L: TriLines, tail: u32, nI: u32, nO: u32, p: u32) -> vec2<i32> {

@@ -13,10 +13,17 @@
 // is spread evenly whatever the factors.
 
 // clamped.ts stripTriangulation: the interval recursion over the polygon's points (best cost and
-// split of each interval, n ≤ 16), then its triangles in the order of a depth-first walk.
+// split of each interval, n ≤ STRIP_DP_VERTICES ≤ 16), then its triangles in the order of a
+// depth-first walk.
 fn planSmallStrip(L: TriLines, G: Gap, n: u32, base: u32) {
   var pts: array<vec2<i32>, STRIP_DP_VERTICES>;
   for (var p = 0u; p < n; p++) { pts[p] = stripPoint(L, G.tail, G.nI, G.nO, p); }
+  // The coarse direction from every point to every other (clamped.ts angleLevel takes them
+  // from the same differences), so each triple only compares them.
+  var dirs: array<vec2<i32>, STRIP_DP_VERTICES * STRIP_DP_VERTICES>;
+  for (var a = 0u; a < n; a++) {
+    for (var b = 0u; b < n; b++) { dirs[a * n + b] = coarse8(pts[b] - pts[a]); }
+  }
   var cost: array<u32, STRIP_DP_VERTICES * STRIP_DP_VERTICES>;
   var split: array<u32, STRIP_DP_VERTICES * STRIP_DP_VERTICES>;
   for (var i = 0u; i + 1u < n; i++) { cost[i * n + i + 1u] = 0u; }
@@ -25,8 +32,10 @@ fn planSmallStrip(L: TriLines, G: Gap, n: u32, base: u32) {
       let j = i + len;
       var best = 0xffffffffu;
       for (var m = i + 1u; m < j; m++) {
-        // 16^level ≤ 2^24, and at most 14 triangles: no overflow.
-        let c = cost[i * n + m] + cost[m * n + j] + (1u << (4u * angleLevel(pts[i], pts[j], pts[m])));
+        // 16^level ≤ 2^24, and at most 14 triangles (n ≤ 16): no overflow.
+        let level = max(angleLevelDirs(dirs[i * n + j], dirs[i * n + m]),
+                        max(angleLevelDirs(dirs[j * n + m], dirs[j * n + i]), angleLevelDirs(dirs[m * n + i], dirs[m * n + j])));
+        let c = cost[i * n + m] + cost[m * n + j] + (1u << (4u * level));
         if (c < best) {
           best = c;
           split[i * n + j] = m;

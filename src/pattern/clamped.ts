@@ -283,8 +283,11 @@ export function rowZeroKept(bottom: readonly number[], nl: number, nr: number, c
 
 /** Strips of at most this many vertices are triangulated exactly (stripTriangulation); larger
  * ones by the greedy gap matching. At most 16: the GPU stores a polygon index in 4 bits (the
- * WGSL reads the number from src/gpu/contract.ts TESS_CONSTANTS). */
-export const STRIP_DP_VERTICES = 16;
+ * WGSL reads the number from src/gpu/contract.ts TESS_CONSTANTS). 8, not 16: on the cameras of
+ * tests/no-folds.test.ts 16 folds no fewer triangles (on 12 other seeded cameras it took the
+ * creased box from 5 to 0), and the plan pass's O(n³) search cost about twice as much on
+ * SwiftShader. */
+export const STRIP_DP_VERTICES = 8;
 
 /** 1024·tan φ for φ = 30°, 15°, 8°, 4°, 2°, 1° (rounded): angleLevel's thresholds 180° − φ. */
 const TAN_1024 = [591, 274, 144, 72, 36, 18];
