@@ -169,26 +169,45 @@ fn gapMoveOk(G: Gap, a: u32, b: u32, inner: bool) -> bool {
 // where they exist).
 struct GapWindow { i0: vec2<i32>, i1: vec2<i32>, i2: vec2<i32>, o0: vec2<i32>, o1: vec2<i32>, o2: vec2<i32> }
 
+// NO_LEVEL: a cap level not computed (capLevel is at most 3).
+const NO_LEVEL: u32 = 99u;
+
+// One decision and what the next one can reuse: capLevel depends only on the three points, so
+// the triangles the look-ahead judged are the next step's two moves (NO_LEVEL where it did not).
+struct GapStep { inner: bool, nextLi: u32, nextLo: u32 }
+
 // clamped.ts gapStepInner on the window: advance the inner chain from front edge I_a–O_b? The
 // least cap level of the allowed moves at (a + 1, b) and (a, b + 1) is clamped.ts bestLevel.
-fn gapStepInner(G: Gap, a: u32, b: u32, w: GapWindow) -> bool {
+// li, lo: the cap levels of this step's inner and outer move if the last step computed them.
+fn gapStep(G: Gap, a: u32, b: u32, w: GapWindow, knownLi: u32, knownLo: u32) -> GapStep {
   let okInner = gapMoveOk(G, a, b, true);
   let okOuter = gapMoveOk(G, a, b, false);
-  if (!okInner) { return false; }
-  if (!okOuter) { return true; }
-  let li = capLevel(w.i0, w.o0, w.i1);
-  let lo = capLevel(w.i0, w.o0, w.o1);
-  // After the inner move, from (a + 1, b).
-  var bi = 4u;
-  if (gapMoveOk(G, a + 1u, b, true)) { bi = min(bi, capLevel(w.i1, w.o0, w.i2)); }
-  if (gapMoveOk(G, a + 1u, b, false)) { bi = min(bi, capLevel(w.i1, w.o0, w.o1)); }
-  // After the outer move, from (a, b + 1).
-  var bo = 4u;
-  if (gapMoveOk(G, a, b + 1u, true)) { bo = min(bo, capLevel(w.i0, w.o1, w.i1)); }
-  if (gapMoveOk(G, a, b + 1u, false)) { bo = min(bo, capLevel(w.i0, w.o1, w.o2)); }
-  let si = max(li, select(bi, 0u, bi == 4u));
-  let so = max(lo, select(bo, 0u, bo == 4u));
-  if (si != so) { return si < so; }
-  if (li != lo) { return li < lo; }
-  return halfDist2(w.o0, w.i1) < halfDist2(w.i0, w.o1);
+  if (!okInner) { return GapStep(false, NO_LEVEL, NO_LEVEL); }
+  if (!okOuter) { return GapStep(true, NO_LEVEL, NO_LEVEL); }
+  let li = select(knownLi, capLevel(w.i0, w.o0, w.i1), knownLi == NO_LEVEL);
+  let lo = select(knownLo, capLevel(w.i0, w.o0, w.o1), knownLo == NO_LEVEL);
+  // After the inner move, from (a + 1, b): its moves (I_{a+1}, O_b, I_{a+2}), (I_{a+1}, O_b, O_{b+1}).
+  var t3 = NO_LEVEL;
+  var t4 = NO_LEVEL;
+  if (gapMoveOk(G, a + 1u, b, true)) { t3 = capLevel(w.i1, w.o0, w.i2); }
+  if (gapMoveOk(G, a + 1u, b, false)) { t4 = capLevel(w.i1, w.o0, w.o1); }
+  // After the outer move, from (a, b + 1): (I_a, O_{b+1}, I_{a+1}), (I_a, O_{b+1}, O_{b+2}).
+  var t5 = NO_LEVEL;
+  var t6 = NO_LEVEL;
+  if (gapMoveOk(G, a, b + 1u, true)) { t5 = capLevel(w.i0, w.o1, w.i1); }
+  if (gapMoveOk(G, a, b + 1u, false)) { t6 = capLevel(w.i0, w.o1, w.o2); }
+  let bi = min(t3, t4);
+  let bo = min(t5, t6);
+  let si = max(li, select(bi, 0u, bi == NO_LEVEL));
+  let so = max(lo, select(bo, 0u, bo == NO_LEVEL));
+  var inner: bool;
+  if (si != so) {
+    inner = si < so;
+  } else if (li != lo) {
+    inner = li < lo;
+  } else {
+    inner = halfDist2(w.o0, w.i1) < halfDist2(w.i0, w.o1);
+  }
+  if (inner) { return GapStep(true, t3, t4); }
+  return GapStep(false, t5, t6);
 }

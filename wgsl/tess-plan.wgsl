@@ -5,7 +5,7 @@
 //   S_j  Σ_{j'<j} k_j', from which the emit passes find a row by binary search:
 //        interior vertices before row j (j ≥ 1) = S_j − k_0,
 //        grid triangles before row strip j     = 2·S_j + k_j − k_0.
-// and the gap matching's moves (tess-pattern.wgsl gapStepInner), one bit each (1: the inner
+// and the gap matching's moves (tess-pattern.wgsl gapStep), one bit each (1: the inner
 // chain advances), gapMoveWords words from t · gapMoveWords() in work's gapMoves. The moves
 // depend on all the strip's points, so they are made here once per cage triangle and not
 // replayed by every output triangle. With the rows and moves planned, every output vertex and
@@ -100,8 +100,13 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
   var b = 0u;
   let moves = G.nI + G.nO - 1u; // the last move closes at C and is never emitted
   var word = 0u;
+  var knownLi = NO_LEVEL;
+  var knownLo = NO_LEVEL;
   for (var m = 0u; m < moves; m++) {
-    if (gapStepInner(G, a, b, w)) {
+    let step = gapStep(G, a, b, w, knownLi, knownLo);
+    knownLi = step.nextLi;
+    knownLo = step.nextLo;
+    if (step.inner) {
       word |= 1u << (m & 31u);
       a++;
       w.i0 = w.i1;
