@@ -2,10 +2,12 @@
  * The clamped parallelogram (src/pattern/clamped.ts).
  *
  * Why the gap strip can never flip (the argument the tiling property tests back up): in the
- * (u, v) frame the strip is the polygon B → P → E_1 → … → E_nl = C → (right edge) → B with
- * P = (u_{nb−1}, 0) and E_j = (max(0, c − v_j), v_j), where c ≤ min(u_{nb−1}, v_{nl−1}). Walking it in
- * that order every turn is clockwise or straight: at P the cross product of (−1, 0) and
- * (e_1 − u_{nb−1}, v_1) is −v_1 ≤ 0; at E_1 it is c − u_{nb−1} ≤ 0; along the clamp line the E_j are collinear; where the clamp
+ * (u, v) frame the strip is the polygon B → u_{nb−1} → … → P → E_1 → … → E_nl = C → (right edge)
+ * → B with P = (u_{k_0}, 0), the first bottom point at or past the clamp line (u_{k_0} ≥ c; the
+ * bottom points after it are collinear, straight turns), and E_j = (max(0, c − v_j), v_j), where
+ * c ≤ min(u_{nb−1}, v_{nl−1}). Walking it in that order every turn is clockwise or straight: at P
+ * the cross product of (−1, 0) and (e_1 − u_{k_0}, v_1) is −v_1 ≤ 0; at E_1 it is c − u_{k_0} ≤ 0;
+ * along the clamp line the E_j are collinear; where the clamp
  * line meets u = 0 the turn is c − v_{j+1} ≤ 0; the left edge is straight; C and B turn
  * clockwise. A convex polygon is triangulated without overlap by any merge of two boundary
  * chains that advances monotonically along both, whatever the merge order, and stays so while
@@ -15,7 +17,15 @@ import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { ONE } from '../src/pattern/fixed.ts';
 import { line } from '../src/pattern/line.ts';
-import { clampedTriangle, type Reverse } from '../src/pattern/clamped.ts';
+import {
+  angleLevel,
+  clampedConstruction,
+  clampedTriangle,
+  STRIP_DP_VERTICES,
+  stripTriangulation,
+  type FramePoint,
+  type Reverse,
+} from '../src/pattern/clamped.ts';
 import { area2, checkTiling, edgeParams } from './pattern-helpers.ts';
 import type { TriPattern } from '../src/pattern/types.ts';
 
@@ -147,6 +157,100 @@ describe('clamped parallelogram: properties over random factor sets', () => {
       ),
       { numRuns: 3000 },
     );
+  });
+
+  it('cuts small gap strips with the least largest angle of any triangulation (checked by enumeration)', () => {
+    // Caps (three points nearly on one line, in the domain) are what folds on a curved surface
+    // (tests/no-folds.test.ts). A seeded sample of factor sets, most of them near 1–3 where the
+    // strips are small and the folds were; every triangulation of each small strip.
+    let seed = 11;
+    const rnd = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
+    let checked = 0;
+    const levels = new Map<number, number>();
+    for (let k = 0; k < 1500; k++) {
+      const f = [0, 1, 2].map(() => (rnd() < 0.3 ? 1 : 1 + rnd() * (rnd() < 0.5 ? 2 : 12))) as [number, number, number];
+      const r = [0, 1, 2].map(() => rnd() < 0.5) as unknown as Reverse;
+      const p = clampedConstruction(f, r).framed;
+      const n = p.triangleCount - p.gridTriangleCount + 2; // the strip polygon's points
+      if (n > STRIP_DP_VERTICES) continue;
+      // The strip's points, from its triangles: each (i, j, m) is positive, so around the
+      // strip they are met in polygon order; recover it from the triangles' vertex set by
+      // the angle around their centroid (the polygon is convex).
+      const uv = (v: number): FramePoint => [p.bary[3 * v + 1], p.bary[3 * v + 2]];
+      const ids = [...new Set(p.triangles.slice(3 * p.gridTriangleCount))];
+      expect(ids.length).toBe(n);
+      const cx = ids.reduce((a, v) => a + uv(v)[0], 0) / n;
+      const cy = ids.reduce((a, v) => a + uv(v)[1], 0) / n;
+      const pts = ids.map(uv).sort((a, b) => Math.atan2(b[1] - cy, b[0] - cx) - Math.atan2(a[1] - cy, a[0] - cx)); // clockwise
+      let got = 0;
+      for (let t = p.gridTriangleCount; t < p.triangleCount; t++) {
+        got = Math.max(got, angleLevel(uv(p.triangles[3 * t]), uv(p.triangles[3 * t + 1]), uv(p.triangles[3 * t + 2])));
+      }
+      // Least largest level over all triangulations of pts[i..j] (the edge i–j closing it).
+      const memo = new Map<number, number>();
+      const best = (i: number, j: number): number => {
+        if (j - i < 2) return 0;
+        const key = i * 16 + j;
+        const known = memo.get(key);
+        if (known !== undefined) return known;
+        let b = 99;
+        for (let m = i + 1; m < j; m++) b = Math.min(b, Math.max(best(i, m), best(m, j), angleLevel(pts[i], pts[j], pts[m])));
+        memo.set(key, b);
+        return b;
+      };
+      expect(got).toBe(best(0, n - 1));
+      levels.set(got, (levels.get(got) ?? 0) + 1);
+      checked++;
+    }
+    expect(checked).toBeGreaterThan(500);
+    expect(levels.get(0)).toBeGreaterThan(checked / 2);
+  });
+
+  it('cuts small gap strips without caps: no strip triangle of them has an angle above 176°', () => {
+    // The same kind of sample, all small strips: angle level 3 (above 176°) at most.
+    let seed = 7;
+    const rnd = () => (seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648;
+    let small = 0;
+    for (let k = 0; k < 3000; k++) {
+      const f = [0, 1, 2].map(() => (rnd() < 0.3 ? 1 : 1 + rnd() * (rnd() < 0.5 ? 2 : 12))) as [number, number, number];
+      const r = [0, 1, 2].map(() => rnd() < 0.5) as unknown as Reverse;
+      const p = clampedConstruction(f, r).framed;
+      // The strip polygon has (strip triangles + 2) points.
+      if (p.triangleCount - p.gridTriangleCount + 2 > STRIP_DP_VERTICES) continue;
+      small++;
+      const uv = (v: number): FramePoint => [p.bary[3 * v + 1], p.bary[3 * v + 2]];
+      for (let t = p.gridTriangleCount; t < p.triangleCount; t++) {
+        const level = angleLevel(uv(p.triangles[3 * t]), uv(p.triangles[3 * t + 1]), uv(p.triangles[3 * t + 2]));
+        if (level > 3) expect.fail(`factors ${f}, reverse ${r}: strip triangle ${t} has angle level ${level}`);
+      }
+    }
+    expect(small).toBeGreaterThan(1000);
+  });
+
+  it('triangulates a strip polygon into n − 2 triangles, each (i, j, m) with i < m < j, covering it once', () => {
+    // A convex 7-gon (clockwise, as a strip is walked): the triangles' areas add up to its own.
+    const pts: FramePoint[] = [
+      [60000, 0],
+      [30000, 0],
+      [2000, 2000],
+      [0, 40000],
+      [0, 65536],
+      [20000, 45536],
+      [65536, 0],
+    ];
+    const tris = stripTriangulation(pts);
+    expect(tris.length).toBe(pts.length - 2);
+    const a2 = (i: number, j: number, k: number) =>
+      (pts[j][0] - pts[i][0]) * (pts[k][1] - pts[i][1]) - (pts[j][1] - pts[i][1]) * (pts[k][0] - pts[i][0]);
+    let sum = 0;
+    for (const [i, j, m] of tris) {
+      expect(i < m && m < j).toBe(true);
+      sum += a2(i, j, m);
+    }
+    let poly = 0;
+    for (let k = 1; k + 1 < pts.length; k++) poly += a2(0, k + 1, k);
+    expect(sum).toBe(poly);
+    expect(sum).toBeGreaterThan(0); // positive in the frame
   });
 
   it('moves its vertex set continuously as any one factor moves', () => {

@@ -16,8 +16,10 @@ describe('baked pattern tables', () => {
   it('have the documented header and reject bad bytes', () => {
     const w = bakeTables(64);
     expect(w[0]).toBe(TABLE_MAGIC);
-    expect(w[1]).toBe(1);
+    expect(w[1]).toBe(2);
     expect(w[2]).toBe(64);
+    // No gap-matching records since version 2 (the plan pass computes them per triangle).
+    expect([w[9], w[10]]).toEqual([w.length, 0]);
     expect(w[11]).toBe(w.length);
     expect(() => new PatternTables(new Uint32Array(4))).toThrow(/magic/);
     const bad = w.slice();

@@ -60,12 +60,25 @@ fn gridVertex(T: Tri, row: u32, col: u32) -> u32 {
   return T.vertexBase + rowCum(T.first, row) - T.k0 + c - 1u;
 }
 
-fn innerVertex(T: Tri, a: u32) -> u32 { return gridVertex(T, a, rowKept(T.first, a)); }
+// Inner chain point a of the gap strip: the bottom's points u_{nb−1} back to u_{k_0}, then the
+// row ends E_1..E_nl (= C).
+fn innerVertex(T: Tri, a: u32) -> u32 {
+  let tail = T.L.bottom.n - 1u - T.k0;
+  if (a <= tail) { return edgeVertex(triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, T.L.bottom.n - 1u - a, T.L.bottom.n); }
+  let j = a - tail;
+  return gridVertex(T, j, rowKept(T.first, j));
+}
 
 fn outerVertex(T: Tri, b: u32) -> u32 {
   if (b == 0u) { return triVert(T.t, T.L.f.b); }
   if (b == T.L.right.n) { return triVert(T.t, T.L.f.c); }
   return edgeVertex(triEdge(T.t, T.L.f.right), T.L.f.flipRight, b, T.L.right.n);
+}
+
+// Point p of the strip polygon (tess-pattern.wgsl stripPoint) as an output vertex.
+fn stripVertex(T: Tri, nI: u32, nO: u32, p: u32) -> u32 {
+  if (p <= nI) { return innerVertex(T, p); }
+  return outerVertex(T, nO - (p - nI));
 }
 
 fn writeTriangle(index: u32, mirrored: bool, a: u32, b: u32, c: u32) {
@@ -115,13 +128,22 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
     }
     return;
   }
-  // The gap strip: merge step g of the gap matching (the last step, closing at C, is never emitted).
   let g = local - grid;
-  let record = ((L.left.state * tblStateCount() + L.right.state) * 2u + select(0u, 1u, L.f.flipLeft)) * 2u + select(0u, 1u, L.f.flipRight);
-  let mergeBase = tblMergeOff() + record * tblMergeWords();
+  let mergeBase = params.offGapMoves + t * gapMoveWords();
+  let tail = L.bottom.n - 1u - T.k0;
+  let nI = tail + nl;
+  let nO = L.right.n;
+  if (nI + nO + 1u <= STRIP_DP_VERTICES) {
+    // A small strip: triangle g of its exact triangulation, (i, j, m) in 16 bits (tess-plan.wgsl).
+    let rec = (work[mergeBase + (g >> 1u)] >> (16u * (g & 1u))) & 0xffffu;
+    writeTriangle(r, mirrored, stripVertex(T, nI, nO, rec & 15u), stripVertex(T, nI, nO, (rec >> 4u) & 15u), stripVertex(T, nI, nO, (rec >> 8u) & 15u));
+    return;
+  }
+  // A large strip: move g of the gap matching, as the plan pass stored it (one bit a move, 1 =
+  // inner); the moves before it say where the front edge I_a–O_b is.
   var a = 0u;
-  for (var m = 0u; m < (g >> 5u); m++) { a += countOneBits(staticBuf[mergeBase + m]); }
-  let word = staticBuf[mergeBase + (g >> 5u)];
+  for (var m = 0u; m < (g >> 5u); m++) { a += countOneBits(work[mergeBase + m]); }
+  let word = work[mergeBase + (g >> 5u)];
   a += countOneBits(word & ((1u << (g & 31u)) - 1u)); // g & 31 < 32, so the shift is defined
   let b = g - a;
   if (((word >> (g & 31u)) & 1u) == 1u) {

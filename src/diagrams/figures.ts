@@ -196,7 +196,7 @@ export const FIGURES: readonly Figure[] = [
     slide: 'Matching the gap',
     title: 'Matching the gap',
     caption:
-      "Fill the strip (shaded) by merging its two sides, the ends of the clamped rows and the third edge's points, in the order of the places on the power-of-two grid where each point's slide ends. Those places do not change while points slide, so the strip changes only when a point is born, by one zero-area triangle.",
+      "Fill the strip (shaded) between its two sides, the ends of the clamped rows and the third edge's points, without caps: triangles whose three points lie nearly on one line, which fold on a curved surface. A small strip gets the triangulation whose largest angle is least; a larger one is zipped from B by a greedy walk that looks one step ahead. The points move continuously; the strip's diagonals flip where two cuts tie.",
     query: 'stage=match&shape=right&f0=5..7&f1=12..4&f2=6..8&duration=7&start=2.5',
   },
   {

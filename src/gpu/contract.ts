@@ -27,6 +27,7 @@
  */
 import { ONE } from '../pattern/fixed.ts';
 import { TABLE_HEADER_FIELDS } from '../pattern/tables.ts';
+import { STRIP_DP_VERTICES } from '../pattern/clamped.ts';
 import { defineStruct } from './layout.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -398,6 +399,7 @@ export const TESS_CONSTANTS = {
   NO_OWNER,
   BARY_CORNER1,
   BARY_CORNER2,
+  STRIP_DP_VERTICES,
   ...Object.fromEntries(Object.entries(BUDGET).map(([k, v]) => [`BUDGET_${k}`, v])),
   BUDGET_WORDS: Object.keys(BUDGET).length,
 } as Readonly<Record<string, number>>;
@@ -530,7 +532,8 @@ export const TESS_CAGE = defineArena<
 /**
  * work (u32 scratch, rewritten every rebuild): per-edge and per-triangle counts and their
  * exclusive prefix sums (n + 1 words: the total at n), the planned rows (two words per row,
- * at most maxFactor + 1 rows a triangle), the scans' block sums, the budget state (BUDGET).
+ * at most maxFactor + 1 rows a triangle), each triangle's gap-strip moves (gapMoveWords words a
+ * triangle), the scans' block sums, the budget state (BUDGET).
  */
 export const TESS_WORK = defineArena<
   | 'edgeF'
@@ -545,6 +548,7 @@ export const TESS_WORK = defineArena<
   | 'triRowCount'
   | 'triRowBase'
   | 'rows'
+  | 'gapMoves'
   | 'sums'
   | 'budget',
   TessSizes
@@ -561,9 +565,22 @@ export const TESS_WORK = defineArena<
   ['triRowCount', (s) => s.triangles],
   ['triRowBase', (s) => s.triangles + 1],
   ['rows', (s) => 2 * (s.maxFactor + 1) * s.triangles],
+  ['gapMoves', (s) => gapMoveWords(s.maxFactor) * s.triangles],
   ['sums', (s) => SCANS * scanSumsWords(Math.max(s.edges, s.triangles))],
   ['budget', () => Object.keys(BUDGET).length],
 ]);
+
+/**
+ * Words of one triangle's gap strip (wgsl/tess-plan.wgsl writes them, the emit reads them): a
+ * large strip's moves, one bit a move, as src/pattern/clamped.ts gapMergeSteps (at most
+ * (nb − 1) + nl + nr − 1 moves, and a line has at most maxFactor + 1 segments, 3 on [1, 2], so
+ * 3·(maxFactor + 1) bits are enough), or a small strip's triangles (clamped.ts
+ * stripTriangulation, at most STRIP_DP_VERTICES − 2 of them, 16 bits each).
+ * wgsl/tess-pattern.wgsl gapMoveWords computes the same.
+ */
+export function gapMoveWords(maxFactor: number): number {
+  return Math.max(Math.ceil((3 * (maxFactor + 1)) / 32), Math.ceil((STRIP_DP_VERTICES - 2) / 2));
+}
 
 /** Block-sum words one scan of up to n values needs (its blocks, and one spare). */
 export function scanSumsWords(n: number): number {

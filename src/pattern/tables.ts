@@ -5,12 +5,12 @@
  * evaluator below rebuilds lines and triangles from the bytes alone; the tests hold it equal to
  * the pattern functions, and the WGSL tessellator mirrors this evaluator.
  *
- * BINARY LAYOUT (version 1). A flat array of little-endian u32 words, so a WebGPU storage
+ * BINARY LAYOUT (version 2). A flat array of little-endian u32 words, so a WebGPU storage
  * buffer can hold it as array<u32>. Offsets are in words from the start.
  *
  *   word  header
  *    0    MAGIC 0x4C534554 ("TESL")
- *    1    VERSION = 1
+ *    1    VERSION = 2
  *    2    maxFactor M (a power of two, 2..256)
  *    3    slotCount S            every point the line can ever have, in position order
  *    4    stateCount T           distinct sets of present slots as F runs over [1, M]
@@ -18,26 +18,26 @@
  *    6    stateStartOffset       T words: the smallest 16.16 factor F of each state (ascending)
  *    7    stateIndexOffset       T records of 2 words: first entry in stateList, point count
  *    8    stateListOffset        slot indices of each state's points, in position order
- *    9    mergeOffset            T·T·4 merge records of mergeWords words each
- *   10    mergeWords             ⌈(largest left count + largest right count − 2) / 32⌉
+ *    9    mergeOffset            = totalWords, and
+ *   10    mergeWords             = 0: version 1 stored the gap matching of the clamped pattern
+ *                                here, per pair of line states; it is now computed from the
+ *                                points' positions (clamped.ts gapMergeSteps), once per triangle
+ *                                by the plan pass (wgsl/tess-plan.wgsl). The two words stay so
+ *                                that the header's layout (and its WGSL getters) is unchanged.
  *   11    totalWords
  *   12-15 reserved (0)
  *
  *   Slots: a slot is present at F when f0 < F < death and sits at x0 ± ⌈|x1−x0|·clamp(F−f0,0,w)/w⌉
  *   (hable-line.ts). The two end points have f0 = 0 and x0 = x1.
  *   States: state k holds for stateStart[k] ≤ F < stateStart[k+1] (binary search on F).
- *   Merges: the gap matching of the clamped pattern (clamped.ts gapMergeSteps) for a left line in
- *   state l and a right line in state r, with the left/right frame flips fl, fr ∈ {0,1}:
- *   record index ((l·T + r)·2 + fl)·2 + fr; bit k of the record (word k>>5, bit k&31) is 1 when
- *   step k advances the inner chain. The gap strip of that triangle has (nl + nr − 1) triangles.
  */
 import { ONE } from './fixed.ts';
 import { ALWAYS, HABLE_OPTIONS, buildSlots, checkMaxFactor, NO_DEATH, slotPosition, stableFactorFixed, type Slot } from './hable-line.ts';
-import { assembleClamped, chooseFrame, fromFrame, gapMergeSteps, type FramedLine, type Reverse, FORWARD } from './clamped.ts';
+import { assembleClamped, chooseFrame, fromFrame, type FramedLine, type Reverse, FORWARD } from './clamped.ts';
 import type { LinePattern, TriPattern } from './types.ts';
 
 export const TABLE_MAGIC = 0x4c534554;
-export const TABLE_VERSION = 1;
+export const TABLE_VERSION = 2;
 /** The header's words, in order (the layout above): the one list that the writer, the reader and
  * the WGSL getters (src/gpu/contract.ts, `tableHeader_stateCount()` …) all index by. */
 export const TABLE_HEADER_FIELDS = [
@@ -79,8 +79,7 @@ export function bakeTables(maxFactor = 64): Uint32Array {
   const { start, present } = enumerateStates(slots, maxFactor);
   const S = slots.length;
   const T = start.length;
-  const maxCount = Math.max(...present.map((p) => p.length));
-  const mergeWords = Math.ceil((2 * maxCount - 2) / 32);
+  const mergeWords = 0;
   const listWords = present.reduce((n, p) => n + p.length, 0);
 
   const slotsOffset = HEADER_WORDS;
@@ -88,7 +87,7 @@ export function bakeTables(maxFactor = 64): Uint32Array {
   const stateIndexOffset = stateStartOffset + T;
   const stateListOffset = stateIndexOffset + 2 * T;
   const mergeOffset = stateListOffset + listWords;
-  const totalWords = mergeOffset + T * T * 4 * mergeWords;
+  const totalWords = mergeOffset;
   const out = new Uint32Array(totalWords);
   const header: Record<TableHeaderField, number> = {
     magic: TABLE_MAGIC,
@@ -118,22 +117,6 @@ export function bakeTables(maxFactor = 64): Uint32Array {
     at += p.length;
   });
 
-  // Keys of each state's points in both frame directions.
-  const keys = present.map((p) => p.map((i) => slots[i].x1));
-  const flipped = keys.map((k) => k.map((v) => ONE - v).reverse());
-  for (let l = 0; l < T; l++) {
-    for (let r = 0; r < T; r++) {
-      for (let fl = 0; fl < 2; fl++) {
-        for (let fr = 0; fr < 2; fr++) {
-          const steps = gapMergeSteps(fl ? flipped[l] : keys[l], fr ? flipped[r] : keys[r]);
-          const base = mergeOffset + (((l * T + r) * 2 + fl) * 2 + fr) * mergeWords;
-          steps.forEach((inner, k) => {
-            if (inner) out[base + (k >> 5)] |= 1 << (k & 31);
-          });
-        }
-      }
-    }
-  }
   return out;
 }
 
@@ -142,7 +125,7 @@ export class PatternTables {
   readonly maxFactor: number;
   readonly slotCount: number;
   readonly stateCount: number;
-  private readonly off: { slots: number; start: number; index: number; list: number; merge: number; mergeWords: number };
+  private readonly off: { slots: number; start: number; index: number; list: number };
 
   constructor(readonly words: Uint32Array) {
     const h = (f: TableHeaderField) => words[TABLE_HEADER[f]];
@@ -157,8 +140,6 @@ export class PatternTables {
       start: h('stateStartOffset'),
       index: h('stateIndexOffset'),
       list: h('stateListOffset'),
-      merge: h('mergeOffset'),
-      mergeWords: h('mergeWords'),
     };
   }
 
@@ -208,18 +189,8 @@ export class PatternTables {
     const state = this.state(F);
     const pts = [...this.statePoints(state)];
     const x = pts.map((i) => slotPosition(this.slot(i), F));
-    const key = pts.map((i) => this.slot(i).x1);
-    if (!flip) return { x, key, state };
-    return { x: x.map((v) => ONE - v).reverse(), key: key.map((v) => ONE - v).reverse(), state };
-  }
-
-  /** The merge steps of the gap matching for a left and a right line state. */
-  merge(leftState: number, rightState: number, flipLeft: boolean, flipRight: boolean, steps: number): boolean[] {
-    const T = this.stateCount;
-    const base = this.off.merge + (((leftState * T + rightState) * 2 + (flipLeft ? 1 : 0)) * 2 + (flipRight ? 1 : 0)) * this.off.mergeWords;
-    const out: boolean[] = [];
-    for (let k = 0; k < steps; k++) out.push(((this.words[base + (k >> 5)] >>> (k & 31)) & 1) === 1);
-    return out;
+    if (!flip) return { x, state };
+    return { x: x.map((v) => ONE - v).reverse(), state };
   }
 
   /** The clamped-parallelogram pattern rebuilt from the tables alone. */
@@ -228,8 +199,6 @@ export class PatternTables {
     const bottom = this.framedLine(factors[frame.bottomEdge], frame.flipBottom);
     const left = this.framedLine(factors[frame.leftEdge], frame.flipLeft);
     const right = this.framedLine(factors[frame.rightEdge], frame.flipRight);
-    const steps = left.x.length - 1 + right.x.length - 1;
-    const merge = this.merge(left.state, right.state, frame.flipLeft, frame.flipRight, steps);
-    return fromFrame(assembleClamped(bottom.x, left.x, right.x, merge), frame);
+    return fromFrame(assembleClamped(bottom.x, left.x, right.x), frame);
   }
 }
