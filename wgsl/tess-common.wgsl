@@ -30,8 +30,6 @@ fn tblSlotsOff() -> u32 { return params.offTables + tableHeader_slotsOffset(); }
 fn tblStateStartOff() -> u32 { return params.offTables + tableHeader_stateStartOffset(); }
 fn tblStateIndexOff() -> u32 { return params.offTables + tableHeader_stateIndexOffset(); }
 fn tblStateListOff() -> u32 { return params.offTables + tableHeader_stateListOffset(); }
-fn tblMergeOff() -> u32 { return params.offTables + tableHeader_mergeOffset(); }
-fn tblMergeWords() -> u32 { return tableHeader_mergeWords(); }
 fn tblStateCount() -> u32 { return tableHeader_stateCount(); }
 
 // The line state that holds at 16.16 factor F: the last state whose start is ≤ F.
