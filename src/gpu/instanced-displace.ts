@@ -60,7 +60,10 @@ export function instancedDisplaceWgsl(surface: InstancedSurfaceKind): string {
   // The Catmull-Clark surface module already has the Params struct and binds the lender.
   if (surface !== 'catmull-clark') {
     const first = lenderFirstBinding(surface);
-    parts.push(TESS_PARAMS.wgsl, bindingsWgsl.replace(/@binding\((\d)\)/g, (_, b) => `@binding(${first + Number(b)})`));
+    parts.push(
+      TESS_PARAMS.wgsl,
+      bindingsWgsl.replace(/@binding\((\d)\)/g, (_, b) => `@binding(${first + Number(b)})`),
+    );
   }
   parts.push(
     OWNER_WORD.wgsl,

@@ -948,7 +948,8 @@ export class InstancedTessellator implements SurfaceDrawer {
   /** Displacement settings (scale, mid-level, on/off), written into the lender's Params and
    * uploaded: the next draw or headless run displaces by them. */
   setDisplacement(settings: Partial<DisplacementSettings>): void {
-    if (!this.dispSource) throw new Error('InstancedTessellator.setDisplacement: no displacement (options.displacement and a lender in setMesh)');
+    if (!this.dispSource)
+      throw new Error('InstancedTessellator.setDisplacement: no displacement (options.displacement and a lender in setMesh)');
     setLenderDisplacement(this.dispSource, settings);
   }
 
