@@ -1487,7 +1487,8 @@ export class InstancedTessellator implements SurfaceDrawer {
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
  * { mode: 'static', level: L }; `--adaptive` is factorRuleLevels of the CLI's camera
  * (src/gpu/headless.ts headlessCamera). Pass `tess` to reuse
- * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation.
+ * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation;
+ * `lender`: the displacement lender on Phong and ACC (src/gpu/instanced-displace.ts).
  */
 export async function tessellateInstanced(
   device: GPUDevice,
@@ -1497,12 +1498,13 @@ export async function tessellateInstanced(
   tess?: InstancedTessellator,
   instancedMesh?: InstancedMesh,
   surface?: AccPatches | Tessellator,
+  lender?: Tessellator,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
     const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
-    t.setMesh(mesh, surface);
+    t.setMesh(mesh, surface, lender);
     return { mesh, out: await t.headless(lp) };
   } finally {
     if (own) t.destroy();
