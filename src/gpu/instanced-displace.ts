@@ -106,12 +106,13 @@ export function checkLender(tess: Tessellator, prepared: PreparedMesh): void {
 /**
  * A compute Tessellator (Phong) that only lends its displacement arenas to an instanced
  * tessellator on Phong or ACC: the smallest tables and output, one rebuild at factor 1 to upload
- * its Params. `displacement`: prepareDisplacement(cage, prepared, map, wrap). Caller owns it.
+ * its Params. `displacement`: prepareDisplacement(cage, prepared, map, wrap); without it the
+ * lender gives the owners only (dispOn off: the seam rule still holds, nothing moves). Caller owns it.
  */
 export function displacementLender(
   device: GPUDevice,
   prepared: PreparedMesh,
-  displacement: DisplacementData,
+  displacement: DisplacementData | undefined,
   settings?: Partial<DisplacementSettings>,
 ): Tessellator {
   const tess = Tessellator.create(device, bakeTables(2), {
