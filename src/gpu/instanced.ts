@@ -11,7 +11,10 @@
  * per fan triangle of src/gpu/prepare.ts (a triangle face: itself). The surface is any WGSL module
  * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl), the
  * three ACC surfaces (src/gpu/acc.ts patches), or the exact Catmull-Clark surface through the
- * compute tessellator's own evaluator and buffers (src/gpu/instanced-cc.ts says how).
+ * compute tessellator's own evaluator and buffers (src/gpu/instanced-cc.ts says how). With the
+ * option `displacement`, every vertex is moved by a height map in the same vertex function, its
+ * boundary points evaluated through their owner triangle (crack-free at UV seams), from a lending
+ * compute Tessellator's displacement arenas (src/gpu/instanced-displace.ts says how).
  *
  * Passes (encodeLevels, one compute pass, no readback):
  *   clear      edge codes and bucket counts
