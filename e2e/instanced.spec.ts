@@ -181,3 +181,44 @@ test('exact Catmull-Clark on both tessellators: the split view draws compute CC 
   expect(halves[1]).toBeGreaterThan(500);
   expect(errors).toEqual([]);
 });
+
+test('displacement: the brick box drawn displaced by the instanced tessellator (alone, Phong) and on both halves of the split view (exact Catmull-Clark); disp=0 changes each; no console errors', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  const errors = collectErrors(page);
+  /** The canvas alone (ui=0: no panels), once two shots a moment apart agree. */
+  const shot = async (query: string) => {
+    await page.goto(`/?model=brick-box&t=0&ui=0&wire=0${query}`);
+    await ready(page);
+    let before = await page.locator('#view').screenshot();
+    for (let i = 0; i < 40; i++) {
+      await page.waitForTimeout(250);
+      const again = await page.locator('#view').screenshot();
+      if (Buffer.compare(again, before) === 0) break;
+      before = again;
+    }
+    return PNG.sync.read(before);
+  };
+  /** Pixels that differ between two shots, in the left and the right half. */
+  const differing = (a: PNG, b: PNG) => {
+    const n = [0, 0];
+    for (let y = 0; y < a.height; y++)
+      for (let x = 0; x < a.width; x++) {
+        const k = 4 * (y * a.width + x);
+        if (a.data[k] !== b.data[k] || a.data[k + 1] !== b.data[k + 1] || a.data[k + 2] !== b.data[k + 2]) n[x < a.width / 2 ? 0 : 1]++;
+      }
+    return n;
+  };
+  const alone = '&tessellator=instanced&mode=fixed&level=16';
+  const displaced = await shot(alone);
+  const flat = await shot(`${alone}&disp=0`);
+  expect(differing(displaced, flat)[0] + differing(displaced, flat)[1]).toBeGreaterThan(500);
+
+  const split = '&surface=catmull-clark&instsurface=catmull-clark&split=1&mode=fixed&factor=16&level=16';
+  const [left, right] = differing(await shot(split), await shot(`${split}&disp=0`));
+  // Both halves move: compute CC on the left, instanced CC on the right, both displaced.
+  expect(left).toBeGreaterThan(200);
+  expect(right).toBeGreaterThan(200);
+  expect(errors).toEqual([]);
+});

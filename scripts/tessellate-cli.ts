@@ -36,7 +36,9 @@
  * --displacement map.png --scale S moves every output vertex along the surface normal by
  * h = (sample − M)·S (M = --mid, default 0.5), the map (8 or 16-bit PNG, greyscale or its red
  * channel) sampled bilinearly at the cage's uvs (the model needs vt on every face corner),
- * --wrap repeat (default) or clamp; any surface of the compute tessellator (src/gpu/displacement.ts).
+ * --wrap repeat (default) or clamp; any surface of either tessellator (src/gpu/displacement.ts; the
+ * instanced one displaces in its vertex function through a lending compute tessellator's arenas,
+ * src/gpu/instanced-displace.ts; its --adaptive levels do not count the heights).
  * Bad input: a message and exit code 2.
  */
 import { decodeHeightPng, HeightMapError } from '../src/mesh/heightmap-png.ts';
@@ -63,13 +65,15 @@ import {
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { AccPatches } from '../src/gpu/acc.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
+import { displacementLender } from '../src/gpu/instanced-displace.ts';
+import { prepareDisplacement } from '../src/gpu/displacement.ts';
 import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
 import { isAccSurface, type Surface } from '../src/gpu/tess-passes.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc-surface.ts';
 import { demoView, limitDistancePx } from './limit-distance.ts';
 
 const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
-       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc]`;
+       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
@@ -224,8 +228,6 @@ function parse(argv: string[]) {
     throw new UsageError('--scale, --mid and --wrap go with --displacement map.png');
   if (displacement !== undefined && scale === undefined)
     throw new UsageError('--displacement needs --scale S (world units per unit of height)');
-  if (displacement !== undefined && instanced)
-    throw new UsageError('--displacement applies to the compute tessellator (the instanced one does not displace yet)');
   const disp = displacement === undefined ? undefined : { path: displacement, scale: scale as number, midLevel: mid, wrap };
   return {
     model,
@@ -399,27 +401,41 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
       throw e;
     }
   }
-  const tess = new InstancedTessellator(device, { surface: acc ? 'acc' : cc ? 'catmull-clark' : 'evalSurface' });
-  const ccSource = cc ? ccSurfaceTessellator(device, mesh, cc) : undefined;
+  // Displacement: the arenas of a lending compute tessellator (src/gpu/instanced-displace.ts), on
+  // Catmull-Clark the surface's own lender.
+  const d = args.o.displacement;
+  const dispData = d ? prepareDisplacement(cage, mesh, d.map, d.wrap) : undefined;
+  const settings = d ? { scale: d.scale, midLevel: d.midLevel, enabled: true } : undefined;
+  const tess = new InstancedTessellator(device, {
+    surface: acc ? 'acc' : cc ? 'catmull-clark' : 'evalSurface',
+    displacement: d !== undefined,
+  });
+  const ccSource = cc ? ccSurfaceTessellator(device, mesh, cc, dispData, settings) : undefined;
+  const lender = dispData && !cc ? displacementLender(device, mesh, dispData, settings) : undefined;
   let r: Awaited<ReturnType<typeof tessellateInstanced>>;
   try {
-    r = await tessellateInstanced(device, cage, mesh, lp, tess, im, acc ?? ccSource);
+    r = await tessellateInstanced(device, cage, mesh, lp, tess, im, acc ?? ccSource, lender);
   } catch (e) {
     tess.destroy();
     ccSource?.destroy();
+    lender?.destroy();
     console.error(`tessellate: ${(e as Error).message}`);
     return 1;
   }
   const gpuBytes =
     tess.gpuBytes +
     (acc ? acc.patchBuffer.size + acc.pointBuffer.size + acc.staticBuffer.size : 0) +
-    (ccSource ? ccSourceBytes(ccSource) : 0);
+    (ccSource ? ccSourceBytes(ccSource) : 0) +
+    (lender ? lender.paramsBuffer.size + lender.staticBuffer.size + lender.cageBuffer.size : 0);
   tess.destroy();
   acc?.destroy();
   ccSource?.destroy();
+  lender?.destroy();
   const surfaceName = args.acc ?? (cc ? 'catmull-clark' : 'phong');
   const w = weldInstanced(im, r.out);
-  const what = args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`;
+  const what =
+    (args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`) +
+    (d ? `, displaced (scale ${d.scale}, mid ${d.midLevel}, ${d.wrap})` : '');
   if (args.out)
     writeFileSync(
       args.out,

@@ -136,12 +136,21 @@ describe('instanced tessellator: storage buffers per stage', () => {
   // allows few storage buffers in the vertex stage.
   const device = (inVertex: number | undefined, perStage: number) =>
     ({ limits: { maxStorageBuffersInVertexStage: inVertex, maxStorageBuffersPerShaderStage: perStage } }) as unknown as GPUDevice;
-  it('refuses a device with too few, with the numbers: Phong 3 in the vertex stage, ACC 5, Catmull-Clark 6 (8 in compute)', () => {
+  it('refuses a device with too few, with the numbers: Phong 3 in the vertex stage, ACC 5, Catmull-Clark 6; with displacement Phong 5, ACC 7 (8 in compute), Catmull-Clark 6', () => {
     expect(() => new InstancedTessellator(device(2, 8))).toThrow(
-      /needs 3 storage buffers in the vertex stage and 5 in compute; this device allows 2 and 8/,
+      /needs 3 storage buffers in the vertex stage and 4 in compute; this device allows 2 and 8/,
     );
-    expect(() => new InstancedTessellator(device(4, 8), { surface: 'acc' })).toThrow(/needs 5 .* and 7 in compute/);
-    expect(() => new InstancedTessellator(device(5, 8), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 8 in compute/);
-    expect(() => new InstancedTessellator(device(undefined, 7), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 8 in compute/);
+    expect(() => new InstancedTessellator(device(4, 8), { surface: 'acc' })).toThrow(/needs 5 .* and 6 in compute/);
+    expect(() => new InstancedTessellator(device(5, 8), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 7 in compute/);
+    expect(() => new InstancedTessellator(device(undefined, 6), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 7 in compute/);
+    // Displacement: the lender's static and cage arenas (on Catmull-Clark the surface's lender, already bound).
+    expect(() => new InstancedTessellator(device(4, 8), { displacement: true })).toThrow(/needs 5 .* and 6 in compute/);
+    expect(() => new InstancedTessellator(device(6, 8), { surface: 'acc', displacement: true })).toThrow(/needs 7 .* and 8 in compute/);
+    expect(() => new InstancedTessellator(device(undefined, 7), { surface: 'acc', displacement: true })).toThrow(
+      /needs 7 .* and 8 in compute/,
+    );
+    expect(() => new InstancedTessellator(device(5, 8), { surface: 'catmull-clark', displacement: true })).toThrow(
+      /needs 6 .* and 7 in compute/,
+    );
   });
 });

@@ -42,13 +42,14 @@ fn snapVertex(p: u32, P: u32, i: u32, j: u32) -> vec2<u32> {
 struct InstancedVertex { pos: vec3<f32>, normal: vec3<f32>, patchId: u32, ij: vec2<u32> }
 
 // The vertex function: instance → patch (through the bucket's list), vertex_index → pattern
-// point (vertex_index includes the draw's baseVertex), snap, evaluate. Displacement would go
-// here, after evalSurface (a vector displacement keeps the two sides of an edge equal, §6.6).
+// point (vertex_index includes the draw's baseVertex), snap, evaluate (vertexSurface:
+// wgsl/instanced-vertex-plain.wgsl, or with displacement wgsl/instanced-displace.wgsl, which
+// evaluates boundary points through their owner triangle and displaces after the surface).
 fn instancedVertex(instance: u32, vertexIndex: u32) -> InstancedVertex {
   let p = work[bucket.listBase + instance];
   let packed = staticBuf[params.offPatternIJ + vertexIndex];
   let P = bucket.level;
   let ij = snapVertex(p, P, packed & 0xffffu, packed >> 16u);
-  let sp = patchSurface(p, P, ij.x, ij.y);
+  let sp = vertexSurface(p, P, ij.x, ij.y);
   return InstancedVertex(sp.pos, sp.normal, p, ij);
 }

@@ -2,15 +2,14 @@
 // (prepended: the vertex function, wgsl/instanced-draw.wgsl): checks and the CLI read exactly
 // what a draw shades.
 //
-//   headless outputs (storage, group 2; two buffers, so that an ACC surface's two fit the
-//   per-stage limit of 8 storage buffers): outF32, 8 f32 per vertex: position, normal, uv (the
-//   snapped pattern point / P); outU32: the patch of each vertex (bucket.outVertexTotal of them),
-//   then 3 indices per triangle. Each patch's pattern is written whole at outVertexBase + instance · vertexCount
+//   headless output (storage, group 2; ONE buffer, so that an ACC surface's two and a displacement
+//   lender's two fit the per-stage limit of 8 storage buffers): outWords, u32 words: 8 per vertex
+//   (position, normal, uv: the snapped pattern point / P; f32 bits), then the patch of each vertex
+//   (bucket.outVertexTotal of them), then 3 indices per triangle. Each patch's pattern is written whole at outVertexBase + instance · vertexCount
 //     and its triangles index it: vertices are shared within a patch, not across patch
 //     boundaries (both sides of an edge write their own copy, which is what the crack check compares).
 
-@group(2) @binding(1) var<storage, read_write> outF32: array<f32>;
-@group(2) @binding(2) var<storage, read_write> outU32: array<u32>;
+@group(2) @binding(1) var<storage, read_write> outWords: array<u32>;
 
 // One thread per (instance, pattern vertex) and per (instance, pattern triangle) of one bucket.
 @compute @workgroup_size(WORKGROUP_SIZE)
@@ -24,12 +23,12 @@ fn headless(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
     let v = instancedVertex(instance, bucket.baseVertex + k);
     let o = bucket.outVertexBase + g;
     for (var c = 0u; c < 3u; c++) {
-      outF32[8u * o + c] = v.pos[c];
-      outF32[8u * o + 3u + c] = v.normal[c];
+      outWords[8u * o + c] = bitcast<u32>(v.pos[c]);
+      outWords[8u * o + 3u + c] = bitcast<u32>(v.normal[c]);
     }
-    outF32[8u * o + 6u] = f32(v.ij.x) / f32(bucket.level);
-    outF32[8u * o + 7u] = f32(v.ij.y) / f32(bucket.level);
-    outU32[o] = v.patchId;
+    outWords[8u * o + 6u] = bitcast<u32>(f32(v.ij.x) / f32(bucket.level));
+    outWords[8u * o + 7u] = bitcast<u32>(f32(v.ij.y) / f32(bucket.level));
+    outWords[8u * bucket.outVertexTotal + o] = v.patchId;
   }
   if (g < bucket.instances * nt) {
     let instance = g / nt;
@@ -37,7 +36,7 @@ fn headless(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
     let base = bucket.outVertexBase + instance * nv;
     let o = bucket.outTriangleBase + g;
     for (var c = 0u; c < 3u; c++) {
-      outU32[bucket.outVertexTotal + 3u * o + c] = base + staticBuf[params.offPatternIdx + bucket.firstIndex + 3u * t + c];
+      outWords[9u * bucket.outVertexTotal + 3u * o + c] = base + staticBuf[params.offPatternIdx + bucket.firstIndex + 3u * t + c];
     }
   }
 }

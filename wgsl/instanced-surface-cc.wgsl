@@ -52,3 +52,7 @@ fn patchColourIndex(p: u32) -> u32 {
 // limit position and normal there, written by the lending tessellator's patch build, as its own
 // factor rule reads them.
 fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(ccFactorPos(v), ccFactorNormal(v)); }
+
+// The surface at cage triangle t and weights w, for the displaced vertex function
+// (wgsl/instanced-displace.wgsl): the compute tessellator's evaluator (tangents along w1, w2).
+fn triSurface(t: u32, w: vec3<u32>) -> SurfacePoint { return ccEvalSurface(t, w); }

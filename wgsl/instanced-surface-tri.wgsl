@@ -14,3 +14,7 @@ fn patchColourIndex(p: u32) -> u32 { return select(0u, 2u, patchIsTri(p)); }
 // What the factor rule reads at a cage vertex (wgsl/instanced-levels.wgsl edgeFactorRule): the
 // cage position and vertex normal, as the compute tessellator's Phong factor rule reads them.
 fn factorPoint(v: u32) -> FactorPoint { return FactorPoint(cagePos(v), cageNormal(v)); }
+
+// The surface at cage triangle t and weights w, for the displaced vertex function
+// (wgsl/instanced-displace.wgsl): evalSurface itself (its tangents are along w1, w2).
+fn triSurface(t: u32, w: vec3<u32>) -> SurfacePoint { return evalSurface(t, w); }

@@ -4,7 +4,9 @@
  * evaluates the surface again in each: the comparison with the compute tessellator, which draws
  * its stored mesh), the level pass encoded before a frame's draws when the levels may have
  * changed, and the bucket draw records read back after it for the stats and the e2e hook (the
- * draws themselves never wait on a readback).
+ * draws themselves never wait on a readback). A model with a height map is drawn displaced
+ * (src/gpu/instanced-displace.ts): the view is then made with `displaced`, and holds the compute
+ * Tessellator that lends the displacement arenas (on Catmull-Clark, the surface's own lender).
  */
 import { InstancedTessellator, prepareInstanced, cpuLevels, BUCKETS, type InstancedMesh, type LevelParams } from '../gpu/instanced.ts';
 import { prepareMesh } from '../gpu/prepare.ts';
@@ -16,6 +18,9 @@ import { AccError } from '../subdiv/acc.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
 import { CC_TRI_WORD } from '../gpu/cc/words.ts';
 import { ccSurfaceTessellator } from '../gpu/instanced-cc.ts';
+import { displacementLender, setLenderDisplacement } from '../gpu/instanced-displace.ts';
+import { prepareDisplacement, type DisplacementData, type DisplacementSettings } from '../gpu/displacement.ts';
+import type { CageHeightMap } from './geometry.ts';
 import type { Tessellator } from '../gpu/tessellator.ts';
 import type { InstancedSurface } from './params.ts';
 
@@ -67,20 +72,30 @@ export class InstancedView {
   /** The exact surface: the cage's Catmull-Clark tables, and the compute Tessellator that lends
    * the instanced one its buffers and patch build (src/gpu/instanced-cc.ts; this view owns it). */
   #cc: { data: CatmullClarkData; tess: Tessellator } | null = null;
+  /** With `displaced`: the lender of the displacement arenas (Catmull-Clark: #cc.tess), and the
+   * height map it holds. */
+  #lender: Tessellator | null = null;
+  #height: CageHeightMap | null = null;
+  /** Whether the lender holds a map (a displaced view, a height map and uvs). */
+  #hasMap = false;
+  #settings: Partial<DisplacementSettings> = { enabled: false };
   readonly #device: GPUDevice;
 
   /** `surface`: Phong, an ACC scheme (setCage then throws AccError for cages it refuses) or the
-   * exact Catmull-Clark surface (CatmullClarkRefused, likewise). */
+   * exact Catmull-Clark surface (CatmullClarkRefused, likewise). `displaced`: the vertex function
+   * displaces by the height map given to setCage (src/gpu/instanced-displace.ts). */
   constructor(
     device: GPUDevice,
     shading: ShadingResources,
     readonly surface: InstancedSurface = 'phong',
+    readonly displaced = false,
   ) {
     this.#device = device;
     this.tess = new InstancedTessellator(device, {
       colorFormat: shading.colorFormat,
       sampleCount: shading.sampleCount,
       surface: surface === 'phong' ? 'evalSurface' : surface === 'catmull-clark' ? 'catmull-clark' : 'acc',
+      displacement: displaced,
     });
     this.tess.useRenderer(shading);
     this.#staging = device.createBuffer({
@@ -96,6 +111,11 @@ export class InstancedView {
 
   get mesh(): InstancedMesh | null {
     return this.#mesh;
+  }
+
+  /** The height map of the cage shown (setCage). */
+  get height(): CageHeightMap | null {
+    return this.#height;
   }
 
   /** Patches per patch colour (as wgsl/instanced-surface-*.wgsl patchColourIndex): regular,
@@ -119,9 +139,13 @@ export class InstancedView {
   }
 
   /** Upload a model's patches (its topology and positions; with an ACC surface, its ACC patches:
-   * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses). */
-  setCage(cage: Cage): void {
+   * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses).
+   * `height`: its height map (a `displaced` view draws it; the settings: setDisplacement). */
+  setCage(cage: Cage, height: CageHeightMap | null = null): void {
     const prepared = prepareMesh(cage);
+    // Without a map (or uvs) a displaced view's lender still gives the owners (dispOn off).
+    let disp: DisplacementData | undefined;
+    if (this.displaced && height) disp = prepareDisplacement(cage, prepared, height.map, height.wrap);
     const mesh = prepareInstanced(cage, prepared);
     const isAcc = this.surface !== 'phong' && this.surface !== 'catmull-clark';
     const acc = isAcc ? new AccPatches(this.#device, cage, this.surface as Exclude<InstancedSurface, 'phong' | 'catmull-clark'>) : null;
@@ -134,15 +158,33 @@ export class InstancedView {
       } catch (e) {
         throw new CatmullClarkRefused((e as Error).message);
       }
-      cc = { data, tess: ccSurfaceTessellator(this.#device, prepared, data) };
+      cc = { data, tess: ccSurfaceTessellator(this.#device, prepared, data, disp, this.#settingsFor(disp !== undefined)) };
     }
+    const lender = this.displaced
+      ? (cc?.tess ?? displacementLender(this.#device, prepared, disp, this.#settingsFor(disp !== undefined)))
+      : null;
     this.#acc?.destroy();
     this.#acc = acc;
+    if (this.#lender !== this.#cc?.tess) this.#lender?.destroy();
     this.#cc?.tess.destroy();
     this.#cc = cc;
+    this.#lender = lender;
+    this.#height = height;
+    this.#hasMap = disp !== undefined;
     this.#mesh = mesh;
     this.#cage = cage;
-    this.tess.setMesh(mesh, acc ?? cc?.tess);
+    this.tess.setMesh(mesh, acc ?? cc?.tess, lender ?? undefined);
+  }
+
+  /** The settings with displacement off where the lender has no map. */
+  #settingsFor(hasMap: boolean): Partial<DisplacementSettings> {
+    return { ...this.#settings, enabled: hasMap && this.#settings.enabled === true };
+  }
+
+  /** Scale, mid level, on/off of a displaced view (kept for the next setCage too). */
+  setDisplacement(settings: Partial<DisplacementSettings>): void {
+    this.#settings = { ...this.#settings, ...settings };
+    if (this.#lender) setLenderDisplacement(this.#lender, this.#settingsFor(this.#hasMap));
   }
 
   /** Encode the level pass (before the frame's render passes) and, when the reader is free, a copy of its records. */
@@ -191,6 +233,7 @@ export class InstancedView {
   destroy(): void {
     this.tess.destroy();
     this.#acc?.destroy();
+    if (this.#lender !== this.#cc?.tess) this.#lender?.destroy();
     this.#cc?.tess.destroy();
     this.#staging.destroy();
   }

@@ -482,15 +482,18 @@ class TessellationDemo extends DemoBase {
     const want = this.params.instSurface;
     const refused = this.#instancedRefused;
     const use = refused && refused.cage === model.cage && refused.surface === want ? 'phong' : want;
+    // A model with a height map: a view that displaces (src/gpu/instanced-displace.ts).
+    const height = this.#heights.get(model.cage)?.height ?? null;
     let view = this.#instanced;
-    if (view && view.surface !== use) {
+    if (view && (view.surface !== use || view.displaced !== (height !== null))) {
       view.destroy();
       view = this.#instanced = null;
     }
-    view ??= this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, use);
-    if (view.cage !== model.cage) {
+    view ??= this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, use, height !== null);
+    view.setDisplacement(this.#displacementSettings(model));
+    if (view.cage !== model.cage || view.height !== height) {
       try {
-        view.setCage(model.cage);
+        view.setCage(model.cage, height);
       } catch (e) {
         if (!(e instanceof AccError)) throw e;
         this.#instancedRefused = { cage: model.cage, surface: want, message: e.message };
@@ -500,8 +503,9 @@ class TessellationDemo extends DemoBase {
           timeout: 10_000,
         });
         view.destroy();
-        view = this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, 'phong');
-        view.setCage(model.cage);
+        view = this.#instanced = new InstancedView(this.gpu.device, renderer.shadingResources, 'phong', height !== null);
+        view.setDisplacement(this.#displacementSettings(model));
+        view.setCage(model.cage, height);
       }
       this.#instancedCounts = null;
     }
@@ -1021,6 +1025,7 @@ class TessellationDemo extends DemoBase {
       return fail((e as Error).message);
     }
     this.#heights.set(model.cage, entry);
+    this.#syncDrawer(model, this.shownSurface); // the instanced tessellator's map
     this.applyDisplacement();
     showToast(`${file.name}: ${map.width}×${map.height}, ${map.bits}-bit, on ${model.title}.`, { title: 'Height map', timeout: 4000 });
     return true;
@@ -1031,17 +1036,21 @@ class TessellationDemo extends DemoBase {
     return [...Object.values(this.#tess), this.#compare].filter((t): t is TessellatorGeometry => !!t);
   }
 
-  /** The displacement settings (panel, URL) on the tessellator drawn; a redraw. */
+  /** The displacement settings (panel, URL) on the tessellators drawn (the instanced one too); a redraw. */
   applyDisplacement(model = this.model): void {
-    const entry = model ? this.#heights.get(model.cage) : undefined;
-    for (const tess of this.#allTessellators()) {
-      tess.setDisplacement({
-        enabled: this.params.disp && entry !== undefined,
-        scale: (entry?.scale ?? 0) * this.params.dscale,
-        midLevel: entry?.midLevel ?? 0.5,
-      });
-    }
+    const settings = this.#displacementSettings(model);
+    for (const tess of this.#allTessellators()) tess.setDisplacement(settings);
+    this.#instanced?.setDisplacement(settings);
     this.invalidateGeometry();
+  }
+
+  #displacementSettings(model: LoadedModel | null): { enabled: boolean; scale: number; midLevel: number } {
+    const entry = model ? this.#heights.get(model.cage) : undefined;
+    return {
+      enabled: this.params.disp && entry !== undefined,
+      scale: (entry?.scale ?? 0) * this.params.dscale,
+      midLevel: entry?.midLevel ?? 0.5,
+    };
   }
 
   /** The cage overlay's lines: plain, or the UV-seam view. */

@@ -32,6 +32,7 @@ import { Tessellator } from './tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from './cc/build.ts';
 import type { PreparedMesh } from './prepare.ts';
+import type { DisplacementData, DisplacementSettings } from './displacement.ts';
 
 /** The evaluator's module-scope names that clash with the instanced tessellator's, and the
  * wgsl/tess-common.wgsl accessors it calls (defined over the borrowed buffers in
@@ -48,14 +49,25 @@ const RENAMES: Record<string, string> = {
   edgeF: 'ccEdgeF',
 };
 
-/** CC_SURFACE_WGSL with RENAMES applied (whole identifiers). Throws when a name is no longer
- * there: the evaluator changed and this list must follow it (a stale list would otherwise only
- * show as a shader compile error). */
-export function ccEvaluatorWgsl(code: string = CC_SURFACE_WGSL): string {
-  for (const name of Object.keys(RENAMES)) {
-    if (!new RegExp(`\\b${name}\\b`).test(code)) throw new Error(`ccEvaluatorWgsl: the evaluator no longer uses '${name}'`);
+/**
+ * `code` with the borrowed module-scope names renamed (whole identifiers): RENAMES restricted to
+ * `names` (all by default). Shared by every module the instanced tessellator borrows from a
+ * compute Tessellator: the Catmull-Clark evaluator here, wgsl/displace.wgsl in
+ * src/gpu/instanced-displace.ts. Throws when one of `names` is no longer there: the borrowed code
+ * changed and the list must follow it (a stale list would otherwise only show as a shader compile
+ * error).
+ */
+export function renameBorrowed(code: string, names: readonly string[] = Object.keys(RENAMES), who = 'ccEvaluatorWgsl'): string {
+  for (const name of names) {
+    if (!(name in RENAMES)) throw new Error(`${who}: no rename for '${name}'`);
+    if (!new RegExp(`\\b${name}\\b`).test(code)) throw new Error(`${who}: the borrowed code no longer uses '${name}'`);
   }
-  return code.replace(new RegExp(`\\b(${Object.keys(RENAMES).join('|')})\\b`, 'g'), (n) => RENAMES[n]);
+  return code.replace(new RegExp(`\\b(${names.join('|')})\\b`, 'g'), (n) => RENAMES[n]);
+}
+
+/** CC_SURFACE_WGSL with RENAMES applied (whole identifiers); throws when a name is no longer there. */
+export function ccEvaluatorWgsl(code: string = CC_SURFACE_WGSL): string {
+  return renameBorrowed(code);
 }
 
 /** The surface module of the instanced tessellator's Catmull-Clark surface: the compute
@@ -103,17 +115,33 @@ export function checkCCSource(tess: Tessellator, prepared: PreparedMesh): void {
 /**
  * A compute Tessellator that only lends its Catmull-Clark buffers: the smallest tables and output
  * (one rebuild at factor 1, which uploads its Params and runs the patch build once), flat
- * baseline off. `cc`: buildCatmullClark(cage, prepared). The caller owns it (destroy()).
+ * baseline off. `cc`: buildCatmullClark(cage, prepared). With `displacement` (prepareDisplacement
+ * of the same prepared mesh) it lends the displacement arenas too (src/gpu/instanced-displace.ts;
+ * the settings: setLenderDisplacement). The caller owns it (destroy()).
  */
-export function ccSurfaceTessellator(device: GPUDevice, prepared: PreparedMesh, cc: CatmullClarkData): Tessellator {
+export function ccSurfaceTessellator(
+  device: GPUDevice,
+  prepared: PreparedMesh,
+  cc: CatmullClarkData,
+  displacement?: DisplacementData,
+  settings?: Partial<DisplacementSettings>,
+): Tessellator {
   const tess = Tessellator.create(device, bakeTables(2), {
     surface: 'catmull-clark',
     flatBaseline: false,
     vertexCapacity: prepared.vertexCount + prepared.edgeCount,
     triangleCapacity: prepared.triangleCount,
   });
-  tess.setMesh(prepared, cc);
-  const enc = device.createCommandEncoder({ label: 'instanced cc source: params + first build' });
+  tess.setMesh(prepared, cc, undefined, displacement);
+  if (settings) tess.setDisplacement(settings);
+  uploadLenderParams(tess);
+  return tess;
+}
+
+/** Upload a lending tessellator's Params (with its patch build, on Catmull-Clark) by one rebuild at
+ * factor 1 over its smallest tables: Tessellator uploads its Params only in encode. */
+export function uploadLenderParams(tess: Tessellator): void {
+  const enc = tess.device.createCommandEncoder({ label: 'instanced surface source: params + first build' });
   tess.encode(enc, {
     mode: 'fixed',
     fixedFactor: 1,
@@ -123,8 +151,7 @@ export function ccSurfaceTessellator(device: GPUDevice, prepared: PreparedMesh, 
     viewportHeight: 1,
     fovY: 1,
   });
-  device.queue.submit([enc.finish()]);
-  return tess;
+  tess.device.queue.submit([enc.finish()]);
 }
 
 /** GPU memory of a lending tessellator's arenas (what the instanced surface reads). */

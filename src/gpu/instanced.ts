@@ -11,7 +11,10 @@
  * per fan triangle of src/gpu/prepare.ts (a triangle face: itself). The surface is any WGSL module
  * with the compute tessellator's evalSurface contract (default Phong, wgsl/surface-phong.wgsl), the
  * three ACC surfaces (src/gpu/acc.ts patches), or the exact Catmull-Clark surface through the
- * compute tessellator's own evaluator and buffers (src/gpu/instanced-cc.ts says how).
+ * compute tessellator's own evaluator and buffers (src/gpu/instanced-cc.ts says how). With the
+ * option `displacement`, every vertex is moved by a height map in the same vertex function, its
+ * boundary points evaluated through their owner triangle (crack-free at UV seams), from a lending
+ * compute Tessellator's displacement arenas (src/gpu/instanced-displace.ts says how).
  *
  * Passes (encodeLevels, one compute pass, no readback):
  *   clear      edge codes and bucket counts
@@ -35,9 +38,12 @@ import headlessWgsl from '../../wgsl/instanced-headless.wgsl?raw';
 import renderInstancedWgsl from '../../wgsl/render-instanced.wgsl?raw';
 import triSurfaceWgsl from '../../wgsl/instanced-surface-tri.wgsl?raw';
 import accSurfaceWgsl from '../../wgsl/instanced-surface-acc.wgsl?raw';
+import plainVertexWgsl from '../../wgsl/instanced-vertex-plain.wgsl?raw';
 import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from './acc.ts';
 import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSurfaceWgsl } from './instanced-cc.ts';
 import type { Tessellator } from './tessellator.ts';
+import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './instanced-displace.ts';
+import type { DisplacementSettings } from './displacement.ts';
 import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
@@ -512,6 +518,14 @@ export interface InstancedOptions {
    * its patch build first.
    */
   surface?: 'evalSurface' | 'acc' | 'catmull-clark';
+  /**
+   * Displace every vertex the vertex function evaluates by a height map (src/gpu/instanced-displace.ts):
+   * setMesh then needs a lending compute Tessellator holding the displacement arenas (on
+   * Catmull-Clark the surface's own lender, made with the displacement; on Phong and ACC
+   * displacementLender), bound in group 3; boundary points are evaluated through their owner
+   * triangle (crack-free at UV seams). Off (default): the module has none of it.
+   */
+  displacement?: boolean;
   /** Render target format of the lit pipeline (default 'rgba8unorm'). */
   colorFormat?: GPUTextureFormat;
   /** Depth format of the lit and shadow pipelines (default 'depth32float'). */
@@ -613,6 +627,10 @@ export class InstancedTessellator implements SurfaceDrawer {
   private accPatches?: AccPatches;
   /** The Catmull-Clark surface's lending tessellator (owned by the caller). */
   private ccSource?: Tessellator;
+  /** Whether the vertex function displaces (group 3 holds a lending tessellator's arenas). */
+  readonly displaced: boolean;
+  /** The lender of the displacement arenas (owned by the caller; on Catmull-Clark the ccSource). */
+  private dispSource?: Tessellator;
   private frameModule?: GPUShaderModule;
   private readonly renderLayout: GPUPipelineLayout;
   private readonly colorFormat: GPUTextureFormat;
@@ -640,25 +658,29 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.sampleCount = opts.sampleCount ?? 1;
     this.acc = opts.surface === 'acc';
     this.cc = opts.surface === 'catmull-clark';
+    this.displaced = opts.displacement === true;
     // Storage buffers per stage: group 0's three (topology + patterns, cage, work) and the
     // surface's (ACC: 2; Catmull-Clark: the lending tessellator's static, cage and work) in the
-    // vertex stage; the headless pass adds its two outputs (8 with Catmull-Clark: core WebGPU's
-    // minimum). A device with fewer (compatibility mode) is refused here with the numbers rather
-    // than by a pipeline's validation error later.
-    const vertexStorage = 3 + (this.acc ? 2 : this.cc ? 3 : 0);
+    // vertex stage, with displacement the lender's static and cage (Phong, ACC: +2; Catmull-Clark:
+    // already bound); the headless pass adds its output buffer (8 with ACC and displacement: core
+    // WebGPU's minimum). A device with fewer (compatibility mode) is refused here with the numbers
+    // rather than by a pipeline's validation error later.
+    const vertexStorage = 3 + (this.acc ? 2 : this.cc ? 3 : 0) + (this.displaced && !this.cc ? 2 : 0);
     const limits = device.limits as GPUSupportedLimits & { maxStorageBuffersInVertexStage?: number };
     const inVertex = limits.maxStorageBuffersInVertexStage ?? limits.maxStorageBuffersPerShaderStage;
-    if (inVertex < vertexStorage || limits.maxStorageBuffersPerShaderStage < vertexStorage + 2)
+    if (inVertex < vertexStorage || limits.maxStorageBuffersPerShaderStage < vertexStorage + 1)
       throw new Error(
-        `the instanced tessellator on this surface needs ${vertexStorage} storage buffers in the vertex stage and ${vertexStorage + 2} in compute; this device allows ${inVertex} and ${limits.maxStorageBuffersPerShaderStage}`,
+        `the instanced tessellator on this surface needs ${vertexStorage} storage buffers in the vertex stage and ${vertexStorage + 1} in compute; this device allows ${inVertex} and ${limits.maxStorageBuffersPerShaderStage}`,
       );
     const surface = this.acc
       ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
       : this.cc
         ? instancedCCSurfaceWgsl()
         : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
+    const kind = this.acc ? 'acc' : this.cc ? 'catmull-clark' : 'evalSurface';
+    const vertexSurface = this.displaced ? instancedDisplaceWgsl(kind) : plainVertexWgsl;
     const code = (...parts: string[]) =>
-      [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface].join('\n');
+      [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface, vertexSurface].join('\n');
     this.code = code;
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
     const pipeline = (entryPoint: string) =>
@@ -695,16 +717,21 @@ export class InstancedTessellator implements SurfaceDrawer {
       }),
       out: device.createBindGroupLayout({
         label: 'instanced headless outputs',
-        entries: [1, 2].map((binding) => ({ binding, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' as const } })),
+        entries: [{ binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } }],
       }),
       surface: device.createBindGroupLayout({
-        label: this.cc ? 'instanced Catmull-Clark surface' : 'instanced ACC surface',
-        entries: this.cc
-          ? ccSurfaceLayoutEntries(VC)
-          : [
-              { binding: 0, visibility: VC, buffer: ro },
-              { binding: 1, visibility: VC, buffer: ro },
-            ],
+        label: this.cc ? 'instanced Catmull-Clark surface' : this.acc ? 'instanced ACC surface' : 'instanced displacement lender',
+        entries: [
+          ...(this.cc
+            ? ccSurfaceLayoutEntries(VC)
+            : this.acc
+              ? [
+                  { binding: 0, visibility: VC, buffer: ro },
+                  { binding: 1, visibility: VC, buffer: ro },
+                ]
+              : []),
+          ...(this.displaced && !this.cc ? lenderLayoutEntries(kind, VC) : []),
+        ],
       }),
     };
     this.renderLayout = device.createPipelineLayout({
@@ -752,7 +779,7 @@ export class InstancedTessellator implements SurfaceDrawer {
 
   /** A pipeline's bind group layouts, with the ACC or Catmull-Clark surface's at group 3. */
   private withSurface(groups: GPUBindGroupLayout[]): GPUBindGroupLayout[] {
-    return this.acc || this.cc ? [...groups, this.layouts.surface] : groups;
+    return this.acc || this.cc || this.displaced ? [...groups, this.layouts.surface] : groups;
   }
 
   /** Bind the ACC or Catmull-Clark surface's buffers (group 3), where there is one. */
@@ -760,10 +787,13 @@ export class InstancedTessellator implements SurfaceDrawer {
     if (this.surfaceGroup) pass.setBindGroup(3, this.surfaceGroup);
   }
 
-  /** Group 3's entries for the current mesh (ACC patches, or the lending tessellator's buffers). */
+  /** Group 3's entries for the current mesh (ACC patches, or the lending tessellator's buffers;
+   * with displacement on Phong and ACC, the lender's). */
   private surfaceEntries(): GPUBindGroupEntry[] {
     if (this.ccSource) return ccSurfaceEntries(this.ccSource);
-    return this.accPatches!.surfaceEntries(0, 1);
+    const acc = this.accPatches ? this.accPatches.surfaceEntries(0, 1) : [];
+    const lender = this.dispSource ? lenderEntries(this.acc ? 'acc' : 'evalSurface', this.dispSource) : [];
+    return [...acc, ...lender];
   }
 
   get instancedMesh(): InstancedMesh | undefined {
@@ -783,7 +813,7 @@ export class InstancedTessellator implements SurfaceDrawer {
    * updateCage); with the Catmull-Clark surface, a Catmull-Clark Tessellator holding the same
    * prepared mesh, flat baseline off, its Params uploaded (instanced-cc.ts ccSurfaceTessellator):
    * its buffers are read by every pass, its patch build run by every encodeLevels. */
-  setMesh(m: InstancedMesh, source?: AccPatches | Tessellator): void {
+  setMesh(m: InstancedMesh, source?: AccPatches | Tessellator, lender?: Tessellator): void {
     const device = this.device;
     this.releaseMesh();
     const isTess = (s: AccPatches | Tessellator | undefined): s is Tessellator => s !== undefined && 'encodePatchBuild' in s;
@@ -793,6 +823,13 @@ export class InstancedTessellator implements SurfaceDrawer {
       if (!isTess(source))
         throw new Error('InstancedTessellator: the Catmull-Clark surface needs a Catmull-Clark Tessellator (setMesh(mesh, tess))');
       checkCCSource(source, m.prepared);
+    }
+    // The displacement lender: the Catmull-Clark source itself, else the one given.
+    const dispSource = this.displaced ? (this.cc && isTess(source) ? source : lender) : undefined;
+    if (this.displaced) {
+      if (!dispSource)
+        throw new Error('InstancedTessellator: displacement needs a lending Tessellator (setMesh(mesh, source, displacementLender(…)))');
+      checkLender(dispSource, m.prepared);
     }
     const pr = m.prepared;
     const entries = new Uint32Array(4 * BUCKETS);
@@ -828,9 +865,10 @@ export class InstancedTessellator implements SurfaceDrawer {
       device.queue.submit([enc.finish()]);
     }
     if (this.cc && isTess(source)) this.ccSource = source;
-    if (this.acc || this.cc)
+    this.dispSource = dispSource;
+    if (this.acc || this.cc || this.displaced)
       this.surfaceGroup = device.createBindGroup({
-        label: this.cc ? 'instanced Catmull-Clark surface' : 'instanced ACC surface',
+        label: this.cc ? 'instanced Catmull-Clark surface' : this.acc ? 'instanced ACC surface' : 'instanced displacement lender',
         layout: this.layouts.surface,
         entries: this.surfaceEntries(),
       });
@@ -910,6 +948,14 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
   }
 
+  /** Displacement settings (scale, mid-level, on/off), written into the lender's Params and
+   * uploaded: the next draw or headless run displaces by them. */
+  setDisplacement(settings: Partial<DisplacementSettings>): void {
+    if (!this.dispSource)
+      throw new Error('InstancedTessellator.setDisplacement: no displacement (options.displacement and a lender in setMesh)');
+    setLenderDisplacement(this.dispSource, settings);
+  }
+
   /** The levels of per-patch mode (one per patch, rounded down to a power of two in [1, 64]). */
   setWanted(levels: Uint32Array): void {
     const m = this.requireMesh();
@@ -975,7 +1021,8 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.edgeViewSurface ??= this.device.createBindGroup({
       label: 'instanced edgeView surface',
       layout: this.levelPipelines.edgeView.getBindGroupLayout(3),
-      entries: this.surfaceEntries(),
+      // The level pass evaluates the undisplaced surface: on ACC its patches only.
+      entries: this.surfaceEntries().filter((e) => this.cc || e.binding < 2),
     });
     return this.edgeViewSurface;
   }
@@ -1289,21 +1336,20 @@ export class InstancedTessellator implements SurfaceDrawer {
       nt += (counts[b] * e.indexCount) / 3;
     });
     const limit = device.limits.maxStorageBufferBindingSize;
-    if (32 * nv > limit || 4 * nv + 12 * nt > limit) {
+    const words = 9 * nv + 3 * nt;
+    if (4 * words > limit) {
       throw new Error(
         `the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`,
       );
     }
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC;
-    // Two buffers (wgsl/instanced-headless.wgsl): 8 f32 per vertex; a patch per vertex, then the indices.
-    const out = {
-      f32: device.createBuffer({ label: 'instanced headless vertices', size: Math.max(16, 32 * nv), usage: S }),
-      u32: device.createBuffer({ label: 'instanced headless patches + indices', size: Math.max(16, 4 * nv + 12 * nt), usage: S }),
-    };
+    // One buffer (wgsl/instanced-headless.wgsl): 8 words per vertex (f32 bits), a patch per
+    // vertex, then the indices.
+    const out = device.createBuffer({ label: 'instanced headless output', size: Math.max(16, 4 * words), usage: S });
     const outGroup = device.createBindGroup({
-      label: 'instanced headless outputs',
+      label: 'instanced headless output',
       layout: this.layouts.out,
-      entries: [out.f32, out.u32].map((buffer, k) => ({ binding: k + 1, resource: { buffer } })),
+      entries: [{ binding: 1, resource: { buffer: out } }],
     });
     // This run's bucket uniforms: the draw's, plus where each bucket's output goes.
     const bytes = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
@@ -1355,9 +1401,9 @@ export class InstancedTessellator implements SurfaceDrawer {
     device.queue.submit([enc.finish()]);
     const error = await device.popErrorScope();
     if (error) throw new Error(`WebGPU validation error: ${error.message}`);
-    const [f32, u32] = await Promise.all([readBuffer(device, out.f32, 32 * nv), readBuffer(device, out.u32, 4 * nv + 12 * nt)]);
-    const fv = new Float32Array(f32),
-      uw = new Uint32Array(u32);
+    const bytesOut = await readBuffer(device, out, 4 * words);
+    const fv = new Float32Array(bytesOut, 0, 8 * nv),
+      uw = new Uint32Array(bytesOut, 32 * nv);
     const positions = new Float32Array(3 * nv),
       normals = new Float32Array(3 * nv),
       uv = new Float32Array(2 * nv);
@@ -1376,7 +1422,7 @@ export class InstancedTessellator implements SurfaceDrawer {
       resolve.destroy();
     }
     querySet?.destroy();
-    for (const b of [...Object.values(out), uniform]) b.destroy();
+    for (const b of [out, uniform]) b.destroy();
     return {
       vertexCount: nv,
       triangleCount: nt,
@@ -1429,6 +1475,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.surfaceGroup = undefined;
     this.accPatches = undefined;
     this.ccSource = undefined;
+    this.dispSource = undefined;
     this.mesh = undefined;
   }
 
@@ -1443,7 +1490,8 @@ export class InstancedTessellator implements SurfaceDrawer {
  * cage in, the headless output of the draw's own vertex function out. `--level L` is
  * { mode: 'static', level: L }; `--adaptive` is factorRuleLevels of the CLI's camera
  * (src/gpu/headless.ts headlessCamera). Pass `tess` to reuse
- * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation.
+ * compiled pipelines across calls, `instancedMesh` to reuse (or time) the CPU preparation;
+ * `lender`: the displacement lender on Phong and ACC (src/gpu/instanced-displace.ts).
  */
 export async function tessellateInstanced(
   device: GPUDevice,
@@ -1453,12 +1501,13 @@ export async function tessellateInstanced(
   tess?: InstancedTessellator,
   instancedMesh?: InstancedMesh,
   surface?: AccPatches | Tessellator,
+  lender?: Tessellator,
 ): Promise<{ mesh: InstancedMesh; out: HeadlessInstanced }> {
   const own = !tess;
   const t = tess ?? new InstancedTessellator(device);
   try {
     const mesh = instancedMesh ?? prepareInstanced(cage, prepared);
-    t.setMesh(mesh, surface);
+    t.setMesh(mesh, surface, lender);
     return { mesh, out: await t.headless(lp) };
   } finally {
     if (own) t.destroy();
