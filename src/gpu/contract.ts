@@ -803,8 +803,9 @@ export const GROUND_EXTENT = 4;
  * lit shader's palette (PATCH_SRGB) and the demo's legend. */
 export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
   { kind: 0, name: 'regular', srgb: [0.56, 0.8, 0.52] },
-  { kind: 1, name: 'irregular quad', srgb: [0.95, 0.47, 0.33] },
-  { kind: 2, name: 'triangle / n-gon region', srgb: [0.5, 0.6, 0.98] },
+  // As NVIDIA's sample's "show irregular patches": irregular quads blue, triangles purple.
+  { kind: 1, name: 'irregular quad', srgb: [0.36, 0.56, 0.98] },
+  { kind: 2, name: 'triangle / n-gon region', srgb: [0.72, 0.46, 0.92] },
   { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.3] },
 ];
 
