@@ -126,10 +126,9 @@ export function displacementLender(
   return tess;
 }
 
-/** New displacement settings on a lender, uploaded (its Params go up with a factor-1 rebuild). */
+/** New displacement settings on a lender (Tessellator.setDisplacement uploads its uniforms; no rebuild). */
 export function setLenderDisplacement(tess: Tessellator, settings: Partial<DisplacementSettings>): void {
   tess.setDisplacement(settings);
-  uploadLenderParams(tess);
 }
 
 /** The CPU twin of wgsl/instanced-displace.wgsl ownerPoint: the triangle and 16.16 weights a

@@ -207,12 +207,15 @@ export class Tessellator {
   }
 
   /**
-   * Displacement settings (uniforms only: the map and uvs came with setMesh). Takes effect at the
-   * next encode; without displacement data in the mesh, `enabled` has no effect.
+   * Displacement settings (uniforms only: the map and uvs came with setMesh), uploaded now;
+   * without displacement data in the mesh, `enabled` has no effect.
    */
   setDisplacement(settings: Partial<DisplacementSettings>): void {
     this.displacement = { ...this.displacement, ...settings };
     this.writeDisplacementParams();
+    // Up at once: a tessellator that only lends its arenas (src/gpu/instanced-displace.ts) is
+    // never encoded again, and encode() rewrites the rest before it reads them.
+    if (this.mesh) this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
   }
 
   /** Whether output vertices are displaced now (data in the mesh and enabled). */
