@@ -37,6 +37,8 @@ export interface GeometrySource {
   /** Whether `encode` depends on the camera (adaptive factors) or only on the factors. */
   dependsOnCamera(params: Pick<FactorParams, 'mode'>): boolean;
   readTimings(): Promise<Record<string, number>>;
+  /** The timestamps' readback never settled: its builds go untimed (src/gpu/map-within.ts). */
+  readonly timingStalled?: boolean;
   destroy(): void;
 }
 
@@ -174,6 +176,10 @@ export class TessellatorGeometry implements GeometrySource {
 
   readTimings(): Promise<Record<string, number>> {
     return this.#tessellator.readTimings();
+  }
+
+  get timingStalled(): boolean {
+    return this.#tessellator.timingStalled;
   }
 
   destroy(): void {

@@ -853,7 +853,11 @@ class TessellationDemo extends DemoBase {
     // Each read updates the stats on its own: the counts never wait on a timing read (on some
     // drivers a timestamp buffer's map settles late or not at all).
     const quietly = <T>(p: Promise<T> | undefined, fallback: T) => (p ?? Promise.resolve(fallback)).catch(() => fallback);
-    void quietly(this.#counts?.read(), null).then((counts) => {
+    // The counts' map is asked for first, and the timing maps only once it has settled: a
+    // timestamp buffer whose map comes back late cannot hold the counts behind it (Debian's
+    // Chromium 156 on SwiftShader kept the output row at "…" so). A timing map that never comes
+    // back is cancelled after a deadline and timing stops (src/gpu/map-within.ts).
+    const countsRead = quietly(this.#counts?.read(), null).then((counts) => {
       if (counts) this.#lastCounts = counts;
       this.updateStats();
       if (this.#countsOwed) this.requestFrame();
@@ -876,16 +880,20 @@ class TessellationDemo extends DemoBase {
         if (errors.copyOwed) this.requestFrame();
       });
     }
-    void quietly(renderer?.readTimings(), {}).then((draw) => {
-      this.#drawTimes = draw;
-      this.updateStats();
-    });
-    if (readTess) {
-      void quietly(geometry?.readTimings(), {}).then((tess) => {
-        this.#tessTimingInFlight = false;
-        if (Object.keys(tess).length) this.#tessTimes = tess;
+    void countsRead.then(() =>
+      quietly(renderer?.readTimings(), {}).then((draw) => {
+        this.#drawTimes = draw;
         this.updateStats();
-      });
+      }),
+    );
+    if (readTess) {
+      void countsRead.then(() =>
+        quietly(geometry?.readTimings(), {}).then((tess) => {
+          this.#tessTimingInFlight = false;
+          if (Object.keys(tess).length) this.#tessTimes = tess;
+          this.updateStats();
+        }),
+      );
     }
     // Not the interim cage drawn while the model's surface is prepared: ready means the surface asked for.
     if (!this.#firstFrameShown && this.model && !this.controller.preparing) {
@@ -929,6 +937,7 @@ class TessellationDemo extends DemoBase {
       tessTimes: this.#tessTimes,
       drawTimes: this.#drawTimes,
       timestamps: this.gpu.timestamps,
+      timingStalled: !!(this.#renderer?.timingStalled || this.geometry?.timingStalled),
       frameMs: this.timing.frameMs,
       jsMs: this.timing.jsMs,
       rebuilds: this.#rebuilds,

@@ -56,6 +56,8 @@ export interface StatsInput {
   tessTimes: Record<string, number>;
   drawTimes: Record<string, number>;
   timestamps: boolean;
+  /** The device has timestamp queries but their readback never settled: timing stopped. */
+  timingStalled?: boolean;
   frameMs: number;
   jsMs: number;
   rebuilds: number;
@@ -255,7 +257,8 @@ export function renderStats(s: StatsInput): string {
     const draw = Object.entries(s.drawTimes)
       .map(([k, v]) => `${esc(k)} ${ms(v)}`)
       .join(' · ');
-    if (!split) rows.push(row(inst ? 'draw ms (evaluates)' : 'draw ms', draw || '…', 'stats-gpu'));
+    const none = s.timingStalled ? '<span class="muted">timestamps did not come back: timing stopped</span>' : '…';
+    if (!split) rows.push(row(inst ? 'draw ms (evaluates)' : 'draw ms', draw || none, 'stats-gpu'));
   } else {
     rows.push(row('GPU ms', '<span class="muted">no timestamp-query on this device</span>', 'stats-gpu'));
   }

@@ -4,7 +4,11 @@
  * sequence's read is still in flight); resolve() after the last pass; read() maps the results and
  * sums the milliseconds by stage name.
  */
+import { mapWithin, MapStalled, TIMING_MAP_DEADLINE_MS } from './map-within.ts';
+
 export class PassTimer {
+  /** The timestamps' map did not settle (mapWithin): no pass is timed any more. */
+  stalled = false;
   private readonly set: GPUQuerySet;
   private readonly resolveBuf: GPUBuffer;
   private readonly readBuf: GPUBuffer;
@@ -33,7 +37,7 @@ export class PassTimer {
   beginPass(encoder: GPUCommandEncoder, label: string, stage: string): GPUComputePassEncoder {
     const query = 2 * this.recording.length;
     const desc: GPUComputePassDescriptor = { label };
-    if (!this.pending && query + 2 <= this.set.count) {
+    if (!this.pending && !this.stalled && query + 2 <= this.set.count) {
       desc.timestampWrites = { querySet: this.set, beginningOfPassWriteIndex: query, endOfPassWriteIndex: query + 1 };
       this.recording.push(stage);
     }
@@ -63,7 +67,15 @@ export class PassTimer {
   }
 
   private async map(): Promise<Record<string, number>> {
-    await this.readBuf.mapAsync(GPUMapMode.READ);
+    try {
+      await mapWithin(this.readBuf, TIMING_MAP_DEADLINE_MS);
+    } catch (err) {
+      if (err instanceof MapStalled) {
+        this.stalled = true;
+        this.pending = false;
+      }
+      throw err;
+    }
     const ticks = new BigUint64Array(this.readBuf.getMappedRange().slice(0));
     this.readBuf.unmap();
     this.pending = false;

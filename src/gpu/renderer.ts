@@ -29,6 +29,7 @@ import heatWGSL from '../../wgsl/render-heat.wgsl?raw';
 import { HEAT_BIND_GROUP, HEAT_UNIFORMS, heatRenderWgsl, type HeatView } from './acc-heat.ts';
 import type { TessellatedMesh } from './types.ts';
 import { CAGE_LINE_STRIDE, type CageLines } from './cage-mesh.ts';
+import { mapWithin, MapStalled, TIMING_MAP_DEADLINE_MS } from './map-within.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
 import {
   RENDER_BIND_GROUPS,
@@ -182,6 +183,9 @@ export class Renderer {
 
   #msaaTexture: GPUTexture | null = null;
   #depthTexture: GPUTexture | null = null;
+
+  /** The timestamps' readback never settled (src/gpu/map-within.ts): timing is off for good. */
+  timingStalled = false;
 
   #timing: {
     querySet: GPUQuerySet;
@@ -545,7 +549,8 @@ export class Renderer {
     this.#writeScene(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
     const drawer = this.#drawer;
     const mesh = drawer ? null : this.#mesh;
-    const timing = this.#timing;
+    // Once the timestamps' map stalled (mapWithin), no pass writes timestamps any more.
+    const timing = this.timingStalled ? null : this.#timing;
 
     if (mesh && options.wireframe && this.#wireArgsBindGroup) {
       // Tracks whatever index count the tessellator last wrote, at the cost of one thread.
@@ -675,7 +680,7 @@ export class Renderer {
     if (timing.state === 'copied') {
       timing.state = 'mapping';
       try {
-        await timing.read.mapAsync(GPUMapMode.READ);
+        await mapWithin(timing.read, TIMING_MAP_DEADLINE_MS);
         const ticks = new BigInt64Array(timing.read.getMappedRange().slice(0));
         timing.read.unmap();
         const out: Record<string, number> = {};
@@ -687,8 +692,10 @@ export class Renderer {
             if (ns >= 0) out[slot ? `${name} 2` : name] = ns / 1e6;
           });
         timing.last = out;
-      } catch {
-        // The device was lost or destroyed while mapping: keep the last numbers.
+      } catch (err) {
+        // A map that never settled: stop timing (the stats say so). Else the device was lost or
+        // destroyed while mapping: keep the last numbers.
+        if (err instanceof MapStalled) this.timingStalled = true;
       } finally {
         timing.state = 'idle';
       }

@@ -614,6 +614,11 @@ export class Tessellator {
     return this.timer?.read() ?? Promise.resolve({});
   }
 
+  /** The timestamps' readback never settled (src/gpu/map-within.ts): rebuilds go untimed. */
+  get timingStalled(): boolean {
+    return this.timer?.stalled ?? false;
+  }
+
   private releaseMesh(): void {
     if (!this.mesh) return;
     this.mesh.staticBuf.destroy();
