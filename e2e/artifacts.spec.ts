@@ -14,13 +14,35 @@
 // The reference is factor 16, not 32: on SwiftShader on a shared two-core machine the demo takes
 // over two minutes to draw the creature at 32 (1.15 M triangles) and the test timed out.
 //
-// The surface is Phong (surface=phong), and Catmull-Clark at a fixed factor. The pattern, the
-// factor rule and the renderer's culling, what this test is about, are the same for both
-// surfaces; in adaptive mode with Catmull-Clark (tried: creature 6, pawn 8; after the strip cut
-// of tests/no-folds.test.ts creature 5, pawn 5) the adaptive silhouettes against the factor-16
-// reference read as dots too (a coarse silhouette's dark underside one pixel out), which is not
-// what this measure separates.
+// The cases: the project's creature and pawn, Phong and Catmull-Clark, adaptive and fixed; and
+// suzanne, the cage of ../shared/evidence's pictures (third-party, in ../shared/cages, never
+// copied into the project: served to the page from there by a route, and skipped where
+// ../shared is absent, as in a fresh clone; CI has it).
+//
+// What took the speckles away (measured on this machine with this test's metric, before → after):
+// - closed cages cull their back faces (earlier: creature adaptive Phong 135 → 8, pawn 157 → 1);
+// - the gap strip's cut without caps (tests/no-folds.test.ts; creature 8 → 1);
+// - the lit pass interpolates position and normal at the centroid of a pixel's covered samples
+//   (render-lit.wgsl VertexOut): at the pixel's centre a contour pixel's position lay off its
+//   triangle, under the surface, and the shadow lookup shaded it dark: the dotted lines along
+//   suzanne's brow (fixed 8: 4 → 0) and most of the adaptive ones;
+// - open cages drop the back faces whose surface normal faces the eye (the tessellation folding
+//   over at a contour; render-common.wgsl insideWeight) instead of lighting them as an inside,
+//   and a shading normal that turns away from the eye is brought to the view plane (towardsEye).
+// Together: suzanne adaptive Catmull-Clark 58 → 32, adaptive Phong 81 → 22, creature adaptive
+// Phong 1 → 0, pawn adaptive Phong 10 → 7.
+//
+// NOT MET: zero in adaptive mode. What is left is not dots on the surface but the outline: an
+// adaptive silhouette is a polygon a pixel or so inside or outside the factor-16 one (the factor
+// rule bounds the chord error seen across the view ray at 1/lodScale px, and on the outline that
+// is what is seen), and where it passes over a lighter pixel of the reference's background grid
+// a background pixel reads as a dot. A silhouette boost of the factor rule (×2 where the normal
+// is square to the eye ray) took suzanne's adaptive Catmull-Clark count to 7 and the creature's
+// to 0, but raised the folded triangles of tests/no-folds.test.ts (creature 17 → 42, and the
+// boxes and the gear from 0), so it is not in. The counts are a ratchet at what is measured now.
 import { expect, test, type Page } from '@playwright/test';
+import { existsSync, readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
 import { inflateSync } from 'node:zlib';
 
 /** Luminance (0..1) difference a speckle must exceed. */
@@ -125,46 +147,48 @@ async function frozenFrame(page: Page, query: string): Promise<Image> {
 
 const REFERENCE = 'mode=fixed&factor=16';
 
-/**
- * NOT MET: zero in adaptive mode. Culling the back faces of closed cages removed most speckles
- * (creature adaptive 135 → 8, pawn 157 → 1); cutting the gap strip without caps
- * (tests/no-folds.test.ts) took the creature's to 1. The pawn's went UP, to 10 (2 with the greedy
- * cut alone): they are not folds (the CPU fold check finds none in this view) but dots along the
- * self-shadow's boundary, where the shadow pass draws the adaptive mesh's outline as the light
- * sees it, which the strip's cut changes; the reference at factor 16 has a smoother one. So this
- * is a ratchet at the counts measured now (same test, same machine), beside the count before
- * culling: a change that speckles more fails here.
- */
+/** suzanne.obj from ../shared/cages, served to the page at this path (see the header). */
+const SUZANNE = resolve(import.meta.dirname, '../../shared/cages/suzanne.obj');
+const SUZANNE_URL = '/shared-cages/suzanne.obj';
+
+/** Speckles allowed (the header says why adaptive is not 0), and the count before this issue's
+ * renderer changes where it was measured (the same test, the same machine). */
 const ALLOWED: Record<string, { allowed: number; before: number }> = {
-  'creature mode=adaptive': { allowed: 1, before: 135 },
-  'pawn mode=adaptive': { allowed: 10, before: 157 },
-  'pawn mode=fixed&factor=8': { allowed: 0, before: 2 },
-  // Catmull-Clark at a fixed factor (adaptive: creature 5, pawn 5, measured after the strip cut;
-  // see the header for why those are not held here).
-  'pawn mode=fixed&factor=8&surface=catmull-clark': { allowed: 0, before: Number.NaN },
+  'creature mode=adaptive&surface=phong': { allowed: 0, before: 135 },
+  'pawn mode=adaptive&surface=phong': { allowed: 7, before: 157 },
+  'pawn mode=fixed&factor=8&surface=phong': { allowed: 0, before: 2 },
+  'pawn mode=fixed&factor=8&surface=catmull-clark': { allowed: 0, before: 0 },
+  'creature mode=adaptive&surface=catmull-clark': { allowed: 5, before: 5 },
+  'pawn mode=adaptive&surface=catmull-clark': { allowed: 6, before: 5 },
+  'suzanne mode=fixed&factor=8&surface=catmull-clark': { allowed: 0, before: 4 },
+  'suzanne mode=adaptive&surface=catmull-clark': { allowed: 32, before: 58 },
+  'suzanne mode=adaptive&surface=phong': { allowed: 22, before: 81 },
 };
 
 test.describe('no isolated dark speckles against a high fixed factor', () => {
   test.use({ viewport: { width: 1000, height: 700 } });
   test.setTimeout(300_000);
 
-  for (const [model, mode] of [
-    ['creature', 'mode=adaptive&surface=phong'],
-    ['pawn', 'mode=adaptive&surface=phong'],
-    ['pawn', 'mode=fixed&factor=8&surface=phong'],
-    ['pawn', 'mode=fixed&factor=8&surface=catmull-clark'],
-  ]) {
+  for (const key of Object.keys(ALLOWED)) {
+    const [model, mode] = key.split(' ');
     const surface = mode.slice(mode.indexOf('&surface='));
     test(`${model}, ${mode}`, async ({ page }) => {
-      const frame = await frozenFrame(page, `model=${model}&${mode}`);
-      const ref = await frozenFrame(page, `model=${model}&${REFERENCE}${surface}`);
+      let at = `model=${model}`;
+      if (model === 'suzanne') {
+        test.skip(!existsSync(SUZANNE), `${SUZANNE} is not here (the talk's cages live in ../shared/cages)`);
+        const body = readFileSync(SUZANNE, 'utf8');
+        await page.route(`**${SUZANNE_URL}`, (route) => route.fulfill({ body, contentType: 'text/plain' }));
+        at = `model=${SUZANNE_URL}&up=y`;
+      }
+      const frame = await frozenFrame(page, `${at}&${mode}`);
+      const ref = await frozenFrame(page, `${at}&${REFERENCE}${surface}`);
       // The reference must show the model: a blank pair would pass trivially.
       let lit = 0;
       for (let y = 0; y < ref.height; y += 4) for (let x = 0; x < ref.width; x += 4) if (luminance(ref, x, y) > 0.3) lit++;
       expect(lit).toBeGreaterThan(500);
       const s = speckles(frame, ref);
-      console.log(`${model} ${mode}: ${s.count} speckles ${s.at.join(' ')}`);
-      expect(s.count, s.at.join('; ')).toBeLessThanOrEqual(ALLOWED[`${model} ${mode.replace('&surface=phong', '')}`].allowed);
+      console.log(`${model} ${mode}: ${s.count} speckles (before: ${ALLOWED[key].before}) ${s.at.join(' ')}`);
+      expect(s.count, s.at.join('; ')).toBeLessThanOrEqual(ALLOWED[key].allowed);
     });
   }
 });

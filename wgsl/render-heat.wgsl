@@ -10,8 +10,9 @@
 
 struct HeatOut {
   @builtin(position) clip: vec4f,
-  @location(0) world: vec3f,
-  @location(1) normal: vec3f,
+  // Centroid: on a contour's pixels, a position on the triangle (render-lit.wgsl's VertexOut).
+  @location(0) @interpolate(perspective, centroid) world: vec3f,
+  @location(1) @interpolate(perspective, centroid) normal: vec3f,
   // The value as a fraction of the range (0..1 and beyond).
   @location(2) value: f32,
 }
@@ -42,7 +43,10 @@ fn heatFragment(in: HeatOut, @builtin(front_facing) front: bool) -> @location(0)
   n = select(-n, n, dot(n, toEye) >= 0.0);
   if (dot(in.normal, in.normal) > 1e-12) {
     n = normalize(in.normal);
-    n = select(-n, n, front);
+    // The inside of an open surface, lit from the viewer's side (render-common.wgsl insideWeight).
+    let inside = insideWeight(front, n, toEye);
+    if (inside < 0.0) { discard; }
+    n = towardsEye(select(n, -n, inside > 0.5), toEye);
   }
   let halfLambert = 0.5 * dot(n, scene.toLight.xyz) + 0.5;
   return vec4f(heatColour(in.value) * (0.25 + 0.75 * halfLambert), 1.0);

@@ -8,8 +8,12 @@
 
 struct VertexOut {
   @builtin(position) clip: vec4f,
-  @location(0) world: vec3f,
-  @location(1) normal: vec3f,
+  // Centroid: with MSAA a pixel on a contour is shaded once, and at its centre the position
+  // would be extrapolated off the triangle, past the contour and under the surface, where the
+  // shadow lookup finds the surface itself above it: a dark dot on every such pixel of an
+  // occlusion contour. At the centroid of the covered samples it stays on the triangle.
+  @location(0) @interpolate(perspective, centroid) world: vec3f,
+  @location(1) @interpolate(perspective, centroid) normal: vec3f,
   // Patch colours: one-hot weights of the vertex's patch kind (regular, irregular quad, triangle,
   // crease), zero for the usual colours. Interpolated: a tessellated triangle whose vertices were
   // welded to neighbouring source triangles blends their colours (flat shading would take its
@@ -53,6 +57,21 @@ fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @l
   return out;
 }
 
+// The clay's colour at a point seen with normal `n` (towards the viewer's side) and `albedo`.
+fn shade(world: vec3f, n: vec3f, facet: vec3f, toEye: vec3f, albedo: vec3f) -> vec3f {
+  let l = scene.toLight.xyz;
+  let ndl = max(dot(n, l), 0.0);
+  // The shadow lookup is offset off the facet the rasterizer drew, on the shading normal's side:
+  // the shadow map holds those facets, and near a contour the shading normal tilts far from
+  // them (offset along it, the lookup fell under its own facet: dark dots along the contour).
+  let shadow = shadowFactor(world, select(-facet, facet, dot(facet, n) >= 0.0));
+  let h = normalize(l + toEye);
+  let specular = pow(max(dot(n, h), 0.0), 64.0) * 0.22 * ndl;
+  // A faint rim keeps the silhouette readable against the dark backdrop.
+  let rim = pow(1.0 - max(dot(n, toEye), 0.0), 4.0) * 0.18;
+  return albedo * (ambient(n) + SUN * ndl * shadow) + SUN * specular * shadow + vec3f(rim) * ambient(n);
+}
+
 @fragment
 fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0) vec4f {
   let toEye = normalize(scene.eye.xyz - in.world);
@@ -60,25 +79,24 @@ fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0
   var faceNormal = normalize(cross(dpdx(in.world), dpdy(in.world)));
   faceNormal = select(-faceNormal, faceNormal, dot(faceNormal, toEye) >= 0.0);
   var n = faceNormal;
+  var inside = 0.0;
   if (dot(in.normal, in.normal) > 1e-12) {
     n = normalize(in.normal);
-    // Open surfaces show their back: light it as seen, from the viewer's side.
-    n = select(-n, n, front);
+    // Open surfaces show their inside: lit as seen, from the viewer's side (render-common.wgsl
+    // insideWeight: not where the tessellation folds over at a contour).
+    inside = insideWeight(front, n, toEye);
+    if (inside < 0.0) { discard; }
   }
 
-  // Clay front, a cooler tint inside open surfaces.
-  var albedo = select(linearFromSrgb(vec3f(0.56, 0.66, 0.78)), linearFromSrgb(vec3f(0.86, 0.80, 0.72)), front);
+  // Clay outside, a cooler tint inside open surfaces.
+  var outsideAlbedo = linearFromSrgb(vec3f(0.86, 0.80, 0.72));
+  var insideAlbedo = linearFromSrgb(vec3f(0.56, 0.66, 0.78));
   if (dot(in.patchWeights, vec4f(1.0)) > 0.01) {
-    albedo = patchColour(in.patchWeights) * select(0.7, 1.0, front);
+    outsideAlbedo = patchColour(in.patchWeights);
+    insideAlbedo = outsideAlbedo * 0.7;
   }
-  let l = scene.toLight.xyz;
-  let ndl = max(dot(n, l), 0.0);
-  let shadow = shadowFactor(in.world, n);
-  let h = normalize(l + toEye);
-  let specular = pow(max(dot(n, h), 0.0), 64.0) * 0.22 * ndl;
-  // A faint rim keeps the silhouette readable against the dark backdrop.
-  let rim = pow(1.0 - max(dot(n, toEye), 0.0), 4.0) * 0.18;
-
-  let colour = albedo * (ambient(n) + SUN * ndl * shadow) + SUN * specular * shadow + vec3f(rim) * ambient(n);
+  var colour = vec3f(0.0);
+  if (inside < 1.0) { colour += (1.0 - inside) * shade(in.world, towardsEye(n, toEye), faceNormal, toEye, outsideAlbedo); }
+  if (inside > 0.0) { colour += inside * shade(in.world, towardsEye(-n, toEye), faceNormal, toEye, insideAlbedo); }
   return vec4f(toneMap(colour), 1.0);
 }
