@@ -62,8 +62,9 @@ fn shade(world: vec3f, n: vec3f, facet: vec3f, toEye: vec3f, albedo: vec3f) -> v
   let l = scene.toLight.xyz;
   let ndl = max(dot(n, l), 0.0);
   // The shadow lookup is offset off the facet the rasterizer drew, on the shading normal's side:
-  // the shadow map holds those facets, and near a contour the shading normal tilts far from
-  // them (offset along it, the lookup fell under its own facet: dark dots along the contour).
+  // the shadow map holds those facets, and where the shading normal tilts far from them the
+  // offset along it can fall under the facet (measured: one dot fewer on the pawn's adaptive
+  // self-shadow boundary, e2e/artifacts.spec.ts; the contour dots were the centroid's, above).
   let shadow = shadowFactor(world, select(-facet, facet, dot(facet, n) >= 0.0));
   let h = normalize(l + toEye);
   let specular = pow(max(dot(n, h), 0.0), 64.0) * 0.22 * ndl;

@@ -20,6 +20,9 @@ export class MapStalled extends Error {
  * guards against is a map that never comes back, not a slow one. */
 export const TIMING_MAP_DEADLINE_MS = 15_000;
 
+/** GPUMapMode.READ, without touching the global (absent in unit tests). */
+const GPU_MAP_MODE_READ = 0x0001;
+
 /** The part of GPUBuffer this needs (tests pass a fake). */
 export interface MappableBuffer {
   readonly label: string;
@@ -57,8 +60,4 @@ export async function mapWithin(buffer: MappableBuffer, ms: number, timers: Dead
   } finally {
     timers.clearTimeout(timer);
   }
-  // A map that settled in the same turn as the deadline: it was not cancelled, keep it.
 }
-
-/** GPUMapMode.READ, without touching the global (absent in unit tests). */
-const GPU_MAP_MODE_READ = 0x0001;

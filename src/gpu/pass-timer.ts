@@ -7,8 +7,11 @@
 import { mapWithin, MapStalled, TIMING_MAP_DEADLINE_MS } from './map-within.ts';
 
 export class PassTimer {
+  #stalled = false;
   /** The timestamps' map did not settle (mapWithin): no pass is timed any more. */
-  stalled = false;
+  get stalled(): boolean {
+    return this.#stalled;
+  }
   private readonly set: GPUQuerySet;
   private readonly resolveBuf: GPUBuffer;
   private readonly readBuf: GPUBuffer;
@@ -37,7 +40,7 @@ export class PassTimer {
   beginPass(encoder: GPUCommandEncoder, label: string, stage: string): GPUComputePassEncoder {
     const query = 2 * this.recording.length;
     const desc: GPUComputePassDescriptor = { label };
-    if (!this.pending && !this.stalled && query + 2 <= this.set.count) {
+    if (!this.pending && !this.#stalled && query + 2 <= this.set.count) {
       desc.timestampWrites = { querySet: this.set, beginningOfPassWriteIndex: query, endOfPassWriteIndex: query + 1 };
       this.recording.push(stage);
     }
@@ -71,7 +74,7 @@ export class PassTimer {
       await mapWithin(this.readBuf, TIMING_MAP_DEADLINE_MS);
     } catch (err) {
       if (err instanceof MapStalled) {
-        this.stalled = true;
+        this.#stalled = true;
         this.pending = false;
       }
       throw err;

@@ -184,8 +184,11 @@ export class Renderer {
   #msaaTexture: GPUTexture | null = null;
   #depthTexture: GPUTexture | null = null;
 
+  #timingStalled = false;
   /** The timestamps' readback never settled (src/gpu/map-within.ts): timing is off for good. */
-  timingStalled = false;
+  get timingStalled(): boolean {
+    return this.#timingStalled;
+  }
 
   #timing: {
     querySet: GPUQuerySet;
@@ -550,7 +553,7 @@ export class Renderer {
     const drawer = this.#drawer;
     const mesh = drawer ? null : this.#mesh;
     // Once the timestamps' map stalled (mapWithin), no pass writes timestamps any more.
-    const timing = this.timingStalled ? null : this.#timing;
+    const timing = this.#timingStalled ? null : this.#timing;
 
     if (mesh && options.wireframe && this.#wireArgsBindGroup) {
       // Tracks whatever index count the tessellator last wrote, at the cost of one thread.
@@ -695,7 +698,7 @@ export class Renderer {
       } catch (err) {
         // A map that never settled: stop timing (the stats say so). Else the device was lost or
         // destroyed while mapping: keep the last numbers.
-        if (err instanceof MapStalled) this.timingStalled = true;
+        if (err instanceof MapStalled) this.#timingStalled = true;
       } finally {
         timing.state = 'idle';
       }
