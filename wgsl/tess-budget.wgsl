@@ -3,7 +3,8 @@
 // attempt (src/gpu/factors.ts budgetScale), and after that, factor 1 everywhere. Nothing
 // overflows and nothing is lost at any camera: the emit passes only run once accepted.
 
-// Indirect dispatch arguments of the two emit passes (vertices, triangles), folded into 2D.
+// Indirect dispatch arguments of the emit passes (vertices, triangles) and of the weld's edge
+// points, folded into 2D.
 fn dispatchArgs(threads: u32) -> vec3<u32> {
   let groups = (threads + WORKGROUP_SIZE - 1u) / WORKGROUP_SIZE;
   if (groups == 0u) { return vec3<u32>(0u, 1u, 1u); }
@@ -29,7 +30,8 @@ fn main() {
     counts = array(select(0u, vertices, fits), shown, bitcast<u32>(scale), attempt);
     let v = dispatchArgs(select(0u, work[params.offTriVertBase + params.nTris], fits));
     let t = dispatchArgs(shown);
-    emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z);
+    let e = dispatchArgs(select(0u, work[params.offEdgeBase + params.nEdges], fits));
+    emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z, e.x, e.y, e.z);
     return;
   }
   let ratio = min(f32(params.vertexCapacity) / f32(vertices), f32(params.triangleCapacity) / f32(triangles));

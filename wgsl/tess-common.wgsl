@@ -25,6 +25,19 @@ fn flatIndex(wid: vec3<u32>, lid: u32) -> u32 {
   return (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
 }
 
+// The last i in [0, n − 1] whose exclusive prefix sum work[sums + i] is ≤ x: the element (cage
+// edge or triangle) that output item x belongs to. Empty elements share their successor's sum,
+// so the last one wins, which is the one x lies in.
+fn lastAtMost(sums: u32, n: u32, x: u32) -> u32 {
+  var lo = 0u;
+  var hi = n - 1u;
+  for (var guard = 0u; guard < 32u && lo < hi; guard++) {
+    let mid = (lo + hi + 1u) >> 1u;
+    if (work[sums + mid] <= x) { lo = mid; } else { hi = mid - 1u; }
+  }
+  return lo;
+}
+
 // ---- pattern tables (src/pattern/tables.ts; the header's offsets count from the tables' start)
 fn tblSlotsOff() -> u32 { return params.offTables + tableHeader_slotsOffset(); }
 fn tblStateStartOff() -> u32 { return params.offTables + tableHeader_stateStartOffset(); }

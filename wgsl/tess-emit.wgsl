@@ -8,15 +8,7 @@ fn rowKept(first: u32, j: u32) -> u32 { return work[params.offRows + 2u * (first
 fn rowCum(first: u32, j: u32) -> u32 { return work[params.offRows + 2u * (first + j) + 1u]; }
 
 // The last cage triangle whose prefix sum (at word offset `sums`) is ≤ x.
-fn findTriangle(sums: u32, x: u32) -> u32 {
-  var lo = 0u;
-  var hi = params.nTris - 1u;
-  for (var guard = 0u; guard < 32u && lo < hi; guard++) {
-    let mid = (lo + hi + 1u) >> 1u;
-    if (work[sums + mid] <= x) { lo = mid; } else { hi = mid - 1u; }
-  }
-  return lo;
-}
+fn findTriangle(sums: u32, x: u32) -> u32 { return lastAtMost(sums, params.nTris, x); }
 
 fn edgeTotal() -> u32 { return work[params.offEdgeBase + params.nEdges]; }
 

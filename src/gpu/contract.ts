@@ -649,10 +649,13 @@ export const TESS_PARAMS = defineStruct('Params', [
 
 /** Words of the tessellator's fixed-size outputs: drawIndexedIndirect's arguments, the counts
  * (src/gpu/types.ts: vertices, triangles, the accepted scale as f32 bits, the attempt), and the
- * emit passes' two indirect dispatches (vertices', then triangles', 3 words each). */
-export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 6 } as const;
+ * indirect dispatches the budget pass sizes (the emit passes' vertices, then triangles, then the
+ * weld's edge points: 3 words each). */
+export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 9 } as const;
 /** Byte offset of the triangles' dispatch in emitArgs. */
 export const EMIT_TRIANGLES_ARGS_OFFSET = 4 * 3;
+/** Byte offset of the weld's edge-point dispatch in emitArgs. */
+export const WELD_EDGES_ARGS_OFFSET = 4 * 6;
 
 /** One binding group for every tessellator pass; each pass's layout holds the bindings its entry
  * point uses (usedBindings), so the numbers below are the only place they are written. */

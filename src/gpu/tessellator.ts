@@ -3,16 +3,18 @@
  * into big flat buffers, welded, stored once and drawn by every pass. Takes a GPUDevice and
  * never touches the DOM, so the same code runs in the browser, in headless tests and in Node.
  *
- * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except emit):
+ * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except the weld's edge
+ * points and emit):
  *   budget loop, up to 3 attempts (scale 1, a scale that fits, then factor 1 everywhere):
  *     factors    one thread per edge: tess factor, line state, segments    wgsl/tess-factors.wgsl
  *     count      one thread per triangle: interior vertices and triangles   wgsl/tess-count.wgsl
  *     scan       prefix sums of the three counts                           wgsl/scan.wgsl
  *     budget     accept (and write the indirect draw args) or rescale      wgsl/tess-budget.wgsl
- *   weld         corner and edge vertices, evaluated once each              wgsl/tess-weld.wgsl
+ *   weld         corner and edge vertices, evaluated once each, one thread   wgsl/tess-weld.wgsl
+ *                per vertex (the edge points' dispatch is indirect: budget)
  *   tessellate   plan: one thread per triangle writes its pattern's rows   wgsl/tess-plan.wgsl
  *                emit: one thread per interior vertex, one per triangle    wgsl/tess-emit.wgsl
- *                (the only indirect dispatches: sized by the budget pass)
+ *                (indirect dispatches, like the weld's edge points)
  * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers,
  * so every output element costs the same whatever the factors (wgsl/tess-pattern.wgsl holds the
  * pattern reading shared by count, plan and emit).
@@ -57,6 +59,7 @@ import {
   TESS_WORK,
   type TessBinding,
   type TessSizes,
+  WELD_EDGES_ARGS_OFFSET,
 } from './contract.ts';
 import { outputCapacity } from './factors.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -69,8 +72,8 @@ export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPa
 export { grid2d } from './contract.ts';
 
 /** Compute passes one rebuild records (the patch build, factors and count + budget per attempt,
- * weld, plan + emit), each timed by a pair of timestamps. */
-const TIMED_PASSES = 1 + 2 * ATTEMPTS + 2;
+ * weld, plan, emit), each timed by a pair of timestamps. */
+const TIMED_PASSES = 1 + 2 * ATTEMPTS + 3;
 
 interface Pipeline {
   pipeline: GPUComputePipeline;
@@ -556,10 +559,12 @@ export class Tessellator {
     }
     let cp = pass('tess weld', 'weld');
     run(cp, 'corners', groupsFor(nV));
-    run(cp, 'edges', groupsFor(nE));
+    runIndirect(cp, 'edges', WELD_EDGES_ARGS_OFFSET); // one thread per edge point: sized by the budget pass
     cp.end();
-    cp = pass('tess plan + emit', 'tessellate');
+    cp = pass('tess plan', 'plan');
     run(cp, 'plan', groupsFor(nT));
+    cp.end();
+    cp = pass('tess emit', 'tessellate');
     // Sized by the budget pass: emitArgs holds the vertices' dispatch, then the triangles'.
     runIndirect(cp, 'emitVertices', 0);
     runIndirect(cp, 'emitTriangles', EMIT_TRIANGLES_ARGS_OFFSET);
