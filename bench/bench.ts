@@ -35,6 +35,13 @@ import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
 
 const REPEATS = 5;
 
+/** What the times mean on the adapter that measured them (also used by bench/instanced.ts). */
+export function adapterNote(adapterName: string): string {
+  return /swiftshader/i.test(adapterName)
+    ? "On SwiftShader (a CPU rasteriser) only these ratios mean anything; a real GPU's tables are in the section 'On a real GPU' (bench/gpu/)."
+    : "Measured on a real GPU: the milliseconds are that GPU's.";
+}
+
 /** The talk's four models, third-party: read from here when present, never copied. */
 const TALK_CAGES = '../shared/cages';
 const TALK_MODELS = ['suzanne', 'bigguy', 'monsterfrog', 'imrod'];
@@ -225,8 +232,8 @@ export async function main(argv: string[]): Promise<number> {
   const lodScale = 4;
   const adaptive: HeadlessOptions = { mode: 'adaptive', lodScale };
   const header =
-    '| model | cage tris | mode | out verts | out tris | factors ms | count+budget ms | weld ms | tessellate ms | total ms | Mtris/ms | write-bound ms | efficiency |';
-  const rule = '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|';
+    '| model | cage tris | mode | out verts | out tris | factors ms | count+budget ms | weld ms | plan ms | emit ms | total ms | Mtris/ms | write-bound ms | efficiency |';
+  const rule = '|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|';
   const equalError: string[] = [];
   console.log(header);
   console.log(rule);
@@ -244,7 +251,7 @@ export async function main(argv: string[]): Promise<number> {
       const bytes = r.vertices * BYTES_PER_VERTEX + r.triangles * BYTES_PER_TRIANGLE;
       const bound = await timeTrivialWrite(device, bytes, repeats);
       const s = r.stages;
-      const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${label} | ${r.vertices} | ${r.triangles} | ${(s.factors ?? 0).toFixed(3)} | ${(s['count+budget'] ?? 0).toFixed(3)} | ${(s.weld ?? 0).toFixed(3)} | ${(s.tessellate ?? 0).toFixed(3)} | ${r.total.toFixed(3)} | ${(r.triangles / r.total / 1e6).toFixed(4)} | ${bound.toFixed(3)} | ${((100 * bound) / r.total).toFixed(1)} % |`;
+      const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${label} | ${r.vertices} | ${r.triangles} | ${(s.factors ?? 0).toFixed(3)} | ${(s['count+budget'] ?? 0).toFixed(3)} | ${(s.weld ?? 0).toFixed(3)} | ${(s.plan ?? 0).toFixed(3)} | ${(s.tessellate ?? 0).toFixed(3)} | ${r.total.toFixed(3)} | ${(r.triangles / r.total / 1e6).toFixed(4)} | ${bound.toFixed(3)} | ${((100 * bound) / r.total).toFixed(1)} % |`;
       console.log(row);
       rows.push(row);
     }
@@ -334,6 +341,7 @@ export async function main(argv: string[]): Promise<number> {
   const cc = Tessellator.create(device, bakeTables(64), { surface: 'catmull-clark' });
   const talk: string[] = [];
   const draws: string[] = [];
+  const stageRows: string[] = [];
   const skipped: string[] = [];
   for (const { name, path } of ccModels) {
     const cage = loadCage(readFileSync(path, 'utf8')).cage;
@@ -384,6 +392,10 @@ export async function main(argv: string[]): Promise<number> {
     talk.push(
       `| ${name} | ${faces} | ${fixedRun.triangles} | ${sub.toFixed(3)} | ${tessMs.toFixed(3)} | ${fixedRun.total.toFixed(3)} | ${(fixedRun.triangles / fixedRun.total / 1e6).toFixed(4)} | ${fixedRun.vertices} | ${adaptiveRun.vertices} | ${((100 * adaptiveRun.vertices) / fixedRun.vertices).toFixed(0)} % | ${fixedRun.triangles} | ${adaptiveRun.triangles} | ${((100 * adaptiveRun.triangles) / fixedRun.triangles).toFixed(0)} % | ${buildMs.toFixed(0)} / ${warmMs.toFixed(0)} | ${Math.round(data.gpuBytes / faces)} | ${osdCells(warmMs)} |`,
     );
+    const st = (k: string) => (fixedRun.stages[k] ?? 0).toFixed(3);
+    stageRows.push(
+      `| ${name} | ${fixedRun.triangles} | ${st('subdivision')} | ${st('factors')} | ${st('count+budget')} | ${st('weld')} | ${st('plan')} | ${st('tessellate')} |`,
+    );
     const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
     const { litMs, shadowMs } = await timeDrawPasses(device, cc.output, cam.viewProj, benchLightViewProj(mesh), repeats);
     const perM = 1e6 / fixedRun.triangles;
@@ -413,7 +425,7 @@ Written by \`npm run bench\` on ${new Date().toISOString().slice(0, 10)}.
 - **Machine:** ${machine}
 - **Bytes per output:** ${BYTES_PER_VERTEX} per vertex (position, normal, barycentrics, source triangle), ${BYTES_PER_TRIANGLE} per triangle (indices).
 - Times are GPU timestamps (Dawn, timestamp quantization off), medians of ${repeats} rebuilds after a warm-up. The camera is a three-quarter view framing the model, 1080 px high, 45° field of view.
-- **write-bound ms** is a kernel that only writes the same number of bytes; **efficiency** = write-bound / total. On SwiftShader (a CPU rasteriser) only these ratios mean anything; GPU timings on real hardware are still owed.
+- **write-bound ms** is a kernel that only writes the same number of bytes; **efficiency** = write-bound / total. ${adapterNote(adapterName)}
 
 ## Compute tessellation per model
 
@@ -449,6 +461,15 @@ ${osdNote}
 |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|
 ${talk.join('\n')}
 ${skipped.length ? `\nLeft out: ${skipped.join('; ')}.\n` : ''}
+## Catmull-Clark by stage
+
+The same fixed-factor rebuilds as the talk's table, stage by stage (GPU ms, medians): where the
+tessellation's time goes once the surface is the exact limit (emit evaluates it per vertex; weld
+at the cage's corners and edges; the factors read the vertex limits).
+
+| model | out tris | subdivision | factors (3 attempts) | count + budget (3 attempts) | weld | plan | emit |
+|---|---:|---:|---:|---:|---:|---:|---:|
+${stageRows.join('\n')}
 
 ## Drawing the stored mesh: ms per 1M triangles
 

