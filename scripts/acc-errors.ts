@@ -17,8 +17,7 @@
  * holes) are listed with the reason. The normal jump is over smooth edges (creases may jump).
  */
 import { existsSync, readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
-import { dirname, join } from 'node:path';
+import { join } from 'node:path';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
 import { ACC_SCHEMES, AccError, AccSurface, KIND_NAMES } from '../src/subdiv/acc.ts';
 import { ExactAt, accErrors, ccStep, continuity, prism, smoothEdges } from '../tests/acc-checks.ts';
@@ -31,7 +30,9 @@ import { createNodeDevice } from '../src/gpu/node-device.ts';
 import { cube, pentPrism } from '../tests/subdiv-fixtures.ts';
 import { makeCage } from '../src/mesh/index.ts';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+// The repository root: where it is run from (npm scripts and bench/gpu/run.sh run it there; a
+// bundled copy cannot find it from its own path).
+const root = process.cwd();
 let perFace = 16;
 let useGpu = true;
 

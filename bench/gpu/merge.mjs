@@ -18,7 +18,15 @@ const demote = (doc) =>
     .replace(/^## /gm, '### ')
     .trim();
 const gpu = read('gpu.txt').trim().split('\n').slice(1).join('; ');
+const acc = read('acc.md').trim();
 const parts = ['bench-gpu.md', 'inst.md', 'inst-cc.md'].map(read).filter(Boolean).map(demote);
+if (acc)
+  parts.push(`### Approximate Catmull-Clark: the ACC patch build against the exact one
+
+\`scripts/acc-errors.ts\` as in the ACC section above (its error columns are CPU, f64, and do not
+depend on the machine); the build column is this GPU's.
+
+${acc}`);
 if (!parts.length) {
   console.error(`merge: nothing in ${dir}`);
   process.exit(1);

@@ -8,8 +8,8 @@
 set -euo pipefail
 G=.gpubench
 rm -rf "$G" && mkdir -p "$G/src" "$G/lib" "$G/cages" "$G/node_modules/webgpu/dist/linux-x64"
-for b in bench instanced; do
-  printf "import { main } from '../../bench/%s.ts';\nprocess.exit(await main(process.argv.slice(2)));\n" "$b" >"$G/src/$b.ts"
+for b in bench/bench bench/instanced scripts/acc-errors; do
+  printf "import { main } from '../../%s.ts';\nprocess.exit(await main(process.argv.slice(2)));\n" "$b" >"$G/src/${b#*/}.ts"
 done
 cat >"$G/vite.config.mjs" <<'CFG'
 export default {
@@ -19,7 +19,7 @@ export default {
   build: {
     ssr: true, outDir: '.gpubench/dist', emptyOutDir: true, minify: false, target: 'node20',
     rollupOptions: {
-      input: { bench: '.gpubench/src/bench.ts', instanced: '.gpubench/src/instanced.ts' },
+      input: { bench: '.gpubench/src/bench.ts', instanced: '.gpubench/src/instanced.ts', 'acc-errors': '.gpubench/src/acc-errors.ts' },
       output: { format: 'es', entryFileNames: '[name].mjs' },
     },
   },
