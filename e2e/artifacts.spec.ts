@@ -11,6 +11,8 @@
 // differs over an area). A dotted line counts: each of its pixels has two dark neighbours of
 // eight. The screenshots' PNG bytes are decoded here (decodePng, zlib from Node).
 //
+// SPECKLE_DUMP=DIR writes each case's frame, reference, and the frame with its speckles ringed.
+//
 // The reference is factor 16, not 32: on SwiftShader on a shared two-core machine the demo takes
 // over two minutes to draw the creature at 32 (1.15 M triangles) and the test timed out.
 //
@@ -41,8 +43,9 @@
 // to 0, but raised the folded triangles of tests/no-folds.test.ts (creature 17 → 42, and the
 // boxes and the gear from 0), so it is not in. The counts are a ratchet at what is measured now.
 import { expect, test, type Page } from '@playwright/test';
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
+import { PNG } from 'pngjs';
 import { inflateSync } from 'node:zlib';
 
 /** Luminance (0..1) difference a speckle must exceed. */
@@ -117,10 +120,11 @@ function luminance(img: Image, x: number, y: number): number {
 }
 
 /** The frame's isolated dark speckles against the reference (see the header), with a few positions. */
-function speckles(frame: Image, ref: Image): { count: number; at: string[] } {
+function speckles(frame: Image, ref: Image): { count: number; at: string[]; where: [number, number][] } {
   expect([frame.width, frame.height]).toEqual([ref.width, ref.height]);
   let count = 0;
   const at: string[] = [];
+  const where: [number, number][] = [];
   for (let y = 1; y + 1 < frame.height; y++) {
     for (let x = 1; x + 1 < frame.width; x++) {
       let darkest = Infinity;
@@ -132,11 +136,43 @@ function speckles(frame: Image, ref: Image): { count: number; at: string[] } {
       around.sort((p, q) => p - q);
       if (l < (around[3] + around[4]) / 2 - SPECKLE_THRESHOLD) {
         count++;
+        where.push([x, y]);
         if (at.length < 8) at.push(`(${x}, ${y}) ${l.toFixed(2)} < ${darkest.toFixed(2)}`);
       }
     }
   }
-  return { count, at };
+  return { count, at, where };
+}
+
+/** SPECKLE_DUMP=DIR: write each case's frame, reference, and the frame with its speckles ringed in
+ * red, to look at what the count counts. */
+function dump(name: string, frame: Image, ref: Image, where: [number, number][]): void {
+  const dir = process.env.SPECKLE_DUMP;
+  if (!dir) return;
+  mkdirSync(dir, { recursive: true });
+  const write = (file: string, img: Image) => {
+    const png = new PNG({ width: img.width, height: img.height });
+    png.data.set(img.rgba);
+    writeFileSync(resolve(dir, file), PNG.sync.write(png));
+  };
+  const marked = { ...frame, rgba: frame.rgba.slice() };
+  for (const [x, y] of where) {
+    for (let d = -3; d <= 3; d++) {
+      for (const [px, py] of [
+        [x + d, y - 3],
+        [x + d, y + 3],
+        [x - 3, y + d],
+        [x + 3, y + d],
+      ]) {
+        if (px < 0 || py < 0 || px >= frame.width || py >= frame.height) continue;
+        marked.rgba.set([255, 0, 0, 255], 4 * (py * frame.width + px));
+      }
+    }
+  }
+  const base = name.replace(/[^a-z0-9]+/gi, '-');
+  write(`${base}-frame.png`, frame);
+  write(`${base}-ref.png`, ref);
+  write(`${base}-marked.png`, marked);
 }
 
 async function frozenFrame(page: Page, query: string): Promise<Image> {
@@ -187,6 +223,7 @@ test.describe('no isolated dark speckles against a high fixed factor', () => {
       for (let y = 0; y < ref.height; y += 4) for (let x = 0; x < ref.width; x += 4) if (luminance(ref, x, y) > 0.3) lit++;
       expect(lit).toBeGreaterThan(500);
       const s = speckles(frame, ref);
+      dump(`${model} ${mode}`, frame, ref, s.where);
       console.log(`${model} ${mode}: ${s.count} speckles (before: ${ALLOWED[key].before}) ${s.at.join(' ')}`);
       expect(s.count, s.at.join('; ')).toBeLessThanOrEqual(ALLOWED[key].allowed);
     });
