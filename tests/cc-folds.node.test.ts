@@ -1,0 +1,128 @@
+/**
+ * Issue 13's check in its own words, on the surface the demo shows by default (Catmull-Clark,
+ * adaptive, flat baseline on): no output triangle's geometric normal may oppose the output
+ * normals at all three of its corners. The GPU's own output is checked here (Dawn in Node); the
+ * CPU twin for Phong tessellation is tests/no-folds.test.ts, which measures against the Phong
+ * surface's own normals. The cameras are that test's: six seeded random views, LOD scales 0.5,
+ * 1 and 2.
+ *
+ * NOT MET: a ratchet at the counts measured when this test was written (all other models 0).
+ * - At a fixed factor, every flagged triangle is a sliver lying in a flat n-gon face, with its
+ *   three points nearly collinear, inverted in the plane. The faces are the pawn's 16-gon base
+ *   (from near its centre to its rim) and the gear's 7-gons. Such a face is cut into a fan of
+ *   long thin triangles (src/gpu/prepare.ts).
+ *   - The likely cause (not proven) is that the n-gon's parametrization is not affine. It maps
+ *     to the regular polygon, then the kites, then the sub-faces, and it bends a straight row of
+ *     the pattern in such a triangle, so a sliver across the row inverts.
+ *   - The positions are the exact limit's (tests/cc.gpu.test.ts holds them to the CPU
+ *     reference), so the GPU evaluates correctly. The cause lies in how the pattern meets the
+ *     parametrization.
+ * - In adaptive mode, the gear's and the creature's flagged triangles were not examined one by
+ *   one.
+ */
+import { describe, it, expect, afterAll } from 'vitest';
+import { readdirSync, readFileSync } from 'node:fs';
+import { getDevice, releaseDevice } from './gpu-device.ts';
+import { tessellateOnce } from '../src/gpu/headless.ts';
+import { Tessellator } from '../src/gpu/tessellator.ts';
+import { bakeTables } from '../src/pattern/tables.ts';
+import { prepareMesh } from '../src/gpu/prepare.ts';
+import { buildCatmullClark } from '../src/gpu/cc/build.ts';
+import { loadCage } from '../src/mesh/index.ts';
+import type { MeshReadback } from '../src/gpu/readback.ts';
+
+const MODELS = new URL('../public/models/', import.meta.url);
+
+/** Flagged triangles allowed, as measured (others: 0): over the six adaptive cameras, and at fixed
+ * factor 8 (one view: the mesh does not depend on the camera). */
+const RESIDUAL: Record<string, { adaptive: number; fixed8: number }> = {
+  'creature.obj': { adaptive: 8, fixed8: 0 },
+  'creature-wrinkles.obj': { adaptive: 8, fixed8: 0 },
+  'gear.obj': { adaptive: 492, fixed8: 125 },
+  'pawn.obj': { adaptive: 0, fixed8: 124 },
+};
+
+/** The triangles whose geometric normal opposes the output normal at all three corners. */
+function flagged(o: MeshReadback): number {
+  const P = o.positions,
+    N = o.normals;
+  let n = 0;
+  for (let t = 0; t < o.triangleCount; t++) {
+    const [a, b, c] = [0, 1, 2].map((i) => o.indices[3 * t + i]);
+    const e1 = [0, 1, 2].map((k) => P[3 * b + k] - P[3 * a + k]);
+    const e2 = [0, 1, 2].map((k) => P[3 * c + k] - P[3 * a + k]);
+    const g = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
+    if ([a, b, c].every((v) => N[3 * v] * g[0] + N[3 * v + 1] * g[1] + N[3 * v + 2] * g[2] < 0)) n++;
+  }
+  return n;
+}
+
+/** tests/no-folds.test.ts's generator, so the cameras are the same. */
+function lcg(seed: number): () => number {
+  let s = seed;
+  return () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
+}
+
+let tess: Tessellator | undefined;
+afterAll(() => {
+  tess?.destroy();
+  return releaseDevice();
+});
+
+describe('Catmull-Clark as the demo shows it: no folded output triangles', () => {
+  const files = readdirSync(MODELS)
+    .filter((f) => f.endsWith('.obj'))
+    .sort();
+  for (const file of files) {
+    it(`${file}: six random cameras in adaptive mode, and fixed factor 8`, async () => {
+      const device = await getDevice();
+      tess ??= Tessellator.create(device, bakeTables(64), {
+        surface: 'catmull-clark',
+        flatBaseline: true,
+        vertexCapacity: 1 << 20,
+        triangleCapacity: 1 << 20,
+      });
+      const cage = loadCage(readFileSync(new URL(file, MODELS), 'utf8')).cage;
+      const mesh = prepareMesh(cage);
+      const prepared = { mesh, cc: buildCatmullClark(cage, mesh) };
+      const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
+      const rnd = lcg(12345);
+      let adaptive = 0;
+      let total = 0;
+      for (let cam = 0; cam < 6; cam++) {
+        const yaw = rnd() * 2 * Math.PI,
+          pitch = (rnd() - 0.5) * 2.4,
+          dist = mesh.size * (0.6 + 1.4 * rnd());
+        const eye: [number, number, number] = [
+          centre[0] + dist * Math.cos(pitch) * Math.sin(yaw),
+          centre[1] + dist * Math.sin(pitch),
+          centre[2] + dist * Math.cos(pitch) * Math.cos(yaw),
+        ];
+        const r = await tessellateOnce(
+          device,
+          cage,
+          {
+            mode: 'adaptive',
+            flatBaseline: true,
+            lodScale: [0.5, 1, 2][cam % 3],
+            eye,
+            target: centre,
+            fovY: Math.PI / 4,
+            viewportHeight: 1080,
+          },
+          tess,
+          prepared,
+        );
+        adaptive += flagged(r.out);
+        total += r.out.triangleCount;
+      }
+      const fixed = await tessellateOnce(device, cage, { mode: 'fixed', fixedFactor: 8, flatBaseline: true }, tess, prepared);
+      const fixed8 = flagged(fixed.out);
+      console.log(`${file}: adaptive ${adaptive} of ${total} flagged, fixed 8 ${fixed8} of ${fixed.out.triangleCount}`);
+      expect(total).toBeGreaterThan(0);
+      const allowed = RESIDUAL[file] ?? { adaptive: 0, fixed8: 0 };
+      expect(adaptive).toBeLessThanOrEqual(allowed.adaptive);
+      expect(fixed8).toBeLessThanOrEqual(allowed.fixed8);
+    });
+  }
+});
