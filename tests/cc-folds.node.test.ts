@@ -24,8 +24,9 @@ import { describe, it, expect, afterAll } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice } from './gpu-device.ts';
 import { tessellateOnce } from '../src/gpu/headless.ts';
-import { Tessellator } from '../src/gpu/tessellator.ts';
-import { bakeTables } from '../src/pattern/tables.ts';
+import type { Tessellator } from '../src/gpu/tessellator.ts';
+import { demoCcTessellator } from './demo-tessellator.ts';
+import { foldCameras } from './cpu-pipeline.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { loadCage } from '../src/mesh/index.ts';
@@ -57,12 +58,6 @@ function flagged(o: MeshReadback): number {
   return n;
 }
 
-/** tests/no-folds.test.ts's generator, so the cameras are the same. */
-function lcg(seed: number): () => number {
-  let s = seed;
-  return () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
-}
-
 let tess: Tessellator | undefined;
 afterAll(() => {
   tess?.destroy();
@@ -76,40 +71,17 @@ describe('Catmull-Clark as the demo shows it: no folded output triangles', () =>
   for (const file of files) {
     it(`${file}: six random cameras in adaptive mode, and fixed factor 8`, async () => {
       const device = await getDevice();
-      tess ??= Tessellator.create(device, bakeTables(64), {
-        surface: 'catmull-clark',
-        flatBaseline: true,
-        vertexCapacity: 1 << 20,
-        triangleCapacity: 1 << 20,
-      });
+      tess ??= demoCcTessellator(device);
       const cage = loadCage(readFileSync(new URL(file, MODELS), 'utf8')).cage;
       const mesh = prepareMesh(cage);
       const prepared = { mesh, cc: buildCatmullClark(cage, mesh) };
-      const centre = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as [number, number, number];
-      const rnd = lcg(12345);
       let adaptive = 0;
       let total = 0;
-      for (let cam = 0; cam < 6; cam++) {
-        const yaw = rnd() * 2 * Math.PI,
-          pitch = (rnd() - 0.5) * 2.4,
-          dist = mesh.size * (0.6 + 1.4 * rnd());
-        const eye: [number, number, number] = [
-          centre[0] + dist * Math.cos(pitch) * Math.sin(yaw),
-          centre[1] + dist * Math.sin(pitch),
-          centre[2] + dist * Math.cos(pitch) * Math.cos(yaw),
-        ];
+      for (const { eye, target, lodScale } of foldCameras(mesh)) {
         const r = await tessellateOnce(
           device,
           cage,
-          {
-            mode: 'adaptive',
-            flatBaseline: true,
-            lodScale: [0.5, 1, 2][cam % 3],
-            eye,
-            target: centre,
-            fovY: Math.PI / 4,
-            viewportHeight: 1080,
-          },
+          { mode: 'adaptive', flatBaseline: true, lodScale, eye: [...eye], target: [...target], fovY: Math.PI / 4, viewportHeight: 1080 },
           tess,
           prepared,
         );

@@ -37,6 +37,26 @@ export function cameraRule(
   };
 }
 
+/** The fold tests' views of a model (tests/no-folds.test.ts, tests/cc-folds.node.test.ts): six
+ * cameras round its centre from a seeded generator (an LCG, so every run sees the same ones), at
+ * 0.6 to 2 times its size, LOD scales 0.5, 1 and 2 in turn. */
+export function foldCameras(mesh: PreparedMesh): { eye: Vec3; target: Vec3; lodScale: number }[] {
+  const target = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as unknown as Vec3;
+  let s = 12345;
+  const rnd = () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
+  return [0, 1, 2, 3, 4, 5].map((cam) => {
+    const yaw = rnd() * 2 * Math.PI,
+      pitch = (rnd() - 0.5) * 2.4,
+      dist = mesh.size * (0.6 + 1.4 * rnd());
+    const eye: Vec3 = [
+      target[0] + dist * Math.cos(pitch) * Math.sin(yaw),
+      target[1] + dist * Math.sin(pitch),
+      target[2] + dist * Math.cos(pitch) * Math.cos(yaw),
+    ];
+    return { eye, target, lodScale: [0.5, 1, 2][cam % 3] };
+  });
+}
+
 export interface CpuTriangle {
   /** The three corners' positions and unit normals (the surface's normals at them). */
   p: [number[], number[], number[]];

@@ -10,8 +10,8 @@ import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice } from './gpu-device.ts';
 import { tessellateOnce } from '../src/gpu/headless.ts';
-import { Tessellator } from '../src/gpu/tessellator.ts';
-import { bakeTables } from '../src/pattern/tables.ts';
+import type { Tessellator } from '../src/gpu/tessellator.ts';
+import { demoCcTessellator } from './demo-tessellator.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { loadCage } from '../src/mesh/index.ts';
 import { demoView, limitDistancePx } from '../scripts/limit-distance.ts';
@@ -37,12 +37,7 @@ describe('the default view is within a pixel of the limit surface', () => {
     it(`${file.split('/').pop()}, LOD ${lodScale}: every vertex facing the eye within ${1 / lodScale} px of the exact limit`, async () => {
       const device = await getDevice();
       // One tessellator for every model: its pipelines compile once.
-      tess ??= Tessellator.create(device, bakeTables(64), {
-        surface: 'catmull-clark',
-        flatBaseline: true,
-        vertexCapacity: 1 << 20,
-        triangleCapacity: 1 << 20,
-      });
+      tess ??= demoCcTessellator(device);
       const cage = loadCage(readFileSync(file, 'utf8')).cage;
       const mesh = prepareMesh(cage);
       const view = demoView(mesh);

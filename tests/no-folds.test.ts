@@ -29,8 +29,7 @@ import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
 import { loadCage } from '../src/mesh/index.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
-import type { Vec3 } from '../src/gpu/factors.ts';
-import { cameraRule, cpuTessellate, geometricNormal, phongSurfaceNormal, type CpuTriangle } from './cpu-pipeline.ts';
+import { cameraRule, cpuTessellate, foldCameras, geometricNormal, phongSurfaceNormal, type CpuTriangle } from './cpu-pipeline.ts';
 import { phongPoint } from '../src/gpu/phong.ts';
 import { clampedTriangle, type Reverse } from '../src/pattern/clamped.ts';
 import { ONE } from '../src/pattern/fixed.ts';
@@ -42,12 +41,6 @@ const RESIDUAL: Record<string, { allowed: number }> = {
   'creature.obj': { allowed: 17 },
   'creature-wrinkles.obj': { allowed: 17 }, // the creature's cage with UVs
 };
-
-/** A small deterministic generator (LCG), so the cameras are the same on every run. */
-function lcg(seed: number): () => number {
-  let s = seed;
-  return () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
-}
 
 function folded(t: CpuTriangle): boolean {
   const g = geometricNormal(t);
@@ -63,21 +56,11 @@ describe('adaptive tessellation has no folded triangles', () => {
   for (const file of files) {
     it(`${file}: over 6 random cameras and LOD scales 0.5, 1, 2`, () => {
       const mesh = prepareMesh(loadCage(readFileSync(new URL(file, MODELS), 'utf8')).cage);
-      const centre: Vec3 = [0, 1, 2].map((i) => (mesh.bboxMin[i] + mesh.bboxMax[i]) / 2) as unknown as Vec3;
-      const rnd = lcg(12345);
       const report: string[] = [];
       let total = 0;
       let folds = 0;
-      for (let cam = 0; cam < 6; cam++) {
-        const yaw = rnd() * 2 * Math.PI,
-          pitch = (rnd() - 0.5) * 2.4,
-          dist = mesh.size * (0.6 + 1.4 * rnd());
-        const eye: Vec3 = [
-          centre[0] + dist * Math.cos(pitch) * Math.sin(yaw),
-          centre[1] + dist * Math.sin(pitch),
-          centre[2] + dist * Math.cos(pitch) * Math.cos(yaw),
-        ];
-        const tris = cpuTessellate(mesh, cameraRule('adaptive', eye, centre, mesh.size, { lodScale: [0.5, 1, 2][cam % 3] }), true);
+      for (const [cam, { eye, target, lodScale }] of foldCameras(mesh).entries()) {
+        const tris = cpuTessellate(mesh, cameraRule('adaptive', eye, target, mesh.size, { lodScale }), true);
         const bad = tris.filter(folded);
         total += tris.length;
         folds += bad.length;
