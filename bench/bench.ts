@@ -35,9 +35,12 @@ import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
 
 const REPEATS = 5;
 
+/** SwiftShader (a CPU rasteriser), where only ratios between timings mean anything. */
+export const isSwiftShader = (adapterName: string): boolean => /swiftshader/i.test(adapterName);
+
 /** What the times mean on the adapter that measured them (also used by bench/instanced.ts). */
 export function adapterNote(adapterName: string): string {
-  return /swiftshader/i.test(adapterName)
+  return isSwiftShader(adapterName)
     ? "On SwiftShader (a CPU rasteriser) only these ratios mean anything; a real GPU's tables are in the section 'On a real GPU' (bench/gpu/)."
     : "Measured on a real GPU: the milliseconds are that GPU's.";
 }

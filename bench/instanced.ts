@@ -45,7 +45,7 @@ import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts'
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
-import { adapterNote, timeRebuild } from './bench.ts';
+import { adapterNote, isSwiftShader, timeRebuild } from './bench.ts';
 
 const SECTIONS = {
   phong: '## Compute against instanced tessellation, pass by pass',
@@ -235,7 +235,7 @@ triangle, so the same triangle count). *build ms*: compute, its whole rebuild (n
 changes); instanced, its level pass (levels, buckets, draw records)${cc ? " plus the patch build (the compute run's subdivision stage: the same pass on the same data)" : ''}. *lit pass*: 1920×1080, no culling for
 either; *shadow pass*: 2048², depth only. *memory held*: compute, its stored mesh (32 bytes a vertex, 12 a
 triangle; work buffers and capacity slack not counted); instanced, every buffer it holds${cc ? '; both plus the Catmull-Clark tables and refined points they read' : ''}. ${
-    /swiftshader/i.test(adapterName)
+    isSwiftShader(adapterName)
       ? `On SwiftShader (a
 CPU rasteriser) the vertex shader's cost is paid per vertex on the CPU: the ratios between rows are what
 carry over, not the milliseconds (a real GPU's tables: the section 'On a real GPU', bench/gpu/).`

@@ -9,7 +9,7 @@
 // than anything the reference has there, so not a silhouette moved by a pixel (the reference's
 // neighbourhood then holds both sides), and a dot, not a region (a shadow edge or shading that
 // differs over an area). A dotted line counts: each of its pixels has two dark neighbours of
-// eight. The screenshots' PNG bytes are decoded here (decodePng, zlib from Node).
+// eight. The screenshots' PNG bytes are decoded by pngjs.
 //
 // SPECKLE_DUMP=DIR writes each case's frame, reference, and the frame with its speckles ringed.
 //
@@ -46,7 +46,6 @@ import { expect, test, type Page } from '@playwright/test';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { PNG } from 'pngjs';
-import { inflateSync } from 'node:zlib';
 
 /** Luminance (0..1) difference a speckle must exceed. */
 const SPECKLE_THRESHOLD = 0.1;
@@ -57,61 +56,10 @@ interface Image {
   rgba: Uint8Array;
 }
 
-/** A minimal PNG decoder: 8-bit RGB or RGBA, not interlaced (what Chromium's screenshots are). */
+/** A screenshot's pixels, RGBA (pngjs). */
 function decodePng(png: Buffer): Image {
-  const sig = [137, 80, 78, 71, 13, 10, 26, 10];
-  if (!sig.every((b, i) => png[i] === b)) throw new Error('not a PNG');
-  let width = 0,
-    height = 0,
-    colorType = 0;
-  const idat: Buffer[] = [];
-  for (let at = 8; at < png.length; ) {
-    const len = png.readUInt32BE(at);
-    const type = png.toString('latin1', at + 4, at + 8);
-    const data = png.subarray(at + 8, at + 8 + len);
-    if (type === 'IHDR') {
-      width = data.readUInt32BE(0);
-      height = data.readUInt32BE(4);
-      const depth = data[8];
-      colorType = data[9];
-      if (depth !== 8 || (colorType !== 2 && colorType !== 6) || data[12] !== 0)
-        throw new Error(`unsupported PNG: depth ${depth}, colour type ${colorType}, interlace ${data[12]}`);
-    } else if (type === 'IDAT') idat.push(data);
-    else if (type === 'IEND') break;
-    at += 12 + len;
-  }
-  const bpp = colorType === 6 ? 4 : 3;
-  const raw = inflateSync(Buffer.concat(idat));
-  const stride = width * bpp;
-  const out = new Uint8Array(width * height * 4);
-  const line = new Uint8Array(stride);
-  const prev = new Uint8Array(stride);
-  for (let y = 0; y < height; y++) {
-    const filter = raw[y * (stride + 1)];
-    const src = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
-    for (let i = 0; i < stride; i++) {
-      const a = i >= bpp ? line[i - bpp] : 0,
-        b = prev[i],
-        c = i >= bpp ? prev[i - bpp] : 0;
-      let p = 0;
-      if (filter === 1) p = a;
-      else if (filter === 2) p = b;
-      else if (filter === 3) p = (a + b) >> 1;
-      else if (filter === 4) {
-        const pa = Math.abs(b - c),
-          pb = Math.abs(a - c),
-          pc = Math.abs(a + b - 2 * c);
-        p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-      } else if (filter !== 0) throw new Error(`bad PNG filter ${filter}`);
-      line[i] = (src[i] + p) & 255;
-    }
-    for (let x = 0; x < width; x++) {
-      for (let k = 0; k < 3; k++) out[4 * (y * width + x) + k] = line[x * bpp + k];
-      out[4 * (y * width + x) + 3] = bpp === 4 ? line[x * bpp + 3] : 255;
-    }
-    prev.set(line);
-  }
-  return { width, height, rgba: out };
+  const { width, height, data } = PNG.sync.read(png);
+  return { width, height, rgba: new Uint8Array(data) };
 }
 
 function luminance(img: Image, x: number, y: number): number {
