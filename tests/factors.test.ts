@@ -161,6 +161,44 @@ describe('face parameters for --params', () => {
       { numRuns: 500 },
     );
   });
+  it('fans a face of five or more corners round a centre vertex: its corner 0 maps to the face centre, the spokes to the kite edges', () => {
+    // A non-planar hexagon with one hole face beside it: the centre is the corners' mean with
+    // the face's (Newell) normal, after the cage's vertices; triangle k is (centre, k, k + 1).
+    const n = 6;
+    const pos: number[] = [];
+    for (let k = 0; k < n; k++) pos.push(Math.cos((2 * Math.PI * k) / n) * (1 + 0.1 * k), Math.sin((2 * Math.PI * k) / n), 0.05 * (k % 2));
+    const cage = makeCage(pos, [[0, 1, 2, 3, 4, 5]]);
+    const mesh = prepareMesh(cage);
+    expect([mesh.cageVertexCount, mesh.vertexCount, mesh.triangleCount, mesh.edgeCount]).toEqual([6, 7, 6, 12]);
+    expect(Array.from(mesh.triFan)).toEqual([0, 1, 2, 3, 4, 5]);
+    for (let k = 0; k < n; k++) expect(Array.from(mesh.triVerts.subarray(3 * k, 3 * k + 3))).toEqual([6, k, (k + 1) % n]);
+    for (let c = 0; c < 3; c++) {
+      let mean = 0;
+      for (let k = 0; k < n; k++) mean += pos[3 * k + c] / n;
+      expect(mesh.positions[18 + c]).toBeCloseTo(mean, 6);
+    }
+    expect(mesh.normals[20]).toBeGreaterThan(0.99); // the face's normal, nearly +z
+    // The parameter: the centre is (1, 1) of a sub-face; corner k is (0, 0) of sub-face k; the
+    // spoke's midpoint lies on the kite edge from the centre towards corner k, at s = 0.
+    const centre = faceParam(mesh, cage, 2, [1, 0, 0]) as { k: number; s: number; t: number };
+    expect([centre.s, centre.t]).toEqual([1, 1]);
+    const corner = faceParam(mesh, cage, 2, [0, 1, 0]) as { k: number; s: number; t: number };
+    expect(corner.k).toBe(2);
+    expect(Math.abs(corner.s) + Math.abs(corner.t)).toBeLessThan(1e-12);
+    const spoke = faceParam(mesh, cage, 2, [0.5, 0.5, 0]) as { k: number; s: number; t: number };
+    expect(spoke.k).toBe(2);
+    expect(spoke.s).toBeCloseTo(spoke.t, 9);
+    // Points of one triangle never leave its two kites (k and k + 1).
+    fc.assert(
+      fc.property(fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (a, b) => {
+        const w = [a, b * (1 - a), (1 - a) * (1 - b)] as [number, number, number];
+        if (w[0] > 1 - 1e-9) return; // at the centre every sub-face is right
+        const p = faceParam(mesh, cage, 2, w) as { k: number; s: number; t: number };
+        expect([2, 3]).toContain(p.k);
+      }),
+      { numRuns: 300 },
+    );
+  });
   it('inverts a bilinear map', () => {
     const a = [0, 0],
       b = [2, 0.2],

@@ -37,7 +37,8 @@ describe('instanced patches, levels and snap on the CPU', () => {
       const cage = loadCage(text).cage;
       const prepared = prepareMesh(cage);
       const m = prepareInstanced(cage, prepared);
-      // Quads are quad patches; every other face gives its n − 2 fan triangles.
+      // Quads are quad patches; a triangle is one triangle patch, and an n-gon (n ≥ 5) its n
+      // triangles round its centre (prepare.ts).
       let quads = 0,
         tris = 0;
       const cageEdges = new Set<string>();
@@ -46,7 +47,7 @@ describe('instanced patches, levels and snap on the CPU', () => {
         const s = cage.faceOffsets[f],
           n = cage.faceOffsets[f + 1] - s;
         if (n === 4) quads++;
-        else tris += n - 2;
+        else tris += n === 3 ? 1 : n;
         for (let k = 0; k < n; k++) {
           const a = cage.faceIndices[s + k],
             b = cage.faceIndices[s + ((k + 1) % n)];
@@ -54,13 +55,13 @@ describe('instanced patches, levels and snap on the CPU', () => {
         }
       }
       expect([m.quadCount, m.triCount]).toEqual([quads, tris]);
-      // An n-gon (n ≥ 5) adds its n − 3 fan diagonals as edges between its triangle patches.
-      let fanDiagonals = 0;
+      // An n-gon (n ≥ 5) adds its n spokes from the centre as edges between its triangle patches.
+      let spokes = 0;
       for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
         const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
-        if (!cage.holes.includes(f) && n >= 5) fanDiagonals += n - 3;
+        if (!cage.holes.includes(f) && n >= 5) spokes += n;
       }
-      expect(m.edgeCount).toBe(cageEdges.size + fanDiagonals);
+      expect(m.edgeCount).toBe(cageEdges.size + spokes);
 
       // Each edge: at most two patches, walking it in opposite directions (a consistently
       // oriented cage), so exactly one of them walks it canonically.

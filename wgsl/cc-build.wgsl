@@ -1,19 +1,19 @@
 // Catmull-Clark patch build ("subdivision"), run whenever the cage moves: every point the
 // evaluator reads, made from the current cage positions by the topology-only data of
-// src/gpu/cc/build.ts (its header has the layouts). Its declarations are generated (below). Points are f32 xyz: the cage positions (index < nVerts)
+// src/gpu/cc/build.ts (its header has the layouts). Its declarations are generated (below). Points are f32 xyz: the cage positions (index < ccCageVerts)
 // then, from params.offCtrl in cageBuf, the refined levels, the fans' slices and limits.
 //   points   one thread per point of one level's range (face points, then in a second dispatch
 //            edge and vertex points, which read the new face points), its rule from its word
 //   slices   the EV slice kernel: one thread per sector, several fans per workgroup, the fan's
 //            2-ring ping-ponged in workgroup memory, one Catmull-Clark step per iteration
 //   limits   one thread per fan: limit position and tangents of its centre (notes §2)
-//   vlimits  one thread per cage vertex: its fan's limit where the factor rule reads it
+//   vlimits  one thread per prepared vertex: its fan's limit where the factor rule reads it
 
 // Declared by the generated prelude (src/gpu/contract.ts ccBuildPrelude): Params, the constants
 // (WORKGROUP_SIZE, GRID_X, CC_NONE), `range` and the bindings params, staticBuf, cageBuf; then
 // the packed words' getters (src/gpu/cc/words.ts).
 
-fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.nVerts), 3u * p, p < params.nVerts); }
+fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts); }
 fn pt(p: u32) -> vec3<f32> {
   let o = ptAt(p);
   return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
@@ -42,7 +42,7 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (i >= range.count) { return; }
   let p = range.first + i;
-  let r = params.ccRules + 2u * (p - params.nVerts);
+  let r = params.ccRules + 2u * (p - params.ccCageVerts);
   let w0 = staticBuf[r];
   let first = staticBuf[r + 1u];
   let kind = ccRuleWord_kind(w0);
@@ -310,14 +310,15 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   setPt(lb + 2u, T2);
 }
 
-// One thread per cage vertex: its limit position and normal, where the factor rule and the
-// flat baseline read them.
+// One thread per prepared vertex (the cage's, then the face centres of src/gpu/prepare.ts):
+// its limit position and normal, where the factor rule and the flat baseline read them.
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let v = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
   if (v >= params.nVerts) { return; }
   let fan = staticBuf[params.ccVertexFan + v];
-  var p = pt(v);
+  let o = params.offPositions + 3u * v;
+  var p = vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
   var nn = vec3<f32>(cageBuf[params.offNormals + 3u * v], cageBuf[params.offNormals + 3u * v + 1u], cageBuf[params.offNormals + 3u * v + 2u]);
   if (fan != CC_NONE && ccVertexLimitWord_crease(fan) == 1u) {
     // On a straight semi-sharp crease σ = k + f (build.ts creaseVertexGrid: 3×3 points at 3a + b,

@@ -100,13 +100,16 @@ fn dispUvFrame(t: u32, w: vec3<f32>) -> UvFrame {
     if (first) { return UvFrame(f.uv, f.d1, f.d1 + f.d2); }
     return UvFrame(f.uv, f.d1 + f.d2, f.d2);
   }
-  let c0 = cornerUv(h0);
-  let c1 = cornerUv(h0 + fan);
-  let c2 = cornerUv(h0 + fan + 1u);
-  if (n == 3u) { return UvFrame(w.x * c0 + w.y * c1 + w.z * c2, c1 - c0, c2 - c0); }
+  if (n == 3u) {
+    let c0 = cornerUv(h0);
+    let c1 = cornerUv(h0 + 1u);
+    let c2 = cornerUv(h0 + 2u);
+    return UvFrame(w.x * c0 + w.y * c1 + w.z * c2, c1 - c0, c2 - c0);
+  }
   // n ≥ 5: the point in the regular n-gon, its kite k (the corner nearest in angle) and (s, t)
-  // by Newton on the kite's bilinear map, whose Jacobian then carries ∂/∂w into ∂/∂(s, t).
-  let A0 = ngonCorner(n, 0u);
+  // by Newton on the kite's bilinear map, whose Jacobian then carries ∂/∂w into ∂/∂(s, t). The
+  // triangle is (centre, fan, fan + 1) when centred (prepare.ts), the centre at the origin.
+  let A0 = select(ngonCorner(n, 0u), vec2<f32>(0.0), dispTriWord_centred(info) == 1u);
   let q1 = ngonCorner(n, fan) - A0;
   let q2 = ngonCorner(n, fan + 1u) - A0;
   let p = A0 + w.y * q1 + w.z * q2;

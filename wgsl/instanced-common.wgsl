@@ -6,12 +6,12 @@
 // Buffers:
 //   staticBuf  u32 words, written once per cage (src/gpu/instanced.ts uploadStatic):
 //                triVerts   3 per cage triangle (src/gpu/prepare.ts: quads split along 0–2,
-//                           n-gons fanned from corner 0)
+//                           n-gons fanned round a centre vertex)
 //                patches    PATCH_WORDS per patch: firstTri, flags, e0, e1, e2, e3, face, 0
 //                           flags bit 0: triangle domain; bit 1 + k: edge k walked canonically
 //                           (its corner k has the lower cage vertex id); patches are the quads
-//                           (ids 0 .. nQuads−1), then the triangles (cage triangles and the fan
-//                           triangles of n-gons)
+//                           (ids 0 .. nQuads−1), then the triangles (cage triangles and the
+//                           triangles round each n-gon's centre)
 //                edgeOwner  1 per edge: patch · 4 + local edge (the patch that measures it)
 //                patternIJ  1 per pattern vertex: i | j << 16 (src/pattern/pow2.ts packPatterns)
 //                patternIdx the patterns' local indices (the headless pass reads them)

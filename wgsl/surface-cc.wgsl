@@ -15,7 +15,7 @@
 
 
 fn ccP(p: u32) -> vec3<f32> {
-  let o = select(params.offCtrl + 3u * (p - params.nVerts), 3u * p, p < params.nVerts);
+  let o = select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts);
   return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
 }
 
@@ -374,11 +374,12 @@ fn ccCorner(poly: u32, n: u32, k: u32) -> vec2<f32> {
 
 // Sub-face k of an n-gon and (s,t): the kite round corner k of the regular n-gon, inverted by
 // Newton (the map is bilinear and the kites are convex). Also (∂s/∂w_i, ∂t/∂w_i) for the
-// tangents: J⁻¹ (corner − corner 0) with J the kite map's Jacobian at the solution.
+// tangents: J⁻¹ (corner − corner 0) with J the kite map's Jacobian at the solution. The
+// triangle's corner 0 is the n-gon's corner 0, or its centre (the origin) when `centred`.
 struct CCNgonParam { kst: vec3<f32>, d1: vec2<f32>, d2: vec2<f32> }
 
-fn ccNgonParam(poly: u32, n: u32, fan: u32, w: vec3<f32>) -> CCNgonParam {
-  let c0 = ccCorner(poly, n, 0u);
+fn ccNgonParam(poly: u32, n: u32, fan: u32, centred: bool, w: vec3<f32>) -> CCNgonParam {
+  let c0 = select(ccCorner(poly, n, 0u), vec2<f32>(0.0), centred);
   let q1 = ccCorner(poly, n, fan) - c0;
   let q2 = ccCorner(poly, n, fan + 1u) - c0;
   let p = w.x * c0 + w.y * ccCorner(poly, n, fan) + w.z * ccCorner(poly, n, fan + 1u);
@@ -423,6 +424,7 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let info = staticBuf[params.ccTri + 3u * t + 1u];
   let n = ccTriWord_corners(info);
   let fan = ccTriWord_fan(info);
+  let centred = ccTriWord_centred(info) == 1u;
   let dd = ccTriWord_depth(info);
   // The face parameter (sub-face k, x, y), then one call of the region evaluator (a single
   // call site keeps the inlined shader small).
@@ -436,7 +438,7 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
     d1 = select(vec2<f32>(1.0, 1.0), vec2<f32>(1.0, 0.0), first);
     d2 = select(vec2<f32>(0.0, 1.0), vec2<f32>(1.0, 1.0), first);
   } else {
-    let np = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, w);
+    let np = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, centred, w);
     kxy = np.kst;
     d1 = np.d1;
     d2 = np.d2;

@@ -492,12 +492,12 @@ export const TESS_STATIC = defineArena<
 
 /**
  * Word 3t + 1 of dispTri (word 3t is the first corner of the triangle's face in cornerUvs, word
- * 3t + 2 the face): the
- * face's corner count and which fan triangle of it t is (prepare.ts: corners (0, fan, fan + 1)),
- * from which wgsl/displace.wgsl maps the triangle's weights to the face parameter that the uvs
- * are interpolated over (src/mesh/uv.ts: bilinear on quads, the kite sub-faces on other faces).
+ * 3t + 2 the face): the face's corner count and which triangle of it t is (prepare.ts triFan:
+ * corners (0, fan, fan + 1), or (centre, fan, fan + 1 mod n) when centred), from which
+ * wgsl/displace.wgsl maps the triangle's weights to the face parameter that the uvs are
+ * interpolated over (src/mesh/uv.ts: bilinear on quads, the kite sub-faces on other faces).
  */
-export const DISP_TRI_WORD = defineBits('DispTriWord', { corners: [0, 16], fan: [16, 16] });
+export const DISP_TRI_WORD = defineBits('DispTriWord', { corners: [0, 15], centred: [15, 1], fan: [16, 16] });
 
 /**
  * Per triangle with an ACC surface (wgsl/surface-acc-tess.wgsl): its ACC patch (= cage face) and
@@ -509,7 +509,7 @@ export const ACC_TRI_WORD = defineBits('AccTriWord', { corners: [0, 6], face: [6
 
 /**
  * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each;
- * with the Catmull-Clark surface, its refined points (point p ≥ nVerts at offCtrl + 3(p − nVerts))
+ * with the Catmull-Clark surface, its refined points (point p ≥ ccCageVerts at offCtrl + 3(p − ccCageVerts))
  * and the limit positions and normals of the cage vertices (wgsl/cc-build.wgsl writes them).
  */
 export const TESS_CAGE = defineArena<
@@ -621,6 +621,7 @@ export const TESS_PARAMS = defineStruct('Params', [
   ['offFactorPos', 'u32'],
   ['offFactorNormal', 'u32'],
   // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables and their sizes.
+  ['ccCageVerts', 'u32', 'Points p below it are the cage vertices (cageBuf 3p), the rest refined points (offCtrl).'],
   ['ccTri', 'u32'],
   ['ccPoly', 'u32'],
   ['ccRegions', 'u32'],

@@ -10,7 +10,8 @@
  *                             per word for 16-bit ones: 1 or 2 bytes a texel, as the talk counts.
  *   TESS_STATIC dispTri       per triangle three words: its face's first corner
  *                             (faceOffsets[f]), DISP_TRI_WORD (the face's corner count, the fan
- *                             index k of its triangle (0, k, k + 1): src/gpu/prepare.ts), and the
+ *                             index k of its triangle (0, k, k + 1), or (centre, k, k + 1) when
+ *                             centred: src/gpu/prepare.ts triFan), and the
  *                             face f itself (for surfaces addressed by face, e.g. ACC patches).
  *   TESS_STATIC dispEdge      per edge, three f32 words for the factor rule: the lowest and
  *                             highest SAMPLE value (in [0, 1]) a lookup on either face of the edge
@@ -35,7 +36,7 @@ import type { Cage } from '../mesh/types.ts';
 import type { HeightMap, HeightWrap } from '../mesh/heightmap.ts';
 import { faceCornerUvs, faceSampleRange } from '../mesh/uv.ts';
 import { DISP_TRI_WORD } from './contract.ts';
-import type { PreparedMesh } from './prepare.ts';
+import { CENTRE_FAN_MIN_CORNERS, type PreparedMesh } from './prepare.ts';
 
 /** What may change without re-uploading the map: the uniforms. */
 export interface DisplacementSettings {
@@ -80,28 +81,32 @@ export function prepareDisplacement(cage: Cage, mesh: PreparedMesh, map: HeightM
   const edgeLo = new Float32Array(mesh.edgeCount).fill(1);
   const edgeHi = new Float32Array(mesh.edgeCount).fill(0);
   const edgeTexels = new Float32Array(mesh.edgeCount);
-  let fan = 0;
   for (let t = 0; t < nt; t++) {
     const f = mesh.triFace[t];
-    fan = t > 0 && mesh.triFace[t - 1] === f ? fan + 1 : 1;
+    const fan = mesh.triFan[t];
     const h0 = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - h0;
-    if (n > 0xffff) throw new RangeError(`face ${f} has ${n} corners; displacement handles up to 65535`);
+    if (n > 0x7fff) throw new RangeError(`face ${f} has ${n} corners; displacement handles up to 32767`);
+    const centred = n >= CENTRE_FAN_MIN_CORNERS;
     dispTri[3 * t] = h0;
-    dispTri[3 * t + 1] = DISP_TRI_WORD.pack({ corners: n, fan });
+    dispTri[3 * t + 1] = DISP_TRI_WORD.pack({ corners: n, centred: centred ? 1 : 0, fan });
     dispTri[3 * t + 2] = f;
-    // The triangle's corners are the face's corners 0, fan, fan + 1.
-    const corner = [h0, h0 + fan, h0 + fan + 1];
+    // The triangle's corners' uvs: the face's corners 0 (or its centre: their mean), fan, fan + 1.
+    const uvOf = (j: number): [number, number] => [cornerUvs[2 * (h0 + (j % n))], cornerUvs[2 * (h0 + (j % n)) + 1]];
+    const centre: [number, number] = [0, 0];
+    if (centred)
+      for (let j = 0; j < n; j++) {
+        centre[0] += uvOf(j)[0] / n;
+        centre[1] += uvOf(j)[1] / n;
+      }
+    const corner = [centred ? centre : uvOf(0), uvOf(fan), uvOf(fan + 1)];
     for (let i = 0; i < 3; i++) {
       const e = mesh.triEdges[3 * t + i];
       edgeLo[e] = Math.min(edgeLo[e], range[2 * f]);
       edgeHi[e] = Math.max(edgeHi[e], range[2 * f + 1]);
       const a = corner[i],
         b = corner[(i + 1) % 3];
-      const texels = Math.hypot(
-        (cornerUvs[2 * b] - cornerUvs[2 * a]) * map.width,
-        (cornerUvs[2 * b + 1] - cornerUvs[2 * a + 1]) * map.height,
-      );
+      const texels = Math.hypot((b[0] - a[0]) * map.width, (b[1] - a[1]) * map.height);
       edgeTexels[e] = Math.max(edgeTexels[e], texels);
     }
   }

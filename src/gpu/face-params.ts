@@ -5,10 +5,11 @@
  * k→k+1 (1,0), the face centre (1,1) and the midpoint of edge k−1→k (0,1)).
  *
  * A quad is split along its 0–2 diagonal (prepare.ts), so its two triangles map linearly:
- * (c0,c1,c2) → (u,v) = (w1 + w2, w2) and (c0,c2,c3) → (w1, w1 + w2). A face with n ≠ 4 corners
- * is fanned from corner 0; its triangles map linearly into the regular n-gon, where sub-face k
- * is the kite around corner k and (s, t) inverts the kite's bilinear map. For a triangle this is
- * the closed form of the notes (k = argmax w, s = 2·w_{k+1} along edge k→k+1).
+ * (c0,c1,c2) → (u,v) = (w1 + w2, w2) and (c0,c2,c3) → (w1, w1 + w2). A triangle, and each
+ * triangle (centre, k, k + 1) of a face fanned round its centre (n ≥ 5, prepare.ts), maps
+ * linearly into the regular n-gon (the centre at its origin), where sub-face k is the kite
+ * around corner k and (s, t) inverts the kite's bilinear map. For a triangle this is the closed
+ * form of the notes (k = argmax w, s = 2·w_{k+1} along edge k→k+1).
  */
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../mesh/types.ts';
@@ -42,9 +43,10 @@ export function faceParam(mesh: PreparedMesh, cage: Cage, t: number, w: readonly
   const face = mesh.triFace[t];
   const start = cage.faceOffsets[face];
   const n = cage.faceOffsets[face + 1] - start;
-  // Corner indices (within the face) of the triangle's three corners.
+  // Corner indices (within the face) of the triangle's three corners; -1: the face's centre.
   const local = [0, 1, 2].map((i) => {
     const v = mesh.triVerts[3 * t + i];
+    if (v >= mesh.cageVertexCount) return -1;
     for (let k = 0; k < n; k++) if (cage.faceIndices[start + k] === v) return k;
     throw new Error(`triangle ${t} is not on face ${face}`);
   });
@@ -64,7 +66,7 @@ export function faceParam(mesh: PreparedMesh, cage: Cage, t: number, w: readonly
     return { face, u, v };
   }
   // Point in the regular n-gon.
-  const corner = (k: number) => [Math.cos((2 * Math.PI * k) / n), Math.sin((2 * Math.PI * k) / n)];
+  const corner = (k: number) => (k < 0 ? [0, 0] : [Math.cos((2 * Math.PI * k) / n), Math.sin((2 * Math.PI * k) / n)]);
   const p: [number, number] = [0, 0];
   for (let i = 0; i < 3; i++) {
     const c = corner(local[i]);

@@ -166,17 +166,19 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
   const holes = new Set(cage.holes);
   const quads: { tri: number; face: number; c: number[] }[] = [];
   const tris: { tri: number; face: number; c: number[] }[] = [];
+  // A quad is one patch (its first prepared triangle's id); every other face gives its prepared
+  // triangles (a triangle itself, or the fan round an n-gon's centre) as triangle patches.
   let t = 0;
   for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
     if (holes.has(f)) continue;
     const s = cage.faceOffsets[f],
       n = cage.faceOffsets[f + 1] - s;
     if (n < 3) continue;
-    if (n === 4) quads.push({ tri: t, face: f, c: Array.from(cage.faceIndices.subarray(s, s + 4)) });
-    else
-      for (let k = 0; k < n - 2; k++)
-        tris.push({ tri: t + k, face: f, c: Array.from(prepared.triVerts.subarray(3 * (t + k), 3 * (t + k) + 3)) });
-    t += n - 2;
+    if (prepared.triFace[t] !== f) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
+    const first = t;
+    while (t < prepared.triangleCount && prepared.triFace[t] === f) t++;
+    if (n === 4) quads.push({ tri: first, face: f, c: Array.from(cage.faceIndices.subarray(s, s + 4)) });
+    else for (let k = first; k < t; k++) tris.push({ tri: k, face: f, c: Array.from(prepared.triVerts.subarray(3 * k, 3 * k + 3)) });
   }
   if (t !== prepared.triangleCount) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
   const all = [...quads, ...tris];

@@ -2,13 +2,23 @@
  * CPU preparation of a cage for the compute tessellator, done once per model: plain flat
  * arrays that the GPU passes read (cage → topology → patches in the data flow).
  *
- *  - Faces are split into triangles (quads along the 0–2 diagonal, n-gons as a fan from corner
- *    0); faces without a limit surface are dropped: tagged holes, and under boundary
+ *  - Faces are split into triangles: a triangle is itself, a quad is cut along its 0–2 diagonal
+ *    (triangles (0, 1, 2) and (0, 2, 3)), and a face with n ≥ CENTRE_FAN_MIN_CORNERS corners is
+ *    a fan of n triangles (centre, k, k + 1) round a new vertex at its centre. Why the centre:
+ *    Catmull-Clark's parametrization of an n-gon is singular at its centre (an extraordinary
+ *    point of valence n, whose sub-faces shrink like r^0.64 for n = 16), so a fan from corner 0
+ *    sends long thin triangles across that point, and a straight row of the pattern in one of
+ *    them bends on the surface by more than the sliver is wide: the pawn's 16-gon and the gear's
+ *    7-gons folded 124 and 125 triangles at factor 8 that way. Round the centre every triangle
+ *    has the singular point at a corner, and none folds (tests/cc-folds.node.test.ts). The
+ *    centre vertices come after the cage's (index ≥ cageVertexCount), one per such face in
+ *    face order; a centre lies at the mean of the face's corners with the face's normal.
+ *    Faces without a limit surface are dropped: tagged holes, and under boundary
  *    interpolation 'none' the faces at an unsharpened boundary (OpenSubdiv's rule, as
  *    computeSharpness), so no surface evaluates a face the subdivision says is not there.
  *    Each triangle keeps its source face.
- *  - Vertex normals: area-weighted (the sum of the faces' cross products), for Phong
- *    tessellation and for the adaptive factor rule.
+ *  - Vertex normals: area-weighted (the sum of the faces' cross products, Newell's), for Phong
+ *    tessellation and for the adaptive factor rule; a centre vertex has its one face's.
  *  - Edges: every undirected edge of the triangulation once, canonically from its lower to
  *    its higher vertex index. The factor of an edge is computed and stored once per edge, so the
  *    two triangles of an edge can never disagree; its line runs in that canonical direction.
@@ -20,13 +30,19 @@ import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../mesh/index.
 import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
 import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from './contract.ts';
 
+/** Faces with at least this many corners are fanned round a centre vertex (see above). */
+export const CENTRE_FAN_MIN_CORNERS = 5;
+
 export interface PreparedMesh {
+  /** Cage vertices, then one centre vertex per face fanned round its centre. */
   vertexCount: number;
+  /** The cage's vertex count: vertices below it are the cage's (same index), the rest centres. */
+  cageVertexCount: number;
   triangleCount: number;
   edgeCount: number;
-  /** xyz per cage vertex (f32). */
+  /** xyz per vertex (f32): the cage's positions, then the centres. */
   positions: Float32Array;
-  /** Unit vertex normals, xyz per cage vertex (f32). */
+  /** Unit vertex normals, xyz per vertex (f32). */
   normals: Float32Array;
   /** Three cage vertices per triangle. */
   triVerts: Uint32Array;
@@ -36,6 +52,9 @@ export interface PreparedMesh {
   triPatternFrame: Uint32Array;
   /** Source face of each triangle. */
   triFace: Uint32Array;
+  /** Which triangle of its face each is, by the face corners it spans: k for (0, k, k + 1) of a
+   * triangle or quad (k = 1, 2), or for (centre, k, k + 1 mod n) of a centre-fanned face. */
+  triFan: Uint32Array;
   /** Two cage vertices per edge, lower index first. */
   edgeVerts: Uint32Array;
   /** One triangle of each edge and the edge's local index in it (an OwnerWord, contract.ts). */
@@ -72,43 +91,70 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
   const holes = holeFaces(cage, options);
   const tris: number[] = [];
   const faces: number[] = [];
+  const fans: number[] = [];
   const nFaces = cage.faceOffsets.length - 1;
+  const P = cage.positions;
+  // Newell's normal of every face: robust for non-planar polygons, area-weighted.
+  const faceNormal = new Float64Array(3 * nFaces);
+  for (let f = 0; f < nFaces; f++) {
+    const s = cage.faceOffsets[f];
+    const n = cage.faceOffsets[f + 1] - s;
+    for (let k = 0; k < n; k++) {
+      const a = cage.faceIndices[s + k],
+        b = cage.faceIndices[s + ((k + 1) % n)];
+      faceNormal[3 * f] += (P[3 * a + 1] - P[3 * b + 1]) * (P[3 * a + 2] + P[3 * b + 2]);
+      faceNormal[3 * f + 1] += (P[3 * a + 2] - P[3 * b + 2]) * (P[3 * a] + P[3 * b]);
+      faceNormal[3 * f + 2] += (P[3 * a] - P[3 * b]) * (P[3 * a + 1] + P[3 * b + 1]);
+    }
+  }
+  const centreFace: number[] = [];
   for (let f = 0; f < nFaces; f++) {
     if (holes.has(f)) continue;
     const s = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - s;
+    if (n >= CENTRE_FAN_MIN_CORNERS) {
+      const c = nV + centreFace.length;
+      centreFace.push(f);
+      for (let k = 0; k < n; k++) {
+        tris.push(c, cage.faceIndices[s + k], cage.faceIndices[s + ((k + 1) % n)]);
+        faces.push(f);
+        fans.push(k);
+      }
+      continue;
+    }
     for (let k = 1; k + 1 < n; k++) {
       tris.push(cage.faceIndices[s], cage.faceIndices[s + k], cage.faceIndices[s + k + 1]);
       faces.push(f);
+      fans.push(k);
     }
   }
   const nT = tris.length / 3;
+  const nVAll = nV + centreFace.length;
 
-  const P = cage.positions;
-  const acc = new Float64Array(3 * nV);
+  const acc = new Float64Array(3 * nVAll);
   for (let f = 0; f < nFaces; f++) {
-    // Newell's method: robust for non-planar polygons, area-weighted.
     const s = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - s;
-    let nx = 0,
-      ny = 0,
-      nz = 0;
-    for (let k = 0; k < n; k++) {
-      const a = cage.faceIndices[s + k],
-        b = cage.faceIndices[s + ((k + 1) % n)];
-      nx += (P[3 * a + 1] - P[3 * b + 1]) * (P[3 * a + 2] + P[3 * b + 2]);
-      ny += (P[3 * a + 2] - P[3 * b + 2]) * (P[3 * a] + P[3 * b]);
-      nz += (P[3 * a] - P[3 * b]) * (P[3 * a + 1] + P[3 * b + 1]);
-    }
     for (let k = 0; k < n; k++) {
       const v = cage.faceIndices[s + k];
-      acc[3 * v] += nx;
-      acc[3 * v + 1] += ny;
-      acc[3 * v + 2] += nz;
+      for (let c = 0; c < 3; c++) acc[3 * v + c] += faceNormal[3 * f + c];
     }
   }
-  const normals = new Float32Array(3 * nV);
-  for (let v = 0; v < nV; v++) {
+  const positions = new Float32Array(3 * nVAll);
+  positions.set(P);
+  centreFace.forEach((f, j) => {
+    const s = cage.faceOffsets[f];
+    const n = cage.faceOffsets[f + 1] - s;
+    const v = nV + j;
+    for (let c = 0; c < 3; c++) {
+      let sum = 0;
+      for (let k = 0; k < n; k++) sum += P[3 * cage.faceIndices[s + k] + c];
+      positions[3 * v + c] = sum / n;
+      acc[3 * v + c] = faceNormal[3 * f + c];
+    }
+  });
+  const normals = new Float32Array(3 * nVAll);
+  for (let v = 0; v < nVAll; v++) {
     const l = Math.hypot(acc[3 * v], acc[3 * v + 1], acc[3 * v + 2]);
     if (l > 0) for (let c = 0; c < 3; c++) normals[3 * v + c] = acc[3 * v + c] / l;
     else normals[3 * v + 2] = 1; // an unused or degenerate vertex: any unit vector
@@ -119,7 +165,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
   const edgeOwner: number[] = [];
   const triEdges = new Uint32Array(3 * nT);
   const triPatternFrame = new Uint32Array(nT);
-  const vertexOwner = new Uint32Array(nV).fill(NO_OWNER);
+  const vertexOwner = new Uint32Array(nVAll).fill(NO_OWNER);
   for (let t = 0; t < nT; t++) {
     const reverse: boolean[] = [];
     for (let i = 0; i < 3; i++) {
@@ -127,7 +173,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
         b = tris[3 * t + ((i + 1) % 3)];
       const lo = Math.min(a, b),
         hi = Math.max(a, b);
-      const key = lo * nV + hi;
+      const key = lo * nVAll + hi;
       let e = edgeIds.get(key);
       if (e === undefined) {
         e = edgeVerts.length / 2;
@@ -144,25 +190,27 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
 
   const bboxMin: [number, number, number] = [Infinity, Infinity, Infinity];
   const bboxMax: [number, number, number] = [-Infinity, -Infinity, -Infinity];
-  for (let v = 0; v < nV; v++) {
+  for (let v = 0; v < nVAll; v++) {
     if (vertexOwner[v] === NO_OWNER) continue;
     for (let c = 0; c < 3; c++) {
-      bboxMin[c] = Math.min(bboxMin[c], P[3 * v + c]);
-      bboxMax[c] = Math.max(bboxMax[c], P[3 * v + c]);
+      bboxMin[c] = Math.min(bboxMin[c], positions[3 * v + c]);
+      bboxMax[c] = Math.max(bboxMax[c], positions[3 * v + c]);
     }
   }
   const size = nT ? Math.hypot(bboxMax[0] - bboxMin[0], bboxMax[1] - bboxMin[1], bboxMax[2] - bboxMin[2]) : 0;
 
   return {
-    vertexCount: nV,
+    vertexCount: nVAll,
+    cageVertexCount: nV,
     triangleCount: nT,
     edgeCount: edgeVerts.length / 2,
-    positions: Float32Array.from(P),
+    positions,
     normals,
     triVerts: Uint32Array.from(tris),
     triEdges,
     triPatternFrame,
     triFace: Uint32Array.from(faces),
+    triFan: Uint32Array.from(fans),
     edgeVerts: Uint32Array.from(edgeVerts),
     edgeOwner: Uint32Array.from(edgeOwner),
     vertexOwner,

@@ -312,6 +312,7 @@ export class Tessellator {
       ...TESS_WORK.offsets(workLayout),
       offFactorPos: cc ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
       offFactorNormal: cc ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
+      ccCageVerts: cc?.cageVertexCount ?? 0,
       ccTri: ccBase + (cc?.offTri ?? 0),
       ccPoly: ccBase + (cc?.offPoly ?? 0),
       ccRegions: ccBase + (cc?.offRegions ?? 0),

@@ -59,8 +59,8 @@
  * those: semi-sharp axes decaying inside the slice kernel (fans eligible at once) and levels
  * refined only round the faces that need them.
  *
- * GPU point space (f32 xyz in cageBuf; index p < nVerts: the cage positions; p ≥ nVerts at
- * offPoints + 3(p − nVerts)):
+ * GPU point space (f32 xyz in cageBuf; index p < ccCageVerts, the cage's vertex count: the cage
+ * positions; p ≥ ccCageVerts at offPoints + 3(p − ccCageVerts)):
  *   [cage | level 1 | … | level G | fan slices | fan limits]
  *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary), all as OFFSETS from the
  *     fan's anchor (its centre at level s: f32 precision of deep levels, notes §6.7):
@@ -80,8 +80,9 @@
  *   Then the limits: P (absolute), T1, T2.
  *
  * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
- *   tri      3 per prepared triangle: first region of the face, n | fan k << 8 | depth << 28
- *            (depth counted inside the quad or inside the sub-face), first corner in `poly`
+ *   tri      3 per prepared triangle: first region of the face, CC_TRI_WORD (n, fan k, centred:
+ *            corners (centre, k, k + 1) else (0, k, k + 1), depth counted inside the quad or
+ *            inside the sub-face), first corner in `poly`
  *   poly     regular n-gon corners (cos, sin as f32 bits, f64 on the CPU)
  *   regions  2 per region, region (i, j) of sub-face k at base + k·4^dd + j·2^dd + i:
  *            w0 = CC_REGION_WORD (src/gpu/cc/words.ts): kind (1 patch, 2 sector) [0,2), rot
@@ -104,8 +105,9 @@
  *            vertex: parent rule << 2 | child rule << 4 | edges << 8 | faces << 20
  *   inputs   point indices read by the rules, each rule's followed by its parameters (edge:
  *            sharpness f32 if flagged; vertex with a non-smooth rule: ia | ib << 16, W f32)
- *   vfan     per cage vertex, CC_VERTEX_LIMIT_WORD: its fan (limit position and normal for the
- *            factor rule), or (crease bit) the word offset of its crease record in patchIdx, or ~0
+ *   vfan     per prepared vertex (the cage's, then the face centres of prepare.ts),
+ *            CC_VERTEX_LIMIT_WORD: its fan (limit position and normal for the factor rule), or
+ *            (crease bit) the word offset of its crease record in patchIdx, or ~0
  */
 import {
   type Cage,
@@ -121,7 +123,8 @@ import {
   vertexAdjacency,
   vertexRing,
 } from '../../mesh/index.ts';
-import type { PreparedMesh } from '../prepare.ts';
+import { CENTRE_FAN_MIN_CORNERS, type PreparedMesh } from '../prepare.ts';
+import { NO_OWNER, OWNER_WORD } from '../contract.ts';
 import { CC_FAN_WORD, CC_PAIR_WORD, CC_REGION_WORD, CC_RULE_WORD, CC_THREAD_WORD, CC_TRI_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 
 /** Patch colours for the demo ("show irregular patches"). */
@@ -202,7 +205,8 @@ export interface CatmullClarkData {
   regions: Uint32Array;
   fans: Uint32Array;
   triRegion: Uint32Array;
-  vertexCount: number;
+  /** The cage's vertex count: points p below it are the cage's vertices (the point space's base). */
+  cageVertexCount: number;
   /** Bytes of GPU subdivision data: static words + points (12 B each). */
   gpuBytes: number;
 }
@@ -960,9 +964,21 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     }
   }
 
-  // Every cage vertex's limit (the factor rule, the flat baseline) comes from its fan, or on a
-  // straight semi-sharp crease from the closed form (no level refined for it).
-  const vertexFan = new Uint32Array(nV0).fill(NONE);
+  // Every prepared vertex's limit (the factor rule, the flat baseline) comes from its fan, or on
+  // a straight semi-sharp crease from the closed form (no level refined for it). A cage vertex
+  // is x = v at level 0; a face's centre vertex (prepare.ts) is its face point, the level-1
+  // vertex nV + nE + f (a vertex point keeps its index at every finer level).
+  const vertexFan = new Uint32Array(prepared.vertexCount).fill(NONE);
+  for (let c = nV0; c < prepared.vertexCount; c++) {
+    const o = prepared.vertexOwner[c];
+    if (o === NO_OWNER) continue;
+    const f = prepared.triFace[OWNER_WORD.unpack(o).tri];
+    const x = nV0 + topo.nEdges + f;
+    let s = -1;
+    for (let l = 1; l <= MAX_LEVEL && s < 0; l++) if (isEligible(level(l), x)) s = l;
+    if (s < 0) throw new Error(`Catmull-Clark: no limit rule for the centre of face ${f}`);
+    vertexFan[c] = getFan(s, x, 0);
+  }
   for (let v = 0; v < nV0; v++) {
     if (topo.vertHeOffsets[v + 1] === topo.vertHeOffsets[v]) continue;
     if (!isEligible(levels[0], v)) {
@@ -1095,12 +1111,14 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const f = prepared.triFace[t];
     const start = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - start;
-    let k = -1;
-    for (let j = 1; j < n - 1; j++) if (cage.faceIndices[start + j] === prepared.triVerts[3 * t + 1]) k = j;
-    if (k < 0 || cage.faceIndices[start] !== prepared.triVerts[3 * t]) throw new Error(`triangle ${t} is not a fan triangle of face ${f}`);
+    const k = prepared.triFan[t];
+    const centred = n >= CENTRE_FAN_MIN_CORNERS;
+    const corner = (j: number) => cage.faceIndices[start + (j % n)];
+    if ((centred ? prepared.triVerts[3 * t] < nV0 : prepared.triVerts[3 * t] !== corner(0)) || prepared.triVerts[3 * t + 1] !== corner(k))
+      throw new Error(`triangle ${t} is not a fan triangle of face ${f}`);
     const dd = n === 4 ? faceDepth[f] : faceDepth[f] - 1;
     triRegion[3 * t] = faceRegion[f] >= 0 ? faceRegion[f] : NONE;
-    triRegion[3 * t + 1] = CC_TRI_WORD.pack({ corners: n, fan: k, depth: Math.max(0, dd) });
+    triRegion[3 * t + 1] = CC_TRI_WORD.pack({ corners: n, fan: k, centred: centred ? 1 : 0, depth: Math.max(0, dd) });
     if (n !== 4) {
       let at = polyAt.get(n);
       if (at === undefined) {
@@ -1163,7 +1181,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     regions: regionWords.view.slice(),
     fans: fanWords.view.slice(),
     triRegion,
-    vertexCount: nV0,
+    cageVertexCount: nV0,
     gpuBytes: 4 * total + 12 * pointCount,
   };
 }

@@ -63,10 +63,11 @@ export const CC_FAN_WORD = defineBits('CcFanWord', {
 export const CC_THREAD_WORD = defineBits('CcThreadWord', { fan: [0, 24], sector: [24, 8] });
 
 /**
- * Word 1 of a prepared triangle. corners: its face's (4: a quad); fan: which fan triangle of
- * the face it is (corners 0, fan, fan + 1); depth: the face's region depth inside the quad or
- * inside each n-gon sub-face.
+ * Word 1 of a prepared triangle. corners: its face's (4: a quad); fan: which triangle of the face
+ * it is (src/gpu/prepare.ts triFan): face corners (0, fan, fan + 1), or with centred set
+ * (centre, fan, fan + 1 mod n); depth: the face's region depth inside the quad or inside each
+ * n-gon sub-face.
  */
-export const CC_TRI_WORD = defineBits('CcTriWord', { corners: [0, 8], fan: [8, 20], depth: [28, 4] });
+export const CC_TRI_WORD = defineBits('CcTriWord', { corners: [0, 8], fan: [8, 19], centred: [27, 1], depth: [28, 4] });
 
 export const CC_WORDS = [CC_REGION_WORD, CC_VERTEX_LIMIT_WORD, CC_RULE_WORD, CC_PAIR_WORD, CC_FAN_WORD, CC_THREAD_WORD, CC_TRI_WORD];
