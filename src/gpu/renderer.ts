@@ -113,6 +113,10 @@ export interface ShadingResources {
 }
 
 const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
+/** An open surface's back faces are drawn this far behind its front faces (depthBias, in the
+ * depth format's units, and depthBiasSlopeScale): see the lit pipelines. */
+const BACK_FACE_DEPTH_BIAS = 4;
+const BACK_FACE_DEPTH_SLOPE = 4.0;
 /** Vertex buffers of the mesh: positions then normals, float32x3, tightly packed. */
 const MESH_BUFFERS: GPUVertexBufferLayout[] = [
   { arrayStride: 12, attributes: [{ shaderLocation: 0, offset: 0, format: 'float32x3' }] },
@@ -149,6 +153,7 @@ export class Renderer {
 
   /** [open, closed] (setMesh's `closed`). */
   #shadowPipelines: GPURenderPipeline[] = [];
+  /** [front faces, back faces]: a closed surface draws the first, an open one both (below). */
   #litPipelines: GPURenderPipeline[] = [];
   #closed = false;
   #groundPipeline: GPURenderPipeline;
@@ -164,8 +169,8 @@ export class Renderer {
   /** One u32 kind per source triangle (a single 0 when there are none). */
   #patchKinds: GPUBuffer;
   #patchBindGroup: GPUBindGroup | null = null;
-  /** The heat map (src/gpu/acc-heat.ts): [open, closed] pipelines, its layout, uniforms and the
-   * bind group of the values set (null: none). */
+  /** The heat map (src/gpu/acc-heat.ts): [front faces, back faces] pipelines as the lit ones,
+   * its layout, uniforms and the bind group of the values set (null: none). */
   #heatPipelines: GPURenderPipeline[] = [];
   #heatLayout: GPUBindGroupLayout | null = null;
   #heatUniforms: GPUBuffer;
@@ -311,14 +316,11 @@ export class Renderer {
       depthCompare: compare,
     });
 
-    // Each mesh pipeline twice, by the mesh's cage (setMesh): an open surface is drawn and casts
-    // from both faces (lit from whichever side is seen, render-lit.wgsl); a closed one culls its
-    // back faces, which otherwise fight the front faces along occlusion contours (the dotted
-    // brow of issue 13) and show where a thin sliver folds. Its shadow map keeps the faces turned
-    // AWAY from the light instead: the lit side then never shadows itself (culling those back
-    // faces there drew acne stripes all over the lit side).
+    // The shadow pipeline twice, by the mesh's cage (setMesh): an open surface casts from both
+    // faces; a closed one's shadow map keeps the faces turned AWAY from the light: the lit side
+    // then never shadows itself (culling those back faces there drew acne stripes all over the
+    // lit side).
     for (const closed of [false, true]) {
-      const cullMode: GPUCullMode = closed ? 'back' : 'none';
       this.#shadowPipelines[+closed] = device.createRenderPipeline({
         label: closed ? 'shadow pipeline (closed: faces towards the light culled)' : 'shadow pipeline (open: two-sided)',
         layout: pipelineLayout('shadow'),
@@ -327,23 +329,41 @@ export class Renderer {
         // Slope-scaled bias against acne on surfaces the light grazes.
         depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
       });
-      this.#litPipelines[+closed] = device.createRenderPipeline({
-        label: closed ? 'lit pipeline (closed: back faces culled)' : 'lit pipeline (open: two-sided)',
+    }
+    // The lit and heat pipelines by the faces they draw. A closed surface draws its front faces
+    // only: its back faces would fight them along occlusion contours (the dotted brow of issue
+    // 13) and show where a thin sliver folds. An open surface also draws its back faces (lit from
+    // the side seen, render-lit.wgsl), in a second draw pushed back by a slope-scaled depth bias:
+    // at an occlusion contour the tessellation folds over by a fraction of a pixel, the two
+    // sheets there lie at one depth and steep, and the bias lets the front sheet win, where one
+    // depth test for both drew the back sheet's inside as dark dots along the contour. A back
+    // face with no front face in front of it (an inside seen through an opening) is not moved.
+    for (const back of [false, true]) {
+      const side = back ? 'back faces, depth-biased behind the front faces' : 'front faces';
+      const primitive: GPUPrimitiveState = { topology: 'triangle-list', cullMode: back ? 'front' : 'back', frontFace: 'ccw' };
+      const depthStencil: GPUDepthStencilState = {
+        format: DEPTH_FORMAT,
+        depthWriteEnabled: true,
+        depthCompare: 'less',
+        ...(back ? { depthBias: BACK_FACE_DEPTH_BIAS, depthBiasSlopeScale: BACK_FACE_DEPTH_SLOPE } : {}),
+      };
+      this.#litPipelines[+back] = device.createRenderPipeline({
+        label: `lit pipeline (${side})`,
         layout: pipelineLayout('lit'),
         vertex: { module: litModule, entryPoint: this.vertexStorage ? 'litVertex' : 'litVertexPlain', buffers: MESH_BUFFERS },
         fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
-        primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
-        depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
+        primitive,
+        depthStencil,
         multisample,
       });
       if (!heatLayout) continue;
-      this.#heatPipelines[+closed] = device.createRenderPipeline({
-        label: closed ? 'heat pipeline (closed: back faces culled)' : 'heat pipeline (open: two-sided)',
+      this.#heatPipelines[+back] = device.createRenderPipeline({
+        label: `heat pipeline (${side})`,
         layout: heatLayout,
         vertex: { module: heatModule, entryPoint: 'heatVertex', buffers: MESH_BUFFERS },
         fragment: { module: heatModule, entryPoint: 'heatFragment', targets: opaqueTarget },
-        primitive: { topology: 'triangle-list', cullMode, frontFace: 'ccw' },
-        depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less' },
+        primitive,
+        depthStencil,
         multisample,
       });
     }
@@ -627,12 +647,14 @@ export class Renderer {
       this.device.queue.writeBuffer(this.#heatUniforms, 0, this.#heatData.buffer);
     }
     if (mesh && (heat || this.#patchBindGroup || !this.vertexStorage)) {
-      pass.setPipeline(heat ? this.#heatPipelines[+this.#closed] : this.#litPipelines[+this.#closed]);
       if (this.vertexStorage) pass.setBindGroup(2, heat ? this.#heatBindGroup : this.#patchBindGroup);
       pass.setVertexBuffer(0, mesh.positions);
       pass.setVertexBuffer(1, mesh.normals);
       pass.setIndexBuffer(mesh.indices, 'uint32');
-      pass.drawIndexedIndirect(mesh.drawArgs, 0);
+      for (const back of this.#closed ? [false] : [false, true]) {
+        pass.setPipeline(heat ? this.#heatPipelines[+back] : this.#litPipelines[+back]);
+        pass.drawIndexedIndirect(mesh.drawArgs, 0);
+      }
     }
     if (drawer) {
       drawer.drawLit(pass, this.#closed);
