@@ -44,7 +44,7 @@ import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSur
 import type { Tessellator } from './tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './instanced-displace.ts';
 import type { DisplacementSettings } from './displacement.ts';
-import { RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
+import { meshFaceStates, RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from './renderer.ts';
 import phongSurfaceWgsl from '../../wgsl/surface-phong.wgsl?raw';
 import { defineStruct } from './layout.ts';
 import { constantsWgsl, defineBits, grid2d, WORKGROUP_SIZE } from './contract.ts';
@@ -1225,11 +1225,13 @@ export class InstancedTessellator implements SurfaceDrawer {
     };
   }
 
-  /** The renderer-pass pipelines, made on first use, with the renderer's states: a closed cage
-   * culls back faces in the lit pass and the faces towards the light in the shadow pass. */
-  private rendererPipeline(kind: 'lit' | 'shadow' | 'wire', closed: boolean): GPURenderPipeline {
+  /** The renderer-pass pipelines, made on first use, with the renderer's states: the faces
+   * towards the light are culled in a closed cage's shadow pass; the lit pass draws the front
+   * faces, or with `back` an open cage's back faces, depth-biased behind them (renderer.ts
+   * meshFaceStates). */
+  private rendererPipeline(kind: 'lit' | 'shadow' | 'wire', closed: boolean, back: boolean): GPURenderPipeline {
     const r = this.inRenderer!;
-    const key = `${kind} ${closed ? 'closed' : 'open'}`;
+    const key = kind === 'lit' ? `lit ${back ? 'back' : 'front'} faces` : `${kind} ${closed ? 'closed' : 'open'}`;
     let p = r.pipelines.get(key);
     if (p) return p;
     const { module, res } = r;
@@ -1249,8 +1251,7 @@ export class InstancedTessellator implements SurfaceDrawer {
         layout: r.litLayout,
         vertex: { module, entryPoint: 'instancedLitVertex' },
         fragment: { module, entryPoint: 'litFragment', targets: [{ format: res.colorFormat }] },
-        primitive: { topology: 'triangle-list', cullMode: closed ? 'back' : 'none', frontFace: 'ccw' },
-        depthStencil: { format: res.depthFormat, depthWriteEnabled: true, depthCompare: 'less' },
+        ...meshFaceStates(back, res.depthFormat),
         multisample,
       });
     else
@@ -1279,11 +1280,11 @@ export class InstancedTessellator implements SurfaceDrawer {
     return p;
   }
 
-  private drawBuckets(pass: GPURenderPassEncoder, kind: 'lit' | 'shadow' | 'wire', closed: boolean): void {
+  private drawBuckets(pass: GPURenderPassEncoder, kind: 'lit' | 'shadow' | 'wire', closed: boolean, back = false): void {
     const m = this.mesh,
       r = this.inRenderer;
     if (!m || !r) return;
-    pass.setPipeline(this.rendererPipeline(kind, closed));
+    pass.setPipeline(this.rendererPipeline(kind, closed, back));
     pass.setBindGroup(0, m.meshGroup);
     pass.setBindGroup(2, kind === 'lit' ? r.litGroup : r.sceneGroup);
     this.bindSurface(pass);
@@ -1300,9 +1301,11 @@ export class InstancedTessellator implements SurfaceDrawer {
     this.drawBuckets(pass, 'shadow', closed);
   }
 
-  /** SurfaceDrawer: the lit pass (evaluated again, shaded as the renderer's stored mesh). */
+  /** SurfaceDrawer: the lit pass (evaluated again, shaded as the renderer's stored mesh): the
+   * front faces, then on an open cage its back faces (renderer.ts meshFaceStates). */
   drawLit(pass: GPURenderPassEncoder, closed: boolean): void {
     this.drawBuckets(pass, 'lit', closed);
+    if (!closed) this.drawBuckets(pass, 'lit', closed, true);
   }
 
   /** SurfaceDrawer: the wireframe overlay (every pattern triangle's edges, evaluated again). */

@@ -117,6 +117,24 @@ const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
  * depth format's units, and depthBiasSlopeScale): see the lit pipelines. */
 const BACK_FACE_DEPTH_BIAS = 4;
 const BACK_FACE_DEPTH_SLOPE = 4.0;
+
+/** The primitive and depth states of a lit (or heat) draw of a mesh's front or back faces: the
+ * back faces' draw is depth-biased behind the front faces' (the lit pipelines say why). The
+ * instanced tessellator's drawer uses the same. */
+export function meshFaceStates(
+  back: boolean,
+  depthFormat: GPUTextureFormat,
+): { primitive: GPUPrimitiveState; depthStencil: GPUDepthStencilState } {
+  return {
+    primitive: { topology: 'triangle-list', cullMode: back ? 'front' : 'back', frontFace: 'ccw' },
+    depthStencil: {
+      format: depthFormat,
+      depthWriteEnabled: true,
+      depthCompare: 'less',
+      ...(back ? { depthBias: BACK_FACE_DEPTH_BIAS, depthBiasSlopeScale: BACK_FACE_DEPTH_SLOPE } : {}),
+    },
+  };
+}
 /** Vertex buffers of the mesh: positions then normals, float32x3, tightly packed. */
 const MESH_BUFFERS: GPUVertexBufferLayout[] = [
   { arrayStride: 12, attributes: [{ shaderLocation: 0, offset: 0, format: 'float32x3' }] },
@@ -340,13 +358,7 @@ export class Renderer {
     // face with no front face in front of it (an inside seen through an opening) is not moved.
     for (const back of [false, true]) {
       const side = back ? 'back faces, depth-biased behind the front faces' : 'front faces';
-      const primitive: GPUPrimitiveState = { topology: 'triangle-list', cullMode: back ? 'front' : 'back', frontFace: 'ccw' };
-      const depthStencil: GPUDepthStencilState = {
-        format: DEPTH_FORMAT,
-        depthWriteEnabled: true,
-        depthCompare: 'less',
-        ...(back ? { depthBias: BACK_FACE_DEPTH_BIAS, depthBiasSlopeScale: BACK_FACE_DEPTH_SLOPE } : {}),
-      };
+      const { primitive, depthStencil } = meshFaceStates(back, DEPTH_FORMAT);
       this.#litPipelines[+back] = device.createRenderPipeline({
         label: `lit pipeline (${side})`,
         layout: pipelineLayout('lit'),
