@@ -121,6 +121,9 @@ export async function timeRebuild(
     const enc = device.createCommandEncoder({ label: 'bench rebuild' });
     tess.encode(enc, headlessCamera(mesh, o));
     device.queue.submit([enc.finish()]);
+    // Wait for the GPU first: the timestamp read gives up after TIMING_MAP_DEADLINE_MS (the demo's
+    // stats must not hang on it), and on SwiftShader imrod's rebuild alone runs longer than that.
+    await device.queue.onSubmittedWorkDone();
     const t = await tess.readTimings();
     if (i > 0) samples.push(t); // the first run warms up
   }
@@ -313,6 +316,7 @@ export async function main(argv: string[]): Promise<number> {
         const enc = device.createCommandEncoder({ label: 'bench surface rebuild' });
         e.tess.encode(enc, cam);
         device.queue.submit([enc.finish()]);
+        await device.queue.onSubmittedWorkDone(); // as timeRebuild: before the timestamp read's deadline starts
         const t = await e.tess.readTimings();
         if (round > 0) e.samples.push(t); // the first round warms up
       }
