@@ -354,8 +354,8 @@ export class Renderer {
     // the side seen, render-lit.wgsl), in a second draw pushed back by a slope-scaled depth bias:
     // at an occlusion contour the tessellation folds over by a fraction of a pixel, the two
     // sheets there lie at one depth and steep, and the bias lets the front sheet win, where one
-    // depth test for both drew the back sheet's inside as dark dots along the contour. A back
-    // face with no front face in front of it (an inside seen through an opening) is not moved.
+    // depth test for both drew the back sheet's inside as dark dots along the contour. An inside
+    // seen through an opening has no front face near it in depth, so it shows as before.
     for (const back of [false, true]) {
       const side = back ? 'back faces, depth-biased behind the front faces' : 'front faces';
       const { primitive, depthStencil } = meshFaceStates(back, DEPTH_FORMAT);
