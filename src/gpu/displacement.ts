@@ -36,7 +36,7 @@ import type { Cage } from '../mesh/types.ts';
 import type { HeightMap, HeightWrap } from '../mesh/heightmap.ts';
 import { faceCornerUvs, faceSampleRange } from '../mesh/uv.ts';
 import { DISP_TRI_WORD } from './contract.ts';
-import { CENTRE_FAN_MIN_CORNERS, type PreparedMesh } from './prepare.ts';
+import { fannedRoundCentre, type PreparedMesh } from './prepare.ts';
 
 /** What may change without re-uploading the map: the uniforms. */
 export interface DisplacementSettings {
@@ -81,25 +81,35 @@ export function prepareDisplacement(cage: Cage, mesh: PreparedMesh, map: HeightM
   const edgeLo = new Float32Array(mesh.edgeCount).fill(1);
   const edgeHi = new Float32Array(mesh.edgeCount).fill(0);
   const edgeTexels = new Float32Array(mesh.edgeCount);
+  // A centre-fanned face's centre uv (the mean of its corners'), once per face: its n triangles share it.
+  const centreUvs = new Map<number, [number, number]>();
+  const centreUv = (f: number): [number, number] => {
+    let c = centreUvs.get(f);
+    if (!c) {
+      const h0 = cage.faceOffsets[f],
+        n = cage.faceOffsets[f + 1] - h0;
+      c = [0, 0];
+      for (let j = 0; j < n; j++) {
+        c[0] += cornerUvs[2 * (h0 + j)] / n;
+        c[1] += cornerUvs[2 * (h0 + j) + 1] / n;
+      }
+      centreUvs.set(f, c);
+    }
+    return c;
+  };
   for (let t = 0; t < nt; t++) {
     const f = mesh.triFace[t];
     const fan = mesh.triFan[t];
     const h0 = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - h0;
     if (n > 0x7fff) throw new RangeError(`face ${f} has ${n} corners; displacement handles up to 32767`);
-    const centred = n >= CENTRE_FAN_MIN_CORNERS;
+    const centred = fannedRoundCentre(n);
     dispTri[3 * t] = h0;
     dispTri[3 * t + 1] = DISP_TRI_WORD.pack({ corners: n, centred: centred ? 1 : 0, fan });
     dispTri[3 * t + 2] = f;
     // The triangle's corners' uvs: the face's corners 0 (or its centre: their mean), fan, fan + 1.
     const uvOf = (j: number): [number, number] => [cornerUvs[2 * (h0 + (j % n))], cornerUvs[2 * (h0 + (j % n)) + 1]];
-    const centre: [number, number] = [0, 0];
-    if (centred)
-      for (let j = 0; j < n; j++) {
-        centre[0] += uvOf(j)[0] / n;
-        centre[1] += uvOf(j)[1] / n;
-      }
-    const corner = [centred ? centre : uvOf(0), uvOf(fan), uvOf(fan + 1)];
+    const corner = [centred ? centreUv(f) : uvOf(0), uvOf(fan), uvOf(fan + 1)];
     for (let i = 0; i < 3; i++) {
       const e = mesh.triEdges[3 * t + i];
       edgeLo[e] = Math.min(edgeLo[e], range[2 * f]);

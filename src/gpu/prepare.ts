@@ -33,6 +33,12 @@ import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from './contract.ts';
 /** Faces with at least this many corners are fanned round a centre vertex (see above). */
 export const CENTRE_FAN_MIN_CORNERS = 5;
 
+/** Is a face with this many corners fanned round a centre vertex? (One question, asked by the
+ * triangulation here and by every builder that must know where a triangle's corner 0 is.) */
+export function fannedRoundCentre(corners: number): boolean {
+  return corners >= CENTRE_FAN_MIN_CORNERS;
+}
+
 export interface PreparedMesh {
   /** Cage vertices, then one centre vertex per face fanned round its centre. */
   vertexCount: number;
@@ -112,7 +118,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     if (holes.has(f)) continue;
     const s = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - s;
-    if (n >= CENTRE_FAN_MIN_CORNERS) {
+    if (fannedRoundCentre(n)) {
       const c = nV + centreFace.length;
       centreFace.push(f);
       for (let k = 0; k < n; k++) {

@@ -123,7 +123,7 @@ import {
   vertexAdjacency,
   vertexRing,
 } from '../../mesh/index.ts';
-import { CENTRE_FAN_MIN_CORNERS, type PreparedMesh } from '../prepare.ts';
+import { fannedRoundCentre, type PreparedMesh } from '../prepare.ts';
 import { NO_OWNER, OWNER_WORD } from '../contract.ts';
 import { CC_FAN_WORD, CC_PAIR_WORD, CC_REGION_WORD, CC_RULE_WORD, CC_THREAD_WORD, CC_TRI_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 
@@ -1112,7 +1112,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const start = cage.faceOffsets[f];
     const n = cage.faceOffsets[f + 1] - start;
     const k = prepared.triFan[t];
-    const centred = n >= CENTRE_FAN_MIN_CORNERS;
+    const centred = fannedRoundCentre(n);
     const corner = (j: number) => cage.faceIndices[start + (j % n)];
     if ((centred ? prepared.triVerts[3 * t] < nV0 : prepared.triVerts[3 * t] !== corner(0)) || prepared.triVerts[3 * t + 1] !== corner(k))
       throw new Error(`triangle ${t} is not a fan triangle of face ${f}`);
