@@ -248,8 +248,15 @@ ${rows.join('\n')}
 `;
   if (outFile) {
     const doc = existsSync(outFile) ? readFileSync(outFile, 'utf8') : '# Benchmarks\n';
-    const parts = doc.split(/^(?=## )/m).filter((p) => !p.startsWith(SECTION));
-    writeFileSync(outFile, `${parts.join('').trimEnd()}\n\n${section}`);
+    // In place when the section is there (a rerun must not move it); else before the real-GPU
+    // part, so the SwiftShader tables stay together; else at the end.
+    const parts = doc.split(/^(?=## )/m);
+    const own = parts.findIndex((p) => p.startsWith(SECTION));
+    const gpu = parts.findIndex((p) => /^## (Reading the real-GPU|On a real GPU)/.test(p));
+    if (own >= 0) parts[own] = `${section}\n`;
+    else if (gpu >= 0) parts.splice(gpu, 0, `${section}\n`);
+    else parts.push(`${parts.pop()?.trimEnd() ?? ''}\n\n${section}`);
+    writeFileSync(outFile, `${parts.join('').trimEnd()}\n`);
     console.log(`\nwritten to ${outFile}`);
   } else console.log('\n--models without --out: nothing written');
   return 0;
