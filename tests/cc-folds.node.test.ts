@@ -12,7 +12,7 @@
  * are now fanned round their centre, which took those to 0 and the gear's adaptive 492 to 0.
  *
  * NOT MET: the creature in adaptive mode, a ratchet at the count measured now (all other models
- * 0). Its 8 are needles along a cage edge: a corner, the opposite corner, and the first point of
+ * 0; 8 before the factor rule's contour term, src/gpu/factors.ts). Its 7 are needles along a cage edge: a corner, the opposite corner, and the first point of
  * an edge that has just begun to split (at 0.95 of the edge, 1e-3 of the model's size from the
  * corner), where the edge's curve leaves the corner on the far side of the needle's line. The
  * Phong twin (tests/no-folds.test.ts) shows that no triangulation of such a triangle's boundary
@@ -35,8 +35,8 @@ const MODELS = new URL('../public/models/', import.meta.url);
 /** Flagged triangles allowed, as measured (others: 0): over the six adaptive cameras, and at fixed
  * factor 8 (one view: the mesh does not depend on the camera). */
 const RESIDUAL: Record<string, { adaptive: number; fixed8: number }> = {
-  'creature.obj': { adaptive: 8, fixed8: 0 },
-  'creature-wrinkles.obj': { adaptive: 8, fixed8: 0 },
+  'creature.obj': { adaptive: 7, fixed8: 0 },
+  'creature-wrinkles.obj': { adaptive: 7, fixed8: 0 },
 };
 
 /** The triangles whose geometric normal opposes the output normal at all three corners. */

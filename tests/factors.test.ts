@@ -82,6 +82,31 @@ describe('edge factor rule', () => {
     expect(edgeFactor(p0, p1, n0, n1, rule({ lodScale: 1e6 }))).toBe(64);
   });
 
+  it('counts twice the offset across the line of sight on an edge whose two ends face the eye', () => {
+    const [p0, p1, n0, n1] = arc(0.6);
+    const e = phongMidpointOffset(p0, p1, n0, n1);
+    const el = Math.hypot(...e);
+    const mid = [0, 1, 2].map((i) => (p0[i] + p1[i]) / 2 + e[i]);
+    const expected = (eye: Vec3, seen: number) =>
+      Math.sqrt(seen / (Math.hypot(mid[0] - eye[0], mid[1] - eye[1], mid[2] - eye[2]) * rule().pixelAngle));
+    const across = (eye: Vec3) => {
+      const d = Math.hypot(mid[0] - eye[0], mid[1] - eye[1], mid[2] - eye[2]);
+      const r = [0, 1, 2].map((i) => (mid[i] - eye[i]) / d);
+      const along = e[0] * r[0] + e[1] * r[1] + e[2] * r[2];
+      return Math.hypot(e[0] - along * r[0], e[1] - along * r[1], e[2] - along * r[2]);
+    };
+    // Seen obliquely (both ends facing, the offset ~37° off the ray): 2|e⊥| ≈ 1.2|e| wins.
+    const oblique: Vec3 = [3, 0, 4];
+    expect(2 * across(oblique)).toBeGreaterThan(1.1 * el);
+    expect(edgeFactor(p0, p1, n0, n1, rule({ eye: oblique }))).toBeCloseTo(expected(oblique, 2 * across(oblique)), 9);
+    // Head-on the offset lies along the ray: |e| alone.
+    expect(edgeFactor(p0, p1, n0, n1, rule())).toBeCloseTo(expected([0, 0, 5], el), 9);
+    // Grazing (one end turned away): |e| alone, however much of it lies across the ray.
+    const grazing: Vec3 = [5, 0, 0.3];
+    expect(2 * across(grazing)).toBeGreaterThan(1.5 * el);
+    expect(edgeFactor(p0, p1, n0, n1, rule({ eye: grazing }))).toBeCloseTo(expected(grazing, el), 9);
+  });
+
   it('drops off-screen and back-facing edges to 1, and never returns NaN or less than 1', () => {
     const [p0, p1, n0, n1] = arc(0.8);
     const behind = (p: Vec3): Vec3 => [p[0], p[1] + 50, p[2]];

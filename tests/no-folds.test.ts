@@ -17,9 +17,10 @@
  * the surface): the gap strip is now cut to avoid them (src/pattern/clamped.ts: small strips
  * exactly, stripTriangulation; large ones by the greedy gapMergeSteps; the plan pass computes
  * the cut once per cage triangle and stores it, the emit pass reads it), which took the counts
- * from (creature 311, creased-box 20, gear 27, icosphere 11, pawn 11) to the ones below. What is
+ * from (creature 311, creased-box 20, gear 27, icosphere 11, pawn 11) to 17 on the creature and 0
+ * elsewhere; the factor rule's contour term (src/gpu/factors.ts) took the creature to 14. What is
  * left is needles along a long chord of a strongly curved cage triangle, at factors just above 1
- * next to edges at 1: 16 of the creature's 17 have only their boundary points (corners and the
+ * next to edges at 1: 16 of the creature's 17 had only their boundary points (corners and the
  * two points of an edge near its ends), and every triangulation of those points folds a
  * triangle (the last test below shows it for one of them: no split rule over these vertices
  * reaches zero there). So this is a ratchet at the counts measured now: a change that folds more
@@ -38,8 +39,8 @@ const MODELS = new URL('../public/models/', import.meta.url);
 
 /** Folded triangles allowed over the 6 cameras (all others: 0), as measured with today's pattern. */
 const RESIDUAL: Record<string, { allowed: number }> = {
-  'creature.obj': { allowed: 17 },
-  'creature-wrinkles.obj': { allowed: 17 }, // the creature's cage with UVs
+  'creature.obj': { allowed: 14 },
+  'creature-wrinkles.obj': { allowed: 14 }, // the creature's cage with UVs
 };
 
 function folded(t: CpuTriangle): boolean {

@@ -89,7 +89,8 @@ fn edgeView(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
 // tessellators' triangle counts compare at one LOD scale. From the edge's two cage vertices'
 // factorPoint (the surface's: the cage's positions and normals for Phong and ACC, the limit
 // positions and normals at the cage vertices for Catmull-Clark, as the compute tessellator reads
-// them): the Phong midpoint's offset e from the chord, k = sqrt(lodScale·|e| / (dist·pixelAngle)),
+// them): the Phong midpoint's offset e from the chord, k = sqrt(lodScale·|e| / (dist·pixelAngle)) with
+// e's part across the line of sight counted twice on edges facing the eye (factor-rule.wgsl),
 // 1 for an edge outside the frustum or facing away; then L_e = the next power of two ≥ ceil(k) in
 // [1, 64] (rounded up: at least the compute tessellator's segments, so its pixel error bound holds).
 fn edgeEnd(p: u32, isTri: bool, k: u32, t: u32) -> u32 {
@@ -118,17 +119,10 @@ fn edgeFactorRule(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocati
   let isTri = patchIsTri(p);
   let a = factorPoint(edgeEnd(p, isTri, k, 0u));
   let b = factorPoint(edgeEnd(p, isTri, k, 1u));
-  let d = b.pos - a.pos;
-  let off = (PHONG_ALPHA / 4.0) * (dot(d, b.normal) * b.normal - dot(d, a.normal) * a.normal);
-  let err = length(off);
-  let mid = 0.5 * (a.pos + b.pos) + off;
-  let toEye0 = params.eye.xyz - a.pos;
-  let toEye1 = params.eye.xyz - b.pos;
-  let away = dot(a.normal, toEye0) < -0.1 * length(toEye0) && dot(b.normal, toEye1) < -0.1 * length(toEye1);
+  let bend = edgeBend(a.pos, a.normal, b.pos, b.normal, params.eye.xyz);
   var f = 1.0;
-  if (!(away || factorSphereOutside(mid, 0.5 * length(d) + err))) {
-    let dist = max(length(mid - params.eye.xyz), 1e-6);
-    f = sqrt(params.lodScale * err / (dist * params.pixelAngle));
+  if (!(bend.away || factorSphereOutside(bend.mid, 0.5 * length(b.pos - a.pos) + length(bend.off)))) {
+    f = bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle);
   }
   f = select(1.0, min(f, f32(MAX_LEVEL)), f >= 1.0); // NaN and ≤ 1: 1
   let m = u32(ceil(f));

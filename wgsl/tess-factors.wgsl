@@ -1,6 +1,6 @@
 // Pass 1 of each budget attempt, one thread per mesh edge: the edge's tess factor (computed
 // once per edge, so its two triangles cannot disagree), its line state and segment count.
-// Mirrors src/gpu/factors.ts edgeFactor.
+// Mirrors src/gpu/factors.ts edgeFactor; the curvature measure is factor-rule.wgsl's.
 
 fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
   let m = transpose(params.viewProj); // rows of viewProj
@@ -19,14 +19,7 @@ fn adaptiveFactor(e: u32) -> f32 {
   let p1 = factorPos(b);
   let n0 = factorNormal(a);
   let n1 = factorNormal(b);
-  let d = p1 - p0;
-  // Phong midpoint minus linear midpoint: symmetric in the two ends.
-  let off = (PHONG_ALPHA / 4.0) * (dot(d, n1) * n1 - dot(d, n0) * n0);
-  let err = length(off);
-  let mid = 0.5 * (p0 + p1) + off;
-  let toEye0 = params.eye.xyz - p0;
-  let toEye1 = params.eye.xyz - p1;
-  let away = dot(n0, toEye0) < -0.1 * length(toEye0) && dot(n1, toEye1) < -0.1 * length(toEye1);
+  let bend = edgeBend(p0, n0, p1, n1, params.eye.xyz);
   // Displacement (src/gpu/displacement.ts): the heights on the edge's faces lie in
   // [lo, hi]·scale after the mid level; the sphere grows by the largest |h|, and the edge gets at
   // least as many segments as its height variation spans pixels (times lodScale), up to two per
@@ -41,9 +34,10 @@ fn adaptiveFactor(e: u32) -> f32 {
     reach = abs(params.dispScale) * max(abs(lo - params.dispMid), abs(hi - params.dispMid));
     amplitude = abs(params.dispScale) * (hi - lo);
   }
-  if (away || sphereOutsideFrustum(mid, 0.5 * length(d) + err + reach)) { return 1.0; }
-  let dist = max(length(mid - params.eye.xyz), 1e-6);
-  let surface = sqrt(params.lodScale * err / (dist * params.pixelAngle));
+  let err = length(bend.off);
+  if (bend.away || sphereOutsideFrustum(bend.mid, 0.5 * length(p1 - p0) + err + reach)) { return 1.0; }
+  let dist = max(length(bend.mid - params.eye.xyz), 1e-6);
+  let surface = bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle);
   let detail = min(2.0 * texels, params.lodScale * amplitude / (dist * params.pixelAngle));
   return max(surface, detail);
 }

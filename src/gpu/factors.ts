@@ -10,6 +10,17 @@
  * so the error seen from the eye, as an angle, is |e| / (k²·dist). Asking for at most one pixel
  * (pixelAngle = fovY / viewportHeight) at LOD scale 1 gives
  *     k = sqrt(lodScale·|e| / (dist·pixelAngle)).
+ * On an edge whose two ends both face the eye (n·toEye > 0.1·|toEye|), the part of e across the
+ * line of sight, e⊥ = e − (e·r)r with r the unit ray from the eye to the Phong midpoint, counts
+ * twice: |e| becomes max(|e|, 2|e⊥|). That part is what moves silhouettes and occlusion contours
+ * on screen, and a contour short of the limit's shows the surface behind it (issue 13's outline
+ * and brow speckles). Measured against |e| alone (e2e/artifacts.spec.ts, tests/no-folds,
+ * tests/cc-folds): speckles suzanne CC 32 → 26, Phong 18 → 17, pawn CC 6 → 4, Phong 7 → 4,
+ * creature CC 5 → 6 (an outline corner a pixel off); folded triangles on the creature CC 8 → 7,
+ * Phong 17 → 14; in the demo's first view (`npm run tessellate -- M --adaptive --flat-baseline
+ * --demo-view --stats`) 5–21% more triangles: creature 3,772 → 3,958, bigguy 8,214 → 9,322,
+ * suzanne 3,808 → 4,608. Counting it on every edge instead folds the box and the
+ * gear (0 → 4, 0 → 2). The GPU's copy of this measure is wgsl/factor-rule.wgsl.
  * Edges whose bounding sphere (centre: the Phong midpoint, radius |d|/2 + |e|) is outside the
  * view frustum, and edges whose two ends both face away from the eye, drop to factor 1.
  * Factors are clamped to [1, maxFactor]; NaN becomes 1, so nothing else reaches the
@@ -81,7 +92,12 @@ export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorR
       f = 1;
     } else {
       const dist = Math.max(Math.hypot(...sub(mid, rule.eye)), 1e-6);
-      f = Math.sqrt((rule.lodScale * el) / (dist * rule.pixelAngle));
+      const ray: Vec3 = [(mid[0] - rule.eye[0]) / dist, (mid[1] - rule.eye[1]) / dist, (mid[2] - rule.eye[2]) / dist];
+      const along = dot(e, ray);
+      const errAcross = Math.hypot(e[0] - along * ray[0], e[1] - along * ray[1], e[2] - along * ray[2]);
+      const facing = dot(n0, toEye0) > 0.1 * Math.hypot(...toEye0) && dot(n1, toEye1) > 0.1 * Math.hypot(...toEye1);
+      const errSeen = facing ? Math.max(el, 2 * errAcross) : el;
+      f = Math.sqrt((rule.lodScale * errSeen) / (dist * rule.pixelAngle));
     }
   }
   if (!(f >= 1)) return 1; // NaN, ≤ 1

@@ -32,6 +32,7 @@
  */
 import commonWgsl from '../../wgsl/instanced-common.wgsl?raw';
 import levelsWgsl from '../../wgsl/instanced-levels.wgsl?raw';
+import factorRuleWgsl from '../../wgsl/factor-rule.wgsl?raw';
 import drawWgsl from '../../wgsl/instanced-draw.wgsl?raw';
 import frameWgsl from '../../wgsl/instanced-frame.wgsl?raw';
 import headlessWgsl from '../../wgsl/instanced-headless.wgsl?raw';
@@ -684,7 +685,7 @@ export class InstancedTessellator implements SurfaceDrawer {
     const code = (...parts: string[]) =>
       [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface, vertexSurface].join('\n');
     this.code = code;
-    const levels = device.createShaderModule({ label: 'instanced levels', code: code(levelsWgsl) });
+    const levels = device.createShaderModule({ label: 'instanced levels', code: code(factorRuleWgsl, levelsWgsl) });
     const pipeline = (entryPoint: string) =>
       device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
     this.levelPipelines = {

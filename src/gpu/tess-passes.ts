@@ -7,6 +7,7 @@
 import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
 import outputsWgsl from '../../wgsl/tess-outputs.wgsl?raw';
 import factorsWgsl from '../../wgsl/tess-factors.wgsl?raw';
+import factorRuleWgsl from '../../wgsl/factor-rule.wgsl?raw';
 import countWgsl from '../../wgsl/tess-count.wgsl?raw';
 import budgetWgsl from '../../wgsl/tess-budget.wgsl?raw';
 import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
@@ -60,7 +61,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
   const surfaceWgsl =
     surface === 'catmull-clark' ? ccSurfaceWgsl : isAccSurface(surface) ? [ACC_SURFACE_WGSL, accTessWgsl].join('\n') : phongSurfaceWgsl;
   const modules = {
-    factors: code(factorsWgsl),
+    factors: code(factorRuleWgsl, factorsWgsl),
     count: code(patternWgsl, countWgsl),
     budget: code(budgetWgsl),
     // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
