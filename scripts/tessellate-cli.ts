@@ -32,7 +32,9 @@
  * triangle cages; n-gons and holes are refused with exit code 2). --demo-view uses the demo's first
  * view (its default orbit fitted to a 1280×720 canvas) as the camera; --limit-px (Catmull-Clark)
  * measures how far the output vertices that face the eye are from the exact limit surface, in
- * pixels of that camera (scripts/limit-distance.ts), into --stats as "limitPx" {max, p99, vertices}.
+ * pixels of that camera (scripts/limit-distance.ts), into --stats as "limitPx" {max, p99, vertices},
+ * and the drawn triangles between them (their edge midpoints and centroids, along the limit normal)
+ * as "displayedPx" {max, p99, samples}.
  * --displacement map.png --scale S moves every output vertex along the surface normal by
  * h = (sample − M)·S (M = --mid, default 0.5), the map (8 or 16-bit PNG, greyscale or its red
  * channel) sampled bilinearly at the cage's uvs (the model needs vt on every face corner),
@@ -70,7 +72,7 @@ import { prepareDisplacement } from '../src/gpu/displacement.ts';
 import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
 import { isAccSurface, type Surface } from '../src/gpu/tess-passes.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc-surface.ts';
-import { demoView, limitDistancePx } from './limit-distance.ts';
+import { demoView, displayedDistancePx, limitDistancePx } from './limit-distance.ts';
 
 const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
        npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`;
@@ -314,6 +316,7 @@ export async function main(argv: string[]): Promise<number> {
   // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
   const cam = args.limitPx ? headlessCamera(mesh, args.o) : undefined;
   const limit = cam ? limitDistancePx(cage, mesh, r.out, cam) : undefined;
+  const displayed = cam ? displayedDistancePx(cage, mesh, r.out, cam) : undefined;
   acc?.patches.destroy();
   if (args.out)
     writeFileSync(
@@ -339,13 +342,19 @@ export async function main(argv: string[]): Promise<number> {
         tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
         vertices: r.out.vertexCount,
         triangles: r.out.triangleCount,
-        ...(limit ? { limitPx: { max: Number(limit.maxPx.toFixed(4)), p99: Number(limit.p99Px.toFixed(4)), vertices: limit.count } } : {}),
+        ...(limit && displayed
+          ? {
+              limitPx: { max: Number(limit.maxPx.toFixed(4)), p99: Number(limit.p99Px.toFixed(4)), vertices: limit.count },
+              displayedPx: { max: Number(displayed.maxPx.toFixed(4)), p99: Number(displayed.p99Px.toFixed(4)), samples: displayed.count },
+            }
+          : {}),
         adapter: adapterName,
       }),
     );
-  } else if (limit) {
+  } else if (limit && displayed) {
     console.error(
-      `tessellate: vertices facing the eye are at most ${limit.maxPx.toFixed(3)} px (p99 ${limit.p99Px.toFixed(3)}) from the exact limit`,
+      `tessellate: vertices facing the eye are at most ${limit.maxPx.toFixed(3)} px (p99 ${limit.p99Px.toFixed(3)}) from the exact limit; ` +
+        `the drawn triangles between them (edge midpoints, centroids) at most ${displayed.maxPx.toFixed(3)} px (p99 ${displayed.p99Px.toFixed(3)})`,
     );
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');

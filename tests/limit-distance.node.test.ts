@@ -5,6 +5,17 @@
  * cage parameter, over the size of a pixel at its distance from the eye). Before the blend was
  * bounded (wgsl/surface-cc.wgsl evalSurface) the same measure read 3.4 px on the creature, 3.3 on
  * the pawn, 5.4 on bigguy and 5.2 on suzanne. Also at LOD 2 (bound ½ px) on one model.
+ *
+ * NOT MET: the drawn triangles between the vertices (scripts/limit-distance.ts
+ * displayedDistancePx: every output edge's midpoint and triangle's centroid against the limit
+ * at the mean cage parameter, along the limit normal) are not within 1 px: the blend's pixel
+ * at the vertices and the chord's sag between them add, and the Phong estimate of the factor
+ * rule misses part of the limit's curvature. DISPLAYED_MAX is a ratchet at what is measured now.
+ * Of the samples over 1 px, nearly all lie where every edge of the cage triangle is below factor
+ * 4 (the flat baseline's band) and inside the cage triangle. Tried and not taken: the factor rule
+ * sampling the limit's own edge curve (¼, ½, ¾) instead of the Phong estimate (23–97% more
+ * triangles, the maxima no lower: points inside the cage triangles dominate); the blend bounded at ½ px (the pop
+ * test's creased box 4.9e-3 > 4e-3; the p99 fell by about 0.2 px, the maxima hardly).
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
@@ -14,7 +25,16 @@ import type { Tessellator } from '../src/gpu/tessellator.ts';
 import { demoCcTessellator } from './demo-tessellator.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { loadCage } from '../src/mesh/index.ts';
-import { demoView, limitDistancePx } from '../scripts/limit-distance.ts';
+import { demoView, displayedDistancePx, limitDistancePx } from '../scripts/limit-distance.ts';
+
+/** The displayed surface's largest distance (px) from the limit, as measured (NOT MET: 1 / LOD). */
+const DISPLAYED_MAX: Record<string, number> = {
+  'creature.obj LOD 1': 2.57,
+  'pawn.obj LOD 1': 3.02,
+  'pawn.obj LOD 2': 2.91,
+  'bigguy.obj LOD 1': 2.57,
+  'suzanne.obj LOD 1': 4.71,
+};
 
 /** f32 evaluation against the f64 reference: far below a pixel at these distances. */
 const SLACK = 1e-3;
@@ -60,6 +80,12 @@ describe('the default view is within a pixel of the limit surface', () => {
       console.log(file, `LOD ${lodScale}`, JSON.stringify(d));
       expect(d.count).toBeGreaterThan(500);
       expect(d.maxPx, d.worst).toBeLessThanOrEqual(1 / lodScale + SLACK);
+      const shown = displayedDistancePx(cage, mesh, r.out, view);
+      const key = `${file.split('/').pop()} LOD ${lodScale}`;
+      console.log(key, 'displayed', JSON.stringify(shown));
+      expect(shown.skipped).toBe(0);
+      expect(shown.count).toBeGreaterThan(2 * d.count);
+      expect(shown.maxPx, shown.worst).toBeLessThanOrEqual(DISPLAYED_MAX[key]);
     }, 120_000);
   }
 });

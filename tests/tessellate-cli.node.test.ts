@@ -252,6 +252,9 @@ describe('npm run tessellate', () => {
     const s = JSON.parse(r.stdout.trim().split('\n').pop()!);
     expect(s.limitPx.vertices).toBeGreaterThan(500);
     expect(s.limitPx.max).toBeLessThanOrEqual(1.001);
+    // Between the vertices (NOT MET: 1 px; tests/limit-distance.node.test.ts holds the ratchet).
+    expect(s.displayedPx.samples).toBeGreaterThan(2 * s.limitPx.vertices);
+    expect(s.displayedPx.max).toBeGreaterThan(0);
   });
 
   it('rejects bad input with a message and exit code 2', () => {
