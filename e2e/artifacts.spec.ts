@@ -44,9 +44,9 @@
 // Phong 1 → 0, pawn adaptive Phong 10 → 4.
 //
 // NOT MET: zero in adaptive mode. What is left is not dots on the surface but the outline: an
-// adaptive silhouette is a polygon a pixel or so inside or outside the factor-16 one (the factor
-// rule bounds the chord error seen across the view ray at 1/lodScale px, and on the outline that
-// is what is seen), and where it passes over a lighter pixel of the reference's background grid
+// adaptive silhouette is a polygon a pixel or more inside or outside the factor-16 one (the factor
+// rule asks for a chord error of 1/lodScale px for equal segments, up to 2–3 px with the line
+// pattern's longer ones, src/gpu/factors.ts, and on the outline that is what is seen), and where it passes over a lighter pixel of the reference's background grid
 // a background pixel reads as a dot. A silhouette boost of the factor rule (×2 where the normal
 // is square to the eye ray) took suzanne's adaptive Catmull-Clark count to 7 and the creature's
 // to 0, but raised the folded triangles of tests/no-folds.test.ts (creature 17 → 42, and the

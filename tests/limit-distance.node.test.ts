@@ -9,8 +9,11 @@
  * NOT MET: the drawn triangles between the vertices (scripts/limit-distance.ts
  * displayedDistancePx: every output edge's midpoint and triangle's centroid against the limit
  * at the mean cage parameter, along the limit normal) are not within 1 px: the blend's pixel
- * at the vertices and the chord's sag between them add, and the Phong estimate of the factor
- * rule misses part of the limit's curvature. DISPLAYED_MAX is a ratchet at what is measured now.
+ * at the vertices and the chord's sag between them add, Hable's line has segments longer than
+ * 1/F inside an octave (src/gpu/factors.ts: up to (L·F)² = 2 in [4, 8]), and the Phong estimate
+ * of the factor rule misses part of the limit's curvature (on the cage triangles whose edges
+ * are all below factor 1.5, the limit's bulge at the centroid is up to 2.4× the Phong estimate's
+ * there). DISPLAYED_MAX is a ratchet at what is measured now.
  * Of the samples over 1 px, nearly all lie where every edge of the cage triangle is below factor
  * 4 (the flat baseline's band) and inside the cage triangle. Tried and not taken: the factor rule
  * sampling the limit's own edge curve (¼, ½, ¾) instead of the Phong estimate (23–97% more

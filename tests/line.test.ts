@@ -201,3 +201,41 @@ describe("the talk's intermediate lines", () => {
       expect(line('even', n).x).toEqual(Array.from({ length: n + 1 }, (_, k) => Math.floor((k * ONE) / n)));
   });
 });
+
+describe("Hable's line: how long its segments are (what the factor rule's chord error assumes)", () => {
+  /** The longest segment of the line at factor F, as a fraction of the edge. */
+  const longest = (F: number) => {
+    const { x } = line('hable', F);
+    let L = 0;
+    for (let i = 1; i < x.length; i++) L = Math.max(L, (x[i] - x[i - 1]) / ONE);
+    return L;
+  };
+
+  /** The largest (L·F)² over F in [a, b], on a 1/64 grid. */
+  const worst = (a: number, b: number) => {
+    let w = 0;
+    for (let F = a; F <= b; F += 1 / 64) w = Math.max(w, (longest(F) * F) ** 2);
+    return w;
+  };
+
+  it('is uniform (1/F) at powers of two, and up to 1.89/F between them', () => {
+    for (const F of [1, 2, 4, 8, 16, 32, 64]) expect(longest(F) * F).toBeCloseTo(1, 9);
+    // The factor rule (src/gpu/factors.ts) asks for k equal segments, chord error |e|/k²; the
+    // pattern's longest segment at F = k sags (L·F)² times more. Per octave (measured on a finer
+    // grid: 1.50 at F 2.80, 2.04 at 5.71, 2.68 at 13.09, 3.20 at 28.63, 3.56 at 60.34), growing
+    // towards 4: late in an octave of N a segment 1/N long is still unsplit.
+    expect(worst(1, 2)).toBeLessThanOrEqual(1 + 1e-9); // two points from both ends: never longer
+    const bounds: [number, number, number, number][] = [
+      [2, 4, 1.45, 1.51],
+      [4, 8, 1.98, 2.05],
+      [8, 16, 2.6, 2.69],
+      [16, 32, 3.1, 3.21],
+      [32, 64, 3.5, 3.56],
+    ];
+    for (const [a, b, lo, hi] of bounds) {
+      const w = worst(a, b);
+      expect(w, `octave [${a}, ${b}]`).toBeGreaterThan(lo);
+      expect(w, `octave [${a}, ${b}]`).toBeLessThanOrEqual(hi);
+    }
+  });
+});

@@ -27,7 +27,8 @@ fn edgeBend(p0: vec3<f32>, n0: vec3<f32>, p1: vec3<f32>, n1: vec3<f32>, eye: vec
   return EdgeBend(off, 0.5 * (p0 + p1) + off, away, facing);
 }
 
-// Segments for a chord error of 1/lodScale pixels: k = sqrt(lodScale·err / (dist·pixelAngle)).
+// Equal segments for a chord error of 1/lodScale pixels: k = sqrt(lodScale·err / (dist·pixelAngle))
+// (Hable's line at factor k has longer ones inside an octave: src/gpu/factors.ts says how much).
 // On an edge facing the eye the offset's part across the line of sight (which moves silhouettes
 // and occlusion contours on screen) counts twice.
 fn bendFactor(b: EdgeBend, eye: vec3<f32>, lodScale: f32, pixelAngle: f32) -> f32 {

@@ -10,6 +10,12 @@
  * so the error seen from the eye, as an angle, is |e| / (k²·dist). Asking for at most one pixel
  * (pixelAngle = fovY / viewportHeight) at LOD scale 1 gives
  *     k = sqrt(lodScale·|e| / (dist·pixelAngle)).
+ * That holds for k EQUAL segments. The factor F = k goes to Hable's pop-free line, whose points
+ * slide in through each octave: its longest segment is up to 1.22/F long in octave [2, 4], 1.43/F
+ * in [4, 8], 1.64/F in [8, 16] (tests/line.test.ts), so the chord error allowed is up to
+ * (L·F)² = 1.5, 2.0, 2.7 px at LOD 1 there (3.6 near 64). Asking for the factor whose longest
+ * segment is 1/k instead would cost about 1.66× the triangles (mean over k in [1, 32]) and jump
+ * (k = 8 needs F = 8, k = 8.016 needs F = 13.1): the jump is a pop. Not done; issue 13 says so.
  * On an edge whose two ends both face the eye (n·toEye > 0.1·|toEye|), the part of e across the
  * line of sight, e⊥ = e − (e·r)r with r the unit ray from the eye to the Phong midpoint, counts
  * twice: |e| becomes max(|e|, 2|e⊥|). That part is what moves silhouettes and occlusion contours
