@@ -490,7 +490,7 @@ ${draws.join('\n')}
 
 ## Adaptive against fixed at equal maximum edge error
 
-The adaptive rule keeps every visible edge's Phong chord error below 1/${lodScale} px (edges off screen or facing away drop to factor 1). The fixed factor below is the smallest that meets the same bound on every visible edge.
+The adaptive rule asks for every visible edge's Phong chord error to be at most 1/${lodScale} px, counted for equal segments (Hable's line has longer ones inside an octave: src/gpu/factors.ts), and edges off screen or facing away drop to factor 1. The fixed factor below is the smallest that meets the same bound, counted the same way, on every visible edge.
 
 | model | fixed factor for the same error | fixed verts | fixed tris | adaptive verts | adaptive tris | adaptive / fixed |
 |---|---:|---:|---:|---:|---:|---:|
