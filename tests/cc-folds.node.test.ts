@@ -12,8 +12,9 @@
  * are now fanned round their centre, which took those to 0 and the gear's adaptive 492 to 0.
  *
  * NOT MET: the creature in adaptive mode, a ratchet at the count measured now (all other models
- * 0; 8 before the factor rule's contour term, src/gpu/factors.ts). Its 7 are needles along a cage edge: a corner, the opposite corner, and the first point of
- * an edge that has just begun to split (at 0.95 of the edge, 1e-3 of the model's size from the
+ * 0; 8 before the factor rule's contour term, src/gpu/factors.ts). Its 8 were needles along a
+ * cage edge (the 7 left are not yet looked at again): a corner, the opposite corner, and the
+ * first point of an edge that has just begun to split (at 0.95 of the edge, 1e-3 of the model's size from the
  * corner), where the edge's curve leaves the corner on the far side of the needle's line. The
  * Phong twin (tests/no-folds.test.ts) shows that no triangulation of such a triangle's boundary
  * points avoids the fold.
