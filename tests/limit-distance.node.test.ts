@@ -12,13 +12,14 @@
  * at the vertices and the chord's sag between them add, Hable's line has segments longer than
  * 1/F inside an octave (src/gpu/factors.ts: up to (L·F)² = 2 in [4, 8]), and the Phong estimate
  * of the factor rule misses part of the limit's curvature (on the cage triangles whose edges
- * are all below factor 1.5, the limit's bulge at the centroid is up to 2.4× the Phong estimate's
+ * are all below factor 1.5, the limit's bulge at the centroid is up to 3.6× the Phong estimate's
  * there). DISPLAYED_MAX is a ratchet at what is measured now.
  * Of the samples over 1 px, nearly all lie where every edge of the cage triangle is below factor
  * 4 (the flat baseline's band) and inside the cage triangle. Tried and not taken: the factor rule
  * sampling the limit's own edge curve (¼, ½, ¾) instead of the Phong estimate (23–97% more
- * triangles, the maxima no lower: points inside the cage triangles dominate); the blend bounded at ½ px (the pop
- * test's creased box 4.9e-3 > 4e-3; the p99 fell by about 0.2 px, the maxima hardly).
+ * triangles, the maxima no lower: points inside the cage triangles dominate); the blend
+ * bounded at ½ px (the pop test's creased box 4.9e-3 > 4e-3; the p99 fell by about 0.2 px, the
+ * maxima hardly).
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
