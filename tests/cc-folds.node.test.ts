@@ -3,7 +3,7 @@
  * adaptive, flat baseline on): no output triangle's geometric normal may oppose the output
  * normals at all three of its corners. The GPU's own output is checked here (Dawn in Node); the
  * CPU twin for Phong tessellation is tests/no-folds.test.ts, which measures against the Phong
- * surface's own normals. The cameras are that test's: six seeded random views, LOD scales 0.5,
+ * surface's own normals. The cameras are that test's: 24 seeded random views, LOD scales 0.5,
  * 1 and 2.
  *
  * At a fixed factor no model folds. It used to: the pawn's 16-gon base and the gear's 7-gons,
@@ -11,13 +11,19 @@
  * centre, where Catmull-Clark's parametrization is singular; src/gpu/prepare.ts says why). They
  * are now fanned round their centre, which took those to 0 and the gear's adaptive 492 to 0.
  *
- * NOT MET: the creature in adaptive mode, a ratchet at the count measured now (all other models
- * 0; 8 before the factor rule's contour term, src/gpu/factors.ts). Its 8 were needles along a
+ * NOT MET: adaptive mode folds, a ratchet at the counts measured now (below). Over the first six
+ * views the creature folded 7 (8 before the factor rule's contour term, src/gpu/factors.ts). Its 8 were needles along a
  * cage edge (the 7 left are not yet looked at again): a corner, the opposite corner, and the
  * first point of an edge that has just begun to split (at 0.95 of the edge, 1e-3 of the model's size from the
  * corner), where the edge's curve leaves the corner on the far side of the needle's line. The
  * Phong twin (tests/no-folds.test.ts) shows that no triangulation of such a triangle's boundary
  * points avoids the fold.
+ *
+ * The views were six until 2026-11-27, and over six only the creature folded (7). Over 24 (the
+ * same six, then 18 more from the same generator) the gear folds 14 of 109,226 triangles and the
+ * icosphere 2 of 39,184, the creature 24 of 136,822; the boxes, pawn, sheet and torus 0 (over 40
+ * other seeded views a scratch run also found the boxes folding, 4 each). The zeros of six views
+ * were the luck of the views.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';
@@ -33,11 +39,16 @@ import type { MeshReadback } from '../src/gpu/readback.ts';
 
 const MODELS = new URL('../public/models/', import.meta.url);
 
-/** Flagged triangles allowed, as measured (others: 0): over the six adaptive cameras, and at fixed
+/** Seeded random views (tests/cpu-pipeline.ts foldCameras; the first six are tests/no-folds.test.ts's). */
+const CAMERAS = 24;
+
+/** Flagged triangles allowed, as measured (others: 0): over the CAMERAS adaptive views, and at fixed
  * factor 8 (one view: the mesh does not depend on the camera). */
 const RESIDUAL: Record<string, { adaptive: number; fixed8: number }> = {
-  'creature.obj': { adaptive: 7, fixed8: 0 },
-  'creature-wrinkles.obj': { adaptive: 7, fixed8: 0 },
+  'creature.obj': { adaptive: 24, fixed8: 0 },
+  'creature-wrinkles.obj': { adaptive: 24, fixed8: 0 },
+  'gear.obj': { adaptive: 14, fixed8: 0 },
+  'icosphere.obj': { adaptive: 2, fixed8: 0 },
 };
 
 /** The triangles whose geometric normal opposes the output normal at all three corners. */
@@ -66,7 +77,7 @@ describe('Catmull-Clark as the demo shows it: no folded output triangles', () =>
     .filter((f) => f.endsWith('.obj'))
     .sort();
   for (const file of files) {
-    it(`${file}: six random cameras in adaptive mode, and fixed factor 8`, async () => {
+    it(`${file}: ${CAMERAS} random cameras in adaptive mode, and fixed factor 8`, async () => {
       const device = await getDevice();
       tess ??= demoCcTessellator(device);
       const cage = loadCage(readFileSync(new URL(file, MODELS), 'utf8')).cage;
@@ -74,7 +85,7 @@ describe('Catmull-Clark as the demo shows it: no folded output triangles', () =>
       const prepared = { mesh, cc: buildCatmullClark(cage, mesh) };
       let adaptive = 0;
       let total = 0;
-      for (const { eye, target, lodScale } of foldCameras(mesh)) {
+      for (const { eye, target, lodScale } of foldCameras(mesh, CAMERAS)) {
         const r = await tessellateOnce(
           device,
           cage,

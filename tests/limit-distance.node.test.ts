@@ -20,6 +20,24 @@
  * triangles, the maxima no lower: points inside the cage triangles dominate); the blend
  * bounded at ½ px (the pop test's creased box 4.9e-3 > 4e-3; the p99 fell by about 0.2 px, the
  * maxima hardly).
+ * Also tried (2026-11-27; maxima creature/pawn/bigguy/suzanne, against 2.56/3.02/2.58/4.70 px):
+ * - every edge also takes its two triangles' centroid term, k = sqrt(α·lod·bulge), the bulge
+ *   being the limit at the centroid minus the flat triangle's, in px: α = 1: +15–46% triangles
+ *   and the maxima UP (3.79/3.19/3.28/4.40), because the clamped pattern has no interior vertex
+ *   below factor 3 or so and an output edge then runs across the bulge from edge point to edge
+ *   point; α = 2: +40–84%, 1.91/2.45/3.03/3.10; α = 4: ×1.8–2.6, 1.70/1.56/1.69/3.10 (p99 ≤ 1.09)
+ *   but the pop test fails (creased box 4.96e-3; α = 3: 4.58e-3); α = 4 with chord and blend
+ *   each held to ½ px: ×3.3–4.5, 1.28/1.38/1.19/2.39. The bulge's part that the edges' midpoints
+ *   do not predict (β·residual, β = 16): +59–113%, no better. The limit's own midpoint on every
+ *   edge: +13–40%, maxima unchanged.
+ * - on crease and boundary edges only, the limit's midpoint and no culling by the end normals.
+ *   The pawn's base rim is a crease whose vertex normals (the limit's, one side's) are the
+ *   bottom's: the factor rule reads the rim as facing away, factor 1, while its side faces the
+ *   eye, so the rim's outline is the cage's 16-gon, 2.9 px off the limit. With the change 1.3 px,
+ *   and over 40 extra fold views fewer folds (gear 11 → 5, boxes 4 → 1), but in the frame the rim
+ *   turned ragged (the flat baseline interpolates the same one-sided vertex normals, and the bottom
+ *   fan shows under the new points) and the pawn's speckles went 4 → 5: not taken. A crease needs
+ *   its two sides' normals (split vertices) before its factor can rise.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';

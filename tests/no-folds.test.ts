@@ -25,6 +25,11 @@
  * triangle (the last test below shows it for one of them: no split rule over these vertices
  * reaches zero there). So this is a ratchet at the counts measured now: a change that folds more
  * fails.
+ *
+ * The views were six until 2026-11-27, and over six only the creature folded (14). Over 24 (the
+ * same six, then 18 more from the same generator) the boxes fold too: brick-box and creased-box
+ * 10 each of 46,270 triangles, the gear 3 of 91,854, the creature 67 of 144,256; icosphere, pawn,
+ * sheet and torus 0. The zeros of six views were the luck of the views.
  */
 import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
@@ -37,10 +42,16 @@ import { ONE } from '../src/pattern/fixed.ts';
 
 const MODELS = new URL('../public/models/', import.meta.url);
 
-/** Folded triangles allowed over the 6 cameras (all others: 0), as measured with today's pattern. */
+/** Seeded random views (tests/cpu-pipeline.ts foldCameras). */
+const CAMERAS = 24;
+
+/** Folded triangles allowed over the CAMERAS views (all others: 0), as measured with today's pattern. */
 const RESIDUAL: Record<string, { allowed: number }> = {
-  'creature.obj': { allowed: 14 },
-  'creature-wrinkles.obj': { allowed: 14 }, // the creature's cage with UVs
+  'brick-box.obj': { allowed: 10 },
+  'creased-box.obj': { allowed: 10 },
+  'creature.obj': { allowed: 67 },
+  'creature-wrinkles.obj': { allowed: 67 }, // the creature's cage with UVs
+  'gear.obj': { allowed: 3 },
 };
 
 function folded(t: CpuTriangle): boolean {
@@ -55,12 +66,12 @@ describe('adaptive tessellation has no folded triangles', () => {
   it('finds the project models', () => expect(files.length).toBeGreaterThanOrEqual(5));
 
   for (const file of files) {
-    it(`${file}: over 6 random cameras and LOD scales 0.5, 1, 2`, () => {
+    it(`${file}: over ${CAMERAS} random cameras and LOD scales 0.5, 1, 2`, () => {
       const mesh = prepareMesh(loadCage(readFileSync(new URL(file, MODELS), 'utf8')).cage);
       const report: string[] = [];
       let total = 0;
       let folds = 0;
-      for (const [cam, { eye, target, lodScale }] of foldCameras(mesh).entries()) {
+      for (const [cam, { eye, target, lodScale }] of foldCameras(mesh, CAMERAS).entries()) {
         const tris = cpuTessellate(mesh, cameraRule('adaptive', eye, target, mesh.size, { lodScale }), true);
         const bad = tris.filter(folded);
         total += tris.length;
@@ -72,6 +83,7 @@ describe('adaptive tessellation has no folded triangles', () => {
           );
         }
       }
+      console.log(`${file}: ${folds} of ${total} folded`);
       expect(total).toBeGreaterThan(0);
       const allowed = RESIDUAL[file]?.allowed ?? 0;
       if (folds > allowed || allowed === 0) expect(report).toEqual([]);
