@@ -2,7 +2,9 @@
  * Catmull-Clark under change: an animated cage (new positions, only the patch build re-run, the
  * CPU-built tables kept) still matches the exact CPU reference of the moved cage; and the pop
  * test: sweeping the LOD scale in small steps with the flat-baseline blend on, no output vertex
- * lands farther than a stated bound from the previous step's mesh at the same point.
+ * lands farther than a stated bound from the previous step's mesh at the same point (which bounds
+ * motion as much as popping), and the jump test: the same LOD scales against themselves times
+ * 1 + 1e-3 and 1 + 1e-4, where a continuous surface moves ten times less and a pop does not.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { mat4 } from 'gl-matrix';
@@ -204,6 +206,37 @@ describe('Catmull-Clark pop test (flat baseline by tess factor)', () => {
       // is cut without caps; 2.2e-4 before the bound), creased-box 3.6e-3 (plain 7.8e-3). So it
       // is held to the bound, and to no more than 40 % above the plain surface's pops.
       expect(results.flat).toBeLessThan(1.4 * results.plain);
+    });
+
+    // The sweep above bounds how far the surface moves in one step of ×1.06, which is motion as
+    // much as popping: halving the step halves what it measures (creased box 3.9e-3 at ×1.06,
+    // 2.1e-3 at ×1.03, 1.3e-3 at ×1.015; a scratch run, 2026-11-27). A pop is what does not
+    // shrink with the step. So here each LOD scale of the sweep is compared with itself times
+    // (1 + 1e-3) and (1 + 1e-4): the movement must fall at least fivefold with the step (linear
+    // motion falls tenfold; a pop not at all) and stay under 2e-4 at the larger step. Measured: creased box 7.5e-5 and 9.2e-6, torus
+    // 2.1e-5 and 2.2e-6. It samples: a pop is caught where it falls inside one of the 41 windows.
+    // Factors rounded up to integers (a pop at every crossing) are: 2.9e-3 (torus) and 8.1e-3
+    // (creased box) under the 1e-3 step, against the bound 2e-4. (The factor-rule variants that
+    // failed the sweep's bound, tests/limit-distance.node.test.ts, pass this: the blend held to
+    // ½ px and the centroid term at α = 4 moved faster, 1.2e-4 and 1.3e-5, but did not pop. So
+    // did the surface without the flat baseline: 2.4e-4 and 3.0e-5 on the creased box.)
+    it(`${name}: the flat-baseline surface moves continuously with the LOD scale (no jump between s and s·(1 + 1e-3))`, async () => {
+      const cage = loadCage(text).cage;
+      const mesh = prepareMesh(cage);
+      const t = await make(true);
+      t.setMesh(mesh, buildCatmullClark(cage, mesh));
+      let coarse = 0;
+      let fine = 0;
+      for (let i = 0; i <= 40; i++) {
+        const lod = 0.05 * 1.06 ** i;
+        const at = (s: number) => run(t, camera(mesh, 3 * mesh.size, lod * s));
+        const base = await at(1);
+        coarse = Math.max(coarse, maxPop(mesh, base, await at(1 + 1e-3)));
+        fine = Math.max(fine, maxPop(mesh, base, await at(1 + 1e-4)));
+      }
+      console.log('jump', name, JSON.stringify({ step1e3: coarse, step1e4: fine }));
+      expect(coarse).toBeLessThan(2e-4);
+      expect(fine).toBeLessThan(0.2 * coarse);
     });
   }
 });

@@ -26,7 +26,8 @@
  *   and the maxima UP (3.79/3.19/3.28/4.40), because the clamped pattern has no interior vertex
  *   below factor 3 or so and an output edge then runs across the bulge from edge point to edge
  *   point; α = 2: +40–84%, 1.91/2.45/3.03/3.10; α = 4: ×1.8–2.6, 1.70/1.56/1.69/3.10 (p99 ≤ 1.09)
- *   but the pop test fails (creased box 4.96e-3; α = 3: 4.58e-3); α = 4 with chord and blend
+ *   but the pop test's ×1.06 sweep fails (creased box 4.96e-3; α = 3: 4.58e-3), by moving faster,
+ *   not by popping (tests/cc-animate.gpu.test.ts's jump test passes: 1.0e-4 and 1.2e-5); α = 4 with chord and blend
  *   each held to ½ px: ×3.3–4.5, 1.28/1.38/1.19/2.39. The bulge's part that the edges' midpoints
  *   do not predict (β·residual, β = 16): +59–113%, no better. The limit's own midpoint on every
  *   edge: +13–40%, maxima unchanged.
