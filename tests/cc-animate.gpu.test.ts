@@ -213,8 +213,8 @@ describe('Catmull-Clark pop test (flat baseline by tess factor)', () => {
     // 2.1e-3 at ×1.03, 1.3e-3 at ×1.015; a scratch run, 2026-11-27). A pop is what does not
     // shrink with the step. So here each LOD scale of the sweep is compared with itself times
     // (1 + 1e-3) and (1 + 1e-4): the movement must fall at least fivefold with the step (linear
-    // motion falls tenfold; a pop not at all) and stay under 2e-4 at the larger step. Measured: creased box 7.5e-5 and 9.2e-6, torus
-    // 2.1e-5 and 2.2e-6. It samples: a pop is caught where it falls inside one of the 41 windows.
+    // motion falls tenfold; a pop not at all) and stay under 2e-4 at the larger step. Measured:
+    // creased box 7.5e-5 and 9.2e-6, torus 2.1e-5 and 2.2e-6. It samples: a pop is caught where it falls inside one of the 41 windows.
     // Factors rounded up to integers (a pop at every crossing) are: 2.9e-3 (torus) and 8.1e-3
     // (creased box) under the 1e-3 step, against the bound 2e-4. (The factor-rule variants that
     // failed the sweep's bound, tests/limit-distance.node.test.ts, pass this: the blend held to

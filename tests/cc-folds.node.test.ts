@@ -31,7 +31,7 @@ import { getDevice, releaseDevice } from './gpu-device.ts';
 import { tessellateOnce } from '../src/gpu/headless.ts';
 import type { Tessellator } from '../src/gpu/tessellator.ts';
 import { demoCcTessellator } from './demo-tessellator.ts';
-import { foldCameras } from './cpu-pipeline.ts';
+import { FOLD_VIEWS, foldCameras } from './cpu-pipeline.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { loadCage } from '../src/mesh/index.ts';
@@ -39,10 +39,7 @@ import type { MeshReadback } from '../src/gpu/readback.ts';
 
 const MODELS = new URL('../public/models/', import.meta.url);
 
-/** Seeded random views (tests/cpu-pipeline.ts foldCameras; the first six are tests/no-folds.test.ts's). */
-const CAMERAS = 24;
-
-/** Flagged triangles allowed, as measured (others: 0): over the CAMERAS adaptive views, and at fixed
+/** Flagged triangles allowed, as measured (others: 0): over the FOLD_VIEWS adaptive views, and at fixed
  * factor 8 (one view: the mesh does not depend on the camera). */
 const RESIDUAL: Record<string, { adaptive: number; fixed8: number }> = {
   'creature.obj': { adaptive: 24, fixed8: 0 },
@@ -77,7 +74,7 @@ describe('Catmull-Clark as the demo shows it: no folded output triangles', () =>
     .filter((f) => f.endsWith('.obj'))
     .sort();
   for (const file of files) {
-    it(`${file}: ${CAMERAS} random cameras in adaptive mode, and fixed factor 8`, async () => {
+    it(`${file}: ${FOLD_VIEWS} random cameras in adaptive mode, and fixed factor 8`, async () => {
       const device = await getDevice();
       tess ??= demoCcTessellator(device);
       const cage = loadCage(readFileSync(new URL(file, MODELS), 'utf8')).cage;
@@ -85,7 +82,7 @@ describe('Catmull-Clark as the demo shows it: no folded output triangles', () =>
       const prepared = { mesh, cc: buildCatmullClark(cage, mesh) };
       let adaptive = 0;
       let total = 0;
-      for (const { eye, target, lodScale } of foldCameras(mesh, CAMERAS)) {
+      for (const { eye, target, lodScale } of foldCameras(mesh)) {
         const r = await tessellateOnce(
           device,
           cage,
