@@ -7,7 +7,7 @@
  * Absolute times mean little across machines, so the same run also times a trivial kernel that
  * only writes as many bytes as the pipeline's output, and reports the pipeline's efficiency as
  * the ratio of the two (the talk's pipeline reaches about 30 % of its GPU's write bound).
- * It also compares adaptive and fixed at equal maximum screen-space edge error.
+ * It also compares adaptive and fixed at the same bound (the fixed factor the adaptive rule needs at most).
  *
  * The Catmull-Clark table also takes the talk's four models (suzanne, bigguy, monsterfrog, imrod)
  * when ../shared/cages is present (third-party cages: read from there, never copied into the
@@ -24,7 +24,8 @@ import { Tessellator } from '../src/gpu/tessellator.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { headlessCamera, type HeadlessOptions } from '../src/gpu/headless.ts';
 import { readBuffer } from '../src/gpu/readback.ts';
-import { phongMidpointOffset } from '../src/gpu/factors.ts';
+import { edgeFactor, type FactorRule } from '../src/gpu/factors.ts';
+import { phongEdgeBulges } from '../src/gpu/phong.ts';
 import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
@@ -170,23 +171,28 @@ async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats: numbe
   return median(ms);
 }
 
-/** Largest screen-space error (pixels) of any visible edge at one factor everywhere. */
-function fixedFactorForError(mesh: PreparedMesh, o: HeadlessOptions, errorPixels: number): number {
+/** The fixed factor that meets the adaptive rule's bound everywhere it applies: the largest factor
+ * the rule (src/gpu/factors.ts: the edge term and the bulge term of the edge's triangles, on the
+ * Phong surface, as the bench's tessellator) gives any edge in this view. */
+function fixedFactorForAdaptive(mesh: PreparedMesh, o: HeadlessOptions): number {
   const cam = headlessCamera(mesh, o);
-  const pixelAngle = cam.fovY / cam.viewportHeight;
-  let worst = 0;
+  const rule: FactorRule = {
+    mode: 'adaptive',
+    fixedFactor: 1,
+    lodScale: cam.lodScale,
+    viewProj: cam.viewProj,
+    eye: cam.eye,
+    pixelAngle: cam.fovY / cam.viewportHeight,
+    maxFactor: 64,
+  };
+  const bulge = phongEdgeBulges(mesh, rule);
+  const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
+  let most = 1;
   for (let e = 0; e < mesh.edgeCount; e++) {
     const [a, b] = [mesh.edgeVerts[2 * e], mesh.edgeVerts[2 * e + 1]];
-    const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
-    const p0 = v(mesh.positions, a),
-      p1 = v(mesh.positions, b);
-    const off = phongMidpointOffset(p0, p1, v(mesh.normals, a), v(mesh.normals, b));
-    const mid = [0, 1, 2].map((i) => (p0[i] + p1[i]) / 2 + off[i]);
-    const dist = Math.hypot(mid[0] - cam.eye[0], mid[1] - cam.eye[1], mid[2] - cam.eye[2]);
-    worst = Math.max(worst, Math.hypot(...off) / (dist * pixelAngle)); // error at factor 1, in pixels
+    most = Math.max(most, edgeFactor(v(mesh.positions, a), v(mesh.positions, b), v(mesh.normals, a), v(mesh.normals, b), rule, bulge[e]));
   }
-  // error(k) = worst / k²  ≤  errorPixels
-  return Math.min(64, Math.max(1, Math.sqrt(worst / errorPixels)));
+  return most;
 }
 
 export async function main(argv: string[]): Promise<number> {
@@ -261,8 +267,8 @@ export async function main(argv: string[]): Promise<number> {
       console.log(row);
       rows.push(row);
     }
-    // Fixed factor that reaches the adaptive rule's error bound (1/lod px) on every visible edge.
-    const F = fixedFactorForError(mesh, adaptive, 1 / lodScale);
+    // The fixed factor that meets the adaptive rule's bound everywhere it applies.
+    const F = fixedFactorForAdaptive(mesh, adaptive);
     const eq = await timeRebuild(device, tess, mesh, { mode: 'fixed', fixedFactor: F }, 1);
     const a = measured[`adaptive (lod ${lodScale})`];
     equalError.push(
@@ -488,9 +494,9 @@ tessellator's buffers, on the fixed-factor Catmull-Clark mesh.
 |---|---:|---:|---:|---:|---:|
 ${draws.join('\n')}
 
-## Adaptive against fixed at equal maximum edge error
+## Adaptive against fixed at the same bound
 
-The adaptive rule asks for every visible edge's Phong chord error to be at most 1/${lodScale} px, counted for equal segments (Hable's line has longer ones inside an octave: src/gpu/factors.ts), and edges off screen or facing away drop to factor 1. The fixed factor below is the smallest that meets the same bound, counted the same way, on every visible edge.
+The adaptive rule (src/gpu/factors.ts) asks for every visible edge's Phong chord error to be at most 1/${lodScale} px, counted for equal segments (Hable's line has longer ones inside an octave), and for as many segments as the surface's bulge inside each cage triangle on screen needs (the bulge term: sampled at four points, k = sqrt(10·lod·bulge px)); edges off screen, or facing away with no triangle on screen beside them, drop to factor 1. The fixed factor below is the largest the rule gives any edge in this view: the smallest fixed factor that meets the same bound everywhere.
 
 | model | fixed factor for the same error | fixed verts | fixed tris | adaptive verts | adaptive tris | adaptive / fixed |
 |---|---:|---:|---:|---:|---:|---:|

@@ -40,18 +40,18 @@
 //   contours closer to the limit's (suzanne adaptive Catmull-Clark 32 → 26, Phong 18 → 17, pawn
 //   adaptive Catmull-Clark 6 → 4, Phong 7 → 4; the creature's Catmull-Clark 5 → 6: one corner of
 //   its outline, (396, 313), now lies a pixel further along and reads as two pixels).
-// Together: suzanne adaptive Catmull-Clark 58 → 26, adaptive Phong 81 → 17, creature adaptive
-// Phong 1 → 0, pawn adaptive Phong 10 → 4.
+// - the factor rule's bulge term (src/gpu/factors.ts, wgsl/factor-bulge.wgsl: the surface sampled
+//   inside every cage triangle on screen): the adaptive outline within a pixel of the limit's
+//   instead of 2–5 px (tests/limit-distance.node.test.ts), which is what the remaining speckles
+//   were: suzanne adaptive Catmull-Clark 26 → 0, adaptive Phong 17 → 1, pawn adaptive
+//   Catmull-Clark 4 → 0, Phong 4 → 0, creature adaptive Catmull-Clark 6 → 0.
+// Together: suzanne adaptive Catmull-Clark 58 → 0, adaptive Phong 81 → 1, creature adaptive
+// Phong 135 → 0, pawn adaptive Phong 157 → 0.
 //
-// NOT MET: zero in adaptive mode. What is left is not dots on the surface but the outline: an
-// adaptive silhouette is a polygon a pixel or more inside or outside the factor-16 one (the factor
-// rule asks for a chord error of 1/lodScale px for equal segments, up to 2–3 px with the line
-// pattern's longer ones, src/gpu/factors.ts, and on the outline that is what is seen), and where it passes over a lighter pixel of the reference's background grid
-// a background pixel reads as a dot. A silhouette boost of the factor rule (×2 where the normal
-// is square to the eye ray) took suzanne's adaptive Catmull-Clark count to 7 and the creature's
-// to 0, but raised the folded triangles of tests/no-folds.test.ts (creature 17 → 42, and the
-// boxes and the gear from 0), so it is not in; the facing-edges-only form above is what held the
-// folds. The counts are a ratchet at what is measured now.
+// The one speckle left (suzanne, adaptive Phong, (671, 294)) is on the ear, in a dark streak
+// that the factor-16 reference draws too (the Phong surface's own, on a thin part of the cage;
+// the Catmull-Clark frames have none): the frame draws it a pixel aside, and one of its pixels
+// has no dark neighbour in the reference. It is allowed.
 import { expect, test, type Page } from '@playwright/test';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -171,14 +171,14 @@ const SUZANNE_URL = '/shared-cages/suzanne.obj';
  * renderer changes where it was measured (the same test, the same machine). */
 const ALLOWED: Record<string, { allowed: number; before: number }> = {
   'creature mode=adaptive&surface=phong': { allowed: 0, before: 135 },
-  'pawn mode=adaptive&surface=phong': { allowed: 4, before: 157 },
+  'pawn mode=adaptive&surface=phong': { allowed: 0, before: 157 },
   'pawn mode=fixed&factor=8&surface=phong': { allowed: 0, before: 2 },
   'pawn mode=fixed&factor=8&surface=catmull-clark': { allowed: 0, before: 0 },
-  'creature mode=adaptive&surface=catmull-clark': { allowed: 6, before: 5 },
-  'pawn mode=adaptive&surface=catmull-clark': { allowed: 4, before: 5 },
+  'creature mode=adaptive&surface=catmull-clark': { allowed: 0, before: 5 },
+  'pawn mode=adaptive&surface=catmull-clark': { allowed: 0, before: 5 },
   'suzanne mode=fixed&factor=8&surface=catmull-clark': { allowed: 0, before: 4 },
-  'suzanne mode=adaptive&surface=catmull-clark': { allowed: 26, before: 58 },
-  'suzanne mode=adaptive&surface=phong': { allowed: 17, before: 81 },
+  'suzanne mode=adaptive&surface=catmull-clark': { allowed: 0, before: 58 },
+  'suzanne mode=adaptive&surface=phong': { allowed: 1, before: 81 },
 };
 
 test.describe('no isolated dark speckles against a high fixed factor', () => {

@@ -219,7 +219,9 @@ describe('Catmull-Clark pop test (flat baseline by tess factor)', () => {
     // (creased box) under the 1e-3 step, against the bound 2e-4. (The factor-rule variants that
     // failed the sweep's bound, tests/limit-distance.node.test.ts, pass this: the blend held to
     // ½ px and the centroid term at α = 4 moved faster, 1.2e-4 and 1.3e-5, but did not pop. So
-    // did the surface without the flat baseline: 2.4e-4 and 3.0e-5 on the creased box.)
+    // did the surface without the flat baseline: 2.4e-4 and 3.0e-5 on the creased box.) With the
+    // factor rule's bulge term (src/gpu/factors.ts; 2026-11-27): creased box 4.8e-5 and 6.6e-6,
+    // torus 1.5e-5 and 1.6e-6, and the sweep above 3.6e-3 and 8.1e-4.
     it(`${name}: the flat-baseline surface moves continuously with the LOD scale (no jump between s and s·(1 + 1e-3))`, async () => {
       const cage = loadCage(text).cage;
       const mesh = prepareMesh(cage);

@@ -1,7 +1,13 @@
 import { describe, it, expect } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { ONE } from '../src/pattern/fixed.ts';
 import fc from 'fast-check';
 import { mat4 } from 'gl-matrix';
 import {
+  BULGE_ALPHA,
+  BULGE_OFF_SCREEN,
+  BULGE_WEIGHTS,
+  bulgeFactor,
   edgeFactor,
   phongMidpointOffset,
   budgetScale,
@@ -125,6 +131,85 @@ describe('edge factor rule', () => {
     expect(sphereOutsideFrustum(m, [0, 0, 10], 0.1)).toBe(true); // behind the eye
     expect(sphereOutsideFrustum(m, [40, 0, 0], 1)).toBe(true);
     expect(sphereOutsideFrustum(m, [3, 0, 0], 2)).toBe(false); // straddles the side plane
+  });
+});
+
+describe('bulge term', () => {
+  // A triangle facing the eye at z = 0, 5 away; the surface over it bulges towards the eye by
+  // h·(a bump that is 0 on the edges), its normal +z.
+  const corners: [Vec3, Vec3, Vec3] = [
+    [-1, -1, 0],
+    [1, -1, 0],
+    [0, 1, 0],
+  ];
+  const bump =
+    (h: number, normal: Vec3 = [0, 0, 1]) =>
+    (w: Vec3) => {
+      const b = [w[0] / ONE, w[1] / ONE, w[2] / ONE];
+      const pos = [0, 1, 2].map((c) => b[0] * corners[0][c] + b[1] * corners[1][c] + b[2] * corners[2][c]);
+      pos[2] += 27 * h * b[0] * b[1] * b[2];
+      return { pos, normal };
+    };
+
+  it('samples the centroid and the three points (2/3, 1/6, 1/6), in 16.16 as the WGSL makes them', () => {
+    expect(BULGE_WEIGHTS).toHaveLength(4);
+    for (const w of BULGE_WEIGHTS) expect(w[0] + w[1] + w[2]).toBe(ONE);
+    expect(BULGE_WEIGHTS[3]).toEqual([21845, 21845, 21846]);
+    expect(BULGE_WEIGHTS[1]).toEqual([10922, 43692, 10922]);
+  });
+
+  it('has the constants of wgsl/factor-bulge.wgsl', () => {
+    const wgsl = readFileSync(new URL('../wgsl/factor-bulge.wgsl', import.meta.url), 'utf8');
+    const constant = (name: string) => Number(new RegExp(`const ${name}: \\w+ = ([-0-9.]+)`).exec(wgsl)?.[1]);
+    expect(constant('BULGE_ALPHA')).toBe(BULGE_ALPHA);
+    expect(constant('BULGE_OFF_SCREEN')).toBe(BULGE_OFF_SCREEN);
+    expect(constant('BULGE_SAMPLES')).toBe(BULGE_WEIGHTS.length);
+  });
+
+  it('is 0 on a flat triangle and follows k = sqrt(α·lod·bulge / (dist·pixelAngle)) at the largest sample', () => {
+    const r = rule();
+    expect(bulgeFactor(corners, bump(0), r)).toBe(0);
+    // The centroid bulges most (by h; the other samples by h/2), and is the nearest to the eye.
+    for (const h of [1e-3, 1e-2, 0.1]) {
+      const k = bulgeFactor(corners, bump(h), r);
+      const centroid = bump(h)(BULGE_WEIGHTS[3]).pos;
+      const c = BULGE_WEIGHTS[3].map((x) => x / ONE);
+      const b = 27 * h * c[0] * c[1] * c[2];
+      const dist = Math.hypot(centroid[0], centroid[1], centroid[2] - 5);
+      expect(k).toBeCloseTo(Math.sqrt((BULGE_ALPHA * b) / (dist * r.pixelAngle)), 9);
+      expect(bulgeFactor(corners, bump(h), rule({ lodScale: 4 }))).toBeCloseTo(2 * k, 9);
+    }
+  });
+
+  it('is BULGE_OFF_SCREEN off screen, and does not drop for a triangle facing away', () => {
+    const r = rule();
+    const k = bulgeFactor(corners, bump(0.1), r);
+    expect(k).toBeGreaterThan(1);
+    expect(bulgeFactor(corners, bump(0.1, [0, 0, -1]), r)).toBe(k);
+    // Behind the eye (the eye at z = 5 looks down −z), and far to the side.
+    const moved = (d: Vec3) => corners.map((p) => [p[0] + d[0], p[1] + d[1], p[2] + d[2]]) as unknown as [Vec3, Vec3, Vec3];
+    for (const d of [
+      [0, 0, 10],
+      [50, 0, 0],
+    ] as Vec3[]) {
+      const c = moved(d);
+      const surface = (w: Vec3) => ({ pos: bump(0.1)(w).pos.map((x, i) => x + d[i]) });
+      expect(bulgeFactor(c, surface, r)).toBe(BULGE_OFF_SCREEN);
+    }
+  });
+
+  it("raises an edge to its triangles' bulge term, and keeps an edge whose ends face away when a triangle is on screen", () => {
+    const r = rule();
+    const p0: Vec3 = [-1, 0, 0],
+      p1: Vec3 = [1, 0, 0];
+    const n: Vec3 = [0, 0, 1];
+    expect(edgeFactor(p0, p1, n, n, r)).toBe(1);
+    expect(edgeFactor(p0, p1, n, n, r, 7.5)).toBe(7.5);
+    expect(edgeFactor(p0, p1, n, n, r, BULGE_OFF_SCREEN)).toBe(1);
+    const away: Vec3 = [0, 0, -1];
+    expect(edgeFactor(p0, p1, away, away, r, BULGE_OFF_SCREEN)).toBe(1);
+    expect(edgeFactor(p0, p1, away, away, r, 7.5)).toBe(7.5);
+    expect(edgeFactor(p0, p1, n, n, r, 100)).toBe(64);
   });
 });
 

@@ -22,3 +22,7 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let dv = (uc.z - uc.x) * a.du + (vc.z - vc.x) * a.dv;
   return SurfacePoint(a.pos, a.normal, du, dv);
 }
+
+// The surface without any display blend, which the factor rule looks at inside each triangle
+// (factor-bulge.wgsl): this surface has none, so it is evalSurface.
+fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint { return evalSurface(t, wFixed); }

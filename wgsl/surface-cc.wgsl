@@ -418,7 +418,9 @@ fn ccNgonParam(poly: u32, n: u32, fan: u32, centred: bool, w: vec3<f32>) -> CCNg
   return CCNgonParam(vec3<f32>(f32(k), clamp(s, 0.0, 1.0), clamp(t, 0.0, 1.0)), d1, d2);
 }
 
-fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
+// The exact limit at the cage triangle's point: what evalSurface shows before the flat-baseline
+// blend, and what the factor rule looks at inside the triangle (factor-bulge.wgsl).
+fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
   let first = staticBuf[params.ccTri + 3u * t];
   let info = staticBuf[params.ccTri + 3u * t + 1u];
@@ -447,7 +449,13 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let px = sp.du;
   sp.du = d1.x * px + d1.y * sp.dv;
   sp.dv = d2.x * px + d2.y * sp.dv;
+  return sp;
+}
+
+fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
+  let sp = unblendedSurface(t, wFixed);
   if (params.ccFlat == 0u) { return sp; }
+  let w = vec3<f32>(wFixed) / 65536.0;
   // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a
   // tess factor interpolated from the three edges (on an edge: that edge's factor, so both
   // triangles of the edge agree; at the corners flat and surface coincide).

@@ -32,3 +32,6 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   return SurfacePoint(mix(p, phong, PHONG_ALPHA), select(n0, n / len, len > 0.0), du, dv);
 }
 
+// The surface without any display blend, which the factor rule looks at inside each triangle
+// (factor-bulge.wgsl): this surface has none, so it is evalSurface.
+fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint { return evalSurface(t, wFixed); }

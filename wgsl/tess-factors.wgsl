@@ -1,6 +1,7 @@
 // Pass 1 of each budget attempt, one thread per mesh edge: the edge's tess factor (computed
 // once per edge, so its two triangles cannot disagree), its line state and segment count.
-// Mirrors src/gpu/factors.ts edgeFactor; the curvature measure is factor-rule.wgsl's.
+// Mirrors src/gpu/factors.ts edgeFactor; the curvature measure is factor-rule.wgsl's, and the
+// bulge term of the edge's two triangles is factor-bulge.wgsl's (its pass has run).
 
 fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
   let m = transpose(params.viewProj); // rows of viewProj
@@ -34,10 +35,18 @@ fn adaptiveFactor(e: u32) -> f32 {
     reach = abs(params.dispScale) * max(abs(lo - params.dispMid), abs(hi - params.dispMid));
     amplitude = abs(params.dispScale) * (hi - lo);
   }
+  // The bulge term of the edge's triangles (BULGE_OFF_SCREEN where both are off screen): an edge
+  // whose ends face away, or whose own sphere is off screen, still splits while a triangle beside
+  // it is on screen (a silhouette inside it; an edge at 1 beside edges at 14 leaves slivers that fold).
+  let owner = staticBuf[params.offEdgeOwner + e];
+  let twin = staticBuf[params.offEdgeTwin + e];
+  var inside = bitcast<f32>(work[params.offTriBulge + ownerWord_tri(owner)]);
+  if (twin != NO_OWNER) { inside = max(inside, bitcast<f32>(work[params.offTriBulge + ownerWord_tri(twin)])); }
   let err = length(bend.off);
-  if (bend.away || sphereOutsideFrustum(bend.mid, 0.5 * length(p1 - p0) + err + reach)) { return 1.0; }
+  let unseen = bend.away || sphereOutsideFrustum(bend.mid, 0.5 * length(p1 - p0) + err + reach);
+  if (unseen && inside == BULGE_OFF_SCREEN) { return 1.0; }
   let dist = max(length(bend.mid - params.eye.xyz), 1e-6);
-  let surface = bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle);
+  let surface = max(bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle), inside);
   let detail = min(2.0 * texels, params.lodScale * amplitude / (dist * params.pixelAngle));
   return max(surface, detail);
 }

@@ -24,12 +24,23 @@ fn wireVertex(@builtin(vertex_index) i: u32) -> VertexOut {
   let end = i % 2u;
   let a = cornerClip(triangle, edge);
   let b = cornerClip(triangle, (edge + 1u) % 3u);
+  let c = cornerClip(triangle, (edge + 2u) % 3u);
   // Edges only a few pixels long would paint the surface solid: fade them out, so a dense
-  // tessellation reads as a texture of its density rather than a black blot.
-  let pixels = length((a.xy / max(a.w, 1e-6) - b.xy / max(b.w, 1e-6)) * scene.viewport.xy * 0.5);
+  // tessellation reads as a texture of its density rather than a black blot. A sliver's long
+  // edges fade with it (its width, twice its area over its longest side, in pixels): at the
+  // adaptive factors' density the gap strips' slivers otherwise stand out as dark scratches.
+  let half = scene.viewport.xy * 0.5;
+  let sa = a.xy / max(a.w, 1e-6) * half;
+  let sb = b.xy / max(b.w, 1e-6) * half;
+  let sc = c.xy / max(c.w, 1e-6) * half;
+  let pixels = length(sa - sb);
+  let ab = sb - sa;
+  let ac = sc - sa;
+  let longest = max(max(pixels, length(ac)), length(sc - sb));
+  let width = abs(ab.x * ac.y - ab.y * ac.x) / max(longest, 1e-6);
   var out: VertexOut;
   out.clip = select(a, b, end == 1u);
-  out.alpha = scene.viewport.z * mix(0.15, 1.0, smoothstep(4.0, 16.0, pixels));
+  out.alpha = scene.viewport.z * mix(0.15, 1.0, smoothstep(4.0, 16.0, min(pixels, 2.0 * width)));
   return out;
 }
 

@@ -462,6 +462,7 @@ export const TESS_STATIC = defineArena<
   | 'triPatternFrame'
   | 'edgeVerts'
   | 'edgeOwner'
+  | 'edgeTwin'
   | 'vertexOwner'
   | 'cc'
   | 'accTri'
@@ -477,6 +478,7 @@ export const TESS_STATIC = defineArena<
   ['triPatternFrame', (s) => s.triangles],
   ['edgeVerts', (s) => 2 * s.edges],
   ['edgeOwner', (s) => s.edges],
+  ['edgeTwin', (s) => s.edges],
   ['vertexOwner', (s) => s.vertices],
   ['cc', (s) => s.ccWords],
   ['accTri', (s) => s.accTriangles],
@@ -530,8 +532,9 @@ export const TESS_CAGE = defineArena<
 ]);
 
 /**
- * work (u32 scratch, rewritten every rebuild): per-edge and per-triangle counts and their
- * exclusive prefix sums (n + 1 words: the total at n), the planned rows (two words per row,
+ * work (u32 scratch, rewritten every rebuild): the factor each triangle's bulge asks for (an f32's
+ * bits, wgsl/factor-bulge.wgsl), per-edge and per-triangle counts and their exclusive prefix sums
+ * (n + 1 words: the total at n), the planned rows (two words per row,
  * at most maxFactor + 1 rows a triangle), each triangle's gap-strip moves (gapMoveWords words a
  * triangle), the scans' block sums, the budget state (BUDGET).
  */
@@ -541,6 +544,7 @@ export const TESS_WORK = defineArena<
   | 'edgeSegs'
   | 'edgeInterior'
   | 'edgeBase'
+  | 'triBulge'
   | 'triVertCount'
   | 'triVertBase'
   | 'triTriCount'
@@ -558,6 +562,7 @@ export const TESS_WORK = defineArena<
   ['edgeSegs', (s) => s.edges],
   ['edgeInterior', (s) => s.edges],
   ['edgeBase', (s) => s.edges + 1],
+  ['triBulge', (s) => s.triangles],
   ['triVertCount', (s) => s.triangles],
   ['triVertBase', (s) => s.triangles + 1],
   ['triTriCount', (s) => s.triangles],

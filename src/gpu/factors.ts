@@ -27,11 +27,37 @@
  * --demo-view --stats`) 5–21% more triangles: creature 3,772 → 3,958, bigguy 8,214 → 9,322,
  * suzanne 3,808 → 4,608. Counting it on every edge instead folds the box and the
  * gear (0 → 4, 0 → 2). The GPU's copy of this measure is wgsl/factor-rule.wgsl.
+ *
+ * BULGE TERM (bulgeFactor; wgsl/factor-bulge.wgsl). The edge term sees only an edge's ends.
+ * Inside a cage triangle whose edges are nearly straight the surface can still bulge (on the
+ * talk's cages, the limit's bulge at the centroid of a triangle whose edges all ask for factor
+ * < 1.5 is up to 3.6× what the ends predict), and the clamped pattern puts no interior vertex
+ * there below a factor of about 3: the drawn triangles cut through the bulge. So each triangle
+ * samples its surface (the exact limit for Catmull-Clark, before the flat-baseline blend) at
+ * BULGE_WEIGHTS (the three points (2/3, 1/6, 1/6), then the centroid); a sample's bulge b is its
+ * distance from the flat triangle of the corners at the same weights, and it asks for
+ *     k = sqrt(BULGE_ALPHA·lodScale·b / (dist·pixelAngle)),
+ * the edge term's law with the constant fitted: in the demo's first view at LOD 1
+ * (tests/limit-distance.node.test.ts: every drawn edge's midpoint and triangle's centroid against
+ * the limit), α = 10 brings the largest distance to about 0.7–0.9 px on the creature, pawn,
+ * bigguy and suzanne (the test logs them), from 2.56 / 3.02 / 2.58 / 4.70 px without the term.
+ * That costs 7.4–8.6× the triangles of the edge term alone there (creature 3,958 → 31,720,
+ * suzanne 4,608 → 38,694). The centroid alone needed α = 16 and about 1.6× the triangles of the
+ * four samples for the same bound; α = 4 left 1.5 px. Each edge takes the larger k of its two triangles, so the factor stays one per edge
+ * and continuous in the camera (tests/cc-animate.gpu.test.ts's jump test).
+ * Facing away does not lower a triangle's k. Skipping samples that face away (by more than
+ * 0.5·|toEye|) saved about a fifth of the triangles, but a triangle facing away beside one
+ * facing the eye then kept an edge at 1 beside edges at 14, and those strips fold: over
+ * tests/no-folds.test.ts's views the boxes went 10 → 106 folded triangles, the gear 3 → 24;
+ * without the skip they are 0 and 0 (the creature 67 → 6).
+ * A triangle whose sphere (round the flat centroid through the farthest corner, grown by the
+ * largest bulge) is outside the view frustum is BULGE_OFF_SCREEN.
  * Edges whose bounding sphere (centre: the Phong midpoint, radius |d|/2 + |e|) is outside the
- * view frustum, and edges whose two ends both face away from the eye, drop to factor 1.
- * Factors are clamped to [1, maxFactor]; NaN becomes 1, so nothing else reaches the
- * tessellator.
+ * view frustum, or whose two ends both face away from the eye, drop to factor 1 unless a
+ * triangle beside them is on screen.
  */
+import { ONE } from '../pattern/fixed.ts';
+
 export const PHONG_ALPHA = 0.75;
 
 export type Vec3 = readonly [number, number, number];
@@ -82,7 +108,47 @@ export function sphereOutsideFrustum(m: ArrayLike<number>, c: Vec3, r: number): 
   return false;
 }
 
-export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorRule): number {
+/** The bulge term's constant (see the header; wgsl/factor-bulge.wgsl holds the same). */
+export const BULGE_ALPHA = 10;
+/** A triangle's bulge term where it is off screen. */
+export const BULGE_OFF_SCREEN = -1;
+/** The bulge samples, 16.16 barycentrics exactly as the WGSL makes them: (2/3, 1/6, 1/6) at each
+ * corner, then the centroid. */
+export const BULGE_WEIGHTS: readonly Vec3[] = (() => {
+  const sixth = Math.floor(ONE / 6),
+    third = Math.floor(ONE / 3);
+  const w: Vec3[] = [0, 1, 2].map((i) => [0, 1, 2].map((j) => (j === i ? ONE - 2 * sixth : sixth)) as unknown as Vec3);
+  w.push([third, third, ONE - 2 * third]);
+  return w;
+})();
+
+/**
+ * The factor a cage triangle's bulge asks for (the header's bulge term): `corners` are its
+ * corners' positions (the factor rule's: the limit's for Catmull-Clark), `surface` evaluates its
+ * surface at 16.16 barycentrics. BULGE_OFF_SCREEN where the triangle is outside the frustum.
+ */
+export function bulgeFactor(
+  corners: readonly [Vec3, Vec3, Vec3],
+  surface: (w: Vec3) => { pos: ArrayLike<number> },
+  rule: FactorRule,
+): number {
+  let k = 0;
+  let most = 0;
+  for (const w of BULGE_WEIGHTS) {
+    const s = surface(w);
+    const dist = Math.max(Math.hypot(rule.eye[0] - s.pos[0], rule.eye[1] - s.pos[1], rule.eye[2] - s.pos[2]), 1e-6);
+    const b = Math.hypot(...[0, 1, 2].map((c) => s.pos[c] - (w[0] * corners[0][c] + w[1] * corners[1][c] + w[2] * corners[2][c]) / ONE));
+    most = Math.max(most, b);
+    k = Math.max(k, Math.sqrt((BULGE_ALPHA * rule.lodScale * b) / (dist * rule.pixelAngle)));
+  }
+  const c = [0, 1, 2].map((i) => (corners[0][i] + corners[1][i] + corners[2][i]) / 3) as unknown as Vec3;
+  const r = Math.max(...corners.map((p) => Math.hypot(p[0] - c[0], p[1] - c[1], p[2] - c[2]))) + most;
+  return sphereOutsideFrustum(rule.viewProj, c, r) ? BULGE_OFF_SCREEN : k;
+}
+
+/** The adaptive or fixed factor of edge p0–p1 (unit normals n0, n1); `bulge` is the larger
+ * bulgeFactor of its two triangles (the default: both off screen, the edge term alone). */
+export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorRule, bulge = BULGE_OFF_SCREEN): number {
   let f: number;
   if (rule.mode === 'fixed') {
     f = rule.fixedFactor;
@@ -94,7 +160,7 @@ export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorR
     const toEye0 = sub(rule.eye, p0),
       toEye1 = sub(rule.eye, p1);
     const away = dot(n0, toEye0) < -0.1 * Math.hypot(...toEye0) && dot(n1, toEye1) < -0.1 * Math.hypot(...toEye1);
-    if (away || sphereOutsideFrustum(rule.viewProj, mid, radius)) {
+    if ((away || sphereOutsideFrustum(rule.viewProj, mid, radius)) && bulge === BULGE_OFF_SCREEN) {
       f = 1;
     } else {
       const dist = Math.max(Math.hypot(...sub(mid, rule.eye)), 1e-6);
@@ -103,7 +169,7 @@ export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorR
       const errAcross = Math.hypot(e[0] - along * ray[0], e[1] - along * ray[1], e[2] - along * ray[2]);
       const facing = dot(n0, toEye0) > 0.1 * Math.hypot(...toEye0) && dot(n1, toEye1) > 0.1 * Math.hypot(...toEye1);
       const errSeen = facing ? Math.max(el, 2 * errAcross) : el;
-      f = Math.sqrt((rule.lodScale * errSeen) / (dist * rule.pixelAngle));
+      f = Math.max(Math.sqrt((rule.lodScale * errSeen) / (dist * rule.pixelAngle)), bulge);
     }
   }
   if (!(f >= 1)) return 1; // NaN, ≤ 1

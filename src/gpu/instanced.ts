@@ -21,7 +21,8 @@
  *   patchEdges modes static / per-patch: each edge's level = min over its patches   one thread per patch
  *   edgeView   mode dynamic: each edge's level from the view                        one thread per edge
  *   edgeFactorRule  mode factor-rule: each edge's level by the compute tessellator's
- *              adaptive factor rule (the same screen-space measure)             one thread per edge
+ *              adaptive factor rule's edge term (the same screen-space measure; not its bulge
+ *              term, which samples inside each cage triangle: not ported)   one thread per edge
  *   bucket     each patch's level, a slot in its bucket's list                      one thread per patch
  *   records    14 drawIndexedIndirect records (quad and triangle × 7 levels)        one workgroup
  * Then encodeDraw (lit or shadow pass: 14 drawIndexedIndirect, the bucket's list base by dynamic
@@ -318,7 +319,8 @@ export function cpuDynamicEdgeLevel(
 
 /**
  * The factor-rule mode for edge e on the CPU (wgsl/instanced-levels.wgsl edgeFactorRule): the
- * compute tessellator's adaptive factor (src/gpu/factors.ts edgeFactor, double precision) at the
+ * compute tessellator's adaptive factor's edge term (src/gpu/factors.ts edgeFactor without a
+ * bulge, double precision) at the
  * edge's two cage vertices as `point` gives them (cage positions and normals; the limit's for
  * Catmull-Clark), rounded up to a power of two. Returns the level and the factor.
  */

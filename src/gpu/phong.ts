@@ -1,8 +1,10 @@
 /**
  * Phong tessellation (Boubekeur & Alexa 2008) on the CPU, in double precision: the reference
- * that wgsl/tess-common.wgsl evalSurface is held to.
+ * that wgsl/surface-phong.wgsl evalSurface is held to, and the factor rule's bulge term over it
+ * (phongEdgeBulges: what wgsl/factor-bulge.wgsl computes on the Phong surface).
  */
-import { PHONG_ALPHA } from './factors.ts';
+import { BULGE_OFF_SCREEN, bulgeFactor, type FactorRule, PHONG_ALPHA, type Vec3 } from './factors.ts';
+import { ONE } from '../pattern/fixed.ts';
 import type { PreparedMesh } from './prepare.ts';
 
 export function phongPoint(mesh: PreparedMesh, t: number, w: readonly [number, number, number]): { pos: number[]; normal: number[] } {
@@ -26,4 +28,24 @@ export function phongPoint(mesh: PreparedMesh, t: number, w: readonly [number, n
     pos: p.map((x, c) => x + PHONG_ALPHA * (phong[c] - x)),
     normal: len > 0 ? n.map((x) => x / len) : [N[3 * v[0]], N[3 * v[0] + 1], N[3 * v[0] + 2]],
   };
+}
+
+/** Each edge's bulge term (src/gpu/factors.ts bulgeFactor) on the Phong surface: the larger of
+ * its two triangles' (BULGE_OFF_SCREEN, none, in fixed mode). */
+export function phongEdgeBulges(mesh: PreparedMesh, rule: FactorRule): Float64Array {
+  const bulge = new Float64Array(mesh.edgeCount).fill(BULGE_OFF_SCREEN);
+  if (rule.mode !== 'adaptive') return bulge;
+  const P = mesh.positions;
+  for (let t = 0; t < mesh.triangleCount; t++) {
+    const corners = [0, 1, 2].map((i) => {
+      const v = mesh.triVerts[3 * t + i];
+      return [P[3 * v], P[3 * v + 1], P[3 * v + 2]];
+    }) as unknown as [Vec3, Vec3, Vec3];
+    const k = bulgeFactor(corners, (w) => phongPoint(mesh, t, [w[0] / ONE, w[1] / ONE, w[2] / ONE]), rule);
+    for (let i = 0; i < 3; i++) {
+      const e = mesh.triEdges[3 * t + i];
+      bulge[e] = Math.max(bulge[e], k);
+    }
+  }
+  return bulge;
 }

@@ -65,6 +65,9 @@ export interface PreparedMesh {
   edgeVerts: Uint32Array;
   /** One triangle of each edge and the edge's local index in it (an OwnerWord, contract.ts). */
   edgeOwner: Uint32Array;
+  /** The edge's second triangle (an OwnerWord), NO_OWNER on a boundary edge: with edgeOwner, the
+   * two triangles whose interiors the factor rule looks into (wgsl/tess-factors.wgsl). */
+  edgeTwin: Uint32Array;
   /** One triangle of each vertex and its corner in it (an OwnerWord), NO_OWNER if unused. */
   vertexOwner: Uint32Array;
   /** Bounding box diagonal length: the model's size for tolerances. */
@@ -169,6 +172,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
   const edgeIds = new Map<number, number>();
   const edgeVerts: number[] = [];
   const edgeOwner: number[] = [];
+  const edgeTwin: number[] = [];
   const triEdges = new Uint32Array(3 * nT);
   const triPatternFrame = new Uint32Array(nT);
   const vertexOwner = new Uint32Array(nVAll).fill(NO_OWNER);
@@ -186,6 +190,9 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
         edgeIds.set(key, e);
         edgeVerts.push(lo, hi);
         edgeOwner.push(OWNER_WORD.pack({ corner: i, tri: t }));
+        edgeTwin.push(NO_OWNER);
+      } else if (edgeTwin[e] === NO_OWNER) {
+        edgeTwin[e] = OWNER_WORD.pack({ corner: i, tri: t });
       }
       triEdges[3 * t + i] = e;
       reverse.push(a > b); // walked from its higher vertex: reversed
@@ -219,6 +226,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     triFan: Uint32Array.from(fans),
     edgeVerts: Uint32Array.from(edgeVerts),
     edgeOwner: Uint32Array.from(edgeOwner),
+    edgeTwin: Uint32Array.from(edgeTwin),
     vertexOwner,
     size,
     bboxMin,

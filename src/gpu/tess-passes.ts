@@ -8,6 +8,7 @@ import commonWgsl from '../../wgsl/tess-common.wgsl?raw';
 import outputsWgsl from '../../wgsl/tess-outputs.wgsl?raw';
 import factorsWgsl from '../../wgsl/tess-factors.wgsl?raw';
 import factorRuleWgsl from '../../wgsl/factor-rule.wgsl?raw';
+import factorBulgeWgsl from '../../wgsl/factor-bulge.wgsl?raw';
 import countWgsl from '../../wgsl/tess-count.wgsl?raw';
 import budgetWgsl from '../../wgsl/tess-budget.wgsl?raw';
 import weldWgsl from '../../wgsl/tess-weld.wgsl?raw';
@@ -30,6 +31,7 @@ export const SURFACES: readonly Surface[] = ['catmull-clark', 'phong', 'bezier-a
 export const isAccSurface = (s: Surface): s is AccScheme => s.endsWith('-acc');
 
 export type PassName =
+  | 'bulge'
   | 'factors'
   | 'count'
   | 'budget'
@@ -61,7 +63,8 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
   const surfaceWgsl =
     surface === 'catmull-clark' ? ccSurfaceWgsl : isAccSurface(surface) ? [ACC_SURFACE_WGSL, accTessWgsl].join('\n') : phongSurfaceWgsl;
   const modules = {
-    factors: code(factorRuleWgsl, factorsWgsl),
+    // The bulge term evaluates the surface inside each triangle; the edge term reads it.
+    factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl),
     count: code(patternWgsl, countWgsl),
     budget: code(budgetWgsl),
     // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
@@ -81,6 +84,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     group: module === 'ccBuild' ? 'ccBuild' : 'tess',
   });
   const passes = [
+    pass('bulge', 'tess bulge', 'factors', 'bulge'),
     pass('factors', 'tess factors', 'factors'),
     pass('count', 'tess count', 'count'),
     pass('budget', 'tess budget', 'budget'),

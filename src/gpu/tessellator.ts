@@ -5,6 +5,8 @@
  *
  * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except the weld's edge
  * points and emit):
+ *   bulge        one thread per triangle: the factor its surface's bulge    wgsl/factor-bulge.wgsl
+ *                asks for (the surface at four points against the flat triangle)
  *   budget loop, up to 3 attempts (scale 1, a scale that fits, then factor 1 everywhere):
  *     factors    one thread per edge: tess factor, line state, segments    wgsl/tess-factors.wgsl
  *     count      one thread per triangle: interior vertices and triangles   wgsl/tess-count.wgsl
@@ -71,9 +73,9 @@ export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPa
 
 export { grid2d } from './contract.ts';
 
-/** Compute passes one rebuild records (the patch build, factors and count + budget per attempt,
- * weld, plan, emit), each timed by a pair of timestamps. */
-const TIMED_PASSES = 1 + 2 * ATTEMPTS + 3;
+/** Compute passes one rebuild records (the patch build, the bulge term, factors and count + budget
+ * per attempt, weld, plan, emit), each timed by a pair of timestamps. */
+const TIMED_PASSES = 2 + 2 * ATTEMPTS + 3;
 
 interface Pipeline {
   pipeline: GPUComputePipeline;
@@ -278,6 +280,7 @@ export class Tessellator {
       triPatternFrame: prepared.triPatternFrame,
       edgeVerts: prepared.edgeVerts,
       edgeOwner: prepared.edgeOwner,
+      edgeTwin: prepared.edgeTwin,
       vertexOwner: prepared.vertexOwner,
       cc: cc?.words,
       accTri: acc?.triangles,
@@ -539,6 +542,11 @@ export class Tessellator {
       cp.end();
     }
     this.recordAccBuild(encoder, m);
+    {
+      const cp = pass('tess bulge', 'factors');
+      run(cp, 'bulge', groupsFor(nT));
+      cp.end();
+    }
     for (let attempt = 0; attempt < ATTEMPTS; attempt++) {
       let cp = pass(`tess factors ${attempt}`, 'factors');
       run(cp, 'factors', groupsFor(nE));
