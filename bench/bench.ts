@@ -24,7 +24,7 @@ import { Tessellator } from '../src/gpu/tessellator.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { headlessCamera, type HeadlessOptions } from '../src/gpu/headless.ts';
 import { readBuffer } from '../src/gpu/readback.ts';
-import { edgeFactor, type FactorRule } from '../src/gpu/factors.ts';
+import { adaptiveRuleOf, edgeFactor } from '../src/gpu/factors.ts';
 import { phongEdgeBulges } from '../src/gpu/phong.ts';
 import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
@@ -175,16 +175,7 @@ async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats: numbe
  * the rule (src/gpu/factors.ts: the edge term and the bulge term of the edge's triangles, on the
  * Phong surface, as the bench's tessellator) gives any edge in this view. */
 function fixedFactorForAdaptive(mesh: PreparedMesh, o: HeadlessOptions): number {
-  const cam = headlessCamera(mesh, o);
-  const rule: FactorRule = {
-    mode: 'adaptive',
-    fixedFactor: 1,
-    lodScale: cam.lodScale,
-    viewProj: cam.viewProj,
-    eye: cam.eye,
-    pixelAngle: cam.fovY / cam.viewportHeight,
-    maxFactor: 64,
-  };
+  const rule = adaptiveRuleOf(headlessCamera(mesh, o));
   const bulge = phongEdgeBulges(mesh, rule);
   const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
   let most = 1;

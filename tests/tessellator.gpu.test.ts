@@ -114,7 +114,7 @@ import pawn from '../public/models/pawn.obj?raw';
 import sheetModel from '../public/models/sheet.obj?raw';
 import torusModel from '../public/models/torus.obj?raw';
 import { loadCage } from '../src/mesh/index.ts';
-import { edgeFactor } from '../src/gpu/factors.ts';
+import { adaptiveRuleOf, edgeFactor } from '../src/gpu/factors.ts';
 import { phongEdgeBulges } from '../src/gpu/phong.ts';
 import { ONE } from '../src/pattern/fixed.ts';
 
@@ -151,15 +151,7 @@ describe('compute tessellator on the project models', () => {
     const p = (m: PreparedMesh) => camera(m, 1.2 * m.size, undefined, 3);
     const { mesh, edgeF } = await tessellate(cage, p);
     const fp = p(mesh);
-    const rule = {
-      mode: 'adaptive' as const,
-      fixedFactor: 1,
-      lodScale: fp.lodScale,
-      viewProj: fp.viewProj,
-      eye: fp.eye,
-      pixelAngle: fp.fovY / fp.viewportHeight,
-      maxFactor: 64,
-    };
+    const rule = adaptiveRuleOf(fp);
     // The bulge term of each edge's two triangles, on the same (Phong) surface.
     const bulge = phongEdgeBulges(mesh, rule);
     expect(bulge.some((k) => k > 1)).toBe(true);

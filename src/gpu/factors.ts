@@ -57,6 +57,7 @@
  * triangle beside them is on screen.
  */
 import { ONE } from '../pattern/fixed.ts';
+import type { FactorParams } from './types.ts';
 
 export const PHONG_ALPHA = 0.75;
 
@@ -84,6 +85,19 @@ export interface FactorRule {
   /** fovY / viewportHeight, radians per pixel. */
   pixelAngle: number;
   maxFactor: number;
+}
+
+/** The adaptive rule a tessellator applies for its FactorParams (camera, viewport, LOD scale). */
+export function adaptiveRuleOf(p: FactorParams, maxFactor = 64): FactorRule {
+  return {
+    mode: 'adaptive',
+    fixedFactor: 1,
+    lodScale: p.lodScale,
+    viewProj: p.viewProj,
+    eye: [p.eye[0], p.eye[1], p.eye[2]],
+    pixelAngle: p.fovY / p.viewportHeight,
+    maxFactor,
+  };
 }
 
 /** Is a sphere entirely outside one of the six frustum planes of viewProj? */
