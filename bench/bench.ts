@@ -24,8 +24,8 @@ import { Tessellator } from '../src/gpu/tessellator.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { headlessCamera, type HeadlessOptions } from '../src/gpu/headless.ts';
 import { readBuffer } from '../src/gpu/readback.ts';
-import { adaptiveRuleOf, edgeFactor } from '../src/gpu/factors.ts';
-import { phongEdgeBulges } from '../src/gpu/phong.ts';
+import { adaptiveRuleOf } from '../src/gpu/factors.ts';
+import { phongEdgeFactors } from '../src/gpu/phong.ts';
 import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
@@ -176,13 +176,8 @@ async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats: numbe
  * Phong surface, as the bench's tessellator) gives any edge in this view. */
 function fixedFactorForAdaptive(mesh: PreparedMesh, o: HeadlessOptions): number {
   const rule = adaptiveRuleOf(headlessCamera(mesh, o));
-  const bulge = phongEdgeBulges(mesh, rule);
-  const v = (arr: Float32Array, i: number) => [arr[3 * i], arr[3 * i + 1], arr[3 * i + 2]] as [number, number, number];
   let most = 1;
-  for (let e = 0; e < mesh.edgeCount; e++) {
-    const [a, b] = [mesh.edgeVerts[2 * e], mesh.edgeVerts[2 * e + 1]];
-    most = Math.max(most, edgeFactor(v(mesh.positions, a), v(mesh.positions, b), v(mesh.normals, a), v(mesh.normals, b), rule, bulge[e]));
-  }
+  for (const f of phongEdgeFactors(mesh, rule)) most = Math.max(most, f);
   return most;
 }
 

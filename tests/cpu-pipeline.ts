@@ -1,15 +1,15 @@
 /**
  * The whole adaptive pipeline on the CPU, from the pieces the GPU passes are held to: the
- * factor rule (src/gpu/factors.ts edgeFactor, one factor per mesh edge in its canonical
- * lower→higher direction, with its two triangles' bulge term, bulgeFactor), the pattern (src/pattern/clamped.ts clampedTriangle with the reverse
- * flags prepare.ts uses) and the Phong surface (src/gpu/phong.ts phongPoint). No welding: each
+ * factor rule (src/gpu/phong.ts phongEdgeFactors: src/gpu/factors.ts edgeFactor with its two
+ * triangles' bulge term, one factor per mesh edge in its canonical lower→higher direction), the
+ * pattern (src/pattern/clamped.ts clampedTriangle with the reverse flags prepare.ts uses) and the Phong surface (src/gpu/phong.ts phongPoint). No welding: each
  * cage triangle's pattern is evaluated on its own, which gives the same positions as the welded
  * GPU mesh (shared edge points are bit-identical barycentrics) and keeps track of where every
  * output triangle came from.
  */
 import { mat4 } from 'gl-matrix';
-import { edgeFactor, type FactorRule, type Vec3 } from '../src/gpu/factors.ts';
-import { phongEdgeBulges, phongPoint } from '../src/gpu/phong.ts';
+import type { FactorRule, Vec3 } from '../src/gpu/factors.ts';
+import { phongEdgeFactors, phongPoint } from '../src/gpu/phong.ts';
 import type { PreparedMesh } from '../src/gpu/prepare.ts';
 import { clampedTriangle, type Reverse } from '../src/pattern/clamped.ts';
 import { ONE } from '../src/pattern/fixed.ts';
@@ -75,17 +75,8 @@ export interface CpuTriangle {
 
 /** Every output triangle of the CPU pipeline, in the pattern's (positive) winding. */
 export function cpuTessellate(mesh: PreparedMesh, rule: FactorRule, trueNormals = false): CpuTriangle[] {
-  const P = mesh.positions,
-    N = mesh.normals;
-  const vec = (a: ArrayLike<number>, i: number): Vec3 => [a[3 * i], a[3 * i + 1], a[3 * i + 2]];
-  const edgeF = new Float64Array(mesh.edgeCount);
-  const bulge = phongEdgeBulges(mesh, rule);
-  for (let e = 0; e < mesh.edgeCount; e++) {
-    const a = mesh.edgeVerts[2 * e],
-      b = mesh.edgeVerts[2 * e + 1];
-    // The GPU stores the factor as 16.16; so does this, so both see the same line state.
-    edgeF[e] = Math.round(edgeFactor(vec(P, a), vec(P, b), vec(N, a), vec(N, b), rule, bulge[e]) * ONE) / ONE;
-  }
+  // The GPU stores the factor as 16.16; so does this, so both see the same line state.
+  const edgeF = phongEdgeFactors(mesh, rule).map((f) => Math.round(f * ONE) / ONE);
   const out: CpuTriangle[] = [];
   for (let t = 0; t < mesh.triangleCount; t++) {
     const tv = [0, 1, 2].map((i) => mesh.triVerts[3 * t + i]);

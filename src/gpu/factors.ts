@@ -43,8 +43,9 @@
  * bigguy and suzanne (the test logs them), from 2.56 / 3.02 / 2.58 / 4.70 px without the term.
  * That costs 7.4–8.6× the triangles of the edge term alone there (creature 3,958 → 31,720,
  * suzanne 4,608 → 38,694). The centroid alone needed α = 16 and about 1.6× the triangles of the
- * four samples for the same bound; α = 4 left 1.5 px. Each edge takes the larger k of its two triangles, so the factor stays one per edge
- * and continuous in the camera (tests/cc-animate.gpu.test.ts's jump test).
+ * four samples for the same bound; α = 4 left 1.5 px. Each edge takes the larger k of its two
+ * triangles, so the factor stays one per edge and continuous in the camera
+ * (tests/cc-animate.gpu.test.ts's jump test).
  * Facing away does not lower a triangle's k. Skipping samples that face away (by more than
  * 0.5·|toEye|) saved about a fifth of the triangles, but a triangle facing away beside one
  * facing the eye then kept an edge at 1 beside edges at 14, and those strips fold: over

@@ -1,9 +1,10 @@
 /**
  * Phong tessellation (Boubekeur & Alexa 2008) on the CPU, in double precision: the reference
  * that wgsl/surface-phong.wgsl evalSurface is held to, and the factor rule's bulge term over it
- * (phongEdgeBulges: what wgsl/factor-bulge.wgsl computes on the Phong surface).
+ * (phongEdgeBulges: what wgsl/factor-bulge.wgsl computes on the Phong surface; phongEdgeFactors:
+ * the whole rule per edge).
  */
-import { BULGE_OFF_SCREEN, bulgeFactor, type FactorRule, PHONG_ALPHA, type Vec3 } from './factors.ts';
+import { BULGE_OFF_SCREEN, bulgeFactor, edgeFactor, type FactorRule, PHONG_ALPHA, type Vec3 } from './factors.ts';
 import { ONE } from '../pattern/fixed.ts';
 import type { PreparedMesh } from './prepare.ts';
 
@@ -48,4 +49,20 @@ export function phongEdgeBulges(mesh: PreparedMesh, rule: FactorRule): Float64Ar
     }
   }
   return bulge;
+}
+
+/** Every edge's factor under `rule` on the Phong surface (src/gpu/factors.ts edgeFactor with its
+ * triangles' bulge term), in double precision: what the GPU's factor pass computes for Phong. */
+export function phongEdgeFactors(mesh: PreparedMesh, rule: FactorRule): Float64Array {
+  const P = mesh.positions,
+    N = mesh.normals;
+  const vec = (a: ArrayLike<number>, i: number): Vec3 => [a[3 * i], a[3 * i + 1], a[3 * i + 2]];
+  const bulge = phongEdgeBulges(mesh, rule);
+  const f = new Float64Array(mesh.edgeCount);
+  for (let e = 0; e < mesh.edgeCount; e++) {
+    const a = mesh.edgeVerts[2 * e],
+      b = mesh.edgeVerts[2 * e + 1];
+    f[e] = edgeFactor(vec(P, a), vec(P, b), vec(N, a), vec(N, b), rule, bulge[e]);
+  }
+  return f;
 }
