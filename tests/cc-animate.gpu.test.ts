@@ -100,6 +100,7 @@ describe('Catmull-Clark with an animated cage', () => {
       const ref = new CCReference(moved, movedMesh, cc);
       const report = checkTessellation(movedMesh, edgeF, out, {
         closed: true,
+        split: true,
         reference: (tri, w) => {
           const x = ref.at(tri, w).ref;
           return { pos: x.P, normal: x.N };

@@ -77,6 +77,7 @@ describe('single-crease patches on the GPU', () => {
     }
     const report = checkTessellation(mesh, edgeF, out, {
       closed: true,
+      split: true,
       reference: (tri, w) => {
         const r = ref.at(tri, w).ref;
         return { pos: r.P, normal: r.N };

@@ -100,6 +100,7 @@ describe('Catmull-Clark surface against the CPU reference', () => {
       }
       const report = checkTessellation(mesh, edgeF, out, {
         closed,
+        split: true,
         reference: (tri, w) => {
           const r = ref.at(tri, w).ref;
           return { pos: r.P, normal: r.N };

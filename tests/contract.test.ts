@@ -578,6 +578,7 @@ describe("the tessellator's contract", () => {
 
   const sizes = fc.record({
     vertices: fc.nat(50_000),
+    extraSlots: fc.nat(10_000),
     edges: fc.nat(150_000),
     triangles: fc.nat(100_000),
     maxFactor: fc.constantFrom(8, 64, 256),

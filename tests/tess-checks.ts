@@ -9,7 +9,7 @@ import { hableLine } from '../src/pattern/hable-line.ts';
 import { NO_OWNER } from '../src/gpu/prepare.ts';
 import type { PreparedMesh } from '../src/gpu/prepare.ts';
 import type { MeshReadback } from '../src/gpu/readback.ts';
-import { decodeBary } from '../src/gpu/contract.ts';
+import { decodeBary, OWNER_WORD } from '../src/gpu/contract.ts';
 
 export interface TessReport {
   problems: string[];
@@ -48,6 +48,9 @@ export function checkTessellation(
     maxErrors?: number;
     /** The surface at (t, w); null where the caller holds the vertex to its own rule instead. */
     reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] } | null;
+    /** The tessellator splits normals at infinitely sharp creases (the Catmull-Clark surface:
+     * prepare.ts splitCreases), so those points are output once per side or sector. */
+    split?: boolean;
   },
 ): TessReport {
   const problems: string[] = [];
@@ -57,7 +60,14 @@ export function checkTessellation(
   // Expected patterns from the GPU's own edge factors (the rule is tested separately).
   let expectedTriangles = 0;
   let expectedVertices = mesh.vertexCount;
-  for (let e = 0; e < mesh.edgeCount; e++) expectedVertices += hableLine(edgeF[e] / ONE).x.length - 2; // interior points
+  // Interior points of each edge, once per side where the normals split; and the extra sectors.
+  let splitCopies = opts.split ? mesh.slotOwner.length : 0;
+  for (let e = 0; e < mesh.edgeCount; e++) {
+    const interior = hableLine(edgeF[e] / ONE).x.length - 2;
+    expectedVertices += interior;
+    if (opts.split && mesh.edgeSplit[e]) splitCopies += interior;
+  }
+  expectedVertices += splitCopies;
   let triOut = 0;
   for (let t = 0; t < mesh.triangleCount; t++) {
     const tv = [mesh.triVerts[3 * t], mesh.triVerts[3 * t + 1], mesh.triVerts[3 * t + 2]];
@@ -89,7 +99,20 @@ export function checkTessellation(
   if (out.triangleCount !== expectedTriangles) add(`triangle count ${out.triangleCount} ≠ CPU ${expectedTriangles}`);
   if (out.vertexCount !== expectedVertices) add(`vertex count ${out.vertexCount} ≠ CPU ${expectedVertices}`);
 
+  // The two sides of a split crease refer to two output vertices at one (bit-identical)
+  // position; canonical[v] is the first vertex at v's position (v itself without splits).
+  const firstAt = new Map<string, number>();
+  const canonical = new Uint32Array(out.vertexCount);
+  for (let v = 0; v < out.vertexCount; v++) {
+    const k = `${out.positions[3 * v]},${out.positions[3 * v + 1]},${out.positions[3 * v + 2]}`;
+    const f = firstAt.get(k);
+    canonical[v] = f === undefined || !opts.split ? v : f;
+    if (f === undefined) firstAt.set(k, v);
+  }
+
   // Surface: every vertex against the CPU's Phong evaluation (or opts.reference) at its barycentrics.
+  // A split crease's second copy has the first's position (the owner side's, displaced along its
+  // normal where displacement is on): only its normal is its own side's.
   let maxPositionError = 0;
   let maxNormalError = 0;
   for (let v = 0; v < out.vertexCount; v++) {
@@ -102,18 +125,19 @@ export function checkTessellation(
     const nrm = [out.normals[3 * v], out.normals[3 * v + 1], out.normals[3 * v + 2]];
     if (pos.some((x) => !Number.isFinite(x)) || nrm.some((x) => !Number.isFinite(x))) add(`vertex ${v}: NaN or infinity`);
     if (!ref) continue;
-    const dp = Math.hypot(pos[0] - ref.pos[0], pos[1] - ref.pos[1], pos[2] - ref.pos[2]) / mesh.size;
+    const dp = canonical[v] !== v ? 0 : Math.hypot(pos[0] - ref.pos[0], pos[1] - ref.pos[1], pos[2] - ref.pos[2]) / mesh.size;
     maxPositionError = Math.max(maxPositionError, dp);
     maxNormalError = Math.max(maxNormalError, angleBetween(nrm, ref.normal));
   }
   if (maxPositionError > 1e-5) add(`position error ${maxPositionError} of the model size > 1e-5`);
 
-  // Watertight: every edge of a closed output used by exactly two triangles, once each way.
+  // Watertight: every edge of a closed output used by exactly two triangles, once each way (by
+  // the first vertex at each position where normals split, above).
   const directed = new Map<string, number>();
   for (let t = 0; t < out.triangleCount; t++) {
     for (let c = 0; c < 3; c++) {
-      const a = out.indices[3 * t + c],
-        b = out.indices[3 * t + ((c + 1) % 3)];
+      const a = canonical[out.indices[3 * t + c]],
+        b = canonical[out.indices[3 * t + ((c + 1) % 3)]];
       if (a === b) add(`triangle ${t} repeats vertex ${a}`);
       const k = `${a},${b}`;
       directed.set(k, (directed.get(k) ?? 0) + 1);
@@ -124,14 +148,34 @@ export function checkTessellation(
     if (n > 1) add(`directed edge ${k} used ${n} times`);
     if (opts.closed && !directed.has(`${b},${a}`)) add(`edge ${k} has no opposite: not watertight`);
   }
-  // No two vertices left at the same position that should have been one.
+  // No two vertices left at the same position that should have been one, except the copies of
+  // a split crease: the same cage point (same weights) on an infinitely sharp edge or at a vertex
+  // with extra sectors, exactly as many as laid out.
   const seen = new Map<string, number>();
+  const hasSectors = new Set(
+    Array.from(mesh.slotOwner, (o) => {
+      const { tri, corner } = OWNER_WORD.unpack(o);
+      return mesh.triVerts[3 * tri + corner];
+    }),
+  );
+  const sharpEdge = new Set<string>();
+  for (let e = 0; e < mesh.edgeCount; e++) if (mesh.edgeSplit[e]) sharpEdge.add(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`);
+  let copies = 0;
   for (let v = 0; v < out.vertexCount; v++) {
     if (v < mesh.vertexCount && mesh.vertexOwner[v] === NO_OWNER) continue;
     const k = `${out.positions[3 * v]},${out.positions[3 * v + 1]},${out.positions[3 * v + 2]}`;
     const other = seen.get(k);
-    if (other !== undefined) add(`vertices ${other} and ${v} share the position ${k} but are not welded`);
+    if (other !== undefined) {
+      const a = weightsByCageVertex(mesh, out, other),
+        b = weightsByCageVertex(mesh, out, v);
+      const same = a.size === b.size && [...a].every(([x, w]) => b.get(x) === w);
+      const at = [...b.keys()].sort((x, y) => x - y);
+      const onCrease = (at.length === 1 && hasSectors.has(at[0])) || (at.length === 2 && sharpEdge.has(`${at[0]},${at[1]}`));
+      if (opts.split && same && onCrease) copies++;
+      else add(`vertices ${other} and ${v} share the position ${k} but are not welded`);
+    }
     seen.set(k, v);
   }
+  if (copies !== splitCopies) add(`${copies} split-crease copies, ${splitCopies} laid out`);
   return { problems, maxPositionError, maxNormalError, expectedVertices, expectedTriangles };
 }

@@ -16,7 +16,7 @@ fn main() {
   let b = params.offBudget;
   if (work[b + BUDGET_ACCEPTED] != 0u) { return; }
   let attempt = work[b + BUDGET_ATTEMPT];
-  let vertices = params.nVerts + work[params.offEdgeBase + params.nEdges] + work[params.offTriVertBase + params.nTris];
+  let vertices = params.nSlots + work[params.offEdgeBase + params.nEdges] + work[params.offTriVertBase + params.nTris];
   let triangles = work[params.offTriTriBase + params.nTris];
   let fits = vertices <= params.vertexCapacity && triangles <= params.triangleCapacity;
   if (fits || attempt >= ATTEMPTS - 1u) {

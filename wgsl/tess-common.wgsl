@@ -87,6 +87,11 @@ fn triVert(t: u32, i: u32) -> u32 { return staticBuf[params.offTriVerts + 3u * t
 fn triEdge(t: u32, i: u32) -> u32 { return staticBuf[params.offTriEdges + 3u * t + i]; }
 fn triPatternFrame(t: u32) -> u32 { return staticBuf[params.offTriPatternFrame + t]; }
 fn edgeVert(e: u32, i: u32) -> u32 { return staticBuf[params.offEdgeVerts + 2u * e + i]; }
+// Split normals at infinitely sharp creases (src/gpu/prepare.ts splitCreases): the output vertex
+// of triangle t's corner i (triVert(t, i) where nothing splits), and whether edge e's points are
+// output once per side (the owner's first, then its twin's).
+fn cornerSlot(t: u32, i: u32) -> u32 { return staticBuf[params.offCornerSlot + 3u * t + i]; }
+fn edgeSplit(e: u32) -> bool { return staticBuf[params.offEdgeSplit + e] != 0u; }
 
 // Per-edge results of the factor pass.
 fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + e]; }

@@ -32,23 +32,31 @@ fn vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
   let col = local - (rowCum(first, j) - k0) + 1u; // columns 1..k_j; column k_j is the row end E_j
   let u = select(rowEnd(L, j), framed(L.bottom, col), col < rowKept(first, j));
   let v = framed(L.left, j);
-  writeVertex(params.nVerts + edgeTotal() + q, t, patternToCorners(L.f, ONE - u - v, u, v));
+  writeVertex(params.nSlots + edgeTotal() + q, t, patternToCorners(L.f, ONE - u - v, u, v));
 }
 
 struct Tri { t: u32, L: TriLines, first: u32, k0: u32, vertexBase: u32 }
 
-fn edgeVertex(edge: u32, flip: bool, framedIdx: u32, n: u32) -> u32 {
+// Triangle t's output vertex at its corner on cage vertex v (its sector's, where normals split).
+fn cornerVertex(t: u32, v: u32) -> u32 {
+  return cornerSlot(t, select(select(2u, 1u, triVert(t, 1u) == v), 0u, triVert(t, 0u) == v));
+}
+
+// Point framedIdx of `edge` (n segments) as triangle t sees it: where the edge's normals split,
+// the twin triangle's points are the second copy.
+fn edgeVertex(t: u32, edge: u32, flip: bool, framedIdx: u32, n: u32) -> u32 {
   let k = select(framedIdx, n - framedIdx, flip);
-  if (k == 0u) { return edgeVert(edge, 0u); }
-  if (k == n) { return edgeVert(edge, 1u); }
-  return params.nVerts + work[params.offEdgeBase + edge] + k - 1u;
+  if (k == 0u) { return cornerVertex(t, edgeVert(edge, 0u)); }
+  if (k == n) { return cornerVertex(t, edgeVert(edge, 1u)); }
+  let twinSide = edgeSplit(edge) && ownerWord_tri(staticBuf[params.offEdgeOwner + edge]) != t;
+  return params.nSlots + work[params.offEdgeBase + edge] + k - 1u + select(0u, n - 1u, twinSide);
 }
 
 fn gridVertex(T: Tri, row: u32, col: u32) -> u32 {
   let c = min(col, rowKept(T.first, row));
-  if (row == 0u) { return edgeVertex(triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, c, T.L.bottom.n); }
-  if (row == T.L.left.n) { return triVert(T.t, T.L.f.c); }
-  if (c == 0u) { return edgeVertex(triEdge(T.t, T.L.f.left), T.L.f.flipLeft, row, T.L.left.n); }
+  if (row == 0u) { return edgeVertex(T.t, triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, c, T.L.bottom.n); }
+  if (row == T.L.left.n) { return cornerSlot(T.t, T.L.f.c); }
+  if (c == 0u) { return edgeVertex(T.t, triEdge(T.t, T.L.f.left), T.L.f.flipLeft, row, T.L.left.n); }
   return T.vertexBase + rowCum(T.first, row) - T.k0 + c - 1u;
 }
 
@@ -56,15 +64,15 @@ fn gridVertex(T: Tri, row: u32, col: u32) -> u32 {
 // row ends E_1..E_nl (= C).
 fn innerVertex(T: Tri, a: u32) -> u32 {
   let tail = T.L.bottom.n - 1u - T.k0;
-  if (a <= tail) { return edgeVertex(triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, T.L.bottom.n - 1u - a, T.L.bottom.n); }
+  if (a <= tail) { return edgeVertex(T.t, triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, T.L.bottom.n - 1u - a, T.L.bottom.n); }
   let j = a - tail;
   return gridVertex(T, j, rowKept(T.first, j));
 }
 
 fn outerVertex(T: Tri, b: u32) -> u32 {
-  if (b == 0u) { return triVert(T.t, T.L.f.b); }
-  if (b == T.L.right.n) { return triVert(T.t, T.L.f.c); }
-  return edgeVertex(triEdge(T.t, T.L.f.right), T.L.f.flipRight, b, T.L.right.n);
+  if (b == 0u) { return cornerSlot(T.t, T.L.f.b); }
+  if (b == T.L.right.n) { return cornerSlot(T.t, T.L.f.c); }
+  return edgeVertex(T.t, triEdge(T.t, T.L.f.right), T.L.f.flipRight, b, T.L.right.n);
 }
 
 // Point p of the strip polygon (tess-pattern.wgsl stripPoint) as an output vertex.
@@ -88,7 +96,7 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
   let local = r - work[params.offTriTriBase + t];
   let L = triLines(t);
   let first = work[params.offTriRowBase + t];
-  let T = Tri(t, L, first, rowKept(first, 0u), params.nVerts + edgeTotal() + work[params.offTriVertBase + t]);
+  let T = Tri(t, L, first, rowKept(first, 0u), params.nSlots + edgeTotal() + work[params.offTriVertBase + t]);
   let nl = L.left.n;
   let mirrored = L.f.mirrored;
   let grid = 2u * rowCum(first, nl) - T.k0; // grid triangles: 2·S_nl + k_nl − k_0, k_nl = 0

@@ -67,5 +67,6 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
   work[params.offEdgeState + e] = s;
   let segments = statePointCount(s) - 1u;
   work[params.offEdgeSegs + e] = segments;
-  work[params.offEdgeInterior + e] = segments - 1u;
+  // Its interior points, twice on an edge whose normals split (once per side).
+  work[params.offEdgeInterior + e] = (segments - 1u) * select(1u, 2u, edgeSplit(e));
 }

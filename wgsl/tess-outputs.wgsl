@@ -20,6 +20,23 @@ fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
   outSrcTri[index] = t;
 }
 
+// A point where the surface's normal splits (an infinitely sharp crease): the position of the
+// point as (tPos, wPos) gives it, the owner side's, so that both sides' output vertices lie at
+// bit-identical places (one evaluation, repeated exactly), and the normal as triangle tN sees it.
+fn writeSplitVertex(index: u32, tPos: u32, wPos: vec3<u32>, tN: u32, wN: vec3<u32>) {
+  if (index >= params.vertexCapacity) { return; }
+  let p = surfaceAt(tPos, wPos).pos;
+  let n = surfaceAt(tN, wN).normal;
+  outPositions[3u * index] = p.x;
+  outPositions[3u * index + 1u] = p.y;
+  outPositions[3u * index + 2u] = p.z;
+  outNormals[3u * index] = n.x;
+  outNormals[3u * index + 1u] = n.y;
+  outNormals[3u * index + 2u] = n.z;
+  outBary[index] = packBary(wN);
+  outSrcTri[index] = tN;
+}
+
 // A cage vertex no face with a surface uses (a bare vertex, or one of holes only) still has its
 // output slot: it gets the cage position, no normal and no source triangle (NO_OWNER), so the
 // output buffers never hold what a previous mesh left there. No triangle refers to it.

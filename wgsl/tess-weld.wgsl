@@ -2,17 +2,33 @@
 // every triangle refers to it by index, so the output is watertight by construction: the
 // vertices on shared corners and shared edges are not just bit-identical, they are one.
 //   corners: vertex v of the output is cage vertex v (Phong tessellation interpolates its
-//            corners), one thread per cage vertex;
+//            corners), one thread per cage vertex, then one per extra sector of a vertex where
+//            the normals split (prepare.ts splitCreases: its position is the vertex's, its normal
+//            the sector's);
 //   edges:   the interior points of each mesh edge's line, in the edge's canonical direction
 //            (lower to higher vertex), one thread per point (an indirect dispatch sized by the
 //            budget pass: a thread per edge looping over its points made the pass as slow as
 //            its most finely cut edge, 1.4-3 ms on an H200 at factor 16); each is evaluated
-//            through one triangle of the edge, whose barycentrics are stored.
+//            through one triangle of the edge, whose barycentrics are stored. An edge whose
+//            normals split has its points twice: the owner's, then the twin's (same positions).
 
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn corners(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let v = flatIndex(wid, lid);
-  if (v >= params.nVerts || !emitEnabled()) { return; }
+  if (v >= params.nSlots || !emitEnabled()) { return; }
+  if (v >= params.nVerts) {
+    // An extra sector: the normal through its own triangle, the position through the vertex's owner.
+    let sector = staticBuf[params.offSlotOwner + v - params.nVerts];
+    let ts = ownerWord_tri(sector);
+    let cv = triVert(ts, ownerWord_corner(sector));
+    let owner = staticBuf[params.offVertexOwner + cv];
+    var wPos = vec3<u32>(0u);
+    wPos[ownerWord_corner(owner)] = ONE;
+    var wN = vec3<u32>(0u);
+    wN[ownerWord_corner(sector)] = ONE;
+    writeSplitVertex(v, ownerWord_tri(owner), wPos, ts, wN);
+    return;
+  }
   let owner = staticBuf[params.offVertexOwner + v];
   if (owner == NO_OWNER) {
     writeUnusedVertex(v, v); // not used by any face with a surface
@@ -29,15 +45,31 @@ fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index)
   let q = flatIndex(wid, lid); // the q-th interior edge point of the whole mesh
   if (q >= work[params.offEdgeBase + params.nEdges] || !emitEnabled()) { return; }
   let e = lastAtMost(params.offEdgeBase, params.nEdges, q);
-  let k = q - work[params.offEdgeBase + e] + 1u; // point k of the edge's line, 1..n−1
+  let j = q - work[params.offEdgeBase + e];
+  let interior = edgeSegments(e) - 1u;
+  let twinSide = j >= interior; // only where the edge splits: its second copy
+  let k = select(j, j - interior, twinSide) + 1u; // point k of the edge's line, 1..n−1
+  let x = linePoint(edgeState(e), edgeF(e), k);
   let owner = staticBuf[params.offEdgeOwner + e];
   let t = ownerWord_tri(owner);
-  let i = ownerWord_corner(owner); // the owner's edge i runs from its corner i to corner i+1
+  let w = edgeWeights(e, owner, x);
+  if (twinSide) {
+    let twin = staticBuf[params.offEdgeTwin + e];
+    writeSplitVertex(params.nSlots + q, t, w, ownerWord_tri(twin), edgeWeights(e, twin, x));
+  } else {
+    writeVertex(params.nSlots + q, t, w);
+  }
+}
+
+// The weights in triangle `tri` (an OwnerWord: the triangle and the corner its edge starts at)
+// of edge e's point x (a line coordinate along the edge's canonical direction).
+fn edgeWeights(e: u32, tri: u32, x: u32) -> vec3<u32> {
+  let t = ownerWord_tri(tri);
+  let i = ownerWord_corner(tri); // the triangle's edge i runs from its corner i to corner i+1
   let forward = triVert(t, i) == edgeVert(e, 0u);
-  let x = linePoint(edgeState(e), edgeF(e), k);
   let tw = select(ONE - x, x, forward); // weight of corner i+1
   var w = vec3<u32>(0u);
   w[(i + 1u) % 3u] = tw;
   w[i] = ONE - tw;
-  writeVertex(params.nVerts + q, t, w);
+  return w;
 }

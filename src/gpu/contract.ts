@@ -423,6 +423,9 @@ export function tableHeaderWgsl(buffer: string, params: string): string {
 /** What the tessellator's arenas are sized from. */
 export interface TessSizes {
   vertices: number;
+  /** Output vertices past the vertices: the extra sectors of crease and corner vertices
+   * (prepare.ts slotOwner) where the surface splits normals at creases, else 0. */
+  extraSlots: number;
   edges: number;
   triangles: number;
   /** The pattern tables' largest factor (a triangle has at most maxFactor + 1 rows). */
@@ -464,6 +467,9 @@ export const TESS_STATIC = defineArena<
   | 'edgeOwner'
   | 'edgeTwin'
   | 'vertexOwner'
+  | 'cornerSlot'
+  | 'slotOwner'
+  | 'edgeSplit'
   | 'cc'
   | 'accTri'
   | 'accPatches'
@@ -480,6 +486,13 @@ export const TESS_STATIC = defineArena<
   ['edgeOwner', (s) => s.edges],
   ['edgeTwin', (s) => s.edges],
   ['vertexOwner', (s) => s.vertices],
+  // Split normals at infinitely sharp creases (prepare.ts splitCreases; the Catmull-Clark surface
+  // only, elsewhere cornerSlot is triVerts and edgeSplit 0): the output vertex of each triangle
+  // corner, the owner corner of each extra output vertex, and per edge 1 where its points are
+  // output once per side.
+  ['cornerSlot', (s) => 3 * s.triangles],
+  ['slotOwner', (s) => s.extraSlots],
+  ['edgeSplit', (s) => s.edges],
   ['cc', (s) => s.ccWords],
   ['accTri', (s) => s.accTriangles],
   ['accPatches', (s) => s.accPatchWords],
@@ -610,6 +623,7 @@ export const TESS_PARAMS = defineStruct('Params', [
   ['viewProj', 'mat4x4<f32>', 'World to clip space of the camera (frustum culling of edges).'],
   ['eye', 'vec4<f32>', "xyz: the camera's position."],
   ['nVerts', 'u32'],
+  ['nSlots', 'u32', 'Output vertices of the corners: nVerts, then the extra sectors (slotOwner); the edge points follow.'],
   ['nTris', 'u32'],
   ['nEdges', 'u32'],
   ['maxFactor', 'u32'],

@@ -129,7 +129,7 @@ export function ccSurfaceTessellator(
   const tess = Tessellator.create(device, bakeTables(2), {
     surface: 'catmull-clark',
     flatBaseline: false,
-    vertexCapacity: prepared.vertexCount + prepared.edgeCount,
+    vertexCapacity: prepared.vertexCount + prepared.slotOwner.length + prepared.edgeCount,
     triangleCapacity: prepared.triangleCount,
   });
   tess.setMesh(prepared, cc, undefined, displacement);

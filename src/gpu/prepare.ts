@@ -25,7 +25,7 @@
  *  - Per triangle: its three edge ids, and its pattern frame (clamped.ts chooseFrame) from the
  *    reverse flags, packed in one u32.
  */
-import type { Cage, SubdivOptions } from '../mesh/types.ts';
+import { type Cage, type SubdivOptions, SHARPNESS_INFINITE } from '../mesh/types.ts';
 import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
 import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from './contract.ts';
@@ -70,6 +70,16 @@ export interface PreparedMesh {
   edgeTwin: Uint32Array;
   /** One triangle of each vertex and its corner in it (an OwnerWord), NO_OWNER if unused. */
   vertexOwner: Uint32Array;
+  /** Split normals at infinitely sharp creases (splitCreases below): the output vertex of each
+   * triangle corner, three per triangle (the cage vertex itself, or one of the extra slots). */
+  cornerSlot: Uint32Array;
+  /** The extra output vertices, after the vertexCount cage and centre vertices: one per sector
+   * of a crease or corner vertex beyond the vertex owner's, as an OwnerWord of a triangle corner
+   * in that sector. */
+  slotOwner: Uint32Array;
+  /** Per edge, 1 where its points are output twice, once per side (an infinitely sharp edge
+   * with two triangles), else 0. */
+  edgeSplit: Uint32Array;
   /** Bounding box diagonal length: the model's size for tolerances. */
   size: number;
   bboxMin: [number, number, number];
@@ -211,6 +221,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     }
   }
   const size = nT ? Math.hypot(bboxMax[0] - bboxMin[0], bboxMax[1] - bboxMin[1], bboxMax[2] - bboxMin[2]) : 0;
+  const split = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner);
 
   return {
     vertexCount: nVAll,
@@ -228,8 +239,114 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     edgeOwner: Uint32Array.from(edgeOwner),
     edgeTwin: Uint32Array.from(edgeTwin),
     vertexOwner,
+    ...split,
     size,
     bboxMin,
     bboxMax,
   };
+}
+
+/**
+ * Split normals. Across an infinitely sharp crease the limit surface has a normal per side, and
+ * at a vertex where such creases meet, one per SECTOR (the faces between two of them); at a
+ * vertex with an infinitely sharp corner tag, one per face. One output vertex per point would
+ * give the far side's triangles the near side's normal (tests/crease-normals.node.test.ts), so:
+ *  - an infinitely sharp edge with two triangles has its points output twice (edgeSplit), the
+ *    second copy for its twin triangle (edgeTwin);
+ *  - a vertex gets one output vertex per sector: the sector of its owner triangle keeps the
+ *    vertex's own index, every other sector an extra slot after the vertices (slotOwner).
+ * Both copies of a point take their position from the same evaluation (the owner side's), so the
+ * output stays watertight in positions; only their normals differ. Sectors are found by joining
+ * the corners at a vertex across every edge that is not split (at a corner-tagged vertex, only
+ * across edges inside one cage face), in time linear in the triangles.
+ *
+ * Only where both ends are REGULAR (quads only, four faces, or two on a boundary): at an
+ * extraordinary vertex the Catmull-Clark evaluator gives one limit normal for the whole vertex,
+ * the normal of one sector (wgsl/surface-cc.wgsl ccSector, OpenSubdiv's convention), so a split
+ * there would give the other sector's triangles the right normal along the edge and the wrong
+ * one at the corner: a dark spot at each such vertex instead of a band (measured on the pawn's
+ * rim, whose vertices have valence 3). Such vertices and their edges stay whole until the
+ * evaluator has a limit normal per sector.
+ */
+function splitCreases(
+  cage: Cage,
+  tris: readonly number[],
+  faces: readonly number[],
+  edgeVerts: readonly number[],
+  edgeOwner: readonly number[],
+  edgeTwin: readonly number[],
+  vertexOwner: Uint32Array,
+): { cornerSlot: Uint32Array; slotOwner: Uint32Array; edgeSplit: Uint32Array } {
+  const nT = tris.length / 3;
+  const nE = edgeVerts.length / 2;
+  const nVAll = vertexOwner.length;
+  const key = (a: number, b: number) => (a < b ? `${a},${b}` : `${b},${a}`);
+  const sharp = new Set(cage.creases.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => key(c.v0, c.v1)));
+  const cornerTag = new Set(cage.corners.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => c.v));
+
+  // Regular vertices: every face round it a quad, four of them (two on a boundary).
+  const faceSeen = new Map<string, boolean>();
+  const faceCount = new Uint32Array(nVAll);
+  const notQuad = new Uint8Array(nVAll);
+  const boundary = new Uint8Array(nVAll);
+  for (let t = 0; t < nT; t++)
+    for (let i = 0; i < 3; i++) {
+      const v = tris[3 * t + i];
+      const k = `${v},${faces[t]}`;
+      if (faceSeen.has(k)) continue;
+      faceSeen.set(k, true);
+      faceCount[v]++;
+      if (cage.faceOffsets[faces[t] + 1] - cage.faceOffsets[faces[t]] !== 4) notQuad[v] = 1;
+    }
+  for (let e = 0; e < nE; e++) if (edgeTwin[e] === NO_OWNER) boundary[edgeVerts[2 * e]] = boundary[edgeVerts[2 * e + 1]] = 1;
+  const regular = (v: number) => v < cage.positions.length / 3 && !notQuad[v] && faceCount[v] === (boundary[v] ? 2 : 4);
+
+  const edgeSplit = new Uint32Array(nE);
+  for (let e = 0; e < nE; e++) {
+    const a = edgeVerts[2 * e],
+      b = edgeVerts[2 * e + 1];
+    if (edgeTwin[e] !== NO_OWNER && sharp.has(key(a, b)) && regular(a) && regular(b)) edgeSplit[e] = 1;
+  }
+
+  // Union-find over triangle corners (3t + i).
+  const parent = Uint32Array.from({ length: 3 * nT }, (_, c) => c);
+  const find = (c: number): number => {
+    while (parent[c] !== c) {
+      parent[c] = parent[parent[c]];
+      c = parent[c];
+    }
+    return c;
+  };
+  const cornerOf = (t: number, v: number) => 3 * t + (tris[3 * t] === v ? 0 : tris[3 * t + 1] === v ? 1 : 2);
+  for (let e = 0; e < nE; e++) {
+    if (edgeTwin[e] === NO_OWNER || edgeSplit[e]) continue;
+    const t0 = OWNER_WORD.unpack(edgeOwner[e]).tri,
+      t1 = OWNER_WORD.unpack(edgeTwin[e]).tri;
+    for (const v of [edgeVerts[2 * e], edgeVerts[2 * e + 1]]) {
+      if (cornerTag.has(v) && regular(v) && faces[t0] !== faces[t1]) continue;
+      const a = find(cornerOf(t0, v)),
+        b = find(cornerOf(t1, v));
+      if (a !== b) parent[Math.max(a, b)] = Math.min(a, b);
+    }
+  }
+  // The owner's sector keeps the vertex; the others get slots in the order they are met.
+  const rootSlot = new Map<number, number>();
+  for (let v = 0; v < nVAll; v++) {
+    if (vertexOwner[v] === NO_OWNER) continue;
+    const o = OWNER_WORD.unpack(vertexOwner[v]);
+    rootSlot.set(find(3 * o.tri + o.corner), v);
+  }
+  const cornerSlot = new Uint32Array(3 * nT);
+  const slotOwner: number[] = [];
+  for (let c = 0; c < 3 * nT; c++) {
+    const r = find(c);
+    let slot = rootSlot.get(r);
+    if (slot === undefined) {
+      slot = nVAll + slotOwner.length;
+      slotOwner.push(OWNER_WORD.pack({ corner: c % 3, tri: Math.floor(c / 3) }));
+      rootSlot.set(r, slot);
+    }
+    cornerSlot[c] = slot;
+  }
+  return { cornerSlot, slotOwner: Uint32Array.from(slotOwner), edgeSplit };
 }

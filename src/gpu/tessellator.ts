@@ -13,7 +13,9 @@
  *     scan       prefix sums of the three counts                           wgsl/scan.wgsl
  *     budget     accept (and write the indirect draw args) or rescale      wgsl/tess-budget.wgsl
  *   weld         corner and edge vertices, evaluated once each, one thread   wgsl/tess-weld.wgsl
- *                per vertex (the edge points' dispatch is indirect: budget)
+ *                per vertex (the edge points' dispatch is indirect: budget);
+ *                on Catmull-Clark, once per side of an infinitely sharp
+ *                crease (prepare.ts splitCreases: same position, own normal)
  *   tessellate   plan: one thread per triangle writes its pattern's rows   wgsl/tess-plan.wgsl
  *                emit: one thread per interior vertex, one per triangle    wgsl/tess-emit.wgsl
  *                (indirect dispatches, like the weld's edge points)
@@ -254,8 +256,10 @@ export class Tessellator {
     acc: AccSurface | undefined,
     disp: DisplacementData | undefined,
   ): Packed {
+    const split = this.splitsCreases;
     const sizes: TessSizes = {
       vertices: prepared.vertexCount,
+      extraSlots: this.extraSlots(prepared),
       edges: prepared.edgeCount,
       triangles: prepared.triangleCount,
       maxFactor: this.maxFactor,
@@ -282,6 +286,9 @@ export class Tessellator {
       edgeOwner: prepared.edgeOwner,
       edgeTwin: prepared.edgeTwin,
       vertexOwner: prepared.vertexOwner,
+      cornerSlot: split ? prepared.cornerSlot : prepared.triVerts,
+      slotOwner: split ? prepared.slotOwner : undefined,
+      edgeSplit: split ? prepared.edgeSplit : undefined,
       cc: cc?.words,
       accTri: acc?.triangles,
       accPatches: acc?.patches.topology.patches,
@@ -305,6 +312,7 @@ export class Tessellator {
     const ccBase = staticLayout.offset.cc;
     TESS_PARAMS.write(new DataView(this.paramsBytes), {
       nVerts: prepared.vertexCount,
+      nSlots: prepared.vertexCount + sizes.extraSlots,
       nTris: prepared.triangleCount,
       nEdges: prepared.edgeCount,
       maxFactor: this.maxFactor,
@@ -447,6 +455,18 @@ export class Tessellator {
   }
 
   /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
+  /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) on the
+   * Catmull-Clark surface, which has a crease there; Phong and ACC have one normal per cage
+   * vertex, so both sides would be the same. */
+  private get splitsCreases(): boolean {
+    return this.surface === 'catmull-clark';
+  }
+
+  /** Output vertices of the extra sectors: after the vertices, before the edge points. */
+  private extraSlots(prepared: PreparedMesh): number {
+    return this.splitsCreases ? prepared.slotOwner.length : 0;
+  }
+
   private validate(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): CatmullClarkData | undefined {
     if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
     if (this.surface === 'catmull-clark' && !cc)
@@ -456,7 +476,10 @@ export class Tessellator {
       if (acc.patches.scheme !== this.surface) throw new Error(`${acc.patches.scheme} patches given to a ${this.surface} tessellator`);
       if (acc.triangles.length !== prepared.triangleCount) throw new Error('the ACC patches were prepared for another mesh');
     }
-    if (prepared.triangleCount > this.output.triangleCapacity || prepared.vertexCount + prepared.edgeCount > this.output.vertexCapacity) {
+    if (
+      prepared.triangleCount > this.output.triangleCapacity ||
+      prepared.vertexCount + this.extraSlots(prepared) + prepared.edgeCount > this.output.vertexCapacity
+    ) {
       throw new Error(
         `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
       );
@@ -567,7 +590,8 @@ export class Tessellator {
       cp.end();
     }
     let cp = pass('tess weld', 'weld');
-    run(cp, 'corners', groupsFor(nV));
+    // The corners' output vertices: the vertices, then the extra sectors where normals split.
+    run(cp, 'corners', groupsFor(nV + this.extraSlots(m.prepared)));
     runIndirect(cp, 'edges', WELD_EDGES_ARGS_OFFSET); // one thread per edge point: sized by the budget pass
     cp.end();
     cp = pass('tess plan', 'plan');
