@@ -7,8 +7,8 @@ import { describe, it, expect } from 'vitest';
 import { buildCatmullClark, regionOf, REGION_PATCH, REGION_SECTOR, TOTAL_DEPTH, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { prepareMesh } from '../src/gpu/prepare.ts';
 import { CC_FAN_WORD } from '../src/gpu/cc/words.ts';
-import { makeCage, type Cage } from '../src/mesh/index.ts';
-import { cube, tetra, triPrism, ringCrease } from './subdiv-fixtures.ts';
+import type { Cage } from '../src/mesh/index.ts';
+import { cube, tetra, triPrism, ringCrease, quadTorus } from './subdiv-fixtures.ts';
 
 function prep(cage: Cage): CatmullClarkData {
   return buildCatmullClark(cage, prepareMesh(cage));
@@ -24,29 +24,9 @@ function faceRegions(cc: CatmullClarkData, cage: Cage, f: number): number[] {
   return out;
 }
 
-function torus(nu: number, nv: number): Cage {
-  const p: number[] = [];
-  for (let j = 0; j < nv; j++)
-    for (let i = 0; i < nu; i++) {
-      const u = (2 * Math.PI * i) / nu,
-        v = (2 * Math.PI * j) / nv;
-      p.push((2 + Math.cos(v)) * Math.cos(u), (2 + Math.cos(v)) * Math.sin(u), Math.sin(v));
-    }
-  const f: number[][] = [];
-  for (let j = 0; j < nv; j++)
-    for (let i = 0; i < nu; i++) {
-      const a = j * nu + i,
-        b = j * nu + ((i + 1) % nu),
-        c = ((j + 1) % nv) * nu + ((i + 1) % nu),
-        d = ((j + 1) % nv) * nu + i;
-      f.push([a, b, c, d]);
-    }
-  return makeCage(p, f);
-}
-
 describe('Catmull-Clark preparation (topology only)', () => {
   it('regular torus: one regular patch per face, no refinement, no sliced fans', () => {
-    const cage = torus(8, 6);
+    const cage = quadTorus(8, 6);
     const cc = prep(cage);
     expect(cc.levels).toBe(0);
     expect(cc.regionCount).toBe(48);

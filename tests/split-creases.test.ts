@@ -9,27 +9,15 @@ import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { OWNER_WORD } from '../src/gpu/contract.ts';
-import { loadCage, makeCage, type Cage } from '../src/mesh/index.ts';
-import { cube, cubeFaces } from './subdiv-fixtures.ts';
+import { loadCage, type Cage } from '../src/mesh/index.ts';
+import { cube, cubeFaces, quadTorus } from './subdiv-fixtures.ts';
 
 const INF = 10;
 const NU = 8,
   NV = 6;
 const at = (i: number, j: number) => (((j % NV) + NV) % NV) * NU + (((i % NU) + NU) % NU);
 
-/** A torus of NU × NV quads, every vertex of valence 4. */
-function torus(tags: Parameters<typeof makeCage>[2] = {}): Cage {
-  const p: number[] = [];
-  for (let j = 0; j < NV; j++)
-    for (let i = 0; i < NU; i++) {
-      const u = (2 * Math.PI * i) / NU,
-        v = (2 * Math.PI * j) / NV;
-      p.push((2 + Math.cos(v)) * Math.cos(u), (2 + Math.cos(v)) * Math.sin(u), Math.sin(v));
-    }
-  const f: number[][] = [];
-  for (let j = 0; j < NV; j++) for (let i = 0; i < NU; i++) f.push([at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
-  return makeCage(p, f, tags);
-}
+const torus = (tags: Parameters<typeof quadTorus>[2] = {}): Cage => quadTorus(NU, NV, tags);
 
 /** The ring j = const (NU edges) or i = const (NV edges) as infinitely sharp crease tags. */
 const ringU = (j: number): [number, number, number][] => Array.from({ length: NU }, (_, i) => [at(i, j), at(i + 1, j), INF]);

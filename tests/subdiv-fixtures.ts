@@ -86,3 +86,25 @@ export function pentPrism(): Cage {
   for (let i = 0; i < 5; i++) f.push([i, (i + 1) % 5, 5 + ((i + 1) % 5), 5 + i]);
   return makeCage(p, f);
 }
+
+/** A torus of nu × nv quads, every vertex of valence 4: vertex (i, j) is j·nu + i, face (i, j)
+ * runs (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1), indices wrapping round. */
+export function quadTorus(nu: number, nv: number, tags: Parameters<typeof makeCage>[2] = {}): Cage {
+  const p: number[] = [];
+  for (let j = 0; j < nv; j++)
+    for (let i = 0; i < nu; i++) {
+      const u = (2 * Math.PI * i) / nu,
+        v = (2 * Math.PI * j) / nv;
+      p.push((2 + Math.cos(v)) * Math.cos(u), (2 + Math.cos(v)) * Math.sin(u), Math.sin(v));
+    }
+  const f: number[][] = [];
+  for (let j = 0; j < nv; j++)
+    for (let i = 0; i < nu; i++) {
+      const a = j * nu + i,
+        b = j * nu + ((i + 1) % nu),
+        c = ((j + 1) % nv) * nu + ((i + 1) % nu),
+        d = ((j + 1) % nv) * nu + i;
+      f.push([a, b, c, d]);
+    }
+  return makeCage(p, f, tags);
+}
