@@ -1,6 +1,8 @@
 // The weld. Every vertex that two or more triangles share is evaluated exactly once, here, and
 // every triangle refers to it by index, so the output is watertight by construction: the
-// vertices on shared corners and shared edges are not just bit-identical, they are one.
+// vertices on shared corners and shared edges are not just bit-identical, they are one. (Where
+// normals split at a crease, a point has one vertex per side: those are bit-identical, both
+// positions being the same evaluation, as the instanced tessellator's owner rule is.)
 //   corners: vertex v of the output is cage vertex v (Phong tessellation interpolates its
 //            corners), one thread per cage vertex, then one per extra sector of a vertex where
 //            the normals split (prepare.ts splitCreases: its position is the vertex's, its normal
@@ -61,11 +63,11 @@ fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index)
   }
 }
 
-// The weights in triangle `tri` (an OwnerWord: the triangle and the corner its edge starts at)
-// of edge e's point x (a line coordinate along the edge's canonical direction).
-fn edgeWeights(e: u32, tri: u32, x: u32) -> vec3<u32> {
-  let t = ownerWord_tri(tri);
-  let i = ownerWord_corner(tri); // the triangle's edge i runs from its corner i to corner i+1
+// The weights of edge e's point x (a line coordinate along the edge's canonical direction) in
+// one of its triangles, given as an OwnerWord (the triangle and the corner its edge starts at).
+fn edgeWeights(e: u32, side: u32, x: u32) -> vec3<u32> {
+  let t = ownerWord_tri(side);
+  let i = ownerWord_corner(side); // the triangle's edge i runs from its corner i to corner i+1
   let forward = triVert(t, i) == edgeVert(e, 0u);
   let tw = select(ONE - x, x, forward); // weight of corner i+1
   var w = vec3<u32>(0u);

@@ -285,7 +285,7 @@ function splitCreases(
   const cornerTag = new Set(cage.corners.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => c.v));
 
   // Regular vertices: every face round it a quad, four of them (two on a boundary).
-  const faceSeen = new Map<string, boolean>();
+  const faceSeen = new Set<string>();
   const faceCount = new Uint32Array(nVAll);
   const notQuad = new Uint8Array(nVAll);
   const boundary = new Uint8Array(nVAll);
@@ -294,7 +294,7 @@ function splitCreases(
       const v = tris[3 * t + i];
       const k = `${v},${faces[t]}`;
       if (faceSeen.has(k)) continue;
-      faceSeen.set(k, true);
+      faceSeen.add(k);
       faceCount[v]++;
       if (cage.faceOffsets[faces[t] + 1] - cage.faceOffsets[faces[t]] !== 4) notQuad[v] = 1;
     }

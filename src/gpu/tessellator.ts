@@ -454,7 +454,6 @@ export class Tessellator {
     };
   }
 
-  /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
   /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) on the
    * Catmull-Clark surface, which has a crease there; Phong and ACC have one normal per cage
    * vertex, so both sides would be the same. */
@@ -467,6 +466,7 @@ export class Tessellator {
     return this.splitsCreases ? prepared.slotOwner.length : 0;
   }
 
+  /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
   private validate(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): CatmullClarkData | undefined {
     if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
     if (this.surface === 'catmull-clark' && !cc)
