@@ -2,7 +2,7 @@
  * Split normals at infinitely sharp creases (src/gpu/prepare.ts splitCreases): which edges are
  * output once per side, and the sectors of each vertex (one output vertex per sector). On a
  * torus of quads (every vertex regular) with different tags, on the cube (every vertex
- * extraordinary: nothing splits yet) and on the project's models. The GPU side is
+ * extraordinary) and on the project's models. The GPU side is
  * tests/crease-normals.node.test.ts.
  */
 import { describe, it, expect } from 'vitest';
@@ -100,25 +100,36 @@ describe('split normals at infinitely sharp creases', () => {
     expect(slotsConsistent(m)).toBe(true);
   });
 
-  it('the cube (valence 3 everywhere): nothing splits yet, whatever its tags', () => {
+  it('the cube (valence 3 everywhere, extraordinary vertices) with every edge sharp: one sector per face at each vertex', () => {
     // Each edge is walked low → high by one of its two faces.
     const every: [number, number, number][] = [];
     for (const f of cubeFaces) for (let k = 0; k < 4; k++) if (f[k] < f[(k + 1) % 4]) every.push([f[k], f[(k + 1) % 4], INF]);
     const m = prepareMesh(cube({ creases: every, corners: [[6, INF]] }));
-    expect(splitEdges(m)).toBe(0);
-    expect(m.slotOwner.length).toBe(0);
+    expect(splitEdges(m)).toBe(12);
+    for (let v = 0; v < 8; v++) expect(slotsAt(m, v).size).toBe(3);
+    expect(m.slotOwner.length).toBe(8 * 2);
+    expect(slotsConsistent(m)).toBe(true);
   });
 
-  it("the project's models: the sheet's fold splits; the box's, pawn's and gear's sharp rims have extraordinary ends", () => {
+  it("the project's models: every infinitely sharp edge splits, extraordinary ends included", () => {
     const load = (f: string) => prepareMesh(loadCage(readFileSync(new URL(`../public/models/${f}`, import.meta.url), 'utf8')).cage);
     // The fold: 6 edges from boundary to boundary; its 5 interior vertices and 2 boundary ends
     // (2 faces each side of it) have 2 sectors each.
     const sheet = load('sheet.obj');
     expect([splitEdges(sheet), sheet.slotOwner.length]).toEqual([6, 7]);
     expect(slotsConsistent(sheet)).toBe(true);
-    for (const f of ['creased-box.obj', 'pawn.obj', 'gear.obj']) {
+    // Closed sharp loops (the box's bottom rim, the pawn's rims, the gear's teeth and axle hole,
+    // whose vertices have valence 3 or touch n-gons): each edge splits and each vertex on a loop
+    // has 2 sectors; the box's corner tag (3 faces) 2 more.
+    const loops: [string, number, number][] = [
+      ['creased-box.obj', 8, 8 + 2],
+      ['pawn.obj', 16, 16],
+      ['gear.obj', 50, 50],
+    ];
+    for (const [f, edges, extra] of loops) {
       const m = load(f);
-      expect([splitEdges(m), m.slotOwner.length]).toEqual([0, 0]);
+      expect([splitEdges(m), m.slotOwner.length], f).toEqual([edges, extra]);
+      expect(slotsConsistent(m)).toBe(true);
     }
   });
 });

@@ -246,6 +246,41 @@ fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> v
   return pt(fanWord(fan, 2u) + D + ((D - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * i + which);
 }
 
+// Tangents of the crease span of faces a..b−1 (axes a and b infinitely sharp, indices mod n):
+// T1 along the crease (normal = T1 × T2 points outward for faces in ring order), T2 into the
+// span: the exact mask for a span of 2 faces (the regular crease), the mean of the span's ring
+// points otherwise (on the right side, a few degrees off the exact cross tangent: only the
+// vertex itself, its last square's blend and the factor rule read it).
+fn creaseTangents(fan: u32, D: u32, ns: u32, n: u32, anchor: vec3<f32>, P0: vec3<f32>, a: u32, b: u32) -> array<vec3<f32>, 2> {
+  let T1 = 0.5 * (ringPt(fan, D, ns, anchor, ringAxis(a, n, ns), 0u) - ringPt(fan, D, ns, anchor, ringAxis(b, n, ns), 0u));
+  var s = vec3<f32>(0.0);
+  var w = 0.0;
+  for (var i = a; i < b; i++) {
+    s += ringPt(fan, D, ns, anchor, i % n, 1u);
+    w += 1.0;
+    if (i > a) { s += 4.0 * ringPt(fan, D, ns, anchor, i % n, 0u); w += 4.0; }
+  }
+  return array<vec3<f32>, 2>(T1, s / max(w, 1.0) - P0);
+}
+
+// Axis j of the ring: on a boundary the pseudo-sector n is the last axis, else j mod n.
+fn ringAxis(j: u32, n: u32, ns: u32) -> u32 { return select(j % n, j, ns > n); }
+
+// Tangents of face i's corner at a corner vertex (the vertex itself is the limit). Where both
+// of the face's edges there are infinitely sharp: along them, e_i − c and e_(i+1) − c, as the CPU
+// reference. Where either is not (a corner tag among smooth or decayed edges) the surface has no
+// tangent plane there (the CPU reference says so) and the two edges' directions can be nearly
+// parallel (a rounded corner): the face's quad of the last ring (c, e_i, d_i, e_(i+1)) by its
+// diagonals instead, whose normal is the quad's own.
+fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec3<f32>, c: vec3<f32>, i: u32) -> array<vec3<f32>, 2> {
+  let j = select((i + 1u) % n, i + 1u, boundary);
+  let ei = ringPt(fan, D, ns, anchor, i, 0u);
+  let ej = ringPt(fan, D, ns, anchor, j, 0u);
+  let sb = params.ccSectors + fanWord(fan, 3u);
+  if (staticBuf[sb + 7u * i] == 1u && staticBuf[sb + 7u * j] == 1u) { return array<vec3<f32>, 2>(ei - c, ej - c); }
+  return array<vec3<f32>, 2>(ringPt(fan, D, ns, anchor, i, 1u) - c, ej - ei);
+}
+
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let fan = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
@@ -283,28 +318,34 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     let nf = f32(n);
     P0 = (nf * nf * c + se) / (nf * (nf + 5.0));
   } else if (rule == 1u) {
-    // Crease: P = ⅔c + ⅙(e_a + e_b), T1 along the crease; T2 into the span ia..ib of faces
-    // (the exact mask for a span of 2 faces, a mean otherwise: only the blended square and the
-    // factor rule read it).
-    let ea = ringPt(fan, D, ns, anchor, ia, 0u);
-    let eb = ringPt(fan, D, ns, anchor, ib, 0u);
-    P0 = (2.0 / 3.0) * c + (1.0 / 6.0) * (ea + eb);
-    T1 = 0.5 * (ea - eb);
-    var s = vec3<f32>(0.0);
-    var w = 0.0;
-    for (var i = ia; i < ib; i++) {
-      s += ringPt(fan, D, ns, anchor, i, 1u);
-      w += 1.0;
-      if (i > ia) { s += 4.0 * ringPt(fan, D, ns, anchor, i, 0u); w += 4.0; }
-    }
-    T2 = s / max(w, 1.0) - P0;
+    // Crease: P = ⅔c + ⅙(e_a + e_b), T1 along the crease, T2 into the span ia..ib of faces.
+    P0 = (2.0 / 3.0) * c + (1.0 / 6.0) * (ringPt(fan, D, ns, anchor, ia, 0u) + ringPt(fan, D, ns, anchor, ib, 0u));
+    let t = creaseTangents(fan, D, ns, n, anchor, P0, ia, ib);
+    T1 = t[0];
+    T2 = t[1];
   } else {
-    // Corner (and a crease whose span wraps: treated as its face 0, rare): P = c.
-    T1 = ringPt(fan, D, ns, anchor, 0u, 0u) - c;
-    T2 = ringPt(fan, D, ns, anchor, select(1u, 0u, n == 1u), select(0u, 1u, n == 1u)) - c;
-    if (n > 1u || boundary) { T2 = ringPt(fan, D, ns, anchor, 1u, 0u) - c; }
+    // Corner: P = c; the tangents of face 0's corner.
+    let t = cornerTangents(fan, D, ns, n, boundary, anchor, c, 0u);
+    T1 = t[0];
+    T2 = t[1];
   }
   let lb = fanWord(fan, 5u);
+  // Each face's own sector at a crease or corner (build.ts "fan limits"): the span of faces
+  // between the two sharp edges round face i, or face i alone at a corner.
+  if (rule != 0u) {
+    for (var i = 0u; i < n; i++) {
+      var t: array<vec3<f32>, 2>;
+      if (rule == 2u) {
+        t = cornerTangents(fan, D, ns, n, boundary, anchor, c, i);
+      } else if (i >= ia && i < ib) {
+        t = creaseTangents(fan, D, ns, n, anchor, P0, ia, ib);
+      } else {
+        t = creaseTangents(fan, D, ns, n, anchor, P0, ib, ia + n);
+      }
+      setPt(lb + 3u + 2u * i, t[0]);
+      setPt(lb + 4u + 2u * i, t[1]);
+    }
+  }
   setPt(lb, anchor + P0);
   setPt(lb + 1u, T1);
   setPt(lb + 2u, T2);

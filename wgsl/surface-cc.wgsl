@@ -301,6 +301,9 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
   let D = ccFanWord_depth(fw);
   let f = CCFan(ccFanWord_sectors(fw), ccFanWord_valence(fw), ccFanWord_boundary(fw) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor, D);
   let lb = ccFanWord(fan, 5u);
+  // The limit tangents of this face's sector: the fan's own at a smooth centre, else face sec's
+  // (build.ts "fan limits": a sharp crease or corner has a tangent plane per sector).
+  let lt = select(lb + 1u, lb + 3u + 2u * sec, ccFanWord_rule(fw) != 0u);
   let m = max(ab.x, ab.y);
   // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).
   var L = 1u;
@@ -314,7 +317,7 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
     if (t <= 0.0) {
       // The vertex itself: its limit tangents stand in for the parametric ones (which vanish
       // or blow up there), the CPU reference's convention (src/subdiv/displace.ts).
-      return SurfacePoint(ccP(lb), ccNormal(ccP(lb + 1u), ccP(lb + 2u)), ccP(lb + 1u), ccP(lb + 2u));
+      return SurfacePoint(ccP(lb), ccNormal(ccP(lt), ccP(lt + 1u)), ccP(lt), ccP(lt + 1u));
     }
     blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
     if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
@@ -336,7 +339,7 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
   let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), sc * tg[0], sc * tg[1]);
   if (blend >= 1.0) { return q; }
   let p0 = ccP(lb);
-  let n0 = ccNormal(ccP(lb + 1u), ccP(lb + 2u));
+  let n0 = ccNormal(ccP(lt), ccP(lt + 1u));
   return SurfacePoint(p0 + blend * (q.pos - p0), normalize(mix(n0, q.normal, blend)), q.du, q.dv);
 }
 

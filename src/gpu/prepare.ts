@@ -260,13 +260,9 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
  * the corners at a vertex across every edge that is not split (at a corner-tagged vertex, only
  * across edges inside one cage face), in time linear in the triangles.
  *
- * Only where both ends are REGULAR (quads only, four faces, or two on a boundary): at an
- * extraordinary vertex the Catmull-Clark evaluator gives one limit normal for the whole vertex,
- * the normal of one sector (wgsl/surface-cc.wgsl ccSector, OpenSubdiv's convention), so a split
- * there would give the other sector's triangles the right normal along the edge and the wrong
- * one at the corner: a dark spot at each such vertex instead of a band (measured on the pawn's
- * rim, whose vertices have valence 3). Such vertices and their edges stay whole until the
- * evaluator has a limit normal per sector.
+ * The Catmull-Clark evaluator gives each face's corner its own sector's limit normal (at an
+ * extraordinary vertex from the fan's per-face tangents, src/gpu/cc/build.ts "fan limits"; at a
+ * regular one from the patch with its phantom points), so every copy gets its side's normal.
  */
 function splitCreases(
   cage: Cage,
@@ -284,28 +280,11 @@ function splitCreases(
   const sharp = new Set(cage.creases.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => key(c.v0, c.v1)));
   const cornerTag = new Set(cage.corners.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => c.v));
 
-  // Regular vertices: every face round it a quad, four of them (two on a boundary).
-  const faceSeen = new Set<string>();
-  const faceCount = new Uint32Array(nVAll);
-  const notQuad = new Uint8Array(nVAll);
-  const boundary = new Uint8Array(nVAll);
-  for (let t = 0; t < nT; t++)
-    for (let i = 0; i < 3; i++) {
-      const v = tris[3 * t + i];
-      const k = `${v},${faces[t]}`;
-      if (faceSeen.has(k)) continue;
-      faceSeen.add(k);
-      faceCount[v]++;
-      if (cage.faceOffsets[faces[t] + 1] - cage.faceOffsets[faces[t]] !== 4) notQuad[v] = 1;
-    }
-  for (let e = 0; e < nE; e++) if (edgeTwin[e] === NO_OWNER) boundary[edgeVerts[2 * e]] = boundary[edgeVerts[2 * e + 1]] = 1;
-  const regular = (v: number) => v < cage.positions.length / 3 && !notQuad[v] && faceCount[v] === (boundary[v] ? 2 : 4);
-
   const edgeSplit = new Uint32Array(nE);
   for (let e = 0; e < nE; e++) {
     const a = edgeVerts[2 * e],
       b = edgeVerts[2 * e + 1];
-    if (edgeTwin[e] !== NO_OWNER && sharp.has(key(a, b)) && regular(a) && regular(b)) edgeSplit[e] = 1;
+    if (edgeTwin[e] !== NO_OWNER && sharp.has(key(a, b))) edgeSplit[e] = 1;
   }
 
   // Union-find over triangle corners (3t + i).
@@ -323,7 +302,7 @@ function splitCreases(
     const t0 = OWNER_WORD.unpack(edgeOwner[e]).tri,
       t1 = OWNER_WORD.unpack(edgeTwin[e]).tri;
     for (const v of [edgeVerts[2 * e], edgeVerts[2 * e + 1]]) {
-      if (cornerTag.has(v) && regular(v) && faces[t0] !== faces[t1]) continue;
+      if (cornerTag.has(v) && faces[t0] !== faces[t1]) continue;
       const a = find(cornerOf(t0, v)),
         b = find(cornerOf(t1, v));
       if (a !== b) parent[Math.max(a, b)] = Math.min(a, b);

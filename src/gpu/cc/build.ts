@@ -77,7 +77,12 @@
  *     step follows from the stored ring before it by one step. A sector then costs 4 points
  *     every other step instead of 6 every step: a third of the slices' memory at 2/6 · 1/2
  *     (imrod, all triangles: 2.7 KB of slices per face before, under 0.6 KB now).
- *   Then the limits: P (absolute), T1, T2.
+ *   Then the limits: P (absolute), T1, T2 (the vertex's: the factor rule, the flat baseline);
+ *     then, at a crease or corner centre (rule not smooth), T1, T2 of each face i < n at
+ *     3 + 2i, 4 + 2i: an infinitely sharp crease splits the tangent plane into sectors (one per
+ *     span of faces between two sharp edges, one per face at a corner), and a face's corner
+ *     takes the normal of its own (src/gpu/prepare.ts splitCreases outputs a vertex once per
+ *     sector). As the CPU reference (src/subdiv/limit.ts vertexLimit for that face).
  *
  * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
  *   tri      3 per prepared triangle: first region of the face, CC_TRI_WORD (n, fan k, centred:
@@ -1063,7 +1068,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     const sliceBase = nextPoint;
     nextPoint += F.D + Math.ceil(F.D / 2) * 2 * ns;
     const limitBase = nextPoint;
-    nextPoint += 3;
+    nextPoint += 3 + (F.rule === VRULE_SMOOTH ? 0 : 2 * F.n);
     maxDepth = Math.max(maxDepth, F.D);
     let cosBase = 0;
     if (F.rule === VRULE_SMOOTH && !F.boundary) {
