@@ -27,7 +27,7 @@
 import { readFileSync } from 'node:fs';
 import { afterAll, describe, expect, it } from 'vitest';
 import { getDevice, releaseDevice, testCamera } from './gpu-device.ts';
-import { checkTessellation, angleBetween } from './tess-checks.ts';
+import { checkTessellation, angleBetween, firstAtPosition } from './tess-checks.ts';
 import { Tessellator } from '../src/gpu/tessellator.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from '../src/gpu/readback.ts';
@@ -131,17 +131,11 @@ describe('displacement in the compute tessellator', () => {
       // The second copy of a point where normals split (an infinitely sharp crease, prepare.ts
       // splitCreases) lies where the first does (the seam rule's owner side), and its normal is
       // its own side's: the displaced surface in its own face's uvs (no seam rule).
-      const firstAt = new Set<string>();
-      const copy = new Uint8Array(out.vertexCount);
-      for (let v = 0; v < out.vertexCount; v++) {
-        const k = `${out.positions[3 * v]},${out.positions[3 * v + 1]},${out.positions[3 * v + 2]}`;
-        if (firstAt.has(k)) copy[v] = 1;
-        firstAt.add(k);
-      }
+      const first = firstAtPosition(out);
       for (const v of usedVertices(out)) {
         const w = weights(out, v);
         const fp = faceParam(mesh, cage, out.srcTri[v], w);
-        if (copy[v]) {
+        if (first[v] !== v) {
           const local = ref.evaluateLocal(fp);
           const n = [out.normals[3 * v], out.normals[3 * v + 1], out.normals[3 * v + 2]];
           if (local.normalExact && texelLineDistance(map, local.uv) >= 1e-3)

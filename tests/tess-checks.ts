@@ -27,6 +27,21 @@ export function angleBetween(a: number[], b: number[]): number {
   return Math.atan2(Math.hypot(cx, cy, cz), a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
 }
 
+/** For each output vertex, the first output vertex at its bit-identical position (itself if it
+ * is the first): where normals split at an infinitely sharp crease (prepare.ts splitCreases) a
+ * point's copies share one position. */
+export function firstAtPosition(out: { positions: ArrayLike<number>; vertexCount: number }): Uint32Array {
+  const firstAt = new Map<string, number>();
+  const first = new Uint32Array(out.vertexCount);
+  for (let v = 0; v < out.vertexCount; v++) {
+    const k = `${out.positions[3 * v]},${out.positions[3 * v + 1]},${out.positions[3 * v + 2]}`;
+    const f = firstAt.get(k);
+    first[v] = f ?? v;
+    if (f === undefined) firstAt.set(k, v);
+  }
+  return first;
+}
+
 /** Weights of an output vertex per cage vertex, from its (srcTri, bary). */
 function weightsByCageVertex(mesh: PreparedMesh, out: MeshReadback, v: number): Map<number, number> {
   const s = out.srcTri[v];
@@ -101,14 +116,7 @@ export function checkTessellation(
 
   // The two sides of a split crease refer to two output vertices at one (bit-identical)
   // position; canonical[v] is the first vertex at v's position (v itself without splits).
-  const firstAt = new Map<string, number>();
-  const canonical = new Uint32Array(out.vertexCount);
-  for (let v = 0; v < out.vertexCount; v++) {
-    const k = `${out.positions[3 * v]},${out.positions[3 * v + 1]},${out.positions[3 * v + 2]}`;
-    const f = firstAt.get(k);
-    canonical[v] = f === undefined || !opts.split ? v : f;
-    if (f === undefined) firstAt.set(k, v);
-  }
+  const canonical = opts.split ? firstAtPosition(out) : Uint32Array.from({ length: out.vertexCount }, (_, v) => v);
 
   // Surface: every vertex against the CPU's Phong evaluation (or opts.reference) at its barycentrics.
   // A split crease's second copy has the first's position (the owner side's, displaced along its
