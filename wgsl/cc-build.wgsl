@@ -332,15 +332,18 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let lb = fanWord(fan, 5u);
   // Each face's own sector at a crease or corner (build.ts "fan limits"): the span of faces
   // between the two sharp edges round face i, or face i alone at a corner.
+  // A crease's two spans are computed once each: ia..ib is the fan's own (T1, T2 above), the
+  // other (ib..ia + n) exists off a boundary only.
   if (rule != 0u) {
+    let own = array<vec3<f32>, 2>(T1, T2);
+    var other = own;
+    if (rule == 1u && !boundary) { other = creaseTangents(fan, D, ns, n, anchor, P0, ib, ia + n); }
     for (var i = 0u; i < n; i++) {
-      var t: array<vec3<f32>, 2>;
+      var t = other;
       if (rule == 2u) {
         t = cornerTangents(fan, D, ns, n, boundary, anchor, c, i);
       } else if (i >= ia && i < ib) {
-        t = creaseTangents(fan, D, ns, n, anchor, P0, ia, ib);
-      } else {
-        t = creaseTangents(fan, D, ns, n, anchor, P0, ib, ia + n);
+        t = own;
       }
       setPt(lb + 3u + 2u * i, t[0]);
       setPt(lb + 4u + 2u * i, t[1]);
