@@ -56,6 +56,33 @@
  *    adaptive still 1 (of 1,595,516 triangles). Not made either: a search of seconds per cage at
  *    load, still a change of surface, and not 0. (A rule from the surface's own normal against
  *    the vertex normals instead marked 43 triangles that are not the folding ones.)
+ *  - Where the six fold (2026-11-27, second look): not in the uniform sweep's band but at
+ *    factors 6 to 17, in slivers next to one corner of triangles 265, 665 and 401, whose edges'
+ *    first points slide in from that corner (0.017 of the edge from it). Phong tessellation is
+ *    the quadratic Bézier triangle whose edge control points are
+ *        b_ij = (p_i + p_j)/2 + (α/2)·((e·n_j) n_j − (e·n_i) n_i),  e = p_j − p_i,
+ *    one per EDGE, so α may differ from edge to edge and the surface stays watertight. At corner
+ *    i its Jacobian, against the flat triangle's, is 1 − α·sin²θ_i (θ_i: the vertex normal's
+ *    angle to the face normal): 0.26 at those corners (cos θ = 0.108 between the legs), 0.30 at
+ *    the hind leg's root. The map squeezes the pattern there and the slivers turn over.
+ *    Measured on these 24 views and on 72 more seeded views (.scratch, not kept; 6 and 14
+ *    folds at α = 0.75):
+ *      · a factor floor (3 or 4 on every edge of a triangle with some cos θ_i < 0.3 or 0.5):
+ *        6 and 13; the factors there are already above it.
+ *      · α per edge lowered until each triangle's six Bernstein coefficients of its Jacobian
+ *        are at least τ of the flat triangle's: τ = 0.1 (8 triangles) 6 and 13, τ = 0.35: 2
+ *        and 9, τ = 0.5: 0 and 0, but 646 of the creature's 1,692 edges lowered, to 0.14.
+ *      · α per edge = the least over its triangles of min(0.75, (1 − τ)/max_i sin²θ_i), which
+ *        holds every corner's Jacobian at τ or above: τ = 0.45: 0 and 2, 388 edges lowered (to
+ *        0.55 at least), the surface moved by up to 0.29 % of the creature's size; τ = 0.5: 0
+ *        and 1. The same with α = 0 on the edges of a triangle where a corner's vertex normal
+ *        points away from the face (cos θ_i ≤ 0; 56 edges of the creature): 0 and 0 on every
+ *        model, with 411 of the creature's edges lowered (4.8 % fewer triangles over the 96
+ *        views), the boxes' 56 of 72 to 0.645, the gear's 260 of 450 to 0.573, the pawn's 128
+ *        of 720 to 0.551; surfaces moved by up to 0.64 % (creature), 0.75 % (boxes), 0.52 % (gear), 0.20 %
+ *        (pawn) of their size. The most promising so far; not yet made: it needs the α per edge
+ *        in the compute and the instanced tessellators' static data, wgsl/surface-phong.wgsl in
+ *        Bézier form, src/gpu/phong.ts to match, and the models' Phong surfaces all change.
  */
 import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
