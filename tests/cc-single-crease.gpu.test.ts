@@ -56,8 +56,9 @@ describe('single-crease patches on the GPU', () => {
     const samples = randomSamples(mesh, 3000);
     const gpu = await sampleSurface(t, samples);
     const nV = mesh.vertexCount;
-    const offLimits = 6 * nV + 3 * cc.pointCount;
-    const limits = new Float32Array(await readBuffer(device, t.cageBuffer, 4 * 6 * nV, 4 * offLimits));
+    // The limit positions, then the limit normals, 3 floats per vertex each (contract.ts TESS_CAGE).
+    expect(t.cageLayout.limitNormals).toBe(t.cageLayout.limitPositions + 3 * nV);
+    const limits = new Float32Array(await readBuffer(device, t.cageBuffer, 4 * 6 * nV, 4 * t.cageLayout.limitPositions));
     expect((await device.popErrorScope())?.message).toBeUndefined();
 
     const items = [];

@@ -80,9 +80,21 @@
  *        model, with 411 of the creature's edges lowered (4.8 % fewer triangles over the 96
  *        views), the boxes' 56 of 72 to 0.645, the gear's 260 of 450 to 0.573, the pawn's 128
  *        of 720 to 0.551; surfaces moved by up to 0.64 % (creature), 0.75 % (boxes), 0.52 % (gear), 0.20 %
- *        (pawn) of their size. The most promising so far; not yet made: it needs the α per edge
- *        in the compute and the instanced tessellators' static data, wgsl/surface-phong.wgsl in
- *        Bézier form, src/gpu/phong.ts to match, and the models' Phong surfaces all change.
+ *        (pawn) of their size. The most promising so far. Built on the branch
+ *        phong-edge-alpha (2026-11-27; not landed): src/gpu/phong.ts in Bézier form with
+ *        phongTriAlphas, wgsl/surface-phong.wgsl to match, the α per triangle edge in both
+ *        tessellators' cage buffers (recomputed by updateCage); unit, gpu-node and gpu-browser
+ *        tests pass and this test reads 0 on every model (the creature 0 of 1,538,342). Why it
+ *        is not landed: (1) e2e/artifacts.spec.ts, pawn adaptive Phong, 0 -> 1 speckle, at
+ *        (490, 326) in the grainy dark band where the head meets the collar (the band is in the
+ *        factor-16 reference too; suzanne adaptive Phong went 1 -> 0); (2) views this test does
+ *        not take (24 directions, yaw 45° apart, pitch −0.8, 0, 0.8, at 17 distances 1.25×
+ *        apart from 1 to 35 times the size, LOD 1) still fold the creature 164 of 9,861,132
+ *        (921 of 10,333,694 at α = 0.75), in 265 and 665 (factors 3 and 6-8), 522 (2.1-3.2),
+ *        274 and 642 (1.4, at 28 times its size); every other model 0. A corner Jacobian of
+ *        0.6 leaves 24 there, 0.75 none but lowers α on 1,306 of the creature's 1,692 edges
+ *        (826 to 0.4 or less) and moves the boxes by 3.3 % of their size; 0.35 and 0.3 fold 1
+ *        and 4 on these 24 views.
  */
 import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';

@@ -101,14 +101,14 @@ export interface TessellatorOptions {
 }
 
 type WorkName = (typeof TESS_WORK.names)[number];
+type CageName = (typeof TESS_CAGE.names)[number];
 
 /** What setMesh packs before it binds. */
 interface Packed {
   staticWords: Uint32Array;
   cageWords: Float32Array;
   workLayout: ArenaLayout<WorkName>;
-  normalsOffset: number;
-  accPointsOffset: number;
+  cageLayout: ArenaLayout<CageName>;
 }
 
 interface MeshState {
@@ -116,17 +116,16 @@ interface MeshState {
   staticBuf: GPUBuffer;
   cageBuf: GPUBuffer;
   work: GPUBuffer;
-  /** Where the work arrays lie (TESS_WORK), and the normals in cageBuf. */
+  /** Where the work arrays (TESS_WORK) and the cage arrays (TESS_CAGE) lie. */
   workLayout: ArenaLayout<WorkName>;
-  normalsOffset: number;
+  cageLayout: ArenaLayout<CageName>;
   groups: Partial<Record<PassName, GPUBindGroup>>;
   scans: { group: GPUBindGroup; n: number }[];
   cc?: CatmullClarkData;
   ccRanges: { group: GPUBindGroup; count: number }[];
-  /** The ACC patches (owned by the caller), built before every tessellation; where cageBuf keeps
-   * a copy of their control points (words). */
+  /** The ACC patches (owned by the caller), built before every tessellation (cageBuf keeps a copy
+   * of their control points at cageLayout's accPoints). */
   acc?: AccSurface;
-  accPointsOffset: number;
   uniforms: GPUBuffer[];
 }
 
@@ -346,14 +345,14 @@ export class Tessellator {
     this.hasDisplacement = disp !== undefined;
     this.writeDisplacementParams();
 
-    return { staticWords, cageWords, workLayout, normalsOffset: cageLayout.offset.normals, accPointsOffset: cageLayout.offset.accPoints };
+    return { staticWords, cageWords, workLayout, cageLayout };
   }
 
   /** The buffers, written; each pass's bind group from the bindings its entry point uses; the
    * scans' and the patch build's small uniforms. */
   private bind(prepared: PreparedMesh, cc: CatmullClarkData | undefined, packed: Packed, acc: AccSurface | undefined): MeshState {
     const device = this.device;
-    const { staticWords, cageWords, workLayout, normalsOffset } = packed;
+    const { staticWords, cageWords, workLayout, cageLayout } = packed;
     const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST;
     const staticBuf = device.createBuffer({ label: 'tess tables + topology', size: staticWords.byteLength, usage: storage });
     device.queue.writeBuffer(staticBuf, 0, staticWords);
@@ -443,14 +442,13 @@ export class Tessellator {
       cageBuf,
       work,
       workLayout,
-      normalsOffset,
+      cageLayout,
       groups,
       scans,
       cc,
       ccRanges,
       uniforms,
       acc,
-      accPointsOffset: packed.accPointsOffset,
     };
   }
 
@@ -491,7 +489,7 @@ export class Tessellator {
   updateCage(positions: Float32Array, normals: Float32Array): void {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
-    this.device.queue.writeBuffer(m.cageBuf, 4 * m.normalsOffset, normals);
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.normals, normals);
   }
 
   /** The uniform and static buffers (for extra passes over the same mesh, e.g. surface sampling). */
@@ -520,6 +518,11 @@ export class Tessellator {
   /** Word offsets of the scratch buffer's arrays (contract.ts TESS_WORK), e.g. `.edgeF`. */
   get workLayout(): Readonly<Record<WorkName, number>> {
     return this.requireMesh().workLayout.offset;
+  }
+
+  /** Float offsets of the cage buffer's arrays (contract.ts TESS_CAGE), e.g. `.limitPositions`. */
+  get cageLayout(): Readonly<Record<CageName, number>> {
+    return this.requireMesh().cageLayout.offset;
   }
 
   private requireMesh(): MeshState {
@@ -612,7 +615,7 @@ export class Tessellator {
     if (!m.acc) return;
     m.acc.patches.encode(encoder, m.cageBuf);
     const bytes = 16 * m.acc.patches.topology.nPoints;
-    if (bytes) encoder.copyBufferToBuffer(m.acc.patches.pointBuffer, 0, m.cageBuf, 4 * m.accPointsOffset, bytes);
+    if (bytes) encoder.copyBufferToBuffer(m.acc.patches.pointBuffer, 0, m.cageBuf, 4 * m.cageLayout.offset.accPoints, bytes);
   }
 
   private recordPatchBuild(cp: GPUComputePassEncoder, m: MeshState): void {
