@@ -17,14 +17,15 @@
 //                patternIdx the patterns' local indices (the headless pass reads them)
 //                entries    4 per pattern (domain · 7 + log2 L): baseVertex, firstIndex,
 //                           indexCount, vertexCount
-//   cageBuf    f32: cage positions, then unit vertex normals, 3 per vertex (the Phong surface)
+//   cageBuf    f32: cage positions, then unit vertex normals, 3 per vertex, then the Phong
+//              surface's α of each prepared triangle's three edges (src/gpu/phong.ts)
 //
 // The surface contract is the compute tessellator's (wgsl/tess-common.wgsl): evalSurface gets a
 // cage triangle of prepare.ts and 16.16 barycentric weights in its corner order, and may call
-// triVert, cagePos, cageNormal and use PHONG_ALPHA and SurfacePoint, all defined here over this
-// tessellator's own buffers. The exact Catmull-Clark and ACC surfaces plug in the same way: their
-// module is appended instead of surface-phong.wgsl, with whatever accessors it reads (its
-// control points, quadtree nodes) bound and defined next to these (see src/gpu/instanced.ts
+// triVert, cagePos, cageNormal, phongAlpha and use PHONG_ALPHA and SurfacePoint, all defined here
+// over this tessellator's own buffers. The exact Catmull-Clark and ACC surfaces plug in the same
+// way: their module is appended instead of surface-phong.wgsl, with whatever accessors it reads
+// (its control points, quadtree nodes) bound and defined next to these (see src/gpu/instanced.ts
 // InstancedOptions.surfaceWgsl). A quad patch's (u,v) maps to its two cage triangles exactly as
 // src/gpu/face-params.ts inverts it, so those surfaces see the same face parameter.
 
@@ -47,6 +48,7 @@ fn triVert(t: u32, i: u32) -> u32 { return staticBuf[params.offTriVerts + 3u * t
 fn cageVec3(o: u32) -> vec3<f32> { return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]); }
 fn cagePos(v: u32) -> vec3<f32> { return cageVec3(3u * v); }
 fn cageNormal(v: u32) -> vec3<f32> { return cageVec3(params.offNormals + 3u * v); }
+fn phongAlpha(t: u32, i: u32) -> f32 { return cageBuf[params.offPhongAlpha + 3u * t + i]; }
 
 fn patchWord(p: u32, w: u32) -> u32 { return staticBuf[params.offPatches + PATCH_WORDS * p + w]; }
 fn patchIsTri(p: u32) -> bool { return (patchWord(p, 1u) & 1u) == 1u; }

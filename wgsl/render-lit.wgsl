@@ -58,14 +58,17 @@ fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @l
 }
 
 // The clay's colour at a point seen with normal `n` (towards the viewer's side) and `albedo`.
-fn shade(world: vec3f, n: vec3f, facet: vec3f, toEye: vec3f, albedo: vec3f) -> vec3f {
+fn shade(world: vec3f, n: vec3f, toEye: vec3f, albedo: vec3f) -> vec3f {
   let l = scene.toLight.xyz;
   let ndl = max(dot(n, l), 0.0);
-  // The shadow lookup is offset off the facet the rasterizer drew, on the shading normal's side:
-  // the shadow map holds those facets, and where the shading normal tilts far from them the
-  // offset along it can fall under the facet (measured: one dot fewer on the pawn's adaptive
-  // self-shadow boundary, e2e/artifacts.spec.ts; the contour dots were the centroid's, above).
-  let shadow = shadowFactor(world, select(-facet, facet, dot(facet, n) >= 0.0));
+  // The shadow lookup is offset along the shading normal, which varies smoothly from pixel to
+  // pixel. It was offset along the facet (from screen derivatives), but the facets of a fine
+  // tessellation turn from one tiny triangle to the next, and where a shadow's edge crosses a
+  // surface at a grazing angle (the pawn's head over its collar) the lookup followed them: a
+  // grainy band of lit and dark pixels, in the factor-16 frame too (e2e/artifacts.spec.ts, pawn
+  // adaptive Phong: one speckle there with the Phong α per edge; 0 now, and suzanne's adaptive
+  // Phong 1 -> 0).
+  let shadow = shadowFactor(world, n);
   let h = normalize(l + toEye);
   let specular = pow(max(dot(n, h), 0.0), 64.0) * 0.22 * ndl;
   // A faint rim keeps the silhouette readable against the dark backdrop.
@@ -97,7 +100,7 @@ fn litFragment(in: VertexOut, @builtin(front_facing) front: bool) -> @location(0
     insideAlbedo = outsideAlbedo * 0.7;
   }
   var colour = vec3f(0.0);
-  if (inside < 1.0) { colour += (1.0 - inside) * shade(in.world, towardsEye(n, toEye), faceNormal, toEye, outsideAlbedo); }
-  if (inside > 0.0) { colour += inside * shade(in.world, towardsEye(-n, toEye), faceNormal, toEye, insideAlbedo); }
+  if (inside < 1.0) { colour += (1.0 - inside) * shade(in.world, towardsEye(n, toEye), toEye, outsideAlbedo); }
+  if (inside > 0.0) { colour += inside * shade(in.world, towardsEye(-n, toEye), toEye, insideAlbedo); }
   return vec4f(toneMap(colour), 1.0);
 }

@@ -1,9 +1,15 @@
 // The Phong tessellation surface over the cage's vertex normals (src/gpu/phong.ts is its CPU
-// twin). A surface module provides evalSurface for the emit passes of the tessellator.
+// twin, and says why α is per edge). A surface module provides evalSurface for the emit passes
+// of the tessellator.
 
-// Boubekeur & Alexa 2008: project the linear point onto the three vertex tangent planes,
-// interpolate the projections, blend with α. The one function the Catmull-Clark surface
-// replaces.
+// Boubekeur & Alexa 2008 as the quadratic Bézier triangle it is: the corners, and on each edge
+// i → j the control point b_ij = (p_i + p_j)/2 + (α/2)((e·n_j) n_j − (e·n_i) n_i), e = p_j − p_i,
+// with the edge's own α (phongAlpha). The one function the Catmull-Clark surface replaces.
+fn phongEdgeControl(pi: vec3<f32>, ni: vec3<f32>, pj: vec3<f32>, nj: vec3<f32>, alpha: f32) -> vec3<f32> {
+  let e = pj - pi;
+  return 0.5 * (pi + pj) + (0.5 * alpha) * (dot(e, nj) * nj - dot(e, ni) * ni);
+}
+
 fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
   let v0 = triVert(t, 0u);
@@ -15,21 +21,18 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let n0 = cageNormal(v0);
   let n1 = cageNormal(v1);
   let n2 = cageNormal(v2);
-  let p = w.x * p0 + w.y * p1 + w.z * p2;
-  let q0 = p - dot(p - p0, n0) * n0;
-  let q1 = p - dot(p - p1, n1) * n1;
-  let q2 = p - dot(p - p2, n2) * n2;
-  let phong = w.x * q0 + w.y * q1 + w.z * q2;
+  let b01 = phongEdgeControl(p0, n0, p1, n1, phongAlpha(t, 0u));
+  let b12 = phongEdgeControl(p1, n1, p2, n2, phongAlpha(t, 1u));
+  let b20 = phongEdgeControl(p2, n2, p0, n0, phongAlpha(t, 2u));
+  // Half the partial derivatives along w0, w1, w2 (each weight on its own).
+  let h0 = w.x * p0 + w.y * b01 + w.z * b20;
+  let h1 = w.y * p1 + w.x * b01 + w.z * b12;
+  let h2 = w.z * p2 + w.y * b12 + w.x * b20;
+  // Σ w_k h_k is the point; the tangents along w1, w2 (w0 = 1 − w1 − w2 moving with them).
+  let pos = w.x * h0 + w.y * h1 + w.z * h2;
   let n = w.x * n0 + w.y * n1 + w.z * n2;
   let len = length(n);
-  // Tangents along w1, w2: ∂p = p_i − p0, ∂q_j = ∂p − (∂p·n_j) n_j, ∂phong = q_i − q0 + Σ w_j ∂q_j.
-  let e1 = p1 - p0;
-  let e2 = p2 - p0;
-  let dq1 = e1 - (w.x * dot(e1, n0) * n0 + w.y * dot(e1, n1) * n1 + w.z * dot(e1, n2) * n2);
-  let dq2 = e2 - (w.x * dot(e2, n0) * n0 + w.y * dot(e2, n1) * n1 + w.z * dot(e2, n2) * n2);
-  let du = mix(e1, q1 - q0 + dq1, PHONG_ALPHA);
-  let dv = mix(e2, q2 - q0 + dq2, PHONG_ALPHA);
-  return SurfacePoint(mix(p, phong, PHONG_ALPHA), select(n0, n / len, len > 0.0), du, dv);
+  return SurfacePoint(pos, select(n0, n / len, len > 0.0), 2.0 * (h1 - h0), 2.0 * (h2 - h0));
 }
 
 // The surface without any display blend, which the factor rule looks at inside each triangle

@@ -121,6 +121,8 @@ fn unpackPatternFrame(w: u32) -> PatternFrame {
 fn cageVec3(o: u32) -> vec3<f32> { return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]); }
 fn cagePos(v: u32) -> vec3<f32> { return cageVec3(3u * v); }
 fn cageNormal(v: u32) -> vec3<f32> { return cageVec3(params.offNormals + 3u * v); }
+// The Phong surface's α of triangle t's edge i (corner i to i + 1; src/gpu/phong.ts phongTriAlphas).
+fn phongAlpha(t: u32, i: u32) -> f32 { return cageBuf[params.offPhongAlpha + 3u * t + i]; }
 
 // What the factor rule reads: the cage itself (Phong), or the limit positions and normals of the
 // cage vertices (Catmull-Clark, written by wgsl/cc-build.wgsl).

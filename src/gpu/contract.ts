@@ -523,16 +523,19 @@ export const DISP_TRI_WORD = defineBits('DispTriWord', { corners: [0, 15], centr
 export const ACC_TRI_WORD = defineBits('AccTriWord', { corners: [0, 6], face: [6, 26] });
 
 /**
- * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each;
- * with the Catmull-Clark surface, its refined points (point p ≥ ccCageVerts at offCtrl + 3(p − ccCageVerts))
- * and the limit positions and normals of the cage vertices (wgsl/cc-build.wgsl writes them).
+ * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each; the
+ * Phong surface's α of each triangle's three edges (prepare.ts triPhongAlpha, which follows the
+ * normals); with the Catmull-Clark surface, its refined points (point p ≥ ccCageVerts at
+ * offCtrl + 3(p − ccCageVerts)) and the limit positions and normals of the cage vertices
+ * (wgsl/cc-build.wgsl writes them).
  */
 export const TESS_CAGE = defineArena<
-  'positions' | 'normals' | 'ctrl' | 'limitPositions' | 'limitNormals' | 'accPoints' | 'cornerUvs',
+  'positions' | 'normals' | 'phongAlpha' | 'ctrl' | 'limitPositions' | 'limitNormals' | 'accPoints' | 'cornerUvs',
   TessSizes
 >([
   ['positions', (s) => 3 * s.vertices],
   ['normals', (s) => 3 * s.vertices],
+  ['phongAlpha', (s) => 3 * s.triangles],
   ['ctrl', (s) => 3 * s.ccPoints],
   ['limitPositions', (s) => 3 * s.limitVertices],
   ['limitNormals', (s) => 3 * s.limitVertices],

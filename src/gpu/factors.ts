@@ -6,8 +6,10 @@
  * angle instead of screen projection"). For an edge p0–p1 with unit normals n0, n1 and
  * d = p1 − p0, Phong tessellation's midpoint minus the linear midpoint is
  *     e = (α/4)·((d·n1)n1 − (d·n0)n0),  α = 3/4,
- * symmetric in the two ends. Split into k segments a curved edge's chord error falls as 1/k²,
- * so the error seen from the eye, as an angle, is |e| / (k²·dist). Asking for at most one pixel
+ * symmetric in the two ends. (The Phong surface lowers α on some edges, src/gpu/phong.ts; the
+ * rule keeps 3/4 there, a larger bend than the surface's, so such an edge is cut a little finer.)
+ * Split into k segments a curved edge's chord error falls as 1/k², so the error seen from the
+ * eye, as an angle, is |e| / (k²·dist). Asking for at most one pixel
  * (pixelAngle = fovY / viewportHeight) at LOD scale 1 gives
  *     k = sqrt(lodScale·|e| / (dist·pixelAngle)).
  * That holds for k EQUAL segments. The factor F = k goes to Hable's pop-free line, whose points

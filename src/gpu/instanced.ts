@@ -53,6 +53,7 @@ import { constantsWgsl, defineBits, grid2d, WORKGROUP_SIZE } from './contract.ts
 import { readBuffer } from './readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
 import { edgeFactor, type Vec3 } from './factors.ts';
+import { phongTriAlphas } from './phong.ts';
 import type { FactorParams } from './types.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../mesh/types.ts';
@@ -92,6 +93,7 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['offPatternIdx', 'u32'],
   ['offEntries', 'u32'],
   ['offNormals', 'u32'],
+  ['offPhongAlpha', 'u32'],
   // work word offsets (wgsl/instanced-levels.wgsl).
   ['offWanted', 'u32'],
   ['offEdgeCode', 'u32'],
@@ -854,9 +856,11 @@ export class InstancedTessellator implements SurfaceDrawer {
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
     });
     device.queue.writeBuffer(staticBuf, 0, words);
-    const cage = new Float32Array(6 * pr.vertexCount);
+    // Positions, normals, then the Phong surface's α per triangle edge (wgsl/instanced-common.wgsl).
+    const cage = new Float32Array(6 * pr.vertexCount + 3 * pr.triangleCount);
     cage.set(pr.positions, 0);
     cage.set(pr.normals, 3 * pr.vertexCount);
+    cage.set(pr.triPhongAlpha, 6 * pr.vertexCount);
     const cageBuf = device.createBuffer({
       label: 'instanced cage',
       size: Math.max(16, cage.byteLength),
@@ -911,6 +915,7 @@ export class InstancedTessellator implements SurfaceDrawer {
       offPatternIdx: offsets[4],
       offEntries: offsets[5],
       offNormals: 3 * pr.vertexCount,
+      offPhongAlpha: 6 * pr.vertexCount,
       offWanted: layout.wanted,
       offEdgeCode: layout.edgeCode,
       offPatchLevel: layout.patchLevel,
@@ -938,6 +943,8 @@ export class InstancedTessellator implements SurfaceDrawer {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+    // The Phong surface's α per edge follows the normals (phong.ts phongTriAlphas).
+    this.device.queue.writeBuffer(m.cageBuf, 24 * m.m.prepared.vertexCount, phongTriAlphas(m.m.prepared, positions, normals));
     this.ccSource?.updateCage(positions, normals);
     if (this.accPatches) {
       const enc = this.device.createCommandEncoder({ label: 'instanced ACC build' });

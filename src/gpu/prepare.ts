@@ -18,7 +18,8 @@
  *    computeSharpness), so no surface evaluates a face the subdivision says is not there.
  *    Each triangle keeps its source face.
  *  - Vertex normals: area-weighted (the sum of the faces' cross products, Newell's), for Phong
- *    tessellation and for the adaptive factor rule; a centre vertex has its one face's.
+ *    tessellation and for the adaptive factor rule; a centre vertex has its one face's. The
+ *    Phong surface's α per edge follows from them (phong.ts phongTriAlphas).
  *  - Edges: every undirected edge of the triangulation once, canonically from its lower to
  *    its higher vertex index. The factor of an edge is computed and stored once per edge, so the
  *    two triangles of an edge can never disagree; its line runs in that canonical direction.
@@ -29,6 +30,7 @@ import { type Cage, type SubdivOptions, SHARPNESS_INFINITE } from '../mesh/types
 import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../pattern/clamped.ts';
 import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from './contract.ts';
+import { phongTriAlphas } from './phong.ts';
 
 /** Faces with at least this many corners are fanned round a centre vertex (see above). */
 export const CENTRE_FAN_MIN_CORNERS = 5;
@@ -54,6 +56,9 @@ export interface PreparedMesh {
   triVerts: Uint32Array;
   /** Three edge ids per triangle: edge i joins corner i to corner i+1. */
   triEdges: Uint32Array;
+  /** The Phong surface's α of each triangle's three edges, 3 per triangle (phong.ts
+   * phongTriAlphas: lower than PHONG_ALPHA where a vertex normal lies near a face's plane). */
+  triPhongAlpha: Float32Array;
   /** Pattern frame per triangle (packPatternFrame). */
   triPatternFrame: Uint32Array;
   /** Source face of each triangle. */
@@ -232,6 +237,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     normals,
     triVerts: Uint32Array.from(tris),
     triEdges,
+    triPhongAlpha: phongTriAlphas({ triangleCount: nT, edgeCount: edgeVerts.length / 2, triVerts: tris, triEdges }, positions, normals),
     triPatternFrame,
     triFace: Uint32Array.from(faces),
     triFan: Uint32Array.from(fans),

@@ -66,6 +66,7 @@ import {
   WELD_EDGES_ARGS_OFFSET,
 } from './contract.ts';
 import { outputCapacity } from './factors.ts';
+import { phongTriAlphas } from './phong.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { FactorParams, TessellatedMesh } from './types.ts';
 import { PatternTables } from '../pattern/tables.ts';
@@ -300,6 +301,7 @@ export class Tessellator {
     const cageWords = packArena(TESS_CAGE.names, cageLayout, new Float32Array(cageLayout.words), {
       positions: prepared.positions,
       normals: prepared.normals,
+      phongAlpha: prepared.triPhongAlpha,
       cornerUvs: disp?.cornerUvs,
     });
     const workLayout = TESS_WORK.layout(sizes);
@@ -490,6 +492,8 @@ export class Tessellator {
     const m = this.requireMesh();
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.normals, normals);
+    // The Phong surface's α per edge follows the normals (phong.ts phongTriAlphas).
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.phongAlpha, phongTriAlphas(m.prepared, positions, normals));
   }
 
   /** The uniform and static buffers (for extra passes over the same mesh, e.g. surface sampling). */
