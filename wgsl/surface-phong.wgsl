@@ -4,12 +4,14 @@
 
 // Boubekeur & Alexa 2008 as the quadratic Bézier triangle it is: the corners, and on each edge
 // i → j the control point b_ij = (p_i + p_j)/2 + (α/2)((e·n_j) n_j − (e·n_i) n_i), e = p_j − p_i,
-// with the edge's own α (phongAlpha). The one function the Catmull-Clark surface replaces.
+// with the edge's own α (phongAlpha).
 fn phongEdgeControl(pi: vec3<f32>, ni: vec3<f32>, pj: vec3<f32>, nj: vec3<f32>, alpha: f32) -> vec3<f32> {
   let e = pj - pi;
   return 0.5 * (pi + pj) + (0.5 * alpha) * (dot(e, nj) * nj - dot(e, ni) * ni);
 }
 
+// The surface point at 16.16 barycentrics of cage triangle t: the one function the Catmull-Clark
+// surface replaces.
 fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
   let v0 = triVert(t, 0u);
