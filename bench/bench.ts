@@ -19,19 +19,19 @@
 import { existsSync, readFileSync, writeFileSync, readdirSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { cpus, totalmem } from 'node:os';
-import { createNodeDevice } from '../src/gpu/node-device.ts';
-import { Tessellator } from '../src/gpu/tessellator.ts';
-import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
-import { headlessCamera, type HeadlessOptions } from '../src/gpu/headless.ts';
-import { readBuffer } from '../src/gpu/readback.ts';
-import { adaptiveRuleOf } from '../src/gpu/factors.ts';
-import { phongEdgeFactors } from '../src/gpu/phong.ts';
-import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
+import { createNodeDevice } from '../src/gpu/device/node-device.ts';
+import { Tessellator } from '../src/gpu/tess/tessellator.ts';
+import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
+import { headlessCamera, type HeadlessOptions } from '../src/gpu/tess/headless.ts';
+import { readBuffer } from '../src/gpu/device/readback.ts';
+import { adaptiveRuleOf } from '../src/gpu/tess/factors.ts';
+import { phongEdgeFactors } from '../src/gpu/surface/phong.ts';
+import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/tess/factors.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
-import { prepareAccSurface, type AccSurface as AccSurfaceData } from '../src/gpu/acc-surface.ts';
+import { prepareAccSurface, type AccSurface as AccSurfaceData } from '../src/gpu/acc/surface.ts';
 import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
 
 const REPEATS = 5;
@@ -172,7 +172,7 @@ async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats: numbe
 }
 
 /** The fixed factor that meets the adaptive rule's bound everywhere it applies: the largest factor
- * the rule (src/gpu/factors.ts: the edge term and the bulge term of the edge's triangles, on the
+ * the rule (src/gpu/tess/factors.ts: the edge term and the bulge term of the edge's triangles, on the
  * Phong surface, as the bench's tessellator) gives any edge in this view. */
 function fixedFactorForAdaptive(mesh: PreparedMesh, o: HeadlessOptions): number {
   const rule = adaptiveRuleOf(headlessCamera(mesh, o));
@@ -482,7 +482,7 @@ ${draws.join('\n')}
 
 ## Adaptive against fixed at the same bound
 
-The adaptive rule (src/gpu/factors.ts) asks for every visible edge's Phong chord error to be at most 1/${lodScale} px, counted for equal segments (Hable's line has longer ones inside an octave), and for as many segments as the surface's bulge inside each cage triangle on screen needs (the bulge term: sampled at four points, k = sqrt(10·lod·bulge px)); edges off screen, or facing away with no triangle on screen beside them, drop to factor 1. The fixed factor below is the largest the rule gives any edge in this view: the smallest fixed factor that meets the same bound everywhere.
+The adaptive rule (src/gpu/tess/factors.ts) asks for every visible edge's Phong chord error to be at most 1/${lodScale} px, counted for equal segments (Hable's line has longer ones inside an octave), and for as many segments as the surface's bulge inside each cage triangle on screen needs (the bulge term: sampled at four points, k = sqrt(10·lod·bulge px)); edges off screen, or facing away with no triangle on screen beside them, drop to factor 1. The fixed factor below is the largest the rule gives any edge in this view: the smallest fixed factor that meets the same bound everywhere.
 
 | model | fixed factor for the same error | fixed verts | fixed tris | adaptive verts | adaptive tris | adaptive / fixed |
 |---|---:|---:|---:|---:|---:|---:|

@@ -5,8 +5,8 @@
  * 2048² shadow map), so that the number measures the geometry, not a material.
  */
 import { mat4 } from 'gl-matrix';
-import type { TessellatedMesh } from '../src/gpu/types.ts';
-import type { PreparedMesh } from '../src/gpu/prepare.ts';
+import type { TessellatedMesh } from '../src/gpu/contract/tessellated-mesh.ts';
+import type { PreparedMesh } from '../src/gpu/tess/prepare.ts';
 
 /** The benchmark's light: an orthographic box around the model, from above and to the side. */
 export function benchLightViewProj(mesh: PreparedMesh): Float32Array {

@@ -4,19 +4,25 @@
  * "LOD measure mismatch"), per project model: the compute tessellator's adaptive factors, the
  * instanced tessellator's dynamic rule (the sample's: chord pixels and curvature, 1920×1080) and
  * its factor-rule mode (the compute tessellator's measure, rounded up to powers of two). The
- * camera is the CLI's (src/gpu/headless.ts headlessCamera, 1080 px high). Counts only, no timings
+ * camera is the CLI's (src/gpu/tess/headless.ts headlessCamera, 1080 px high). Counts only, no timings
  * (instanced: the triangles a draw rasterises, and the welded mesh the CLI writes).
  */
 import { readdirSync, readFileSync } from 'node:fs';
-import { createNodeDevice } from '../src/gpu/node-device.ts';
-import { Tessellator } from '../src/gpu/tessellator.ts';
-import { prepareMesh } from '../src/gpu/prepare.ts';
-import { headlessCamera, tessellateOnce } from '../src/gpu/headless.ts';
+import { createNodeDevice } from '../src/gpu/device/node-device.ts';
+import { Tessellator } from '../src/gpu/tess/tessellator.ts';
+import { prepareMesh } from '../src/gpu/tess/prepare.ts';
+import { headlessCamera, tessellateOnce } from '../src/gpu/tess/headless.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { loadCage } from '../src/mesh/index.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
-import { factorRuleLevels, InstancedTessellator, prepareInstanced, weldInstanced, type LevelParams } from '../src/gpu/instanced.ts';
-import { ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
+import {
+  factorRuleLevels,
+  InstancedTessellator,
+  prepareInstanced,
+  weldInstanced,
+  type LevelParams,
+} from '../src/gpu/instanced/instanced.ts';
+import { ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 
 function option(argv: string[], name: string): string | undefined {
   const i = argv.indexOf(name);

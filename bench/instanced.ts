@@ -1,10 +1,10 @@
 /**
  * `npm run bench:instanced [-- --level L] [--surface phong|catmull-clark] [--models a,b] [--repeats N] [--rounds R] [--out BENCHMARKS.md]`: the
- * compute tessellator against the instanced power-of-two tessellator (src/gpu/instanced.ts), per
+ * compute tessellator against the instanced power-of-two tessellator (src/gpu/instanced/instanced.ts), per
  * project model, at matched settings: the Phong surface (or with --surface catmull-clark the exact
  * limit, flat baseline off, on both: the instanced one through the compute tessellator's
- * evaluator, src/gpu/instanced-cc.ts), compute fixed factor L and instanced
- * static level L (the same points on every cage triangle: tests/tessellate-cli.node.test.ts
+ * evaluator, src/gpu/instanced/surface-cc.ts), compute fixed factor L and instanced
+ * static level L (the same points on every cage triangle: tests/gpu/tess/tessellate-cli.node.test.ts
  * checks it; the same triangle count on quads, n-gons and triangles alike). Measured inside one
  * program, on one device, with GPU timestamps:
  *
@@ -32,16 +32,16 @@
  */
 import { existsSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
-import { createNodeDevice } from '../src/gpu/node-device.ts';
-import { Tessellator } from '../src/gpu/tessellator.ts';
-import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
-import { headlessCamera } from '../src/gpu/headless.ts';
-import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/factors.ts';
-import { readBuffer } from '../src/gpu/readback.ts';
+import { createNodeDevice } from '../src/gpu/device/node-device.ts';
+import { Tessellator } from '../src/gpu/tess/tessellator.ts';
+import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
+import { headlessCamera } from '../src/gpu/tess/headless.ts';
+import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/tess/factors.ts';
+import { readBuffer } from '../src/gpu/device/readback.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { loadCage } from '../src/mesh/index.ts';
-import { InstancedTessellator, prepareInstanced, BUCKETS, type LevelParams } from '../src/gpu/instanced.ts';
-import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
+import { InstancedTessellator, prepareInstanced, BUCKETS, type LevelParams } from '../src/gpu/instanced/instanced.ts';
+import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';

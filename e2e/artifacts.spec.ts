@@ -23,31 +23,31 @@
 //
 // What took the speckles away (measured on this machine with this test's metric, before → after):
 // - closed cages cull their back faces (earlier: creature adaptive Phong 135 → 8, pawn 157 → 1);
-// - the gap strip's cut without caps (tests/no-folds.test.ts; creature 8 → 1);
+// - the gap strip's cut without caps (tests/gpu/tess/no-folds.test.ts; creature 8 → 1);
 // - the lit pass interpolates position and normal at the centroid of a pixel's covered samples
-//   (render-lit.wgsl VertexOut): at the pixel's centre a contour pixel's position lay off its
+//   (wgsl/render/lit.wgsl VertexOut): at the pixel's centre a contour pixel's position lay off its
 //   triangle, under the surface, and the shadow lookup shaded it dark: the dotted lines along
 //   suzanne's brow (fixed 8: 4 → 0) and most of the adaptive ones;
 // - open cages drop the back faces whose surface normal faces the eye (the tessellation folding
-//   over at a contour; render-common.wgsl insideWeight) instead of lighting them as an inside,
+//   over at a contour; wgsl/render/common.wgsl insideWeight) instead of lighting them as an inside,
 //   and a shading normal that turns away from the eye is brought to the view plane (towardsEye).
 // - an open cage's back faces are drawn in a second draw, depth-biased behind its front faces
-//   (src/gpu/renderer.ts): the contour's two sheets no longer fight (suzanne adaptive Phong
+//   (src/gpu/render/renderer.ts): the contour's two sheets no longer fight (suzanne adaptive Phong
 //   22 → 18, and the factor-16 reference loses its own dotted brow: 4 and 3 dots → 0, which the
 //   test now checks for every reference).
 // - the factor rule counts twice the part of an edge's Phong offset that lies across the line
-//   of sight where both ends face the eye (src/gpu/factors.ts): silhouettes and occlusion
+//   of sight where both ends face the eye (src/gpu/tess/factors.ts): silhouettes and occlusion
 //   contours closer to the limit's (suzanne adaptive Catmull-Clark 32 → 26, Phong 18 → 17, pawn
 //   adaptive Catmull-Clark 6 → 4, Phong 7 → 4; the creature's Catmull-Clark 5 → 6: one corner of
 //   its outline, (396, 313), now lies a pixel further along and reads as two pixels).
-// - the factor rule's bulge term (src/gpu/factors.ts, wgsl/factor-bulge.wgsl: the surface sampled
+// - the factor rule's bulge term (src/gpu/tess/factors.ts, wgsl/tess/factor-bulge.wgsl: the surface sampled
 //   inside every cage triangle on screen): the adaptive outline within a pixel of the limit's
-//   instead of 2–5 px (tests/limit-distance.node.test.ts), which is what the remaining speckles
+//   instead of 2–5 px (tests/gpu/tess/limit-distance.node.test.ts), which is what the remaining speckles
 //   were: suzanne adaptive Catmull-Clark 26 → 0, adaptive Phong 17 → 1, pawn adaptive
 //   Catmull-Clark 4 → 0, Phong 4 → 0, creature adaptive Catmull-Clark 6 → 0.
 // - the Phong surface's α per edge, lowered where a corner's vertex normal lies near its face's
-//   plane (src/gpu/phong.ts; tests/no-folds.test.ts), and the lit pass's shadow lookup offset
-//   along the shading normal instead of the facet (wgsl/render-lit.wgsl shade: the facets of a
+//   plane (src/gpu/surface/phong.ts; tests/gpu/tess/no-folds.test.ts), and the lit pass's shadow lookup offset
+//   along the shading normal instead of the facet (wgsl/render/lit.wgsl shade: the facets of a
 //   fine tessellation drew a grainy band where the pawn's head shadows its collar, in the
 //   reference too): suzanne adaptive Phong 1 → 0 (the last, on the ear: the α did it), pawn
 //   adaptive Phong stays 0 (1 with the α alone, in that band).
@@ -106,7 +106,7 @@ function speckles(frame: Image, ref: Image): { count: number; at: string[]; wher
 /** Dots of one image on its own: pixels darker than each of their 8 neighbours by more than
  * SPECKLE_THRESHOLD. The reference must have none: the dotted contours that back faces drew
  * were in it too (suzanne's brow at factor 16: 4 with Catmull-Clark, 3 with Phong, before an
- * open surface's back faces were drawn depth-biased behind its front faces, src/gpu/renderer.ts),
+ * open surface's back faces were drawn depth-biased behind its front faces, src/gpu/render/renderer.ts),
  * and a dotted reference hides dots of the frame from the count above. */
 function isolatedDots(img: Image): { count: number; at: string[] } {
   let count = 0;

@@ -4,7 +4,7 @@
 // dialog (an injected `alert` would open one), bad input keeps the previous model, the HTML file
 // name is shown as text. At the end the page shows the first model again with the same settings
 // in the same window, and the GPU memory it holds (the bytes of its live buffers and textures,
-// counted by src/gpu/tracked-device.ts) is exactly what it held after that model's first load:
+// counted by src/gpu/device/tracked-device.ts) is exactly what it held after that model's first load:
 // every buffer or texture made along the way was destroyed (or died with its lost device).
 //
 // Kept short on SwiftShader: small models, fixed factor 2, small output buffers (cap=0.05, i.e.

@@ -7,8 +7,8 @@
  *
  * With a WebGPU adapter (Dawn; SwiftShader where there is no GPU: XDG_RUNTIME_DIR=/tmp
  * VK_ICD_FILENAMES=/usr/lib/chromium/vk_swiftshader_icd.json) it also times the GPU patch build
- * (src/gpu/acc.ts, wgsl/acc-build.wgsl) and, as a peer in the same run, the exact Catmull-Clark
- * patch build (src/gpu/tessellator.ts encodePatchBuild): wall clock per build of 20 builds queued in
+ * (src/gpu/acc/patches.ts, wgsl/acc/build.wgsl) and, as a peer in the same run, the exact Catmull-Clark
+ * patch build (src/gpu/tess/tessellator.ts encodePatchBuild): wall clock per build of 20 builds queued in
  * one submission, median of 5, after a warm-up. On SwiftShader only the ratio means anything.
  *
  * Cages: the notes' §5 test cages (cube and n-prisms after one CC step, on the notes' 9×9 dyadic
@@ -20,14 +20,14 @@ import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
 import { ACC_SCHEMES, AccError, AccSurface, KIND_NAMES } from '../src/subdiv/acc.ts';
-import { ExactAt, accErrors, ccStep, continuity, prism, smoothEdges } from '../tests/acc-checks.ts';
-import { AccPatches } from '../src/gpu/acc.ts';
-import { Tessellator } from '../src/gpu/tessellator.ts';
-import { prepareMesh } from '../src/gpu/prepare.ts';
+import { ExactAt, accErrors, ccStep, continuity, prism, smoothEdges } from '../tests/support/acc-checks.ts';
+import { AccPatches } from '../src/gpu/acc/patches.ts';
+import { Tessellator } from '../src/gpu/tess/tessellator.ts';
+import { prepareMesh } from '../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
-import { createNodeDevice } from '../src/gpu/node-device.ts';
-import { cube, pentPrism } from '../tests/subdiv-fixtures.ts';
+import { createNodeDevice } from '../src/gpu/device/node-device.ts';
+import { cube, pentPrism } from '../tests/support/subdiv-fixtures.ts';
 import { makeCage } from '../src/mesh/index.ts';
 
 // The repository root: where it is run from (npm scripts and bench/gpu/run.sh run it there; a

@@ -16,7 +16,7 @@ import { readFileSync } from 'node:fs';
 import { loadCage, uvTexelCoverage } from '../src/mesh/index.ts';
 import type { DisplacedModelEntry, HeightMap } from '../src/mesh/heightmap.ts';
 import { decodeHeightPng, encodeHeightPng } from '../src/mesh/heightmap-png.ts';
-import { prepareMesh } from '../src/gpu/prepare.ts';
+import { prepareMesh } from '../src/gpu/tess/prepare.ts';
 import { clampedTriangle } from '../src/pattern/clamped.ts';
 
 type Entry = DisplacedModelEntry;

@@ -3,17 +3,17 @@
  * "smooth default"): every output vertex that faces the eye (its exact limit normal towards the
  * eye), against the exact CPU reference (src/subdiv, equal to OpenSubdiv) at the same cage
  * parameter, the distance divided by the size of a pixel at that vertex's distance from the eye
- * (|P − eye| · fovY / viewportHeight). The camera is the demo's first view (src/gpu/camera.ts
+ * (|P − eye| · fovY / viewportHeight). The camera is the demo's first view (src/gpu/render/camera.ts
  * fitOrbit at the given aspect): what a user sees when the model loads.
  * A check tool (the CLI's --stats, tests): it reads the yardstick, which src/gpu never does.
  */
 import { Surface } from '../src/subdiv/index.ts';
 import { DEFAULT_OPTIONS, type Cage } from '../src/mesh/index.ts';
-import type { PreparedMesh } from '../src/gpu/prepare.ts';
-import type { MeshReadback } from '../src/gpu/readback.ts';
-import { faceParam } from '../src/gpu/face-params.ts';
-import { vertexWeights } from '../src/gpu/headless.ts';
-import { boundsOf, eyePosition, fitOrbit, type Vec3 } from '../src/gpu/camera.ts';
+import type { PreparedMesh } from '../src/gpu/tess/prepare.ts';
+import type { MeshReadback } from '../src/gpu/device/readback.ts';
+import { faceParam } from '../src/gpu/tess/face-params.ts';
+import { vertexWeights } from '../src/gpu/tess/headless.ts';
+import { boundsOf, eyePosition, fitOrbit, type Vec3 } from '../src/gpu/render/camera.ts';
 
 export interface DemoView {
   eye: Vec3;

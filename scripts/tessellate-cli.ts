@@ -13,7 +13,7 @@
  * "subdivisionMs", "tessellationMs" (GPU timestamps of the one rebuild: the patch build, and
  * everything after it; null without timestamp queries), "vertices", "triangles", "adapter"}.
  *
- * `--tessellator instanced` runs the instanced power-of-two tessellator (src/gpu/instanced.ts)
+ * `--tessellator instanced` runs the instanced power-of-two tessellator (src/gpu/instanced/instanced.ts)
  * instead: its level pass (static `--level L`, L a power of two in 1..64, or `--adaptive`: each
  * edge's level by the compute tessellator's adaptive factor rule at the same camera and --lod,
  * rounded up to a power of two: the two tessellators' counts compare), then a compute pass that
@@ -22,7 +22,7 @@
  * triangles left out, so the OBJ and --params are what a draw shows. Surfaces: phong (default),
  * the three ACC schemes (--surface bezier-acc | gregory-acc | pm-acc; closed quad and triangle
  * cages) and the exact Catmull-Clark limit (--surface catmull-clark: the compute tessellator's
- * evaluator over its buffers, src/gpu/instanced-cc.ts; its CPU preparation is in "cpuPrepMs", its
+ * evaluator over its buffers, src/gpu/instanced/surface-cc.ts; its CPU preparation is in "cpuPrepMs", its
  * tables and refined points in "gpuBytes"). Its --stats line has "tessellator": "instanced",
  * "patches", "levelsMs" and "evaluateMs" (GPU timestamps of the two passes; "tessellationMs" is
  * their sum, "subdivisionMs" null), "drawnTriangles" (what a draw rasterises, collapsed ones
@@ -38,9 +38,9 @@
  * --displacement map.png --scale S moves every output vertex along the surface normal by
  * h = (sample − M)·S (M = --mid, default 0.5), the map (8 or 16-bit PNG, greyscale or its red
  * channel) sampled bilinearly at the cage's uvs (the model needs vt on every face corner),
- * --wrap repeat (default) or clamp; any surface of either tessellator (src/gpu/displacement.ts; the
+ * --wrap repeat (default) or clamp; any surface of either tessellator (src/gpu/tess/displacement-map.ts; the
  * instanced one displaces in its vertex function through a lending compute tessellator's arenas,
- * src/gpu/instanced-displace.ts; its --adaptive levels do not count the heights).
+ * src/gpu/instanced/displace-vertex.ts; its --adaptive levels do not count the heights).
  * Bad input: a message and exit code 2.
  */
 import { decodeHeightPng, HeightMapError } from '../src/mesh/heightmap-png.ts';
@@ -49,9 +49,9 @@ import { requireUvs } from '../src/mesh/uv.ts';
 import { readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { loadCage, CageError } from '../src/mesh/index.ts';
-import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/node-device.ts';
-import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, type HeadlessOptions } from '../src/gpu/headless.ts';
-import { prepareMesh, type PreparedMesh } from '../src/gpu/prepare.ts';
+import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/device/node-device.ts';
+import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, type HeadlessOptions } from '../src/gpu/tess/headless.ts';
+import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { faceCount, type Cage } from '../src/mesh/index.ts';
 import {
@@ -63,15 +63,15 @@ import {
   factorRuleLevels,
   InstancedTessellator,
   type LevelParams,
-} from '../src/gpu/instanced.ts';
+} from '../src/gpu/instanced/instanced.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
-import { AccPatches } from '../src/gpu/acc.ts';
-import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced-cc.ts';
-import { displacementLender } from '../src/gpu/instanced-displace.ts';
-import { prepareDisplacement } from '../src/gpu/displacement.ts';
+import { AccPatches } from '../src/gpu/acc/patches.ts';
+import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
+import { displacementLender } from '../src/gpu/instanced/displace-vertex.ts';
+import { prepareDisplacement } from '../src/gpu/tess/displacement-map.ts';
 import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
-import { isAccSurface, type Surface } from '../src/gpu/tess-passes.ts';
-import { prepareAccSurface, type AccSurface } from '../src/gpu/acc-surface.ts';
+import { isAccSurface, type Surface } from '../src/gpu/tess/passes.ts';
+import { prepareAccSurface, type AccSurface } from '../src/gpu/acc/surface.ts';
 import { demoView, displayedDistancePx, limitDistancePx } from './limit-distance.ts';
 
 const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
@@ -310,7 +310,7 @@ export async function main(argv: string[]): Promise<number> {
     return 2;
   }
   const cpuPrepMs = performance.now() - started;
-  // The demo's first view (src/gpu/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
+  // The demo's first view (src/gpu/render/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
   if (args.demoView) Object.assign(args.o, demoView(mesh));
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
   // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
@@ -410,7 +410,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
       throw e;
     }
   }
-  // Displacement: the arenas of a lending compute tessellator (src/gpu/instanced-displace.ts), on
+  // Displacement: the arenas of a lending compute tessellator (src/gpu/instanced/displace-vertex.ts), on
   // Catmull-Clark the surface's own lender.
   const d = args.o.displacement;
   const dispData = d ? prepareDisplacement(cage, mesh, d.map, d.wrap) : undefined;

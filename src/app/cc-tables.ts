@@ -6,7 +6,7 @@
  * the cage to one and its typed arrays back.
  */
 import type { Cage } from '../mesh/types.ts';
-import { prepareMesh } from '../gpu/prepare.ts';
+import { prepareMesh } from '../gpu/tess/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
 
 export interface CcTables {

@@ -15,7 +15,7 @@
  * longer the latest stops at its next step and changes nothing (a later model or surface replaced
  * it). A failed request changes nothing either: the page keeps what it showed, and is told why.
  *
- * DOM-free and GPU-free: the page hands in `DemoPorts` (tests/controller.test.ts hands in fakes).
+ * DOM-free and GPU-free: the page hands in `DemoPorts` (tests/app/controller.test.ts hands in fakes).
  */
 import type { Surface } from './params.ts';
 

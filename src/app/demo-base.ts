@@ -6,10 +6,10 @@
  * Frames are drawn on demand: only when something changed (camera, size, settings) or while
  * animating. `frozenTime` (the URL's ?t=) pins the clock for deterministic screenshots.
  */
-import { SRGB_TARGET_FORMAT, SrgbBlit } from '../gpu/srgb-blit.ts';
-import { createGpu, GpuUnavailableError, type GpuContext, type LimitName } from '../gpu/device.ts';
-import { GpuMemory, trackDevice } from '../gpu/tracked-device.ts';
-import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
+import { SRGB_TARGET_FORMAT, SrgbBlit } from '../gpu/render/srgb-blit.ts';
+import { createGpu, GpuUnavailableError, type GpuContext, type LimitName } from '../gpu/device/device.ts';
+import { GpuMemory, trackDevice } from '../gpu/device/tracked-device.ts';
+import { dolly, fitOrbit, orbit, type Bounds, type OrbitCamera } from '../gpu/render/camera.ts';
 import { setLoading, setPageState, showFatal, showToast } from './ui.ts';
 
 export interface DemoBaseOptions {
@@ -32,7 +32,7 @@ export abstract class DemoBase {
   readonly canvas: HTMLCanvasElement;
   readonly frozenTime: number | null;
   /** The device context; its `device` counts every buffer and texture made through it in
-   * `memory` (src/gpu/tracked-device.ts), so everything the page allocates is on the ledger. */
+   * `memory` (src/gpu/device/tracked-device.ts), so everything the page allocates is on the ledger. */
   gpu!: GpuContext;
   /** The live GPU buffers and textures of the current device (a new ledger per device). */
   memory = new GpuMemory();
@@ -139,7 +139,7 @@ export abstract class DemoBase {
     // Draw through an -srgb view: lighting stays linear, blending and MSAA resolve happen in
     // linear space, and the canvas (whose own format cannot be -srgb) stores encoded values.
     // Compatibility mode allows no view formats: draw into an -srgb picture and copy it to the
-    // canvas with the encoding done in a shader (src/gpu/srgb-blit.ts).
+    // canvas with the encoding done in a shader (src/gpu/render/srgb-blit.ts).
     this.#blit?.destroy();
     this.#blit = gpu.compatibility ? new SrgbBlit(this.gpu.device, this.canvasFormat) : null;
     this.renderFormat = this.#blit ? SRGB_TARGET_FORMAT : (`${this.canvasFormat}-srgb` as GPUTextureFormat);

@@ -1,16 +1,16 @@
 /**
  * The demo's ACC error views (issue 10): per drawn ACC surface (the main one, and the comparison
- * view's right half), the GPU error pass over its output (src/gpu/acc-heat.ts AccHeatPass), run
+ * view's right half), the GPU error pass over its output (src/gpu/acc/heat.ts AccHeatPass), run
  * whenever that output is rebuilt, and its max / RMS read back asynchronously; and, per cage, the
  * exact Catmull-Clark reference the passes evaluate (a Catmull-Clark Tessellator used only for its
  * patch build and uniforms, at factor 1 and with a tiny output). No DOM.
  */
 import type { Cage } from '../mesh/types.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
-import { AccHeatPass, type HeatTotals } from '../gpu/acc-heat.ts';
-import type { AccPatches } from '../gpu/acc.ts';
-import { Tessellator } from '../gpu/tessellator.ts';
-import type { FactorParams } from '../gpu/types.ts';
+import { AccHeatPass, type HeatTotals } from '../gpu/acc/heat.ts';
+import type { AccPatches } from '../gpu/acc/patches.ts';
+import { Tessellator } from '../gpu/tess/tessellator.ts';
+import type { FactorParams } from '../gpu/contract/tessellated-mesh.ts';
 import { patternTables, type TessellatorGeometry } from './geometry.ts';
 
 interface PassState {

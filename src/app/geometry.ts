@@ -5,16 +5,16 @@
  *    rebuilt when the camera, factors or model change.
  */
 import type { Cage } from '../mesh/types.ts';
-import type { FactorParams, TessellatedMesh } from '../gpu/types.ts';
-import { destroyMesh, uploadCageMesh } from '../gpu/cage-mesh.ts';
-import { prepareMesh, Tessellator } from '../gpu/tessellator.ts';
+import type { FactorParams, TessellatedMesh } from '../gpu/contract/tessellated-mesh.ts';
+import { destroyMesh, uploadCageMesh } from '../gpu/render/cage-mesh.ts';
+import { prepareMesh, Tessellator } from '../gpu/tess/tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
-import { isAccSurface, type Surface } from '../gpu/tess-passes.ts';
-import { accPatchKinds, prepareAccSurface, type AccSurface } from '../gpu/acc-surface.ts';
-import type { AccPatches } from '../gpu/acc.ts';
-import { prepareDisplacement, type DisplacementSettings } from '../gpu/displacement.ts';
-import type { PreparedMesh } from '../gpu/prepare.ts';
+import { isAccSurface, type Surface } from '../gpu/tess/passes.ts';
+import { accPatchKinds, prepareAccSurface, type AccSurface } from '../gpu/acc/surface.ts';
+import type { AccPatches } from '../gpu/acc/patches.ts';
+import { prepareDisplacement, type DisplacementSettings } from '../gpu/tess/displacement-map.ts';
+import type { PreparedMesh } from '../gpu/tess/prepare.ts';
 import type { HeightMap, HeightWrap } from '../mesh/heightmap.ts';
 
 /** A height map over a cage's uvs, and how it is addressed outside [0, 1]. */
@@ -37,7 +37,7 @@ export interface GeometrySource {
   /** Whether `encode` depends on the camera (adaptive factors) or only on the factors. */
   dependsOnCamera(params: Pick<FactorParams, 'mode'>): boolean;
   readTimings(): Promise<Record<string, number>>;
-  /** The timestamps' readback never settled: its builds go untimed (src/gpu/map-within.ts). */
+  /** The timestamps' readback never settled: its builds go untimed (src/gpu/device/map-within.ts). */
   readonly timingStalled?: boolean;
   destroy(): void;
 }

@@ -1,27 +1,34 @@
 /**
- * The demo's instanced tessellator (src/gpu/instanced.ts, `?tessellator=instanced`): the shown
+ * The demo's instanced tessellator (src/gpu/instanced/instanced.ts, `?tessellator=instanced`): the shown
  * model's patches on the GPU, drawn inside the renderer's shadow, lit and wireframe passes (it
  * evaluates the surface again in each: the comparison with the compute tessellator, which draws
  * its stored mesh), the level pass encoded before a frame's draws when the levels may have
  * changed, and the bucket draw records read back after it for the stats and the e2e hook (the
  * draws themselves never wait on a readback). A model with a height map is drawn displaced
- * (src/gpu/instanced-displace.ts): the view is then made with `displaced`, and holds the compute
+ * (src/gpu/instanced/displace-vertex.ts): the view is then made with `displaced`, and holds the compute
  * Tessellator that lends the displacement arenas (on Catmull-Clark, the surface's own lender).
  */
-import { InstancedTessellator, prepareInstanced, cpuLevels, BUCKETS, type InstancedMesh, type LevelParams } from '../gpu/instanced.ts';
-import { prepareMesh } from '../gpu/prepare.ts';
-import type { ShadingResources } from '../gpu/renderer.ts';
+import {
+  InstancedTessellator,
+  prepareInstanced,
+  cpuLevels,
+  BUCKETS,
+  type InstancedMesh,
+  type LevelParams,
+} from '../gpu/instanced/instanced.ts';
+import { prepareMesh } from '../gpu/tess/prepare.ts';
+import type { ShadingResources } from '../gpu/render/renderer.ts';
 import type { PackedPatterns } from '../pattern/pow2.ts';
 import type { Cage } from '../mesh/types.ts';
-import { AccPatches } from '../gpu/acc.ts';
+import { AccPatches } from '../gpu/acc/patches.ts';
 import { AccError } from '../subdiv/acc.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
 import { CC_TRI_WORD } from '../gpu/cc/words.ts';
-import { ccSurfaceTessellator } from '../gpu/instanced-cc.ts';
-import { displacementLender, setLenderDisplacement } from '../gpu/instanced-displace.ts';
-import { prepareDisplacement, type DisplacementData, type DisplacementSettings } from '../gpu/displacement.ts';
+import { ccSurfaceTessellator } from '../gpu/instanced/surface-cc.ts';
+import { displacementLender, setLenderDisplacement } from '../gpu/instanced/displace-vertex.ts';
+import { prepareDisplacement, type DisplacementData, type DisplacementSettings } from '../gpu/tess/displacement-map.ts';
 import type { CageHeightMap } from './geometry.ts';
-import type { Tessellator } from '../gpu/tessellator.ts';
+import type { Tessellator } from '../gpu/tess/tessellator.ts';
 import type { InstancedSurface } from './params.ts';
 
 /** The Catmull-Clark preparation refused the cage (a message fit to show). An AccError, so that
@@ -70,7 +77,7 @@ export class InstancedView {
   /** The ACC patches of the cage (an ACC surface). */
   #acc: AccPatches | null = null;
   /** The exact surface: the cage's Catmull-Clark tables, and the compute Tessellator that lends
-   * the instanced one its buffers and patch build (src/gpu/instanced-cc.ts; this view owns it). */
+   * the instanced one its buffers and patch build (src/gpu/instanced/surface-cc.ts; this view owns it). */
   #cc: { data: CatmullClarkData; tess: Tessellator } | null = null;
   /** With `displaced`: the lender of the displacement arenas (Catmull-Clark: #cc.tess), and the
    * height map it holds. */
@@ -83,7 +90,7 @@ export class InstancedView {
 
   /** `surface`: Phong, an ACC scheme (setCage then throws AccError for cages it refuses) or the
    * exact Catmull-Clark surface (CatmullClarkRefused, likewise). `displaced`: the vertex function
-   * displaces by the height map given to setCage (src/gpu/instanced-displace.ts). */
+   * displaces by the height map given to setCage (src/gpu/instanced/displace-vertex.ts). */
   constructor(
     device: GPUDevice,
     shading: ShadingResources,
@@ -118,7 +125,7 @@ export class InstancedView {
     return this.#height;
   }
 
-  /** Patches per patch colour (as wgsl/instanced-surface-*.wgsl patchColourIndex): regular,
+  /** Patches per patch colour (as wgsl/instanced/surface-*.wgsl patchColourIndex): regular,
    * irregular quad, triangle (ACC: a regular patch is ACC kind 0; Catmull-Clark: a quad of region
    * depth 0, one bicubic patch; Phong: every quad). */
   patchColourCounts(): [number, number, number, number] {

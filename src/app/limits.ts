@@ -1,10 +1,10 @@
 /**
  * What the demo asks of the device's limits for its output buffers, and what it tells the user
- * when the device gives less. Pure (tests/app-limits.test.ts); the page shows the sentences in a
+ * when the device gives less. Pure (tests/app/limits.test.ts); the page shows the sentences in a
  * toast and in the stats' "limits" row.
  */
-import type { LimitName } from '../gpu/device.ts';
-import { outputCapacity } from '../gpu/factors.ts';
+import type { LimitName } from '../gpu/device/device.ts';
+import { outputCapacity } from '../gpu/tess/factors.ts';
 
 /** Bytes per output vertex in the largest buffer (positions, float32x3) and per triangle (indices). */
 const LARGEST_BYTES_PER_ELEMENT = 12;
@@ -25,7 +25,7 @@ export function clampMessages(
   capacity: number,
 ): string[] {
   const out = [...deviceClamps];
-  // src/gpu/renderer.ts vertexStorage; src/gpu/instanced.ts checks its own count when asked for.
+  // src/gpu/render/renderer.ts vertexStorage; src/gpu/instanced/instanced.ts checks its own count when asked for.
   if ((limits.maxStorageBuffersInVertexStage ?? 8) < 2)
     out.push(
       'no storage buffers in the vertex stage (WebGPU compatibility mode): the wireframe, patch colours, error heat maps and the instanced tessellator are not available; the surfaces draw as usual',

@@ -11,18 +11,26 @@
 import GUI from 'lil-gui';
 import { isClosed } from '../mesh/index.ts';
 import { mat4 } from 'gl-matrix';
-import { boundsOf, cameraMatrices, transformBounds, transformPoint, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/camera.ts';
-import { uploadCageLines, type CageLines } from '../gpu/cage-mesh.ts';
-import { PATCH_COLOURS, Renderer } from '../gpu/renderer.ts';
-import type { FactorParams } from '../gpu/types.ts';
+import {
+  boundsOf,
+  cameraMatrices,
+  transformBounds,
+  transformPoint,
+  upAxisMatrix,
+  type Bounds,
+  type OrbitCamera,
+} from '../gpu/render/camera.ts';
+import { uploadCageLines, type CageLines } from '../gpu/render/cage-mesh.ts';
+import { PATCH_COLOURS, Renderer } from '../gpu/render/renderer.ts';
+import type { FactorParams } from '../gpu/contract/tessellated-mesh.ts';
 import { clampMessages, wantedOutputLimits } from './limits.ts';
-import type { LimitName } from '../gpu/device.ts';
+import type { LimitName } from '../gpu/device/device.ts';
 import { CcTableCache, type CcTables } from './cc-tables.ts';
 import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
-import { isAccSurface } from '../gpu/tess-passes.ts';
+import { isAccSurface } from '../gpu/tess/passes.ts';
 import { BUILTIN_MODELS, DEFAULT_MODEL, loadModelFromFile, loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
 import {
   DSCALE_RANGE,
@@ -36,9 +44,9 @@ import {
   type DemoParams,
 } from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
-import { factorRuleLevels, type LevelParams } from '../gpu/instanced.ts';
+import { factorRuleLevels, type LevelParams } from '../gpu/instanced/instanced.ts';
 import { AccError } from '../subdiv/acc.ts';
-import { HEAT_DEFAULT_RANGE, HEAT_RAMP, type HeatView } from '../gpu/acc-heat.ts';
+import { HEAT_DEFAULT_RANGE, HEAT_RAMP, type HeatView } from '../gpu/acc/heat.ts';
 import type { Cage } from '../mesh/types.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { ErrorViews } from './error-views.ts';
@@ -482,7 +490,7 @@ class TessellationDemo extends DemoBase {
     const want = this.params.instSurface;
     const refused = this.#instancedRefused;
     const use = refused && refused.cage === model.cage && refused.surface === want ? 'phong' : want;
-    // A model with a height map: a view that displaces (src/gpu/instanced-displace.ts).
+    // A model with a height map: a view that displaces (src/gpu/instanced/displace-vertex.ts).
     const height = this.#heights.get(model.cage)?.height ?? null;
     let view = this.#instanced;
     if (view && (view.surface !== use || view.displaced !== (height !== null))) {
@@ -617,7 +625,7 @@ class TessellationDemo extends DemoBase {
         )
         .join('')}`;
     if (inst) {
-      // wgsl/instanced-surface-*.wgsl patchColourIndex: regular, irregular quad (ACC only), triangle.
+      // wgsl/instanced/surface-*.wgsl patchColourIndex: regular, irregular quad (ACC only), triangle.
       const n = inst.patchColourCounts();
       const entry = (k: number, name: string) =>
         `<li><span class="swatch" style="background:${hex(PATCH_COLOURS[k].srgb)}"></span>${name} <span class="muted">${n[k]}</span></li>`;
@@ -856,7 +864,7 @@ class TessellationDemo extends DemoBase {
     // The counts' map is asked for first, and the timing maps only once it has settled: a
     // timestamp buffer whose map comes back late cannot hold the counts behind it (Debian's
     // Chromium 156 on SwiftShader kept the output row at "…" so). A timing map that never comes
-    // back is cancelled after a deadline and timing stops (src/gpu/map-within.ts).
+    // back is cancelled after a deadline and timing stops (src/gpu/device/map-within.ts).
     const countsRead = quietly(this.#counts?.read(), null).then((counts) => {
       if (counts) this.#lastCounts = counts;
       this.updateStats();

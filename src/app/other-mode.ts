@@ -6,7 +6,7 @@
  * Rules: a new key (model, surface, flat baseline, the other mode and its setting) drops the old
  * answer and counts at once; with the same key, only an adaptive count is redone, when the camera
  * moved, at most once a second (a timer brings the frame that does it); an answer whose key is no
- * longer current is dropped. DOM-free and GPU-free (tests/other-mode.test.ts).
+ * longer current is dropped. DOM-free and GPU-free (tests/app/other-mode.test.ts).
  */
 import type { MeshCounts } from './counts.ts';
 import type { OtherModeCounts } from './stats.ts';

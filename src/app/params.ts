@@ -11,7 +11,7 @@ export type Surface = 'catmull-clark' | 'phong' | 'cage' | 'bezier-acc' | 'grego
 /** The three approximations of the Catmull-Clark limit (ACC) the compute tessellator also draws. */
 export const ACC_SURFACES = ['bezier-acc', 'gregory-acc', 'pm-acc'] as const;
 /** Who tessellates: the compute tessellator (built once, the stored mesh drawn in every pass) or
- * the instanced power-of-two tessellator (src/gpu/instanced.ts: re-evaluates in every pass). */
+ * the instanced power-of-two tessellator (src/gpu/instanced/instanced.ts: re-evaluates in every pass). */
 export type TessellatorKind = 'compute' | 'instanced';
 
 export interface DemoParams {

@@ -4,12 +4,12 @@
  */
 import type { LoadedModel } from './models.ts';
 import type { MeshCounts } from './counts.ts';
-import type { GpuMemoryCounts } from '../gpu/tracked-device.ts';
+import type { GpuMemoryCounts } from '../gpu/device/tracked-device.ts';
 import type { InstancedCounts } from './instanced-view.ts';
-import type { HeatTotals } from '../gpu/acc-heat.ts';
+import type { HeatTotals } from '../gpu/acc/heat.ts';
 
 /** One ACC surface's error against the exact Catmull-Clark limit over its output vertices (the
- * GPU error pass: src/gpu/acc-heat.ts), or why there is none. */
+ * GPU error pass: src/gpu/acc/heat.ts), or why there is none. */
 export interface ErrorStats {
   /** The surface measured ('bezier-acc', …) and where it is drawn (the comparison's halves). */
   surface: SurfaceStats['shown'];
@@ -62,7 +62,7 @@ export interface StatsInput {
   jsMs: number;
   rebuilds: number;
   adapter: string;
-  /** The page's live GPU buffers and textures (src/gpu/tracked-device.ts). */
+  /** The page's live GPU buffers and textures (src/gpu/device/tracked-device.ts). */
   memory?: GpuMemoryCounts;
   /** The ACC error views' max / RMS (the main surface, and the comparison's right half). */
   errors?: ErrorStats[];
@@ -218,7 +218,7 @@ export function renderStats(s: StatsInput): string {
       );
   } else rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>` : '…', 'stats-output'));
   if (split && s.timestamps) {
-    // Both tessellators' draw passes, from their timing slots (src/gpu/renderer.ts DrawOptions.region).
+    // Both tessellators' draw passes, from their timing slots (src/gpu/render/renderer.ts DrawOptions.region).
     const t = s.drawTimes;
     const pair = (sh?: number, lit?: number) => (sh === undefined || lit === undefined ? '…' : `shadow ${ms(sh)} · lit ${ms(lit)}`);
     rows.push(row('draw ms (left)', `${pair(t.shadow, t.lit)} <span class="muted">stored mesh</span>`, 'stats-gpu-compute'));

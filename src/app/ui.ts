@@ -3,7 +3,7 @@
  * fatal dialog (no WebGPU, a missing feature or limit), in the spirit of webgpu-samples'
  * quitIf… helpers: never a blank page, always a reason and somewhere to go.
  */
-import type { GpuProblem } from '../gpu/device.ts';
+import type { GpuProblem } from '../gpu/device/device.ts';
 
 export type PageState = 'loading' | 'ready' | 'error' | 'no-webgpu' | 'lost';
 

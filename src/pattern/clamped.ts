@@ -43,7 +43,7 @@
  *   4. Gap strip: what is left, between the inner chain u_{nb−1}, …, u_{k_0} (the bottom's tail,
  *      walked back from B), E_1, …, E_nl = C and the right edge B = O_0, O_1, …, O_nr = C, is a
  *      convex polygon (the turn at u_{k_0} is u_{k_0} − c ≥ 0; the others are shown in the notes
- *      of tests/clamped.test.ts), so any triangulation of it has no flip. It is cut to avoid
+ *      of tests/pattern/clamped.test.ts), so any triangulation of it has no flip. It is cut to avoid
  *      CAPS: triangles whose three distinct vertices lie nearly on one line. In the domain they
  *      are harmless, but their vertices lie on a curve of the surface (an edge, the clamp line)
  *      and the flat triangle through them folds under it: the dark dotted lines of issue 13.
@@ -177,7 +177,7 @@ function obtuseAt(p: FramePoint, q: FramePoint, r: FramePoint): number {
  * triangle through them stands across the surface (a fin) or folds under it, whatever its side
  * lengths. A NEEDLE (a vertex close to another, as at a point's birth, off the line of the
  * third) is harmless and is not a cap. The angle is judged from each side's direction alone
- * (coarse), in integers that fit i32, so wgsl/tess-pattern.wgsl computes the same answer.
+ * (coarse), in integers that fit i32, so wgsl/tess/pattern.wgsl computes the same answer.
  */
 export function capLevel(p: FramePoint, q: FramePoint, r: FramePoint): number {
   return Math.max(obtuseAt(p, q, r), obtuseAt(q, r, p), obtuseAt(r, p, q));
@@ -283,8 +283,8 @@ export function rowZeroKept(bottom: readonly number[], nl: number, nr: number, c
 
 /** Strips of at most this many vertices are triangulated exactly (stripTriangulation); larger
  * ones by the greedy gap matching. At most 16: the GPU stores a polygon index in 4 bits (the
- * WGSL reads the number from src/gpu/contract.ts TESS_CONSTANTS). 8, not 16: on the cameras of
- * tests/no-folds.test.ts 16 folds no fewer triangles (on 12 other seeded cameras it took the
+ * WGSL reads the number from src/gpu/contract/contract.ts TESS_CONSTANTS). 8, not 16: on the cameras of
+ * tests/gpu/tess/no-folds.test.ts 16 folds no fewer triangles (on 12 other seeded cameras it took the
  * creased box from 5 to 0), and the plan pass's O(n³) search cost about twice as much on
  * SwiftShader. */
 export const STRIP_DP_VERTICES = 8;
@@ -327,7 +327,7 @@ function angleLevelAt(o: FramePoint, x: FramePoint, y: FramePoint): number {
  * points of one chain, which is what a strip with few right points and a corner-born point needs
  * (a cap whichever way a chain merge goes). The triangles (i, j, m), polygon indices with
  * i < m < j (positive in the frame), in the order of a depth-first walk from (0, n − 1), lower
- * half first: the order wgsl/tess-plan.wgsl stores them in.
+ * half first: the order wgsl/tess/plan.wgsl stores them in.
  */
 export function stripTriangulation(pts: readonly FramePoint[]): [number, number, number][] {
   const n = pts.length;

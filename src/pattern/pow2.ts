@@ -2,7 +2,7 @@
  * Power-of-two refinement patterns for instanced tessellation (NVIDIA's 2009 sample, after
  * Boubekeur & Schlick's generic refinement pattern) and the T-junction snap of Dyken et al.,
  * in the canonical-direction form of notes/acc-and-instanced.md §6.3–6.4. Pure TypeScript: the
- * GPU path (src/gpu/instanced.ts, wgsl/instanced-*.wgsl) reads the packed patterns built here
+ * GPU path (src/gpu/instanced/instanced.ts, wgsl/instanced/*.wgsl) reads the packed patterns built here
  * and its WGSL snap is the line-for-line twin of snapEdgeParam / snapVertex.
  *
  * Domains and orientation (integer pattern coordinates (i, j), parameter (u, v) = (i, j) / L):
@@ -19,7 +19,7 @@
  * pattern has vertices on two different edges except at a corner, and the snap can never flip
  * one (a diagonal the other way in the (L−1, 0) cell flips as soon as both its edges snap away).
  * The diagonals in the (0,0) and (1,1) quadrants also lie along u = v, the 0–2 split of a quad
- * into cage triangles (src/gpu/prepare.ts), so no triangle straddles the two surface triangles.
+ * into cage triangles (src/gpu/tess/prepare.ts), so no triangle straddles the two surface triangles.
  *
  * Patch edges: edge k runs from corner k to corner k+1 (quad: v=0, u=1, v=1, u=0; triangle:
  * v=0, u+v=1, u=0). The edge parameter t ∈ [0, L] is measured from corner k. An edge is

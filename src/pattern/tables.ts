@@ -22,7 +22,7 @@
  *   10    mergeWords             = 0: version 1 stored the gap matching of the clamped pattern
  *                                here, per pair of line states; it is now computed from the
  *                                points' positions (clamped.ts gapMergeSteps), once per triangle
- *                                by the plan pass (wgsl/tess-plan.wgsl). The two words stay so
+ *                                by the plan pass (wgsl/tess/plan.wgsl). The two words stay so
  *                                that the header's layout (and its WGSL getters) is unchanged.
  *   11    totalWords
  *   12-15 reserved (0)
@@ -39,7 +39,7 @@ import type { LinePattern, TriPattern } from './types.ts';
 export const TABLE_MAGIC = 0x4c534554;
 export const TABLE_VERSION = 2;
 /** The header's words, in order (the layout above): the one list that the writer, the reader and
- * the WGSL getters (src/gpu/contract.ts, `tableHeader_stateCount()` …) all index by. */
+ * the WGSL getters (src/gpu/contract/contract.ts, `tableHeader_stateCount()` …) all index by. */
 export const TABLE_HEADER_FIELDS = [
   'magic',
   'version',

@@ -63,7 +63,7 @@
  *     change the neighbours' rings and is not the schemes' own construction. Holes: refused.
  *
  * ---------------------------------------------------------------------------------------------------
- * ONE LAYOUT FOR ALL SCHEMES (the GPU build wgsl/acc-build.wgsl writes it, wgsl/surface-acc.wgsl reads it)
+ * ONE LAYOUT FOR ALL SCHEMES (the GPU build wgsl/acc/build.wgsl writes it, wgsl/acc/surface.wgsl reads it)
  *
  *   patch p = cage face p (every face is a patch).
  *   patches   2 u32 per patch: kind, first control point.
@@ -425,7 +425,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
 }
 
 // ------------------------------------------------------------------------------------------------
-// Construction (the same steps as wgsl/acc-build.wgsl, one patch at a time)
+// Construction (the same steps as wgsl/acc/build.wgsl, one patch at a time)
 
 export type V3 = [number, number, number];
 const add = (a: V3, b: V3): V3 => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
@@ -1161,7 +1161,7 @@ export class AccSurface {
   }
 }
 
-/** The f32 constant table the GPU build reads per valence: see src/gpu/acc.ts. */
+/** The f32 constant table the GPU build reads per valence: see src/gpu/acc/patches.ts. */
 export function valenceTable(maxValence: number): { offsets: Uint32Array; values: Float32Array } {
   const offsets = new Uint32Array(maxValence + 1);
   const vals: number[] = [];

@@ -16,7 +16,7 @@
 // each weight below is bounded by 2 in magnitude, including the d/du weights (the 1/r of the
 // local parameter cancels the r in front of every term that is not b1, and b1's d/du weight
 // is taken as minus the sum of the others, which is exact because Σ B'(t) = 0). The same
-// code in f32 is wgsl/crease-basis.wgsl; keep the two in step.
+// code in f32 is wgsl/cc/crease-basis.wgsl; keep the two in step.
 import { SHARPNESS_INFINITE } from '../mesh/index.ts';
 import { bsplineBasis } from './bspline.ts';
 

@@ -26,12 +26,12 @@
 //   - vertex v: the lowest-id face with a limit surface that has v as a corner;
 //   - edge a–b: the lowest-id face with a limit surface that has the edge, the point addressed
 //     by x in [0, 1] along the edge's canonical direction, lower vertex index → higher;
-// so a seam point gets one uv whichever face asks. This is what src/gpu/prepare.ts builds:
+// so a seam point gets one uv whichever face asks. This is what src/gpu/tess/prepare.ts builds:
 // triangles are emitted in face order, vertexOwner/edgeOwner keep the FIRST triangle that has
-// the vertex/edge, and wgsl/tess-weld.wgsl evaluates every corner and edge vertex through that
+// the vertex/edge, and wgsl/tess/weld.wgsl evaluates every corner and edge vertex through that
 // one triangle (its face's uvs), edges in the canonical direction. (prepare.ts skips only
 // tagged holes; faces made holes by boundary mode 'none' are skipped here too, and never own a
-// weld vertex that has a surface.) tests/displacement.test.ts checks the owners against
+// weld vertex that has a surface.) tests/subdiv/displacement.test.ts checks the owners against
 // prepareMesh.
 //
 // Precision budget for a GPU comparison (the GPU reads the SAME integer texels, so 8-bit

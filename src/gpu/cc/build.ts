@@ -2,8 +2,8 @@
  * Catmull-Clark for the compute tessellator: the CPU half, TOPOLOGY ONLY (Hable's Part 3). No
  * positions, no weights, no per-face matrices: what is prepared here is which points exist, by
  * which rule each is made, and which points each piece of surface reads. Linear in the cage.
- * The GPU (wgsl/cc-build.wgsl) makes every point from the current cage every frame; the emit
- * passes evaluate (wgsl/surface-cc.wgsl).
+ * The GPU (wgsl/cc/build.wgsl) makes every point from the current cage every frame; the emit
+ * passes evaluate (wgsl/cc/surface.wgsl).
  *
  * 1. Levels. Uniform refinement topology of the whole cage, levels 1..G, G as small as the
  *    cage allows (0 for an all-regular quad cage, 1 with extraordinary vertices, 2 with
@@ -73,7 +73,7 @@
  *     the centre (it reads every sector) and the 1-ring (each point reads its two neighbour
  *     sectors, so a local step of one sector would need ever more sectors). Given those, one
  *     sector's own outer points (a = 2 or b = 2) at step L follow by L local steps from the start
- *     level that read only sectors i−1, i, i+1 (wgsl/surface-cc.wgsl), and a ring of an odd
+ *     level that read only sectors i−1, i, i+1 (wgsl/cc/surface.wgsl), and a ring of an odd
  *     step follows from the stored ring before it by one step. A sector then costs 4 points
  *     every other step instead of 6 every step: a third of the slices' memory at 2/6 · 1/2
  *     (imrod, all triangles: 2.7 KB of slices per face before, under 0.6 KB now).
@@ -81,7 +81,7 @@
  *     then, at a crease or corner centre (rule not smooth), T1, T2 of each face i < n at
  *     3 + 2i, 4 + 2i: an infinitely sharp crease splits the tangent plane into sectors (one per
  *     span of faces between two sharp edges, one per face at a corner), and a face's corner
- *     takes the normal of its own (src/gpu/prepare.ts splitCreases outputs a vertex once per
+ *     takes the normal of its own (src/gpu/tess/prepare.ts splitCreases outputs a vertex once per
  *     sector). As the CPU reference (src/subdiv/limit.ts vertexLimit for that face).
  *
  * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
@@ -128,8 +128,8 @@ import {
   vertexAdjacency,
   vertexRing,
 } from '../../mesh/index.ts';
-import { fannedRoundCentre, type PreparedMesh } from '../prepare.ts';
-import { NO_OWNER, OWNER_WORD } from '../contract.ts';
+import { fannedRoundCentre, type PreparedMesh } from '../tess/prepare.ts';
+import { NO_OWNER, OWNER_WORD } from '../contract/contract.ts';
 import { CC_FAN_WORD, CC_PAIR_WORD, CC_REGION_WORD, CC_RULE_WORD, CC_THREAD_WORD, CC_TRI_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 
 /** Patch colours for the demo ("show irregular patches"). */
@@ -539,7 +539,7 @@ const exponentCache = new Map<string, number>();
  * Radial blend exponent α = −log2 λ of a fan that is not a smooth interior vertex (creases,
  * corners, darts, boundaries): λ is the largest eigenvalue but 1 of one subdivision step of the
  * fan's 1-ring (c, e_i, d_i), found by power iteration on the ring modulo the constant vector
- * (a topological quantity: the same slice rules as wgsl/cc-build.wgsl, on scalars). A cone
+ * (a topological quantity: the same slice rules as wgsl/cc/build.wgsl, on scalars). A cone
  * apex (corner with smooth edges) has λ ≈ 0.65, not ½: the radial blend needs it.
  */
 function ringExponent(n: number, boundary: boolean, rule: number, ia: number, ib: number, inf: number[]): number {
@@ -710,7 +710,7 @@ function singleCrease(L: Level, g: number): { start: number; sigma: number } | n
 /**
  * A vertex on a straight semi-sharp crease (two opposite edges of the same semi-sharp σ, the
  * other two smooth, an interior valence-4 vertex of quads, no vertex sharpness): its limit is
- * the corner of the single-crease patches round it, in closed form (wgsl/cc-build.wgsl
+ * the corner of the single-crease patches round it, in closed form (wgsl/cc/build.wgsl
  * vlimits). Its 3×3 neighbourhood at 3a + b (global indices), a across the crease, b along it,
  * oriented as the faces (a toward the first ring neighbour, b toward the next: cross(∂a, ∂b) is
  * the surface normal); null if v is not such a vertex.
@@ -1193,7 +1193,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
 
 /**
  * Where a point of the surface is taken from (the CPU side of the evaluator's region lookup,
- * wgsl/surface-cc.wgsl): for the checks, which split the exact region from the blended square
+ * wgsl/cc/surface.wgsl): for the checks, which split the exact region from the blended square
  * round extraordinary vertices. (x, y): the quad's (u, v) or sub-face k's (s, t).
  */
 export function regionOf(cc: CatmullClarkData, t: number, k: number, x: number, y: number): { blended: boolean; sector: boolean } {

@@ -4,12 +4,12 @@
  * the headless CLI. Uses the tessellator's own buffers, so call it after an encode() has been
  * submitted (the uniforms and the patch build are then current).
  */
-import commonWgsl from '../../../wgsl/tess-common.wgsl?raw';
+import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
 import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './shaders.ts';
-import phongSurfaceWgsl from '../../../wgsl/surface-phong.wgsl?raw';
-import { TESS_INPUTS, tessPrelude } from '../contract.ts';
-import type { Tessellator } from '../tessellator.ts';
-import { readBuffer } from '../readback.ts';
+import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
+import { TESS_INPUTS, tessPrelude } from '../contract/contract.ts';
+import type { Tessellator } from '../tess/tessellator.ts';
+import { readBuffer } from '../device/readback.ts';
 
 const KERNEL = /* wgsl */ `
 @group(0) @binding(4) var<storage, read> samples: array<u32>;

@@ -1,10 +1,10 @@
 /**
  * Packed words of the Catmull-Clark data (src/gpu/cc/build.ts has the layouts) declared once for
- * TypeScript and WGSL (defineBits, src/gpu/contract.ts): build.ts packs through .pack, the CPU
+ * TypeScript and WGSL (defineBits, src/gpu/contract/contract.ts): build.ts packs through .pack, the CPU
  * side of the region lookup reads through .get, and src/gpu/cc/shaders.ts prepends the generated
  * getters (`ccFanWord_depth(w)`, …) to the shaders, which decode nothing by hand.
  */
-import { defineBits } from '../contract.ts';
+import { defineBits } from '../contract/contract.ts';
 
 /**
  * Word 0 of a region. kind: 1 patch, 2 EV sector; rot: the region's frame is rot_rot of the
@@ -64,7 +64,7 @@ export const CC_THREAD_WORD = defineBits('CcThreadWord', { fan: [0, 24], sector:
 
 /**
  * Word 1 of a prepared triangle. corners: its face's (4: a quad); fan: which triangle of the face
- * it is (src/gpu/prepare.ts triFan): face corners (0, fan, fan + 1), or with centred set
+ * it is (src/gpu/tess/prepare.ts triFan): face corners (0, fan, fan + 1), or with centred set
  * (centre, fan, fan + 1 mod n); depth: the face's region depth inside the quad or inside each
  * n-gon sub-face.
  */

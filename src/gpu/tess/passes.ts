@@ -1,0 +1,128 @@
+/**
+ * The compute tessellator's passes as code: which WGSL each pass compiles (the generated prelude
+ * of contract.ts, then the files), its entry point, and the bindings that entry point uses, from
+ * which its explicit bind group layout comes. tessellator.ts builds its pipelines from this, and
+ * tests/contract*.test.ts check it against the contract without building anything.
+ */
+import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
+import outputsWgsl from '../../../wgsl/tess/outputs.wgsl?raw';
+import factorsWgsl from '../../../wgsl/tess/factors.wgsl?raw';
+import factorRuleWgsl from '../../../wgsl/tess/factor-rule.wgsl?raw';
+import factorBulgeWgsl from '../../../wgsl/tess/factor-bulge.wgsl?raw';
+import countWgsl from '../../../wgsl/tess/count.wgsl?raw';
+import budgetWgsl from '../../../wgsl/tess/budget.wgsl?raw';
+import weldWgsl from '../../../wgsl/tess/weld.wgsl?raw';
+import patternWgsl from '../../../wgsl/tess/pattern.wgsl?raw';
+import planWgsl from '../../../wgsl/tess/plan.wgsl?raw';
+import emitWgsl from '../../../wgsl/tess/emit.wgsl?raw';
+import scanWgsl from '../../../wgsl/tess/scan.wgsl?raw';
+import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
+import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
+import { CC_BUILD_WGSL as ccBuildWgsl, CC_SURFACE_WGSL as ccSurfaceWgsl } from '../cc/shaders.ts';
+import accTessWgsl from '../../../wgsl/acc/surface-tess.wgsl?raw';
+import { ACC_SURFACE_WGSL } from '../acc/patches.ts';
+import type { AccScheme } from '../../subdiv/acc.ts';
+import {
+  CC_BUILD_BINDINGS,
+  CC_BUILD_GROUP,
+  scanPrelude,
+  TESS_BINDINGS,
+  TESS_GROUP,
+  tessPrelude,
+  usedBindings,
+} from '../contract/contract.ts';
+
+/** The tessellator's surfaces: Phong tessellation, the exact Catmull-Clark limit, or one of the
+ * three approximations of it (ACC, src/gpu/acc/patches.ts). */
+export type Surface = 'phong' | 'catmull-clark' | AccScheme;
+export const SURFACES: readonly Surface[] = ['catmull-clark', 'phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
+export const isAccSurface = (s: Surface): s is AccScheme => s.endsWith('-acc');
+
+export type PassName =
+  | 'bulge'
+  | 'factors'
+  | 'count'
+  | 'budget'
+  | 'corners'
+  | 'edges'
+  | 'plan'
+  | 'emitVertices'
+  | 'emitTriangles'
+  | 'ccPoints'
+  | 'ccSlices'
+  | 'ccLimits'
+  | 'ccVertexLimits';
+
+/** One compute pass: its shader code, its entry point, and the bind group it draws its bindings
+ * from (the tessellator's, or the patch build's). */
+export interface PassSpec {
+  name: PassName;
+  label: string;
+  module: string;
+  code: string;
+  entry: string;
+  group: 'tess' | 'ccBuild';
+}
+
+/** The passes of a tessellator over `surface`, with their code: what the constructor builds, and
+ * what tests/gpu/contract/contract.gpu.test.ts checks against the contract. */
+export function tessellatorPasses(surface: Surface): PassSpec[] {
+  const code = (...parts: string[]) => [tessPrelude(), commonWgsl, ...parts].join('\n');
+  const surfaceWgsl =
+    surface === 'catmull-clark' ? ccSurfaceWgsl : isAccSurface(surface) ? [ACC_SURFACE_WGSL, accTessWgsl].join('\n') : phongSurfaceWgsl;
+  const modules = {
+    // The bulge term evaluates the surface inside each triangle; the edge term reads it.
+    factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl),
+    count: code(patternWgsl, countWgsl),
+    budget: code(budgetWgsl),
+    // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
+    weld: code(surfaceWgsl, displaceWgsl, outputsWgsl, weldWgsl),
+    plan: code(patternWgsl, planWgsl),
+    emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
+    // The patch build's own prelude (contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
+    ccBuild: ccBuildWgsl,
+  };
+  type Module = keyof typeof modules;
+  const pass = (name: PassName, label: string, module: Module, entry = 'main'): PassSpec => ({
+    name,
+    label,
+    module,
+    code: modules[module],
+    entry,
+    group: module === 'ccBuild' ? 'ccBuild' : 'tess',
+  });
+  const passes = [
+    pass('bulge', 'tess bulge', 'factors', 'bulge'),
+    pass('factors', 'tess factors', 'factors'),
+    pass('count', 'tess count', 'count'),
+    pass('budget', 'tess budget', 'budget'),
+    pass('corners', 'tess weld corners', 'weld', 'corners'),
+    pass('edges', 'tess weld edges', 'weld', 'edges'),
+    pass('plan', 'tess plan', 'plan'),
+    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
+    pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
+  ];
+  if (surface === 'catmull-clark') {
+    passes.push(
+      pass('ccPoints', 'cc level points', 'ccBuild', 'points'),
+      pass('ccSlices', 'cc ev slices', 'ccBuild', 'slices'),
+      pass('ccLimits', 'cc fan limits', 'ccBuild', 'limits'),
+      pass('ccVertexLimits', 'cc vertex limits', 'ccBuild', 'vlimits'),
+    );
+  }
+  return passes;
+}
+
+/** The bindings a pass's entry point uses, from its group: its bind group layout, entry for entry. */
+export function passBindings(pass: PassSpec): { names: string[]; entries: GPUBindGroupLayoutEntry[] } {
+  if (pass.group === 'ccBuild') {
+    const names = usedBindings(pass.code, pass.entry, CC_BUILD_BINDINGS);
+    return { names, entries: CC_BUILD_GROUP.layoutEntries(names) };
+  }
+  const names = usedBindings(pass.code, pass.entry, TESS_BINDINGS);
+  return { names, entries: TESS_GROUP.layoutEntries(names) };
+}
+
+/** The three steps of one prefix sum (wgsl/tess/scan.wgsl), which share one bind group. */
+export const SCAN_ENTRIES = { blocks: 'scanBlocks', sums: 'scanSums', add: 'addSums' } as const;
+export const scanCode = [scanPrelude, scanWgsl].join('\n');

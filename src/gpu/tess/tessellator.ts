@@ -1,0 +1,709 @@
+/**
+ * The compute tessellator (Hable, "Part 2: The Mesh"): whole meshes tessellated adaptively
+ * into big flat buffers, welded, stored once and drawn by every pass. Takes a GPUDevice and
+ * never touches the DOM, so the same code runs in the browser, in headless tests and in Node.
+ *
+ * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except the weld's edge
+ * points and emit):
+ *   bulge        one thread per triangle: the factor its surface's bulge    wgsl/tess/factor-bulge.wgsl
+ *                asks for (the surface at four points against the flat triangle)
+ *   budget loop, up to 3 attempts (scale 1, a scale that fits, then factor 1 everywhere):
+ *     factors    one thread per edge: tess factor, line state, segments    wgsl/tess/factors.wgsl
+ *     count      one thread per triangle: interior vertices and triangles   wgsl/tess/count.wgsl
+ *     scan       prefix sums of the three counts                           wgsl/tess/scan.wgsl
+ *     budget     accept (and write the indirect draw args) or rescale      wgsl/tess/budget.wgsl
+ *   weld         corner and edge vertices, evaluated once each, one thread   wgsl/tess/weld.wgsl
+ *                per vertex (the edge points' dispatch is indirect: budget);
+ *                on Catmull-Clark, once per side of an infinitely sharp
+ *                crease (prepare.ts splitCreases: same position, own normal)
+ *   tessellate   plan: one thread per triangle writes its pattern's rows   wgsl/tess/plan.wgsl
+ *                emit: one thread per interior vertex, one per triangle    wgsl/tess/emit.wgsl
+ *                (indirect dispatches, like the weld's edge points)
+ * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers,
+ * so every output element costs the same whatever the factors (wgsl/tess/pattern.wgsl holds the
+ * pattern reading shared by count, plan and emit).
+ * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
+ *   subdivision  refined points level by level (rule per point), the slices round
+ *                extraordinary vertices (workgroup memory), their limits, and the cage
+ *                vertices' limit positions and normals for the factor rule  wgsl/cc/build.wgsl
+ * Attempts after the accepted one are no-ops on the GPU (they test a flag), so no readback is
+ * ever needed.
+ *
+ * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the scan's
+ * uniforms, the constants, the packed words) is declared in contract.ts; which code each pass
+ * compiles and which bindings its entry point uses is src/gpu/tess/passes.ts; the timestamps are
+ * pass-timer.ts. This file builds the pipelines, uploads a mesh (setMesh: validate, pack, bind)
+ * and records the passes (encode).
+ */
+import type { CatmullClarkData } from '../cc/build.ts';
+import type { AccSurface } from '../acc/surface.ts';
+import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
+import { isAccSurface, type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './passes.ts';
+import { PassTimer } from '../device/pass-timer.ts';
+import {
+  type ArenaLayout,
+  ATTEMPTS,
+  BUDGET,
+  CC_BUILD_GROUP,
+  CC_RANGE,
+  EMIT_TRIANGLES_ARGS_OFFSET,
+  type CcBuildBinding,
+  grid2d,
+  groupsFor,
+  SCAN_BLOCK,
+  SCAN_GROUP,
+  SCAN_PARAMS,
+  scanSumsWords,
+  TESS_CAGE,
+  TESS_FIXED_WORDS,
+  TESS_GROUP,
+  TESS_PARAMS,
+  TESS_SCANS,
+  TESS_STATIC,
+  TESS_WORK,
+  type TessBinding,
+  type TessSizes,
+  WELD_EDGES_ARGS_OFFSET,
+} from '../contract/contract.ts';
+import { outputCapacity } from './factors.ts';
+import { phongTriAlphas } from '../surface/phong.ts';
+import type { PreparedMesh } from './prepare.ts';
+import type { FactorParams, TessellatedMesh } from '../contract/tessellated-mesh.ts';
+import { PatternTables } from '../../pattern/tables.ts';
+
+export { prepareMesh, type PreparedMesh } from './prepare.ts';
+export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPasses } from './passes.ts';
+
+export { grid2d } from '../contract/contract.ts';
+
+/** Compute passes one rebuild records (the patch build, the bulge term, factors and count + budget
+ * per attempt, weld, plan, emit), each timed by a pair of timestamps. */
+const TIMED_PASSES = 2 + 2 * ATTEMPTS + 3;
+
+interface Pipeline {
+  pipeline: GPUComputePipeline;
+  layout: GPUBindGroupLayout;
+  /** Its bindings by name, and their numbers (from its group). */
+  bindings: string[];
+  binding: Readonly<Record<string, number>>;
+}
+
+export interface TessellatorOptions {
+  vertexCapacity?: number;
+  triangleCapacity?: number;
+  /** 'catmull-clark': the exact Catmull-Clark limit surface (wgsl/cc/surface.wgsl); setMesh then
+   * needs the tables of src/gpu/cc/build.ts buildCatmullClark. 'bezier-acc', 'gregory-acc',
+   * 'pm-acc': an approximation of it (wgsl/acc/surface.wgsl); setMesh then needs the ACC patches
+   * of src/gpu/acc/surface.ts prepareAccSurface. Default 'phong' (wgsl/surface/phong.wgsl). */
+  surface?: Surface;
+  /** Catmull-Clark: blend from the flat triangle (corner limit positions) to the surface as the
+   * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
+  flatBaseline?: boolean;
+}
+
+type WorkName = (typeof TESS_WORK.names)[number];
+type CageName = (typeof TESS_CAGE.names)[number];
+
+/** What setMesh packs before it binds. */
+interface Packed {
+  staticWords: Uint32Array;
+  cageWords: Float32Array;
+  workLayout: ArenaLayout<WorkName>;
+  cageLayout: ArenaLayout<CageName>;
+}
+
+interface MeshState {
+  prepared: PreparedMesh;
+  staticBuf: GPUBuffer;
+  cageBuf: GPUBuffer;
+  work: GPUBuffer;
+  /** Where the work arrays (TESS_WORK) and the cage arrays (TESS_CAGE) lie. */
+  workLayout: ArenaLayout<WorkName>;
+  cageLayout: ArenaLayout<CageName>;
+  groups: Partial<Record<PassName, GPUBindGroup>>;
+  scans: { group: GPUBindGroup; n: number }[];
+  cc?: CatmullClarkData;
+  ccRanges: { group: GPUBindGroup; count: number }[];
+  /** The ACC patches (owned by the caller), built before every tessellation (cageBuf keeps a copy
+   * of their control points at cageLayout's accPoints). */
+  acc?: AccSurface;
+  uniforms: GPUBuffer[];
+}
+
+export class Tessellator {
+  readonly output: TessellatedMesh;
+  readonly maxFactor: number;
+  readonly surface: Surface;
+  /** Catmull-Clark flat-baseline blend by tess factor (see TessellatorOptions.flatBaseline). */
+  flatBaseline: boolean;
+  private readonly params: GPUBuffer;
+  private readonly paramsBytes: ArrayBuffer;
+  /** Indirect dispatch arguments of the emit passes, written by the budget pass. */
+  private readonly emitArgs: GPUBuffer;
+  private readonly pipelines: Partial<Record<PassName, Pipeline>> = {};
+  private readonly scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
+  private readonly scanLayout: GPUBindGroupLayout;
+  private mesh?: MeshState;
+  private hasDisplacement = false;
+  private displacement: DisplacementSettings = { scale: 0, midLevel: 0, enabled: true };
+  private readonly timer?: PassTimer;
+
+  static create(device: GPUDevice, tables: Uint32Array, opts: TessellatorOptions = {}): Tessellator {
+    return new Tessellator(device, tables, opts);
+  }
+
+  private constructor(
+    readonly device: GPUDevice,
+    private readonly tables: Uint32Array,
+    opts: TessellatorOptions,
+  ) {
+    this.maxFactor = new PatternTables(tables).maxFactor;
+    this.surface = opts.surface ?? 'phong';
+    this.flatBaseline = opts.flatBaseline ?? true;
+    const cap = outputCapacity(device.limits, opts);
+    const buffer = (label: string, size: number, usage: number) => device.createBuffer({ label, size: Math.max(16, size), usage });
+    const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST;
+    this.output = {
+      positions: buffer('tess positions', 12 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
+      normals: buffer('tess normals', 12 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
+      bary: buffer('tess barycentrics', 4 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
+      srcTri: buffer('tess source triangles', 4 * cap.vertexCapacity, S | GPUBufferUsage.VERTEX),
+      indices: buffer('tess indices', 12 * cap.triangleCapacity, S | GPUBufferUsage.INDEX),
+      drawArgs: buffer('tess draw args', 4 * TESS_FIXED_WORDS.drawArgs, S | GPUBufferUsage.INDIRECT),
+      counts: buffer('tess counts', 4 * TESS_FIXED_WORDS.counts, S),
+      vertexCapacity: cap.vertexCapacity,
+      triangleCapacity: cap.triangleCapacity,
+    };
+    this.emitArgs = buffer('tess emit dispatch args', 4 * TESS_FIXED_WORDS.emitArgs, GPUBufferUsage.STORAGE | GPUBufferUsage.INDIRECT);
+    this.paramsBytes = new ArrayBuffer(TESS_PARAMS.size);
+    this.params = device.createBuffer({
+      label: 'tess params',
+      size: TESS_PARAMS.size,
+      usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
+    });
+
+    // Explicit layouts: each pass binds what its entry point uses, so a shared helper that starts
+    // reading one more buffer changes only the layouts of the passes that call it.
+    const modules = new Map<string, GPUShaderModule>();
+    for (const pass of tessellatorPasses(this.surface)) {
+      let module = modules.get(pass.module);
+      if (!module) modules.set(pass.module, (module = device.createShaderModule({ label: `tess ${pass.module}`, code: pass.code })));
+      const { names, entries } = passBindings(pass);
+      const layout = device.createBindGroupLayout({ label: pass.label, entries });
+      const pipeline = device.createComputePipeline({
+        label: pass.label,
+        layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
+        compute: { module, entryPoint: pass.entry },
+      });
+      const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
+      this.pipelines[pass.name] = { pipeline, layout, bindings: names, binding };
+    }
+    // The three scan steps share one bind group, so they share one layout: the whole SCAN_GROUP.
+    this.scanLayout = device.createBindGroupLayout({ label: 'scan', entries: SCAN_GROUP.layoutEntries() });
+    const scanModule = device.createShaderModule({ label: 'scan', code: scanCode });
+    const scanPipelineLayout = device.createPipelineLayout({ label: 'scan', bindGroupLayouts: [this.scanLayout] });
+    const scanPipeline = (step: keyof typeof SCAN_ENTRIES) =>
+      device.createComputePipeline({
+        label: `scan ${step}`,
+        layout: scanPipelineLayout,
+        compute: { module: scanModule, entryPoint: SCAN_ENTRIES[step] },
+      });
+    this.scanPipelines = { blocks: scanPipeline('blocks'), sums: scanPipeline('sums'), add: scanPipeline('add') };
+
+    if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
+  }
+
+  /**
+   * Displacement settings (uniforms only: the map and uvs came with setMesh), uploaded now;
+   * without displacement data in the mesh, `enabled` has no effect.
+   */
+  setDisplacement(settings: Partial<DisplacementSettings>): void {
+    this.displacement = { ...this.displacement, ...settings };
+    this.writeDisplacementParams();
+    // Up at once: a tessellator that only lends its arenas (src/gpu/instanced/displace-vertex.ts) is
+    // never encoded again, and encode() rewrites the rest before it reads them.
+    if (this.mesh) this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
+  }
+
+  /** Whether output vertices are displaced now (data in the mesh and enabled). */
+  get displaced(): boolean {
+    return this.hasDisplacement && this.displacement.enabled;
+  }
+
+  private writeDisplacementParams(): void {
+    TESS_PARAMS.write(new DataView(this.paramsBytes), {
+      dispOn: this.displaced ? 1 : 0,
+      dispScale: this.displacement.scale,
+      dispMid: this.displacement.midLevel,
+    });
+  }
+
+  /** Upload a prepared mesh: topology once; positions may be updated later (updateCage). The
+   * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
+  setMesh(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface, displacement?: DisplacementData): void {
+    const ccData = this.validate(prepared, cc, acc);
+    const accData = isAccSurface(this.surface) ? acc : undefined;
+    const packed = this.pack(prepared, ccData, accData, displacement);
+    this.releaseMesh();
+    this.mesh = this.bind(prepared, ccData, packed, accData);
+  }
+
+  /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
+   * (into paramsBytes; encode() uploads them). Throws when the scratch buffer would not bind. */
+  private pack(
+    prepared: PreparedMesh,
+    cc: CatmullClarkData | undefined,
+    acc: AccSurface | undefined,
+    disp: DisplacementData | undefined,
+  ): Packed {
+    const split = this.splitsCreases;
+    const sizes: TessSizes = {
+      vertices: prepared.vertexCount,
+      extraSlots: this.extraSlots(prepared),
+      edges: prepared.edgeCount,
+      triangles: prepared.triangleCount,
+      maxFactor: this.maxFactor,
+      tableWords: this.tables.length,
+      ccWords: cc?.words.length ?? 0,
+      ccPoints: cc?.pointCount ?? 0,
+      limitVertices: cc ? prepared.vertexCount : 0,
+      accTriangles: acc ? prepared.triangleCount : 0,
+      accPatchWords: acc?.patches.topology.patches.length ?? 0,
+      accPoints: acc?.patches.topology.nPoints ?? 0,
+      heightWords: disp?.heightTexels.length ?? 0,
+      dispTriangles: disp ? prepared.triangleCount : 0,
+      dispEdges: disp ? prepared.edgeCount : 0,
+      cornerUvs: disp ? disp.cornerUvs.length / 2 : 0,
+    };
+
+    const staticLayout = TESS_STATIC.layout(sizes);
+    const staticWords = packArena(TESS_STATIC.names, staticLayout, new Uint32Array(staticLayout.words), {
+      tables: this.tables,
+      triVerts: prepared.triVerts,
+      triEdges: prepared.triEdges,
+      triPatternFrame: prepared.triPatternFrame,
+      edgeVerts: prepared.edgeVerts,
+      edgeOwner: prepared.edgeOwner,
+      edgeTwin: prepared.edgeTwin,
+      vertexOwner: prepared.vertexOwner,
+      cornerSlot: split ? prepared.cornerSlot : prepared.triVerts,
+      slotOwner: split ? prepared.slotOwner : undefined,
+      edgeSplit: split ? prepared.edgeSplit : undefined,
+      cc: cc?.words,
+      accTri: acc?.triangles,
+      accPatches: acc?.patches.topology.patches,
+      heightTexels: disp?.heightTexels,
+      dispTri: disp?.dispTri,
+      dispEdge: disp?.dispEdge,
+    });
+    const cageLayout = TESS_CAGE.layout(sizes);
+    // The refined points and the limits are written by the patch build.
+    const cageWords = packArena(TESS_CAGE.names, cageLayout, new Float32Array(cageLayout.words), {
+      positions: prepared.positions,
+      normals: prepared.normals,
+      phongAlpha: prepared.triPhongAlpha,
+      cornerUvs: disp?.cornerUvs,
+    });
+    const workLayout = TESS_WORK.layout(sizes);
+    if (4 * workLayout.words > this.device.limits.maxStorageBufferBindingSize) {
+      throw new Error(
+        `the cage is too large: its scratch buffer (${4 * workLayout.words} bytes) exceeds the device's storage binding limit`,
+      );
+    }
+    const ccBase = staticLayout.offset.cc;
+    TESS_PARAMS.write(new DataView(this.paramsBytes), {
+      nVerts: prepared.vertexCount,
+      nSlots: prepared.vertexCount + sizes.extraSlots,
+      nTris: prepared.triangleCount,
+      nEdges: prepared.edgeCount,
+      maxFactor: this.maxFactor,
+      vertexCapacity: this.output.vertexCapacity,
+      triangleCapacity: this.output.triangleCapacity,
+      ...TESS_STATIC.offsets(staticLayout),
+      ...TESS_CAGE.offsets(cageLayout),
+      ...TESS_WORK.offsets(workLayout),
+      offFactorPos: cc ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
+      offFactorNormal: cc ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
+      ccCageVerts: cc?.cageVertexCount ?? 0,
+      ccTri: ccBase + (cc?.offTri ?? 0),
+      ccPoly: ccBase + (cc?.offPoly ?? 0),
+      ccRegions: ccBase + (cc?.offRegions ?? 0),
+      ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0),
+      ccFans: ccBase + (cc?.offFans ?? 0),
+      ccSectors: ccBase + (cc?.offSectors ?? 0),
+      ccThreads: ccBase + (cc?.offThreads ?? 0),
+      ccCos: ccBase + (cc?.offCos ?? 0),
+      ccRules: ccBase + (cc?.offRules ?? 0),
+      ccInputs: ccBase + (cc?.offInputs ?? 0),
+      ccVertexFan: ccBase + (cc?.offVertexFan ?? 0),
+      nFans: cc?.fanCount ?? 0,
+      ccSliceGroups: cc?.sliceWorkgroups ?? 0,
+      ccMaxDepth: cc?.maxDepth ?? 0,
+      dispBits: disp?.map.bits ?? 8,
+      dispWidth: disp?.map.width ?? 1,
+      dispHeight: disp?.map.height ?? 1,
+      dispWrap: disp?.wrap === 'clamp' ? 1 : 0,
+    });
+    this.hasDisplacement = disp !== undefined;
+    this.writeDisplacementParams();
+
+    return { staticWords, cageWords, workLayout, cageLayout };
+  }
+
+  /** The buffers, written; each pass's bind group from the bindings its entry point uses; the
+   * scans' and the patch build's small uniforms. */
+  private bind(prepared: PreparedMesh, cc: CatmullClarkData | undefined, packed: Packed, acc: AccSurface | undefined): MeshState {
+    const device = this.device;
+    const { staticWords, cageWords, workLayout, cageLayout } = packed;
+    const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST;
+    const staticBuf = device.createBuffer({ label: 'tess tables + topology', size: staticWords.byteLength, usage: storage });
+    device.queue.writeBuffer(staticBuf, 0, staticWords);
+    const cageBuf = device.createBuffer({
+      label: 'tess cage',
+      size: Math.max(16, cageWords.byteLength),
+      usage: storage | GPUBufferUsage.COPY_SRC,
+    });
+    device.queue.writeBuffer(cageBuf, 0, cageWords);
+    const work = device.createBuffer({ label: 'tess work', size: 4 * workLayout.words, usage: storage | GPUBufferUsage.COPY_SRC });
+
+    const resources: Record<TessBinding, GPUBuffer> = {
+      params: this.params,
+      staticBuf,
+      cageBuf,
+      work,
+      outPositions: this.output.positions,
+      outNormals: this.output.normals,
+      outBary: this.output.bary,
+      outSrcTri: this.output.srcTri,
+      outIndices: this.output.indices,
+      drawArgs: this.output.drawArgs,
+      counts: this.output.counts,
+      emitArgs: this.emitArgs,
+    };
+    const uniforms: GPUBuffer[] = [];
+    const rangeBytes = (first: number, count: number) => {
+      const bytes = new ArrayBuffer(CC_RANGE.size);
+      CC_RANGE.write(new DataView(bytes), { first, count });
+      return bytes;
+    };
+    const uniform = (label: string, bytes: ArrayBuffer | Uint32Array) => {
+      const u = device.createBuffer({ label, size: bytes.byteLength, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      device.queue.writeBuffer(u, 0, bytes);
+      uniforms.push(u);
+      return u;
+    };
+    const bindGroup = (name: PassName, extra: Partial<Record<CcBuildBinding, GPUBuffer>> = {}) => {
+      const p = this.pipelines[name]!;
+      const byName: Record<string, GPUBuffer> = { ...resources, ...extra };
+      return device.createBindGroup({
+        label: p.pipeline.label,
+        layout: p.layout,
+        entries: p.bindings.map((n) => ({ binding: p.binding[n], resource: { buffer: byName[n] } })),
+      });
+    };
+    const groups: Partial<Record<PassName, GPUBindGroup>> = {};
+    for (const name of Object.keys(this.pipelines) as PassName[]) if (name !== 'ccPoints') groups[name] = bindGroup(name);
+
+    const sumsWords = scanSumsWords(Math.max(prepared.edgeCount, prepared.triangleCount));
+    const o = workLayout.offset;
+    const scans = TESS_SCANS.map((s, i) => {
+      const n = s.over === 'edges' ? prepared.edgeCount : prepared.triangleCount;
+      const bytes = new ArrayBuffer(SCAN_PARAMS.size);
+      // Skipped once the budget has accepted an attempt.
+      SCAN_PARAMS.write(new DataView(bytes), {
+        inOff: o[s.from],
+        outOff: o[s.to],
+        n,
+        sumsOff: o.sums + i * sumsWords,
+        skipOff: o.budget + BUDGET.ACCEPTED,
+      });
+      const group = device.createBindGroup({
+        label: `scan ${i}`,
+        layout: this.scanLayout,
+        entries: [
+          { binding: SCAN_GROUP.binding.scan, resource: { buffer: uniform(`scan params ${i}`, bytes) } },
+          { binding: SCAN_GROUP.binding.work, resource: { buffer: work } },
+        ],
+      });
+      return { group, n };
+    });
+    // Catmull-Clark level dispatches: per level, its face points, then its edge and vertex
+    // points (which read the new face points); each with its range in a small uniform.
+    const ccRanges = (cc?.levelRanges ?? []).flatMap(([ff, fc, vf, vc]) =>
+      [
+        [ff, fc],
+        [vf, vc],
+      ].map(([first, count]) => ({
+        count,
+        group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, count)) }),
+      })),
+    );
+    return {
+      prepared,
+      staticBuf,
+      cageBuf,
+      work,
+      workLayout,
+      cageLayout,
+      groups,
+      scans,
+      cc,
+      ccRanges,
+      uniforms,
+      acc,
+    };
+  }
+
+  /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) on the
+   * Catmull-Clark surface, which has a crease there; Phong and ACC have one normal per cage
+   * vertex, so both sides would be the same. */
+  private get splitsCreases(): boolean {
+    return this.surface === 'catmull-clark';
+  }
+
+  /** Output vertices of the extra sectors: after the vertices, before the edge points. */
+  private extraSlots(prepared: PreparedMesh): number {
+    return this.splitsCreases ? prepared.slotOwner.length : 0;
+  }
+
+  /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
+  private validate(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): CatmullClarkData | undefined {
+    if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
+    if (this.surface === 'catmull-clark' && !cc)
+      throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
+    if (isAccSurface(this.surface)) {
+      if (!acc) throw new Error(`the ${this.surface} surface needs its patches (prepareAccSurface)`);
+      if (acc.patches.scheme !== this.surface) throw new Error(`${acc.patches.scheme} patches given to a ${this.surface} tessellator`);
+      if (acc.triangles.length !== prepared.triangleCount) throw new Error('the ACC patches were prepared for another mesh');
+    }
+    if (
+      prepared.triangleCount > this.output.triangleCapacity ||
+      prepared.vertexCount + this.extraSlots(prepared) + prepared.edgeCount > this.output.vertexCapacity
+    ) {
+      throw new Error(
+        `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
+      );
+    }
+    return this.surface === 'catmull-clark' ? cc : undefined;
+  }
+
+  /** New cage positions (and normals) for the same topology, e.g. an animated cage. */
+  updateCage(positions: Float32Array, normals: Float32Array): void {
+    const m = this.requireMesh();
+    this.device.queue.writeBuffer(m.cageBuf, 0, positions);
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.normals, normals);
+    // The Phong surface's α per edge follows the normals (phong.ts phongTriAlphas).
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.phongAlpha, phongTriAlphas(m.prepared, positions, normals));
+  }
+
+  /** The uniform and static buffers (for extra passes over the same mesh, e.g. surface sampling). */
+  get paramsBuffer(): GPUBuffer {
+    return this.params;
+  }
+
+  get staticBuffer(): GPUBuffer {
+    return this.requireMesh().staticBuf;
+  }
+
+  /** The cage buffer (positions, normals; Catmull-Clark control points and vertex limits): for checks. */
+  get cageBuffer(): GPUBuffer {
+    return this.requireMesh().cageBuf;
+  }
+
+  get prepared(): PreparedMesh | undefined {
+    return this.mesh?.prepared;
+  }
+
+  /** The scratch buffer (edge factors, counts, prefix sums): for checks. */
+  get workBuffer(): GPUBuffer {
+    return this.requireMesh().work;
+  }
+
+  /** Word offsets of the scratch buffer's arrays (contract.ts TESS_WORK), e.g. `.edgeF`. */
+  get workLayout(): Readonly<Record<WorkName, number>> {
+    return this.requireMesh().workLayout.offset;
+  }
+
+  /** Float offsets of the cage buffer's arrays (contract.ts TESS_CAGE), e.g. `.limitPositions`. */
+  get cageLayout(): Readonly<Record<CageName, number>> {
+    return this.requireMesh().cageLayout.offset;
+  }
+
+  private requireMesh(): MeshState {
+    if (!this.mesh) throw new Error('Tessellator.setMesh must be called first');
+    return this.mesh;
+  }
+
+  /** Record every pass of a rebuild into `encoder`. */
+  encode(encoder: GPUCommandEncoder, p: FactorParams): void {
+    const m = this.requireMesh();
+    TESS_PARAMS.write(new DataView(this.paramsBytes), {
+      viewProj: p.viewProj,
+      mode: p.mode === 'fixed' ? 0 : 1,
+      fixedFactor: p.fixedFactor,
+      lodScale: p.lodScale,
+      pixelAngle: p.fovY / Math.max(1, p.viewportHeight),
+      eye: [p.eye[0], p.eye[1], p.eye[2], 0],
+      ccFlat: this.flatBaseline ? 1 : 0,
+    });
+    this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
+    this.record(encoder, m);
+  }
+
+  private record(encoder: GPUCommandEncoder, m: MeshState): void {
+    encoder.clearBuffer(m.work, 4 * m.workLayout.offset.budget, 4 * m.workLayout.length.budget);
+
+    const pass = (label: string, stage: string) => this.timer?.beginPass(encoder, label, stage) ?? encoder.beginComputePass({ label });
+    const { edgeCount: nE, triangleCount: nT, vertexCount: nV } = m.prepared;
+    const run = (cp: GPUComputePassEncoder, name: PassName, groups: [number, number]) => {
+      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.setBindGroup(0, m.groups[name]!);
+      cp.dispatchWorkgroups(...groups);
+    };
+    const runIndirect = (cp: GPUComputePassEncoder, name: PassName, offset: number) => {
+      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.setBindGroup(0, m.groups[name]!);
+      cp.dispatchWorkgroupsIndirect(this.emitArgs, offset);
+    };
+
+    if (m.cc) {
+      const cp = pass('cc patch build', 'subdivision');
+      this.recordPatchBuild(cp, m);
+      cp.end();
+    }
+    this.recordAccBuild(encoder, m);
+    {
+      const cp = pass('tess bulge', 'factors');
+      run(cp, 'bulge', groupsFor(nT));
+      cp.end();
+    }
+    for (let attempt = 0; attempt < ATTEMPTS; attempt++) {
+      let cp = pass(`tess factors ${attempt}`, 'factors');
+      run(cp, 'factors', groupsFor(nE));
+      cp.end();
+      cp = pass(`tess count + budget ${attempt}`, 'count+budget');
+      run(cp, 'count', groupsFor(nT));
+      for (const s of m.scans) {
+        const blocks = Math.ceil(Math.max(s.n, 1) / SCAN_BLOCK);
+        cp.setBindGroup(0, s.group);
+        cp.setPipeline(this.scanPipelines.blocks);
+        cp.dispatchWorkgroups(blocks);
+        cp.setPipeline(this.scanPipelines.sums);
+        cp.dispatchWorkgroups(1);
+        cp.setPipeline(this.scanPipelines.add);
+        cp.dispatchWorkgroups(blocks);
+      }
+      run(cp, 'budget', [1, 1]);
+      cp.end();
+    }
+    let cp = pass('tess weld', 'weld');
+    // The corners' output vertices: the vertices, then the extra sectors where normals split.
+    run(cp, 'corners', groupsFor(nV + this.extraSlots(m.prepared)));
+    runIndirect(cp, 'edges', WELD_EDGES_ARGS_OFFSET); // one thread per edge point: sized by the budget pass
+    cp.end();
+    cp = pass('tess plan', 'plan');
+    run(cp, 'plan', groupsFor(nT));
+    cp.end();
+    cp = pass('tess emit', 'tessellate');
+    // Sized by the budget pass: emitArgs holds the vertices' dispatch, then the triangles'.
+    runIndirect(cp, 'emitVertices', 0);
+    runIndirect(cp, 'emitTriangles', EMIT_TRIANGLES_ARGS_OFFSET);
+    cp.end();
+
+    this.timer?.resolve(encoder);
+  }
+
+  /** The ACC patch build (its own pass, src/gpu/acc/patches.ts): control points from the cage positions,
+   * then copied into cageBuf, where the emit passes read them. */
+  private recordAccBuild(encoder: GPUCommandEncoder, m: MeshState): void {
+    if (!m.acc) return;
+    m.acc.patches.encode(encoder, m.cageBuf);
+    const bytes = 16 * m.acc.patches.topology.nPoints;
+    if (bytes) encoder.copyBufferToBuffer(m.acc.patches.pointBuffer, 0, m.cageBuf, 4 * m.cageLayout.offset.accPoints, bytes);
+  }
+
+  private recordPatchBuild(cp: GPUComputePassEncoder, m: MeshState): void {
+    const cc = m.cc!;
+    cp.setPipeline(this.pipelines.ccPoints!.pipeline);
+    for (const r of m.ccRanges) {
+      if (!r.count) continue;
+      cp.setBindGroup(0, r.group);
+      cp.dispatchWorkgroups(...groupsFor(r.count));
+    }
+    const run = (name: PassName, groups: [number, number]) => {
+      cp.setBindGroup(0, m.groups[name]!);
+      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.dispatchWorkgroups(...groups);
+    };
+    if (cc.sliceWorkgroups) run('ccSlices', grid2d(cc.sliceWorkgroups));
+    if (cc.fanCount) run('ccLimits', groupsFor(cc.fanCount));
+    run('ccVertexLimits', groupsFor(m.prepared.vertexCount));
+  }
+
+  /** Record only the Catmull-Clark patch build (control points and vertex limits from the
+   * current cage positions): what a deforming cage needs before the next tessellation. encode()
+   * runs it too. */
+  encodePatchBuild(encoder: GPUCommandEncoder): void {
+    const m = this.requireMesh();
+    this.recordAccBuild(encoder, m);
+    if (!m.cc) return;
+    const cp = encoder.beginComputePass({ label: 'cc patch build' });
+    this.recordPatchBuild(cp, m);
+    cp.end();
+  }
+
+  /** GPU milliseconds per stage of the last encoded rebuild ({} without timestamp queries).
+   * Rebuilds encoded while a read is in flight are not timed; a second call while one read is
+   * in flight gets the same answer. */
+  readTimings(): Promise<Record<string, number>> {
+    return this.timer?.read() ?? Promise.resolve({});
+  }
+
+  /** The timestamps' readback never settled (src/gpu/device/map-within.ts): rebuilds go untimed. */
+  get timingStalled(): boolean {
+    return this.timer?.stalled ?? false;
+  }
+
+  private releaseMesh(): void {
+    if (!this.mesh) return;
+    this.mesh.staticBuf.destroy();
+    this.mesh.cageBuf.destroy();
+    this.mesh.work.destroy();
+    for (const u of this.mesh.uniforms) u.destroy();
+    this.mesh = undefined;
+  }
+
+  destroy(): void {
+    this.releaseMesh();
+    for (const b of [
+      this.output.positions,
+      this.output.normals,
+      this.output.bary,
+      this.output.srcTri,
+      this.output.indices,
+      this.output.drawArgs,
+      this.output.counts,
+      this.params,
+      this.emitArgs,
+    ])
+      b.destroy();
+    this.timer?.destroy();
+  }
+}
+
+/** Copy each array of `sources` to its place in an arena; an array not given stays zero (its
+ * length is checked against the layout's when given). */
+function packArena<K extends string, T extends Uint32Array | Float32Array>(
+  names: readonly K[],
+  layout: { offset: Record<K, number>; length: Record<K, number> },
+  into: T,
+  sources: Partial<Record<K, ArrayLike<number>>>,
+): T {
+  for (const k of names) {
+    const src = sources[k];
+    if (!src) continue;
+    if (src.length !== layout.length[k]) throw new Error(`arena array ${k}: ${src.length} words given, ${layout.length[k]} laid out`);
+    into.set(src, layout.offset[k]);
+  }
+  return into;
+}

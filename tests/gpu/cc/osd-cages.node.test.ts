@@ -1,0 +1,102 @@
+/**
+ * The GPU Catmull-Clark path on OpenSubdiv's regression cages (third-party, ../shared/cages, read
+ * from there, never copied; the CI has them): every cage that loads is either prepared and
+ * tessellated on its exact limit surface, or refused with a message naming what is not
+ * supported. Output vertices (a sample, outside the blended squares round extraordinary
+ * vertices) are held against the exact CPU reference, itself equal to OpenSubdiv (the
+ * osd-check step of .ci/run), within 1e-6 of the bounding-box diagonal. These cages are where
+ * boundaries, corners, darts, creases into extraordinary vertices, valence 2 and n-gons meet
+ * the slice kernel and the evaluator's local steps.
+ */
+import { describe, it, expect, afterAll } from 'vitest';
+import { existsSync, readdirSync, readFileSync } from 'node:fs';
+import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
+import { CCReference, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
+import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
+import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
+import type { MeshReadback } from '../../../src/gpu/device/readback.ts';
+import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
+import { bakeTables } from '../../../src/pattern/tables.ts';
+import { loadCage } from '../../../src/mesh/index.ts';
+
+const DIR = '../shared/cages';
+const TALK = new Set(['suzanne', 'bigguy', 'monsterfrog', 'imrod']); // tests/gpu/cc/talk-models.node.test.ts
+const MAX_BOUND = 1e-6;
+const SAMPLE = 400;
+
+let tess: Tessellator | undefined;
+afterAll(() => {
+  tess?.destroy();
+  return releaseDevice();
+});
+
+const present = existsSync(DIR);
+const names = present
+  ? readdirSync(DIR)
+      .filter((f) => f.endsWith('.obj'))
+      .map((f) => f.slice(0, -4))
+      .filter((n) => !TALK.has(n))
+      .sort()
+  : [];
+
+describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cages", () => {
+  it('every cage is tessellated on its exact limit or refused with a reason', async () => {
+    const device = await getDevice();
+    tess ??= Tessellator.create(device, bakeTables(64), {
+      vertexCapacity: 1 << 20,
+      triangleCapacity: 1 << 20,
+      surface: 'catmull-clark',
+      flatBaseline: false,
+    });
+    const rows: string[] = [];
+    const failures: string[] = [];
+    for (const name of names) {
+      let loaded: ReturnType<typeof loadCage>;
+      try {
+        loaded = loadCage(readFileSync(`${DIR}/${name}.obj`, 'utf8'));
+      } catch (e) {
+        rows.push(`${name}: cage refused (${(e as Error).message.split('\n')[0]})`);
+        continue;
+      }
+      const cage = loaded.cage;
+      const mesh = prepareMesh(cage);
+      let cc: ReturnType<typeof buildCatmullClark>;
+      try {
+        cc = buildCatmullClark(cage, mesh);
+      } catch (e) {
+        const msg = (e as Error).message;
+        rows.push(`${name}: refused (${msg})`);
+        // A refusal must say what is unsupported, never be an internal error.
+        if (!/not supported|unsupported/i.test(msg)) failures.push(`${name}: ${msg}`);
+        continue;
+      }
+      let out: MeshReadback;
+      try {
+        out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 3));
+      } catch (e) {
+        failures.push(`${name}: ${(e as Error).message}`);
+        continue;
+      }
+      const ref = new CCReference(cage, mesh, cc);
+      // The surface is the output triangles: a cage vertex that no face with a surface uses
+      // (bare vertices, vertices of holes only) keeps an output slot that nothing reads.
+      const used = new Uint8Array(out.vertexCount);
+      for (let i = 0; i < 3 * out.triangleCount; i++) used[out.indices[i]] = 1;
+      // ... and holds the cage position and no source triangle, never a previous mesh's data.
+      for (let v = 0; v < mesh.vertexCount; v++) {
+        if (used[v]) continue;
+        const same = [0, 1, 2].every((i) => out.positions[3 * v + i] === mesh.positions[3 * v + i]);
+        if (!same || out.srcTri[v] !== 0xffffffff) failures.push(`${name}: unused vertex ${v} holds stale data`);
+      }
+      const { errs, max, nan } = outputErrors(ref, out, SAMPLE);
+      const checked = errs.length;
+      const faces = cage.faceOffsets.length - 1;
+      rows.push(
+        `${name}: ${faces} faces, ${Math.round(cc.gpuBytes / faces)} B/face, levels ${cc.levels}, checked ${checked}, max ${max.toExponential(2)}`,
+      );
+      if (nan > 0 || !(max < MAX_BOUND) || checked === 0) failures.push(`${name}: nan ${nan}, checked ${checked}, max ${max}`);
+    }
+    console.log(rows.join('\n'));
+    expect(failures).toEqual([]);
+  }, 600_000);
+});

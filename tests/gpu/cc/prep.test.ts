@@ -1,0 +1,99 @@
+/**
+ * The topology-only Catmull-Clark preparation (src/gpu/cc/build.ts), no GPU: face classes and
+ * region counts of the talk's table on small cages, fans and their depths, and the region
+ * lookup the checks use. (Positions play no part in it: the cages' positions are arbitrary.)
+ */
+import { describe, it, expect } from 'vitest';
+import { buildCatmullClark, regionOf, REGION_PATCH, REGION_SECTOR, TOTAL_DEPTH, type CatmullClarkData } from '../../../src/gpu/cc/build.ts';
+import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
+import { CC_FAN_WORD } from '../../../src/gpu/cc/words.ts';
+import type { Cage } from '../../../src/mesh/index.ts';
+import { cube, tetra, triPrism, ringCrease, quadTorus } from '../../support/subdiv-fixtures.ts';
+
+function prep(cage: Cage): CatmullClarkData {
+  return buildCatmullClark(cage, prepareMesh(cage));
+}
+
+/** Region kinds of face f, in region order. */
+function faceRegions(cc: CatmullClarkData, cage: Cage, f: number): number[] {
+  const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+  const d = cc.faceDepth[f];
+  const count = n === 4 ? 4 ** d : n * 4 ** (d - 1);
+  const out: number[] = [];
+  for (let r = 0; r < count; r++) out.push(cc.regions[2 * (cc.faceRegion[f] + r)] & 3);
+  return out;
+}
+
+describe('Catmull-Clark preparation (topology only)', () => {
+  it('regular torus: one regular patch per face, no refinement, no sliced fans', () => {
+    const cage = quadTorus(8, 6);
+    const cc = prep(cage);
+    expect(cc.levels).toBe(0);
+    expect(cc.regionCount).toBe(48);
+    for (let f = 0; f < 48; f++) expect(faceRegions(cc, cage, f)).toEqual([REGION_PATCH]);
+    expect(cc.sliceWorkgroups).toBe(0);
+    // Every cage vertex still gets a fan for its limit (the factor rule), without slices.
+    expect(cc.fanCount).toBe(48);
+    expect(cc.maxDepth).toBe(0);
+  });
+
+  it('cube: every face is split once into 4 EV sectors; 8 valence-3 fans starting at level 1', () => {
+    const cage = cube();
+    const cc = prep(cage);
+    expect(cc.levels).toBe(1);
+    for (let f = 0; f < 6; f++) {
+      expect(cc.faceDepth[f]).toBe(1);
+      expect(faceRegions(cc, cage, f)).toEqual([REGION_SECTOR, REGION_SECTOR, REGION_SECTOR, REGION_SECTOR]);
+    }
+    expect(cc.fanCount).toBe(8);
+    for (let F = 0; F < 8; F++) {
+      const w0 = cc.fans[8 * F];
+      expect(CC_FAN_WORD.get(w0, 'sectors')).toBe(3); // threads: 3 sectors
+      expect(CC_FAN_WORD.get(w0, 'depth')).toBe(TOTAL_DEPTH - 1); // start level 1
+    }
+  });
+
+  it('tetrahedron (triangles only): 12 regions per face, two levels', () => {
+    const cage = tetra();
+    const cc = prep(cage);
+    expect(cc.levels).toBe(2);
+    for (let f = 0; f < 4; f++) {
+      const r = faceRegions(cc, cage, f);
+      expect(r.length).toBe(12);
+      // In each sub-face's 2×2: the corner at the cage vertex and the one at the face centre
+      // are EV sectors, the two at the edge midpoints regular patches.
+      expect(r.filter((k) => k === REGION_SECTOR).length).toBe(6);
+      expect(r.filter((k) => k === REGION_PATCH).length).toBe(6);
+    }
+    // 4 cage vertices (valence 3) + 4 face centres (valence 3), all starting at level 2.
+    expect(cc.fanCount).toBe(8);
+  });
+
+  it('triangular prism: quads touching triangles go to 16 regions, triangles to 12', () => {
+    const cage = triPrism();
+    const cc = prep(cage);
+    for (let f = 0; f < cage.faceOffsets.length - 1; f++) {
+      const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+      expect(faceRegions(cc, cage, f).length).toBe(n === 4 ? 16 : 12);
+    }
+  });
+
+  it('semi-sharp crease: faces refine until the sharpness has decayed (ceil σ levels)', () => {
+    const cage = cube({ creases: ringCrease(2.5) });
+    const cc = prep(cage);
+    expect(cc.levels).toBe(3);
+    // The top face (its 4 edges creased) needs depth 3.
+    expect(cc.faceDepth[0]).toBe(3);
+  });
+
+  it('region lookup: points within the last square of a fan are blended, others exact', () => {
+    const cage = cube();
+    const mesh = prepareMesh(cage);
+    const cc = buildCatmullClark(cage, mesh);
+    // Triangle 0 is (c0, c1, c2) of face 0: (u, v) = (w1 + w2, w2). Corner c0 is an EV.
+    const eps = 2 ** -(TOTAL_DEPTH + 1);
+    expect(regionOf(cc, 0, 0, eps, eps).blended).toBe(true);
+    expect(regionOf(cc, 0, 0, 4 * eps, eps).blended).toBe(false);
+    expect(regionOf(cc, 0, 0, 0.3, 0.2)).toEqual({ blended: false, sector: true });
+  });
+});

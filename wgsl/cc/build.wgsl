@@ -1,0 +1,408 @@
+// Catmull-Clark patch build ("subdivision"), run whenever the cage moves: every point the
+// evaluator reads, made from the current cage positions by the topology-only data of
+// src/gpu/cc/build.ts (its header has the layouts). Its declarations are generated (below). Points are f32 xyz: the cage positions (index < ccCageVerts)
+// then, from params.offCtrl in cageBuf, the refined levels, the fans' slices and limits.
+//   points   one thread per point of one level's range (face points, then in a second dispatch
+//            edge and vertex points, which read the new face points), its rule from its word
+//   slices   the EV slice kernel: one thread per sector, several fans per workgroup, the fan's
+//            2-ring ping-ponged in workgroup memory, one Catmull-Clark step per iteration
+//   limits   one thread per fan: limit position and tangents of its centre (notes §2)
+//   vlimits  one thread per prepared vertex: its fan's limit where the factor rule reads it
+
+// Declared by the generated prelude (src/gpu/contract/contract.ts ccBuildPrelude): Params, the constants
+// (WORKGROUP_SIZE, GRID_X, CC_NONE), `range` and the bindings params, staticBuf, cageBuf; then
+// the packed words' getters (src/gpu/cc/words.ts).
+
+fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts); }
+fn pt(p: u32) -> vec3<f32> {
+  let o = ptAt(p);
+  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
+}
+fn setPt(p: u32, v: vec3<f32>) {
+  let o = ptAt(p);
+  cageBuf[o] = v.x;
+  cageBuf[o + 1u] = v.y;
+  cageBuf[o + 2u] = v.z;
+}
+fn inp(i: u32) -> vec3<f32> { return pt(staticBuf[params.ccInputs + i]); }
+
+// Vertex masks (notes §1.3) over the inputs [v, e_0..e_{m-1}, F_0..F_{k-1}].
+fn vertexMask(rule: u32, first: u32, m: u32, k: u32, ia: u32, ib: u32) -> vec3<f32> {
+  let v = inp(first);
+  if (rule == 2u) { return v; }
+  if (rule == 1u) { return 0.75 * v + 0.125 * (inp(first + 1u + ia) + inp(first + 1u + ib)); }
+  var s = vec3<f32>(0.0);
+  for (var i = 0u; i < m + k; i++) { s += inp(first + 1u + i); }
+  let n = f32(m);
+  return ((n - 2.0) / n) * v + s / (n * n);
+}
+
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
+  if (i >= range.count) { return; }
+  let p = range.first + i;
+  let r = params.ccRules + 2u * (p - params.ccCageVerts);
+  let w0 = staticBuf[r];
+  let first = staticBuf[r + 1u];
+  let kind = ccRuleWord_kind(w0);
+  var out: vec3<f32>;
+  if (kind == 0u) {
+    // Face point: the centroid.
+    let n = ccRuleWord_count(w0);
+    var s = vec3<f32>(0.0);
+    for (var j = 0u; j < n; j++) { s += inp(first + j); }
+    out = s / f32(n);
+  } else if (kind == 1u) {
+    // Edge point: crease (s ≥ 1, boundary), smooth, or their blend for 0 < s < 1.
+    let n = ccRuleWord_count(w0);
+    let sh = select(0.0, bitcast<f32>(staticBuf[params.ccInputs + first + 4u]), ccRuleWord_sharp(w0) == 1u);
+    let mid = 0.5 * (inp(first) + inp(first + 1u));
+    if (n == 2u || sh >= 1.0) {
+      out = mid;
+    } else {
+      let sm = 0.25 * (inp(first) + inp(first + 1u) + inp(first + 2u) + inp(first + 3u));
+      out = select(sm, sh * mid + (1.0 - sh) * sm, sh > 0.0);
+    }
+  } else {
+    // Vertex point: parent rule, child rule and OpenSubdiv's transitional weight W (a sharp
+    // vertex's crease pair and W follow its inputs).
+    let pr = ccRuleWord_parent(w0);
+    let cr = ccRuleWord_child(w0);
+    let m = ccRuleWord_count(w0);
+    let k = ccRuleWord_faces(w0);
+    var ia = 0u;
+    var ib = 0u;
+    var W = 1.0;
+    if ((pr | cr) != 0u) {
+      let x = params.ccInputs + first + 1u + m + k;
+      ia = ccPairWord_a(staticBuf[x]);
+      ib = ccPairWord_b(staticBuf[x]);
+      W = bitcast<f32>(staticBuf[x + 1u]);
+    }
+    out = vertexMask(pr, first, m, k, ia, ib);
+    if (cr != pr) { out = W * out + (1.0 - W) * vertexMask(cr, first, m, k, ia, ib); }
+  }
+  setPt(p, out);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The EV slice kernel (notes §6.2). Sector i of a fan owns the points (a, b), a ∈ {1,2},
+// b ∈ {0,1,2} of its frame (a along axis i, b along axis i+1); (0, b) belongs to sector i+1,
+// (a, −1) to sector i−1, (0, 0) is the centre. Per step: face points → barrier → edge and
+// vertex points (they read only old points and the new face points, so one stage) and the
+// centre (the fan's first thread sums over the fan) → barrier → the new 6 points and centre
+// replace the old → barrier. All points are offsets from the fan's anchor (its centre at the
+// start level): subdivision is affine, and deep levels keep f32's relative precision.
+// Inside the slices every point but the centre and the axis points is a smooth valence-4
+// vertex, an edge point of an edge made inside a face, or a face point (the eligibility test
+// of build.ts), so the regular masks below are exact; the axis points use the crease rules
+// when the axis is infinitely sharp (boundaries, creases into the EV, darts).
+
+var<workgroup> P: array<vec3<f32>, 6u * WORKGROUP_SIZE>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+var<workgroup> F: array<vec3<f32>, 4u * WORKGROUP_SIZE>;   // 4 new face points per thread: cells 00, 10, 01, 11
+var<workgroup> C: array<vec3<f32>, WORKGROUP_SIZE>;    // the centre, at the fan's first thread
+
+fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
+
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let wg = wid.y * GRID_X + wid.x;
+  // (Workgroups past the last one exist when the dispatch is folded into 2D.)
+  let th = select(CC_NONE, staticBuf[params.ccThreads + wg * WORKGROUP_SIZE + lid], wg < params.ccSliceGroups);
+  let valid = th != CC_NONE;
+  var fan = 0u;
+  var sec = 0u;
+  var ns = 1u;
+  var n = 1u;
+  var boundary = false;
+  var rule = 0u;
+  var D = 0u;
+  var anchor = vec3<f32>(0.0);
+  var sliceBase = 0u;
+  var inf = false;
+  var pseudo = false;
+  var ia = 0u;
+  var ib = 0u;
+  if (valid) {
+    fan = ccThreadWord_fan(th);
+    sec = ccThreadWord_sector(th);
+    let w0 = fanWord(fan, 0u);
+    ns = ccFanWord_sectors(w0);
+    n = ccFanWord_valence(w0);
+    boundary = ccFanWord_boundary(w0) == 1u;
+    rule = ccFanWord_rule(w0);
+    D = ccFanWord_depth(w0);
+    anchor = pt(fanWord(fan, 1u));
+    sliceBase = fanWord(fan, 2u);
+    let sb = fanWord(fan, 3u) + 7u * sec;
+    inf = staticBuf[params.ccSectors + sb] == 1u;
+    pseudo = boundary && sec == n;
+    let pair = fanWord(fan, 6u);
+    ia = ccPairWord_a(pair);
+    ib = ccPairWord_b(pair);
+    for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = pt(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
+    if (sec == 0u) { C[lid] = vec3<f32>(0.0); }
+  }
+  // Neighbour threads (fans are contiguous; a boundary fan's sector 0 has no previous sector,
+  // and reads itself where the crease rules of its infinitely sharp axis need nothing).
+  let first = lid - sec;
+  var prev = select(lid - 1u, first + n - 1u, sec == 0u);
+  if (boundary && sec == 0u) { prev = lid; }
+  var next = select(lid + 1u, first, !boundary && sec == n - 1u);
+  if (pseudo) { next = lid; }
+  workgroupBarrier();
+  for (var k = 1u; k <= params.ccMaxDepth; k++) {
+    let live = valid && k <= D;
+    let p10 = P[6u * lid];
+    let p20 = P[6u * lid + 1u];
+    let p11 = P[6u * lid + 2u];
+    let p21 = P[6u * lid + 3u];
+    let p12 = P[6u * lid + 4u];
+    let p22 = P[6u * lid + 5u];
+    let c = C[first];
+    let n10 = P[6u * next];
+    let n20 = P[6u * next + 1u];
+    let q11 = P[6u * prev + 2u];
+    if (live && !pseudo) {
+      F[4u * lid] = 0.25 * (c + p10 + p11 + n10);
+      F[4u * lid + 1u] = 0.25 * (p10 + p20 + p21 + p11);
+      F[4u * lid + 2u] = 0.25 * (n10 + p11 + p12 + n20);
+      F[4u * lid + 3u] = 0.25 * (p11 + p21 + p22 + p12);
+    }
+    workgroupBarrier();
+    var o: array<vec3<f32>, 12>;
+    var cNew = c;
+    if (live) {
+      let f00 = F[4u * lid];
+      let f10 = F[4u * lid + 1u];
+      let f01 = F[4u * lid + 2u];
+      let f11 = F[4u * lid + 3u];
+      let g00 = F[4u * prev];       // the cell [0,1]×[−1,0]
+      let g01 = F[4u * prev + 2u];  // the cell [1,2]×[−1,0]
+      // Axis i: crease rules when infinitely sharp.
+      o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
+      o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
+      o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+      if (!pseudo) {
+        o[1] = f00;
+        o[9] = f10;
+        o[3] = f01;
+        o[11] = f11;
+        o[5] = 0.25 * (p10 + p11 + f00 + f10);   // (2,1)
+        o[2] = 0.25 * (n10 + p11 + f00 + f01);   // (1,2)
+        o[10] = 0.25 * (p11 + p21 + f10 + f11);  // (3,2)
+        o[7] = 0.25 * (p11 + p12 + f01 + f11);   // (2,3)
+        o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11); // (2,2)
+      }
+      if (sec == 0u) {
+        // The centre: smooth (and dart), crease along axes ia, ib, or corner.
+        if (rule == 1u) {
+          cNew = 0.75 * c + 0.125 * (P[6u * (first + ia)] + P[6u * (first + ib)]);
+        } else if (rule == 0u) {
+          var s = vec3<f32>(0.0);
+          for (var j = 0u; j < n; j++) { s += P[6u * (first + j)] + F[4u * (first + j)]; }
+          let nf = f32(n);
+          cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
+        }
+      }
+    }
+    workgroupBarrier();
+    if (live) {
+      P[6u * lid] = o[0];
+      P[6u * lid + 1u] = o[4];
+      P[6u * lid + 2u] = o[1];
+      P[6u * lid + 3u] = o[5];
+      P[6u * lid + 4u] = o[2];
+      P[6u * lid + 5u] = o[6];
+      // Step k's slice (layout: src/gpu/cc/build.ts): the centre at every step; the ring, each
+      // sector's (1,0) and (1,1), at the steps k ≡ D (mod 2). The evaluator rebuilds the rest
+      // of the 2-ring it needs by local steps from the start level (wgsl/cc/surface.wgsl).
+      if (sec == 0u) {
+        C[lid] = cNew;
+        setPt(sliceBase + k - 1u, cNew);
+      }
+      if (((D - k) & 1u) == 0u) {
+        let rb = sliceBase + D + ((k - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * sec;
+        setPt(rb, o[0]);
+        setPt(rb + 1u, o[1]);
+      }
+    }
+    workgroupBarrier();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Limit position and tangents of each fan's centre (notes §2.1–2.3) from its last level: the
+// start-level ring when the fan has no slices, else its step-D ring and centre (offsets from
+// the anchor; step D's ring is always stored).
+// Written at the fan's limit base: P (absolute), T1, T2 (normal = T1 × T2).
+
+fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> vec3<f32> {
+  // which: 0 → (1,0) of sector i, 1 → (1,1)
+  if (D == 0u) {
+    return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
+  }
+  return pt(fanWord(fan, 2u) + D + ((D - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * i + which);
+}
+
+// Tangents of the crease span of faces a..b−1 (axes a and b infinitely sharp, indices mod n):
+// T1 along the crease (normal = T1 × T2 points outward for faces in ring order), T2 into the
+// span: the exact mask for a span of 2 faces (the regular crease), the mean of the span's ring
+// points otherwise (on the right side, a few degrees off the exact cross tangent: only the
+// vertex itself, its last square's blend and the factor rule read it).
+fn creaseTangents(fan: u32, D: u32, ns: u32, n: u32, anchor: vec3<f32>, P0: vec3<f32>, a: u32, b: u32) -> array<vec3<f32>, 2> {
+  let T1 = 0.5 * (ringPt(fan, D, ns, anchor, ringAxis(a, n, ns), 0u) - ringPt(fan, D, ns, anchor, ringAxis(b, n, ns), 0u));
+  var s = vec3<f32>(0.0);
+  var w = 0.0;
+  for (var i = a; i < b; i++) {
+    s += ringPt(fan, D, ns, anchor, i % n, 1u);
+    w += 1.0;
+    if (i > a) { s += 4.0 * ringPt(fan, D, ns, anchor, i % n, 0u); w += 4.0; }
+  }
+  return array<vec3<f32>, 2>(T1, s / max(w, 1.0) - P0);
+}
+
+// Axis j of the ring: on a boundary the pseudo-sector n is the last axis, else j mod n.
+fn ringAxis(j: u32, n: u32, ns: u32) -> u32 { return select(j % n, j, ns > n); }
+
+// Tangents of face i's corner at a corner vertex (the vertex itself is the limit). Where both
+// of the face's edges there are infinitely sharp: along them, e_i − c and e_(i+1) − c, as the CPU
+// reference. Where either is not (a corner tag among smooth or decayed edges) the surface has no
+// tangent plane there (the CPU reference says so) and the two edges' directions can be nearly
+// parallel (a rounded corner): the face's quad of the last ring (c, e_i, d_i, e_(i+1)) by its
+// diagonals instead, whose normal is the quad's own.
+fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec3<f32>, c: vec3<f32>, i: u32) -> array<vec3<f32>, 2> {
+  let j = select((i + 1u) % n, i + 1u, boundary);
+  let ei = ringPt(fan, D, ns, anchor, i, 0u);
+  let ej = ringPt(fan, D, ns, anchor, j, 0u);
+  let sb = params.ccSectors + fanWord(fan, 3u);
+  if (staticBuf[sb + 7u * i] == 1u && staticBuf[sb + 7u * j] == 1u) { return array<vec3<f32>, 2>(ei - c, ej - c); }
+  return array<vec3<f32>, 2>(ringPt(fan, D, ns, anchor, i, 1u) - c, ej - ei);
+}
+
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let fan = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
+  if (fan >= params.nFans) { return; }
+  let w0 = fanWord(fan, 0u);
+  let ns = ccFanWord_sectors(w0);
+  let n = ccFanWord_valence(w0);
+  let boundary = ccFanWord_boundary(w0) == 1u;
+  let rule = ccFanWord_rule(w0);
+  let D = ccFanWord_depth(w0);
+  let anchor = pt(fanWord(fan, 1u));
+  var c = vec3<f32>(0.0);
+  if (D > 0u) { c = pt(fanWord(fan, 2u) + D - 1u); }
+  let pair = fanWord(fan, 6u);
+  let ia = ccPairWord_a(pair);
+  let ib = ccPairWord_b(pair);
+  var P0 = c;
+  var T1 = vec3<f32>(0.0);
+  var T2 = vec3<f32>(0.0);
+  if (rule == 0u && !boundary) {
+    // Smooth (and dart): P = (n²c + 4Σe + Σd)/(n(n+5)); tangents with cos(iθ) from the CPU.
+    let cb = params.ccCos + fanWord(fan, 7u);
+    let inv = bitcast<f32>(staticBuf[cb + n]);
+    var se = vec3<f32>(0.0);
+    for (var i = 0u; i < n; i++) {
+      let e = ringPt(fan, D, ns, anchor, i, 0u);
+      let d = ringPt(fan, D, ns, anchor, i, 1u);
+      se += 4.0 * e + d;
+      let ci = bitcast<f32>(staticBuf[cb + i]);
+      let ci1 = bitcast<f32>(staticBuf[cb + (i + 1u) % n]);
+      let cim = bitcast<f32>(staticBuf[cb + (i + n - 1u) % n]);
+      T1 += 4.0 * ci * e + (ci + ci1) * inv * d;
+      T2 += 4.0 * cim * e + (cim + ci) * inv * d;
+    }
+    let nf = f32(n);
+    P0 = (nf * nf * c + se) / (nf * (nf + 5.0));
+  } else if (rule == 1u) {
+    // Crease: P = ⅔c + ⅙(e_a + e_b), T1 along the crease, T2 into the span ia..ib of faces.
+    P0 = (2.0 / 3.0) * c + (1.0 / 6.0) * (ringPt(fan, D, ns, anchor, ia, 0u) + ringPt(fan, D, ns, anchor, ib, 0u));
+    let t = creaseTangents(fan, D, ns, n, anchor, P0, ia, ib);
+    T1 = t[0];
+    T2 = t[1];
+  } else {
+    // Corner: P = c; the tangents of face 0's corner.
+    let t = cornerTangents(fan, D, ns, n, boundary, anchor, c, 0u);
+    T1 = t[0];
+    T2 = t[1];
+  }
+  let lb = fanWord(fan, 5u);
+  // Each face's own sector at a crease or corner (build.ts "fan limits"): the span of faces
+  // between the two sharp edges round face i, or face i alone at a corner.
+  // A crease's two spans are computed once each: ia..ib is the fan's own (T1, T2 above), the
+  // other (ib..ia + n) exists off a boundary only.
+  if (rule != 0u) {
+    let own = array<vec3<f32>, 2>(T1, T2);
+    var other = own;
+    if (rule == 1u && !boundary) { other = creaseTangents(fan, D, ns, n, anchor, P0, ib, ia + n); }
+    for (var i = 0u; i < n; i++) {
+      var t = other;
+      if (rule == 2u) {
+        t = cornerTangents(fan, D, ns, n, boundary, anchor, c, i);
+      } else if (i >= ia && i < ib) {
+        t = own;
+      }
+      setPt(lb + 3u + 2u * i, t[0]);
+      setPt(lb + 4u + 2u * i, t[1]);
+    }
+  }
+  setPt(lb, anchor + P0);
+  setPt(lb + 1u, T1);
+  setPt(lb + 2u, T2);
+}
+
+// One thread per prepared vertex (the cage's, then the face centres of src/gpu/tess/prepare.ts):
+// its limit position and normal, where the factor rule and the flat baseline read them.
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let v = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
+  if (v >= params.nVerts) { return; }
+  let fan = staticBuf[params.ccVertexFan + v];
+  let o = params.offPositions + 3u * v;
+  var p = vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
+  var nn = vec3<f32>(cageBuf[params.offNormals + 3u * v], cageBuf[params.offNormals + 3u * v + 1u], cageBuf[params.offNormals + 3u * v + 2u]);
+  if (fan != CC_NONE && ccVertexLimitWord_crease(fan) == 1u) {
+    // On a straight semi-sharp crease σ = k + f (build.ts creaseVertexGrid: 3×3 points at 3a + b,
+    // a across, b along, then σ): the corner of its single-crease patches, the closed form of
+    // wgsl/cc/crease-basis.wgsl at u = 0: across (ρ/6, 1 − ρ/3, ρ/6) with ρ = 2^-k (1 − f/2), along
+    // the B-spline's (1/6, 2/3, 1/6); the derivatives (−½, 0, ½) both ways.
+    let b = params.ccPatchIdx + ccVertexLimitWord_index(fan);
+    let sigma = bitcast<f32>(staticBuf[b + 9u]);
+    let k = floor(sigma);
+    let rho = ldexp(1.0, -i32(k)) * (1.0 - 0.5 * (sigma - k));
+    let wa = array<f32, 3>(rho / 6.0, 1.0 - rho / 3.0, rho / 6.0);
+    let wb = array<f32, 3>(1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0);
+    let d = array<f32, 3>(-0.5, 0.0, 0.5);
+    let c = pt(staticBuf[b + 4u]);
+    var pp = vec3<f32>(0.0);
+    var pa = vec3<f32>(0.0);
+    var pb = vec3<f32>(0.0);
+    for (var i = 0u; i < 3u; i++) {
+      for (var j = 0u; j < 3u; j++) {
+        let q = pt(staticBuf[b + 3u * i + j]) - c;
+        pp += wa[i] * wb[j] * q;
+        pa += d[i] * wb[j] * q;
+        pb += wa[i] * d[j] * q;
+      }
+    }
+    p = c + pp;
+    let nc = cross(pa, pb);
+    if (length(nc) > 0.0) { nn = normalize(nc); }
+  } else if (fan != CC_NONE) {
+    let lb = fanWord(fan, 5u);
+    p = pt(lb);
+    let nc = cross(pt(lb + 1u), pt(lb + 2u));
+    if (length(nc) > 0.0) { nn = normalize(nc); }
+  }
+  let op = params.offFactorPos + 3u * v;
+  let on = params.offFactorNormal + 3u * v;
+  cageBuf[op] = p.x;
+  cageBuf[op + 1u] = p.y;
+  cageBuf[op + 2u] = p.z;
+  cageBuf[on] = nn.x;
+  cageBuf[on + 1u] = nn.y;
+  cageBuf[on + 2u] = nn.z;
+}

@@ -1,0 +1,492 @@
+// The Catmull-Clark limit surface for the emit passes: evalSurface(t, wFixed) maps the cage
+// triangle's barycentric point to its face (quads: (u,v) of the 0–2 split; triangles and
+// n-gons: the kite sub-face k of the regular n-gon and its (s,t), as src/gpu/tess/face-params.ts),
+// then to its region (src/gpu/cc/build.ts: region (i, j) of the face's 2^d × 2^d split):
+//   PATCH  a regular bicubic B-spline patch over 16 refined points, phantom rows/columns for
+//          boundaries and infinitely sharp edges (notes §3.3), position and analytic normal;
+//          or a single-crease patch: one semi-sharp crease on its x = 0 side, the closed-form
+//          change of basis across it (wgsl/cc/crease-basis.wgsl, notes §3.4);
+//   SECTOR a sector of an extraordinary vertex's fan: after L = ceil(log2(1/max(a,b))) steps
+//          the point lies on one of the regular sub-patches A, B, C of the fan's slice at step
+//          L (notes §6.2); inside the last square (2^-7 of the face) a radial blend from the
+//          vertex's limit to the exact ring round it (notes §6.3).
+// Optionally (params.ccFlat) blends from the flat triangle of the corners' limit positions to
+// the surface as the tess factor rises from 1 to 4.
+
+
+fn ccP(p: u32) -> vec3<f32> {
+  let o = select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts);
+  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
+}
+
+fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
+  let s = 1.0 - t;
+  let t2 = t * t;
+  let t3 = t2 * t;
+  let b = vec4<f32>(s * s * s, 3.0 * t3 - 6.0 * t2 + 4.0, -3.0 * t3 + 3.0 * t2 + 3.0 * t + 1.0, t3) / 6.0;
+  let d = vec4<f32>(-0.5 * s * s, 0.5 * (3.0 * t2 - 4.0 * t), 0.5 * (-3.0 * t2 + 2.0 * t + 1.0), 0.5 * t2);
+  return array<vec4<f32>, 2>(b, d);
+}
+
+// Bicubic B-spline patch of 16 points (row-major, row ~ y), all relative to point 5 (the
+// corner (0,0): f32 precision of small patches), phantom mask bit j = side j (0: row 0, 1:
+// column 3, 2: row 3, 3: column 0) reflected (notes §3.3: rows first, then columns).
+fn ccBicubic(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+  return ccBicubicW(cp, mask, ccBasis(x), y);
+}
+
+// The same with the x weights given (value, d/dx per column): ccBasis(x), or a single-crease
+// patch's row weights (ccRegularPatch).
+fn ccBicubicW(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, bx: array<vec4<f32>, 2>, y: f32) -> array<vec3<f32>, 3> {
+  if ((mask & 1u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[c] = 2.0 * (*cp)[4u + c] - (*cp)[8u + c]; } }
+  if ((mask & 4u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[12u + c] = 2.0 * (*cp)[8u + c] - (*cp)[4u + c]; } }
+  if ((mask & 8u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r] = 2.0 * (*cp)[4u * r + 1u] - (*cp)[4u * r + 2u]; } }
+  if ((mask & 2u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r + 3u] = 2.0 * (*cp)[4u * r + 2u] - (*cp)[4u * r + 1u]; } }
+  let by = ccBasis(y);
+  var p = vec3<f32>(0.0);
+  var pu = vec3<f32>(0.0);
+  var pv = vec3<f32>(0.0);
+  for (var r = 0u; r < 4u; r++) {
+    var row = vec3<f32>(0.0);
+    var rowd = vec3<f32>(0.0);
+    for (var c = 0u; c < 4u; c++) {
+      let q = (*cp)[4u * r + c];
+      row += bx[0][c] * q;
+      rowd += bx[1][c] * q;
+    }
+    p += by[0][r] * row;
+    pu += by[0][r] * rowd;
+    pv += by[1][r] * row;
+  }
+  return array<vec3<f32>, 3>(p, pu, pv);
+}
+
+fn ccNormal(pu: vec3<f32>, pv: vec3<f32>) -> vec3<f32> {
+  let n = cross(pu, pv);
+  let l = length(n);
+  return select(vec3<f32>(0.0, 0.0, 1.0), n / l, l > 0.0);
+}
+
+// Tangents along (x, y) from tangents along rot_r(x, y) (pu, pv): the chain rule through ccRot.
+// Rotations only, so the normal pu × pv is the same either way.
+fn ccRotTangents(r: u32, pu: vec3<f32>, pv: vec3<f32>) -> array<vec3<f32>, 2> {
+  switch (r) {
+    case 1u: { return array<vec3<f32>, 2>(-pv, pu); }
+    case 2u: { return array<vec3<f32>, 2>(-pu, -pv); }
+    case 3u: { return array<vec3<f32>, 2>(pv, -pu); }
+    default: { return array<vec3<f32>, 2>(pu, pv); }
+  }
+}
+
+// rot_r of the unit square (build.ts rot): rot_1(x, y) = (y, 1 − x).
+fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
+  switch (r) {
+    case 1u: { return vec2<f32>(y, 1.0 - x); }
+    case 2u: { return vec2<f32>(1.0 - x, 1.0 - y); }
+    case 3u: { return vec2<f32>(1.0 - y, x); }
+    default: { return vec2<f32>(x, y); }
+  }
+}
+
+// A patch region: its 16 point indices at word `base` of patchIdx. A bicubic B-spline patch, or
+// a single-crease patch (one semi-sharp crease σ on the frame's x = 0 side, σ's f32 bits after
+// the indices; notes §3.4): the closed-form crease row weights in x times the cubic B-spline in
+// y (wgsl/cc/crease-basis.wgsl), which also gives both derivatives for the normal.
+fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
+  var cp: array<vec3<f32>, 16>;
+  let b = params.ccPatchIdx + base;
+  let anchor = ccP(staticBuf[b + 5u]);
+  for (var i = 0u; i < 16u; i++) { cp[i] = ccP(staticBuf[b + i]) - anchor; }
+  var bx = ccBasis(x);
+  if (ccRegionWord_crease(w0) == 1u) {
+    let cw = creaseRowWeights(bitcast<f32>(staticBuf[b + 16u]), x);
+    bx = array<vec4<f32>, 2>(cw.value, cw.du);
+  }
+  let e = ccBicubicW(&cp, ccRegionWord_mask(w0), bx, y);
+  return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), e[1], e[2]);
+}
+
+// The fans' slices (src/gpu/cc/build.ts, wgsl/cc/build.wgsl) hold per step k = 1..D the centre
+// and, at the steps k ≡ D (mod 2), the 1-ring ((1,0) and (1,1) of every sector), as offsets
+// from the fan's anchor; step 0 is the start level, read through the sector table. To evaluate
+// sector i at step L the evaluator needs step L−1's 2-ring of sectors i−1, i, i+1; it rebuilds
+// the outer points (a = 2 or b = 2) of those three sectors by local steps from step 0 (ccStep:
+// the slice kernel's own masks), reading the ring and the centre of each step from storage. The
+// outer points that one step needs, beyond the ring, are closed under the step: sector i's
+// four, sector i+1's (2,0) (2,1), sector i−1's (1,2) (each mask below reads no more), so three
+// sectors suffice at any depth; the other outputs of a step on sectors i±1 are not read.
+struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32>, D: u32 }
+
+fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
+
+// Sector j + d: wrapping round an interior fan; on a boundary fan clamped to 0..n (n: the
+// pseudo-sector of the last axis), where the points read are discarded by the phantom rule.
+fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
+  let m = i32(j) + d;
+  if (f.boundary) { return u32(clamp(m, 0, i32(f.n))); }
+  let n = i32(f.n);
+  return u32(((m % n) + n) % n);
+}
+
+fn ccCentre(f: CCFan, k: u32) -> vec3<f32> {
+  if (k == 0u) { return vec3<f32>(0.0); }
+  return ccP(f.base + k - 1u);
+}
+// Ring point w (0: (1,0), 1: (1,1)) of sector j at a step whose ring is stored (or step 0).
+fn ccRingStored(f: CCFan, k: u32, j: u32, w: u32) -> vec3<f32> {
+  if (k == 0u) { return ccP(staticBuf[f.sectors + 7u * j + 1u + 2u * w]) - f.anchor; }
+  return ccP(f.base + f.D + ((k - 1u - ((f.D + 1u) & 1u)) / 2u) * 2u * f.ns + 2u * j + w);
+}
+// Ring point at any step: a step between two stored rings is one step of the ring masks
+// (ccStep's o[0] and o[1]) from the stored ring before it. The reads are one call site in a
+// loop (every call is inlined: compile time).
+fn ccRing(f: CCFan, k: u32, j: u32, w: u32) -> vec3<f32> {
+  let stored = k == 0u || ((f.D - k) & 1u) == 0u;
+  let pseudo = f.boundary && j == f.n;
+  if (!stored && pseudo && w == 1u) { return vec3<f32>(0.0); }
+  // Stored: the one point. Else step k−1's (1,0), (1,1) of j, (1,0) of j+1, (1,0), (1,1) of j−1.
+  let nx = select(ccNb(f, j, 1), j, pseudo);
+  let pv = ccNb(f, j, -1);
+  var r: array<vec3<f32>, 5>;
+  let m = select(5u, 1u, stored);
+  for (var t = 0u; t < m; t++) {
+    let sj = select(select(select(pv, nx, t == 2u), j, t < 2u), j, stored);
+    let sw = select(select(0u, 1u, t == 1u || t == 4u), w, stored);
+    r[t] = ccRingStored(f, select(k - 1u, k, stored), sj, sw);
+  }
+  if (stored) { return r[0]; }
+  let c = ccCentre(f, k - 1u);
+  let f00 = 0.25 * (c + r[0] + r[1] + r[2]);
+  if (w == 1u) { return f00; }
+  if (staticBuf[f.sectors + 7u * j] == 1u) { return 0.5 * (c + r[0]); }
+  let g00 = 0.25 * (c + r[3] + r[4] + r[0]);
+  return 0.25 * (c + r[0] + f00 + g00);
+}
+
+// The local 2-ring: the 6 points (1,0) (2,0) (1,1) (2,1) (1,2) (2,2) of sectors idx[0..2] =
+// i, i+1, i−1 at one step; the ring points among them are read from storage instead.
+struct CCLocal { idx: vec3<u32>, p: array<vec3<f32>, 18> }
+
+// Outer point p (1: (2,0), 3: (2,1), 4: (1,2), 5: (2,2)) of sector j from the local 2-ring.
+fn ccOuter(loc: ptr<function, CCLocal>, j: u32, p: u32) -> vec3<f32> {
+  let slot = select(select(2u, 1u, j == (*loc).idx.y), 0u, j == (*loc).idx.x);
+  return (*loc).p[6u * slot + p];
+}
+
+// The 12 points (a, b), a ∈ 1..3, b ∈ 0..3 (index 4(a−1) + b) of sector j after step L: the
+// slice kernel's masks, on step L−1's points of sectors j−1, j, j+1.
+fn ccStep(f: CCFan, loc: ptr<function, CCLocal>, j: u32, L: u32) -> array<vec3<f32>, 12> {
+  let k = L - 1u;
+  let c = ccCentre(f, k);
+  let pseudo = f.boundary && j == f.n;
+  var nx = ccNb(f, j, 1);
+  var pv = ccNb(f, j, -1);
+  if (pseudo) { nx = j; }
+  // The ring points read: (1,0), (1,1) of j, (1,0) of j+1, (1,0), (1,1) of j−1 (one call site).
+  var r: array<vec3<f32>, 5>;
+  for (var t = 0u; t < 5u; t++) {
+    r[t] = ccRing(f, k, select(select(pv, nx, t == 2u), j, t < 2u), select(0u, 1u, t == 1u || t == 4u));
+  }
+  let p10 = r[0];
+  let p11 = r[1];
+  let n10 = r[2];
+  let q10 = r[3];
+  let q11 = r[4];
+  let p20 = ccOuter(loc, j, 1u);
+  let p21 = ccOuter(loc, j, 3u);
+  let p12 = ccOuter(loc, j, 4u);
+  let p22 = ccOuter(loc, j, 5u);
+  let n20 = ccOuter(loc, nx, 1u);
+  let q12 = ccOuter(loc, pv, 4u);
+  let inf = staticBuf[f.sectors + 7u * j] == 1u;
+  let f00 = 0.25 * (c + p10 + p11 + n10);
+  let f10 = 0.25 * (p10 + p20 + p21 + p11);
+  let f01 = 0.25 * (n10 + p11 + p12 + n20);
+  let f11 = 0.25 * (p11 + p21 + p22 + p12);
+  let g00 = 0.25 * (c + q10 + q11 + p10);
+  let g01 = 0.25 * (p10 + q11 + q12 + p20);
+  var o: array<vec3<f32>, 12>;
+  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
+  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
+  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+  if (!pseudo) {
+    o[1] = f00;
+    o[9] = f10;
+    o[3] = f01;
+    o[11] = f11;
+    o[5] = 0.25 * (p10 + p11 + f00 + f10);
+    o[2] = 0.25 * (n10 + p11 + f00 + f01);
+    o[10] = 0.25 * (p11 + p21 + f10 + f11);
+    o[7] = 0.25 * (p11 + p12 + f01 + f11);
+    o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11);
+  }
+  return o;
+}
+
+// Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step L,
+// at local (x, y); offsets from the anchor. Grid point (a, b), a, b ∈ −1..3: own a ≥ 1;
+// (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
+// (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
+fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
+  // Steps 1..L−1 carry the local 2-ring; step L's 12 points of sectors i (own, 0..11), i+1
+  // (12..23) and i−1 (A only, 24..35) are the sub-patch's. ONE call site of ccStep in the loops:
+  // shader compilers inline every call, and one copy of the step per call site made this
+  // evaluator take seconds to compile on SwiftShader (three pipelines include it).
+  var loc: CCLocal;
+  loc.idx = vec3<u32>(i, ccNb(f, i, 1), ccNb(f, i, -1));
+  for (var s = 0u; s < 3u; s++) {
+    for (var q = 0u; q < 6u; q++) { loc.p[6u * s + q] = ccP(staticBuf[f.sectors + 7u * loc.idx[s] + 1u + q]) - f.anchor; }
+  }
+  var pts: array<vec3<f32>, 37>;
+  for (var k = 1u; k <= L; k++) {
+    var nxt: array<vec3<f32>, 18>;
+    for (var s = 0u; s < 3u; s++) {
+      if (k == L && s == 2u && which != 0u) { continue; }
+      let o = ccStep(f, &loc, loc.idx[s], k);
+      if (k == L) {
+        for (var q = 0u; q < 12u; q++) { pts[12u * s + q] = o[q]; }
+      } else {
+        nxt[6u * s] = o[0];
+        nxt[6u * s + 1u] = o[4];
+        nxt[6u * s + 2u] = o[1];
+        nxt[6u * s + 3u] = o[5];
+        nxt[6u * s + 4u] = o[2];
+        nxt[6u * s + 5u] = o[6];
+      }
+    }
+    loc.p = nxt;
+  }
+  if (which == 2u) { pts[36] = ccRing(f, L, ccNb(f, i, 2), 0u); }
+  let cL = ccCentre(f, L);
+  var cp: array<vec3<f32>, 16>;
+  let da = select(0, -1, which == 2u);
+  let db = select(0, -1, which == 0u);
+  for (var r = 0; r < 4; r++) {
+    for (var c = 0; c < 4; c++) {
+      let a = c + da;
+      let b = r + db;
+      var q: vec3<f32>;
+      if (a == 0 && b == 0) {
+        q = cL;
+      } else if (a == -1 && b == 0) {
+        q = pts[36];
+      } else if (b < 0) {
+        q = pts[24u + u32(a)];
+      } else if (a <= 0) {
+        q = pts[12u + 4u * u32(b - 1) + u32(-a)];
+      } else {
+        q = pts[4u * u32(a - 1) + u32(b)];
+      }
+      cp[4 * r + c] = q;
+    }
+  }
+  // Phantoms: A's bottom on axis i, C's left on axis i+1, when infinitely sharp.
+  var mask = 0u;
+  if (which == 0u && staticBuf[f.sectors + 7u * i] == 1u) { mask = 1u; }
+  if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, i, 1)] == 1u) { mask = 8u; }
+  // Anchor the sum at the patch's corner (0,0) too.
+  let o = cp[5];
+  for (var j = 0u; j < 16u; j++) { cp[j] -= o; }
+  var e = ccBicubic(&cp, mask, x, y);
+  e[0] += o;
+  return e;
+}
+
+fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
+  let sec = ccRegionWord_sector(w0);
+  let off = ccRegionWord_offset(w0);
+  let ab = ccRot(ccRegionWord_rot(w0), x, y) * exp2(-f32(off));
+  let fw = ccFanWord(fan, 0u);
+  let anchor = ccP(ccFanWord(fan, 1u));
+  let D = ccFanWord_depth(fw);
+  let f = CCFan(ccFanWord_sectors(fw), ccFanWord_valence(fw), ccFanWord_boundary(fw) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor, D);
+  let lb = ccFanWord(fan, 5u);
+  // The limit tangents of this face's sector: the fan's own at a smooth centre, else face sec's
+  // (build.ts "fan limits": a sharp crease or corner has a tangent plane per sector).
+  let lt = select(lb + 1u, lb + 3u + 2u * sec, ccFanWord_rule(fw) != 0u);
+  let m = max(ab.x, ab.y);
+  // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).
+  var L = 1u;
+  while (L < D && m * exp2(f32(L)) < 1.0) { L++; }
+  var a = ab.x * exp2(f32(L));
+  var b = ab.y * exp2(f32(L));
+  let t = max(a, b);
+  var blend = 1.0;
+  if (t < 1.0) {
+    // Inside the last square: the exact ring point on the ray, then the radial blend.
+    if (t <= 0.0) {
+      // The vertex itself: its limit tangents stand in for the parametric ones (which vanish
+      // or blow up there), the CPU reference's convention (src/subdiv/displace.ts).
+      return SurfacePoint(ccP(lb), ccNormal(ccP(lt), ccP(lt + 1u)), ccP(lt), ccP(lt + 1u));
+    }
+    blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
+    if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
+  }
+  // Which sub-patch holds (a, b): A, B or C; one call site (see ccSubPatch).
+  var which = 2u;
+  var lx = a;
+  var ly = b - 1.0;
+  if (a >= 1.0) {
+    lx = a - 1.0;
+    if (b < 1.0) { which = 0u; ly = b; } else { which = 1u; }
+  }
+  let e = ccSubPatch(f, sec, L, which, lx, ly);
+  // Tangents along the region's (x, y): the sub-patch's along (a, b) are 2^L times its own, and
+  // (a, b) = rot(x, y)·2^(L − off). Inside the last square the blend's tangents are taken as
+  // the ring point's (the radial blend has no useful parametric derivative at that scale).
+  let tg = ccRotTangents(ccRegionWord_rot(w0), e[1], e[2]);
+  let sc = exp2(f32(L) - f32(off));
+  let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), sc * tg[0], sc * tg[1]);
+  if (blend >= 1.0) { return q; }
+  let p0 = ccP(lb);
+  let n0 = ccNormal(ccP(lt), ccP(lt + 1u));
+  return SurfacePoint(p0 + blend * (q.pos - p0), normalize(mix(n0, q.normal, blend)), q.du, q.dv);
+}
+
+fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
+  let side = 1u << dd;
+  let fs = f32(side);
+  let i = min(u32(floor(x0 * fs)), side - 1u);
+  let j = min(u32(floor(y0 * fs)), side - 1u);
+  let reg = first + k * side * side + j * side + i;
+  let w0 = staticBuf[params.ccRegions + 2u * reg];
+  let w1 = staticBuf[params.ccRegions + 2u * reg + 1u];
+  let x = x0 * fs - f32(i);
+  let y = y0 * fs - f32(j);
+  // Tangents come back along the region's (x, y); the face's are fs times those.
+  var sp: SurfacePoint;
+  if (ccRegionWord_kind(w0) == 1u) {
+    let l = ccRot(ccRegionWord_rot(w0), x, y);
+    sp = ccRegularPatch(w0, w1, l.x, l.y);
+    let tg = ccRotTangents(ccRegionWord_rot(w0), sp.du, sp.dv);
+    sp.du = tg[0];
+    sp.dv = tg[1];
+  } else {
+    sp = ccSector(w0, w1, x, y);
+  }
+  sp.du *= fs;
+  sp.dv *= fs;
+  return sp;
+}
+
+// Corner k of the regular n-gon whose table starts at `poly` (computed on the CPU in f64).
+fn ccCorner(poly: u32, n: u32, k: u32) -> vec2<f32> {
+  let o = params.ccPoly + 2u * (poly + k % n);
+  return vec2<f32>(bitcast<f32>(staticBuf[o]), bitcast<f32>(staticBuf[o + 1u]));
+}
+
+// Sub-face k of an n-gon and (s,t): the kite round corner k of the regular n-gon, inverted by
+// Newton (the map is bilinear and the kites are convex). Also (∂s/∂w_i, ∂t/∂w_i) for the
+// tangents: J⁻¹ (corner − corner 0) with J the kite map's Jacobian at the solution. The
+// triangle's corner 0 is the n-gon's corner 0, or its centre (the origin) when `centred`.
+struct CCNgonParam { kst: vec3<f32>, d1: vec2<f32>, d2: vec2<f32> }
+
+fn ccNgonParam(poly: u32, n: u32, fan: u32, centred: bool, w: vec3<f32>) -> CCNgonParam {
+  let c0 = select(ccCorner(poly, n, 0u), vec2<f32>(0.0), centred);
+  let q1 = ccCorner(poly, n, fan) - c0;
+  let q2 = ccCorner(poly, n, fan + 1u) - c0;
+  let p = w.x * c0 + w.y * ccCorner(poly, n, fan) + w.z * ccCorner(poly, n, fan + 1u);
+  if (length(p) < 1e-6) { return CCNgonParam(vec3<f32>(0.0, 1.0, 1.0), vec2<f32>(0.0), vec2<f32>(0.0)); }
+  // The kite of the corner nearest in angle (largest dot product).
+  var k = 0u;
+  var best = -2.0;
+  for (var j = 0u; j < n; j++) {
+    let d = dot(p, ccCorner(poly, n, j));
+    if (d > best) { best = d; k = j; }
+  }
+  let A = ccCorner(poly, n, k);
+  let B = 0.5 * (A + ccCorner(poly, n, k + 1u));
+  let C = vec2<f32>(0.0);
+  let D = 0.5 * (A + ccCorner(poly, n, k + n - 1u));
+  var s = 0.5;
+  var t = 0.5;
+  for (var i = 0u; i < 12u; i++) {
+    let f = (1.0 - s) * (1.0 - t) * A + s * (1.0 - t) * B + s * t * C + (1.0 - s) * t * D - p;
+    let ds = (1.0 - t) * (B - A) + t * (C - D);
+    let dt = (1.0 - s) * (D - A) + s * (C - B);
+    let det = ds.x * dt.y - ds.y * dt.x;
+    if (det == 0.0) { break; }
+    s -= (f.x * dt.y - f.y * dt.x) / det;
+    t -= (ds.x * f.y - ds.y * f.x) / det;
+  }
+  let ds = (1.0 - t) * (B - A) + t * (C - D);
+  let dt = (1.0 - s) * (D - A) + s * (C - B);
+  let det = ds.x * dt.y - ds.y * dt.x;
+  var d1 = vec2<f32>(0.0);
+  var d2 = vec2<f32>(0.0);
+  if (det != 0.0) {
+    d1 = vec2<f32>(q1.x * dt.y - q1.y * dt.x, ds.x * q1.y - ds.y * q1.x) / det;
+    d2 = vec2<f32>(q2.x * dt.y - q2.y * dt.x, ds.x * q2.y - ds.y * q2.x) / det;
+  }
+  return CCNgonParam(vec3<f32>(f32(k), clamp(s, 0.0, 1.0), clamp(t, 0.0, 1.0)), d1, d2);
+}
+
+// The exact limit at the cage triangle's point: what evalSurface shows before the flat-baseline
+// blend, and what the factor rule looks at inside the triangle (wgsl/tess/factor-bulge.wgsl).
+fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
+  let w = vec3<f32>(wFixed) / 65536.0;
+  let first = staticBuf[params.ccTri + 3u * t];
+  let info = staticBuf[params.ccTri + 3u * t + 1u];
+  let n = ccTriWord_corners(info);
+  let fan = ccTriWord_fan(info);
+  let centred = ccTriWord_centred(info) == 1u;
+  let dd = ccTriWord_depth(info);
+  // The face parameter (sub-face k, x, y), then one call of the region evaluator (a single
+  // call site keeps the inlined shader small).
+  // (x, y)'s derivatives along w1 and w2 carry the region's tangents to the triangle's.
+  var kxy: vec3<f32>;
+  var d1: vec2<f32>;
+  var d2: vec2<f32>;
+  if (n == 4u) {
+    let first = fan == 1u;
+    kxy = select(vec3<f32>(0.0, w.y, w.y + w.z), vec3<f32>(0.0, w.y + w.z, w.z), first);
+    d1 = select(vec2<f32>(1.0, 1.0), vec2<f32>(1.0, 0.0), first);
+    d2 = select(vec2<f32>(0.0, 1.0), vec2<f32>(1.0, 1.0), first);
+  } else {
+    let np = ccNgonParam(staticBuf[params.ccTri + 3u * t + 2u], n, fan, centred, w);
+    kxy = np.kst;
+    d1 = np.d1;
+    d2 = np.d2;
+  }
+  var sp = ccEvalRegion(first, dd, u32(kxy.x), kxy.y, kxy.z);
+  let px = sp.du;
+  sp.du = d1.x * px + d1.y * sp.dv;
+  sp.dv = d2.x * px + d2.y * sp.dv;
+  return sp;
+}
+
+fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
+  let sp = unblendedSurface(t, wFixed);
+  if (params.ccFlat == 0u) { return sp; }
+  let w = vec3<f32>(wFixed) / 65536.0;
+  // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a
+  // tess factor interpolated from the three edges (on an edge: that edge's factor, so both
+  // triangles of the edge agree; at the corners flat and surface coincide).
+  let v0 = triVert(t, 0u);
+  let v1 = triVert(t, 1u);
+  let v2 = triVert(t, 2u);
+  let flat = w.x * factorPos(v0) + w.y * factorPos(v1) + w.z * factorPos(v2);
+  let fn0 = w.x * factorNormal(v0) + w.y * factorNormal(v1) + w.z * factorNormal(v2);
+  let e01 = w.x * w.y;
+  let e12 = w.y * w.z;
+  let e20 = w.z * w.x;
+  let sum = e01 + e12 + e20;
+  var F = 4.0;
+  if (sum > 0.0) {
+    F = (e01 * f32(edgeF(triEdge(t, 0u))) + e12 * f32(edgeF(triEdge(t, 1u))) + e20 * f32(edgeF(triEdge(t, 2u)))) / (65536.0 * sum);
+  }
+  // The blend weight: linear in F from 0 at F = 1 to the surface at F = 4, but never leaving
+  // the point more than 1/lodScale pixels from the limit surface (issue 13's smooth default):
+  // the point shown is flat + k·(S − flat), (1 − k)·|S − flat| from S, so k is raised to at
+  // least 1 − 1/(lodScale·s) where s is |S − flat| in pixels at the point's distance from the
+  // eye. Both terms are functions of the point's cage parameter and the camera: a vertex that
+  // two triangles share (the weld evaluates it once anyway) gets one k, a new vertex of the
+  // pop-free pattern appears where its parent is, and k moves continuously with the camera.
+  let sagPx = length(sp.pos - flat) / (max(length(sp.pos - params.eye.xyz), 1e-6) * params.pixelAngle);
+  let k = max(clamp((F - 1.0) / 3.0, 0.0, 1.0), 1.0 - 1.0 / max(params.lodScale * sagPx, 1.0));
+  let nm = mix(fn0, sp.normal, k);
+  // Tangents: the blend's with k held (k's own derivative ignored: it is a display blend).
+  let fu = factorPos(v1) - factorPos(v0);
+  let fv = factorPos(v2) - factorPos(v0);
+  return SurfacePoint(mix(flat, sp.pos, k), select(sp.normal, normalize(nm), length(nm) > 1e-6), mix(fu, sp.du, k), mix(fv, sp.dv, k));
+}

@@ -1,0 +1,27 @@
+// Pass 2 of each budget attempt, one thread per triangle: how many interior vertices and how
+// many triangles its clamped-parallelogram pattern has (edge and corner vertices belong to
+// the edges and corners, and are counted there). Same construction as src/pattern/clamped.ts:
+//   rows j = 0..nl, row 0 keeps k_0 columns (wgsl/tess/pattern.wgsl rowZeroKept), row j ≥ 1 keeps
+//   k_j = #{u_i < c − v_j}, row nl is the corner C; interior vertices = Σ_{0<j<nl} k_j;
+//   triangles = Σ_{j<nl} (k_j + k_{j+1}) (the grid) + (nb − 1 − k_0) + nl + nr − 1 (the gap
+//   strip: its inner chain has the nb − 1 − k_0 bottom points past u_{k_0} too), in which k_0
+//   cancels, so it is not needed here.
+
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let t = flatIndex(wid, lid);
+  if (t >= params.nTris || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
+  let L = triLines(t);
+  var interior = 0u;
+  var triangles = L.bottom.n - 1u; // k_0 + (nb − 1 − k_0)
+  for (var j = 1u; j < L.left.n; j++) {
+    let k = keptColumns(L.bottom, rowEnd(L, j));
+    interior += k;
+    triangles += 2u * k;
+  }
+  // Σ_{j<nl}(k_j + k_{j+1}) = k_0 + 2·Σ_{0<j<nl} k_j + k_nl, with k_nl = 0.
+  triangles += L.left.n + L.right.n - 1u;
+  work[params.offTriVertCount + t] = interior;
+  work[params.offTriTriCount + t] = triangles;
+  work[params.offTriRowCount + t] = L.left.n + 1u; // rows 0..nl, for the plan
+}

@@ -1,0 +1,72 @@
+// Pass 1 of each budget attempt, one thread per mesh edge: the edge's tess factor (computed
+// once per edge, so its two triangles cannot disagree), its line state and segment count.
+// Mirrors src/gpu/tess/factors.ts edgeFactor; the curvature measure is wgsl/tess/factor-rule.wgsl's, and the
+// bulge term of the edge's two triangles is wgsl/tess/factor-bulge.wgsl's (its pass has run).
+
+fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
+  let m = transpose(params.viewProj); // rows of viewProj
+  let planes = array<vec4<f32>, 6>(m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[2], m[3] - m[2]);
+  for (var i = 0u; i < 6u; i++) {
+    let p = planes[i];
+    if (dot(p.xyz, c) + p.w < -r * length(p.xyz)) { return true; }
+  }
+  return false;
+}
+
+fn adaptiveFactor(e: u32) -> f32 {
+  let a = edgeVert(e, 0u);
+  let b = edgeVert(e, 1u);
+  let p0 = factorPos(a);
+  let p1 = factorPos(b);
+  let n0 = factorNormal(a);
+  let n1 = factorNormal(b);
+  let bend = edgeBend(p0, n0, p1, n1, params.eye.xyz);
+  // Displacement (src/gpu/tess/displacement-map.ts): the heights on the edge's faces lie in
+  // [lo, hi]·scale after the mid level; the sphere grows by the largest |h|, and the edge gets at
+  // least as many segments as its height variation spans pixels (times lodScale), up to two per
+  // texel along it (the talk's "1 texel = 2 triangles"): detail a pixel or more high is sampled.
+  var reach = 0.0;
+  var amplitude = 0.0;
+  var texels = 0.0;
+  if (params.dispOn != 0u) {
+    let lo = bitcast<f32>(staticBuf[params.offDispEdge + 3u * e]);
+    let hi = bitcast<f32>(staticBuf[params.offDispEdge + 3u * e + 1u]);
+    texels = bitcast<f32>(staticBuf[params.offDispEdge + 3u * e + 2u]);
+    reach = abs(params.dispScale) * max(abs(lo - params.dispMid), abs(hi - params.dispMid));
+    amplitude = abs(params.dispScale) * (hi - lo);
+  }
+  // The bulge term of the edge's triangles (BULGE_OFF_SCREEN where both are off screen): an edge
+  // whose ends face away, or whose own sphere is off screen, still splits while a triangle beside
+  // it is on screen (a silhouette inside it; an edge at 1 beside edges at 14 leaves slivers that fold).
+  let owner = staticBuf[params.offEdgeOwner + e];
+  let twin = staticBuf[params.offEdgeTwin + e];
+  var inside = bitcast<f32>(work[params.offTriBulge + ownerWord_tri(owner)]);
+  if (twin != NO_OWNER) { inside = max(inside, bitcast<f32>(work[params.offTriBulge + ownerWord_tri(twin)])); }
+  let err = length(bend.off);
+  let unseen = bend.away || sphereOutsideFrustum(bend.mid, 0.5 * length(p1 - p0) + err + reach);
+  if (unseen && inside == BULGE_OFF_SCREEN) { return 1.0; }
+  let dist = max(length(bend.mid - params.eye.xyz), 1e-6);
+  let surface = max(bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle), inside);
+  let detail = min(2.0 * texels, params.lodScale * amplitude / (dist * params.pixelAngle));
+  return max(surface, detail);
+}
+
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let e = flatIndex(wid, lid);
+  if (e >= params.nEdges || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
+  let attempt = work[params.offBudget + BUDGET_ATTEMPT];
+  var f = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
+  if (attempt == 1u) { f = f * bitcast<f32>(work[params.offBudget + BUDGET_SCALE]); }
+  if (attempt >= 2u) { f = 1.0; }
+  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
+  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
+  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
+  let s = lineState(F);
+  work[params.offEdgeF + e] = F;
+  work[params.offEdgeState + e] = s;
+  let segments = statePointCount(s) - 1u;
+  work[params.offEdgeSegs + e] = segments;
+  // Its interior points, twice on an edge whose normals split (once per side).
+  work[params.offEdgeInterior + e] = (segments - 1u) * select(1u, 2u, edgeSplit(e));
+}

@@ -1,0 +1,54 @@
+// Writing one vertex of the output mesh (src/gpu/contract/tessellated-mesh.ts), for the weld and emit passes.
+
+// The surface point of triangle t at weights w, displaced when params.dispOn (wgsl/tess/displace.wgsl).
+fn surfaceAt(t: u32, w: vec3<u32>) -> SurfacePoint {
+  let s = evalSurface(t, w);
+  if (params.dispOn == 0u) { return s; }
+  return displacePoint(t, w, s);
+}
+
+fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
+  if (index >= params.vertexCapacity) { return; }
+  let s = surfaceAt(t, w); // the surface, displaced when displacement is on (wgsl/tess/displace.wgsl)
+  outPositions[3u * index] = s.pos.x;
+  outPositions[3u * index + 1u] = s.pos.y;
+  outPositions[3u * index + 2u] = s.pos.z;
+  outNormals[3u * index] = s.normal.x;
+  outNormals[3u * index + 1u] = s.normal.y;
+  outNormals[3u * index + 2u] = s.normal.z;
+  outBary[index] = packBary(w);
+  outSrcTri[index] = t;
+}
+
+// A point where the surface's normal splits (an infinitely sharp crease): the position of the
+// point as (tPos, wPos) gives it, the owner side's, so that both sides' output vertices lie at
+// bit-identical places (one evaluation, repeated exactly), and the normal as triangle tN sees it.
+fn writeSplitVertex(index: u32, tPos: u32, wPos: vec3<u32>, tN: u32, wN: vec3<u32>) {
+  if (index >= params.vertexCapacity) { return; }
+  let p = surfaceAt(tPos, wPos).pos;
+  let n = surfaceAt(tN, wN).normal;
+  outPositions[3u * index] = p.x;
+  outPositions[3u * index + 1u] = p.y;
+  outPositions[3u * index + 2u] = p.z;
+  outNormals[3u * index] = n.x;
+  outNormals[3u * index + 1u] = n.y;
+  outNormals[3u * index + 2u] = n.z;
+  outBary[index] = packBary(wN);
+  outSrcTri[index] = tN;
+}
+
+// A cage vertex no face with a surface uses (a bare vertex, or one of holes only) still has its
+// output slot: it gets the cage position, no normal and no source triangle (NO_OWNER), so the
+// output buffers never hold what a previous mesh left there. No triangle refers to it.
+fn writeUnusedVertex(index: u32, v: u32) {
+  if (index >= params.vertexCapacity) { return; }
+  let p = cagePos(v);
+  outPositions[3u * index] = p.x;
+  outPositions[3u * index + 1u] = p.y;
+  outPositions[3u * index + 2u] = p.z;
+  outNormals[3u * index] = 0.0;
+  outNormals[3u * index + 1u] = 0.0;
+  outNormals[3u * index + 2u] = 0.0;
+  outBary[index] = 0u;
+  outSrcTri[index] = NO_OWNER;
+}
