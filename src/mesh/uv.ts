@@ -11,7 +11,7 @@
 //  - quad (corners 0..3 at (u,v) = (0,0), (1,0), (1,1), (0,1)):
 //        uv(u,v) = (1−u)(1−v)·uv0 + u(1−v)·uv1 + u·v·uv2 + (1−u)v·uv3;
 //  - face with n ≠ 4 corners, sub-face k at (s,t) in the exact reference's parameterisation
-//    (src/subdiv/evaluate.ts, notes/catmull-clark.md §5.3): bilinear over the sub-quad whose
+//    (src/subdiv/evaluate.ts): bilinear over the sub-quad whose
 //    corners are uv_k, (uv_k + uv_k+1)/2, the mean of all n corner uvs, (uv_k−1 + uv_k)/2.
 //    This is exactly what bilinear subdivision of the uv channel converges to (one bilinear
 //    step splits the n-gon into these quads, and bilinear refinement of a quad reproduces it).

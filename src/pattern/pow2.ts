@@ -1,7 +1,7 @@
 /**
  * Power-of-two refinement patterns for instanced tessellation (NVIDIA's 2009 sample, after
  * Boubekeur & Schlick's generic refinement pattern) and the T-junction snap of Dyken et al.,
- * in the canonical-direction form of notes/acc-and-instanced.md §6.3–6.4. Pure TypeScript: the
+ * in a canonical-direction form (each edge walked from its lower global vertex id). Pure TypeScript: the
  * GPU path (src/gpu/instanced/instanced.ts, wgsl/instanced/*.wgsl) reads the packed patterns built here
  * and its WGSL snap is the line-for-line twin of snapEdgeParam / snapVertex.
  *

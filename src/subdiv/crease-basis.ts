@@ -1,5 +1,6 @@
 // One semi-sharp crease on a bicubic B-spline patch's u = 0 side, in closed form
-// (Nießner, Loop, Greiner 2012; our derivation in ../shared/notes/catmull-clark.md §3.4).
+// (Nießner, Loop, Greiner 2012, "Efficient Evaluation of Semi-Smooth Creases in Catmull-Clark
+// Subdivision Surfaces"; the derivation is in the comments below).
 //
 // Why a closed form: a quad whose crease runs straight through two valence-4 corners
 // (OpenSubdiv's single-crease patch) would otherwise need ceil(σ) levels of refinement.

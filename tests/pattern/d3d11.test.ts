@@ -1,7 +1,7 @@
 /**
  * Unit tests for the D3D11 reference partitionings (src/pattern/d3d11.ts).
  *
- * Self-contained: the literal values come from the developer notes (patterns.md §2.2–2.6) and
+ * Self-contained: the literal values come from Microsoft's D3D11 tessellator reference (its fractional partitionings) and
  * the golden data's README; the full golden comparison is `npm run check:golden` (CI).
  */
 import { describe, it, expect } from 'vitest';

@@ -1,6 +1,6 @@
 /**
- * Power-of-two patterns and the T-junction snap (src/pattern/pow2.ts), held to notes
- * acc-and-instanced.md §8.10–8.11 in exact integer arithmetic: counts, coverage, orientation;
+ * Power-of-two patterns and the T-junction snap (src/pattern/pow2.ts), held in exact
+ * integer arithmetic to: counts, coverage, orientation;
  * every (P, Le) snapped boundary equals {j/Le}; the two sides of an edge agree; no flipped
  * triangle; exactly P − Le collapsed boundary triangles per edge.
  */

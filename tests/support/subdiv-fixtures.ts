@@ -1,5 +1,4 @@
-// Small test cages from the Catmull-Clark notes (0-based), embedded so tests
-// never read ../shared.
+// Small test cages (0-based), embedded so the tests need no files outside the repository.
 import { makeCage, type Cage } from '../../src/mesh/index.ts';
 
 export const cubePos = [-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1];

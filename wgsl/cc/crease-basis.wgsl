@@ -1,5 +1,5 @@
 // One semi-sharp crease on a bicubic B-spline patch's u = 0 side, in closed form, f32
-// (Nießner, Loop, Greiner 2012; ../shared/notes/catmull-clark.md §3.4). The f64 twin, with
+// (Nießner, Loop, Greiner 2012). The f64 twin, with
 // the derivation in its comments, is src/subdiv/crease-basis.ts: keep the two in step.
 // Self-contained: no bindings, no other module; every name starts with `crease`.
 //

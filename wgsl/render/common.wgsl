@@ -30,7 +30,7 @@ fn pullTowardEye(p: vec3f, amount: f32) -> vec3f {
 // answer: at an occlusion contour (a brow seen from above) the tessellated mesh folds over by a
 // fraction of a pixel, and its back-facing triangles there stand in front of the front-facing
 // ones. Drawn as an inside (flipped normal, inside tint, the underside's shadow) they made the
-// dark dotted lines of ../shared/evidence/suzanne-*.png. Such a triangle's own surface normal
+// dark dotted lines along suzanne's brows. Such a triangle's own surface normal
 // `n` still faces the eye, or turns away from it by a sliver; a real inside, seen through an
 // opening, faces away. So a back face whose normal turns away by less than INSIDE_FROM (a
 // cosine) is dropped, as a closed surface's back faces are culled, and the inside's tint and

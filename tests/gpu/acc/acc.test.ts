@@ -1,5 +1,5 @@
 /**
- * The ACC yardstick (src/subdiv/acc.ts) against the test values of notes acc-and-instanced.md §8:
+ * The ACC yardstick (src/subdiv/acc.ts) against the test values of the papers and the NVIDIA sample:
  * constants, cube reference vectors, corners = CC limit, symmetry, affine invariance, planar cage,
  * regular exactness, across-edge continuity (and that the geometry-patch normals of Bezier ACC do
  * jump, so the continuity check can fail), the Gregory triangle blend on an octahedron.
