@@ -22,6 +22,7 @@ import { accTriangleWords } from './surface.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 import { readBuffer } from '../device/readback.ts';
 import type { Tessellator } from '../tess/tessellator.ts';
+import { surfaceScheme } from '../surface/registry.ts';
 
 const KERNEL = /* wgsl */ `
 @group(0) @binding(4) var<storage, read> errIn: array<u32>;          // (t, w1, w2) per point
@@ -83,7 +84,7 @@ export class AccErrorView {
 
   /** Record the pass over `count` points of `input` ((t, w1, w2) u32 each) into `output` (2 f32 each). */
   encode(encoder: GPUCommandEncoder, tess: Tessellator, input: GPUBuffer, output: GPUBuffer, count: number): void {
-    if (tess.surface !== 'catmull-clark') throw new Error('the error view needs the Catmull-Clark tessellator (the exact surface)');
+    if (!surfaceScheme(tess.surface).exactLimit) throw new Error('the error view needs the Catmull-Clark tessellator (the exact surface)');
     const g0 = this.device.createBindGroup({
       label: 'acc errors',
       layout: this.pipeline.getBindGroupLayout(0),

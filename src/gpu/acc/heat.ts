@@ -28,6 +28,7 @@ import { defineStruct } from '../contract/layout.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 import type { Tessellator } from '../tess/tessellator.ts';
 import type { TessellatedMesh } from '../contract/tessellated-mesh.ts';
+import { surfaceScheme } from '../surface/registry.ts';
 
 /** What the heat map shows: the position error or the normal error. */
 export type HeatView = 'geometry' | 'normal';
@@ -212,7 +213,8 @@ export class AccHeatPass {
    * of the totals when the readback buffer is free.
    */
   encode(encoder: GPUCommandEncoder, reference: Tessellator, out: TessellatedMesh): void {
-    if (reference.surface !== 'catmull-clark') throw new Error('the error view needs a Catmull-Clark tessellator (the exact surface)');
+    if (!surfaceScheme(reference.surface).exactLimit)
+      throw new Error('the error view needs a Catmull-Clark tessellator (the exact surface)');
     const device = this.#device,
       p = this.#pipelines;
     const group = (pipe: GPUComputePipeline, label: string, entries: [number, GPUBuffer][]) =>

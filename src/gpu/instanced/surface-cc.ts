@@ -33,6 +33,7 @@ import { bakeTables } from '../../pattern/tables.ts';
 import type { CatmullClarkData } from '../cc/build.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 import type { DisplacementData, DisplacementSettings } from '../tess/displacement-map.ts';
+import { surfaceScheme } from '../surface/registry.ts';
 
 /** The evaluator's module-scope names that clash with the instanced tessellator's, and the
  * wgsl/tess/common.wgsl accessors it calls (defined over the borrowed buffers in
@@ -96,7 +97,7 @@ export function ccSurfaceEntries(tess: Tessellator): GPUBindGroupEntry[] {
 
 /** Throws unless `tess` can lend its Catmull-Clark buffers for `prepared`'s triangles. */
 export function checkCCSource(tess: Tessellator, prepared: PreparedMesh): void {
-  if (tess.surface !== 'catmull-clark')
+  if (!surfaceScheme(tess.surface).exactLimit)
     throw new Error(`the instanced Catmull-Clark surface needs a Catmull-Clark Tessellator (got ${tess.surface})`);
   if (tess.flatBaseline)
     throw new Error('the instanced Catmull-Clark surface is the exact limit: its Tessellator must have flatBaseline off');

@@ -12,16 +12,14 @@ import { faceParam, type FaceParam } from './face-params.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
 import { decodeBary, NO_OWNER } from '../contract/contract.ts';
 import { bakeTables } from '../../pattern/tables.ts';
-import { buildCatmullClark, type CatmullClarkData } from '../cc/build.ts';
-import { isAccSurface, type Surface } from './passes.ts';
-import { prepareAccSurface, type AccSurface } from '../acc/surface.ts';
+import { releaseSurfaceData, surfaceScheme, type SurfaceData, type SurfaceId } from '../surface/registry.ts';
 import type { Cage } from '../../mesh/types.ts';
 
 export interface HeadlessOptions {
   mode: 'fixed' | 'adaptive';
   /** The surface: the Catmull-Clark limit surface (default), Phong tessellation, or an ACC
    * approximation of the limit surface ('bezier-acc', 'gregory-acc', 'pm-acc'). */
-  surface?: Surface;
+  surface?: SurfaceId;
   /** Catmull-Clark: blend towards the flat triangle at low tess factors (default off here, so
    * every vertex lies on the exact limit surface). */
   flatBaseline?: boolean;
@@ -66,15 +64,15 @@ export interface HeadlessResult {
   timings: Record<string, number>;
 }
 
-/** `prepared`: the mesh and Catmull-Clark data (or ACC patches) made by the caller (e.g. to time
- * the preparation), instead of making them here. An ACC scheme throws AccError (src/subdiv/acc.ts)
- * for a cage it does not take. */
+/** `prepared`: the mesh and the surface's data (Catmull-Clark tables or ACC patches) made by the
+ * caller (e.g. to time the preparation), instead of making them here. A surface throws, with the
+ * reason, on a cage it does not take (an ACC scheme: AccError, src/subdiv/acc.ts). */
 export async function tessellateOnce(
   device: GPUDevice,
   cage: Cage,
   o: HeadlessOptions,
   tess?: Tessellator,
-  prepared?: { mesh: PreparedMesh; cc?: CatmullClarkData; acc?: AccSurface },
+  prepared?: { mesh: PreparedMesh } & SurfaceData,
 ): Promise<HeadlessResult> {
   const mesh = prepared?.mesh ?? prepareMesh(cage);
   const surface = o.surface ?? 'catmull-clark';
@@ -87,13 +85,14 @@ export async function tessellateOnce(
       surface,
       flatBaseline: o.flatBaseline ?? false,
     });
-  let ownAcc: AccSurface | undefined;
+  const scheme = surfaceScheme(t.surface);
+  let ownData: SurfaceData | undefined;
   try {
-    // ACC patches made here are released here; the caller's are the caller's.
-    const acc = isAccSurface(t.surface) ? (prepared?.acc ?? (ownAcc = prepareAccSurface(device, cage, mesh, t.surface))) : undefined;
+    // Surface data made here (ACC patches hold GPU buffers) is released here; the caller's is the caller's.
+    const data = prepared && scheme.hasData(prepared) ? prepared : (ownData = scheme.prepare(device, cage, mesh));
     const d = o.displacement;
     const disp = d ? prepareDisplacement(cage, mesh, d.map, d.wrap) : undefined;
-    t.setMesh(mesh, t.surface === 'catmull-clark' ? (prepared?.cc ?? buildCatmullClark(cage, mesh)) : undefined, acc, disp);
+    t.setMesh(mesh, data.cc, data.acc, disp);
     if (d) t.setDisplacement({ scale: d.scale, midLevel: d.midLevel, enabled: true });
     device.pushErrorScope('validation');
     const enc = device.createCommandEncoder({ label: 'headless rebuild' });
@@ -107,7 +106,7 @@ export async function tessellateOnce(
     return { mesh, out, edgeF, timings };
   } finally {
     if (own) t.destroy();
-    ownAcc?.patches.destroy();
+    if (ownData) releaseSurfaceData(ownData);
   }
 }
 

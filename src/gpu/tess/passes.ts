@@ -16,12 +16,9 @@ import patternWgsl from '../../../wgsl/tess/pattern.wgsl?raw';
 import planWgsl from '../../../wgsl/tess/plan.wgsl?raw';
 import emitWgsl from '../../../wgsl/tess/emit.wgsl?raw';
 import scanWgsl from '../../../wgsl/tess/scan.wgsl?raw';
-import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
 import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
-import { CC_BUILD_WGSL as ccBuildWgsl, CC_SURFACE_WGSL as ccSurfaceWgsl } from '../cc/shaders.ts';
-import accTessWgsl from '../../../wgsl/acc/surface-tess.wgsl?raw';
-import { ACC_SURFACE_WGSL } from '../acc/patches.ts';
-import type { AccScheme } from '../../subdiv/acc.ts';
+import { CC_BUILD_WGSL as ccBuildWgsl } from '../cc/shaders.ts';
+import { type SurfaceId, surfaceScheme } from '../surface/registry.ts';
 import {
   CC_BUILD_BINDINGS,
   CC_BUILD_GROUP,
@@ -32,11 +29,10 @@ import {
   usedBindings,
 } from '../contract/contract.ts';
 
-/** The tessellator's surfaces: Phong tessellation, the exact Catmull-Clark limit, or one of the
- * three approximations of it (ACC, src/gpu/acc/patches.ts). */
-export type Surface = 'phong' | 'catmull-clark' | AccScheme;
-export const SURFACES: readonly Surface[] = ['catmull-clark', 'phong', 'bezier-acc', 'gregory-acc', 'pm-acc'];
-export const isAccSurface = (s: Surface): s is AccScheme => s.endsWith('-acc');
+/** The tessellator's surfaces (src/gpu/surface/registry.ts): Phong tessellation, the exact
+ * Catmull-Clark limit, or one of the three approximations of it. */
+export type Surface = SurfaceId;
+export { isAccSurface } from '../surface/registry.ts';
 
 export type PassName =
   | 'bulge'
@@ -67,9 +63,9 @@ export interface PassSpec {
 /** The passes of a tessellator over `surface`, with their code: what the constructor builds, and
  * what tests/gpu/contract/contract.gpu.test.ts checks against the contract. */
 export function tessellatorPasses(surface: Surface): PassSpec[] {
+  const scheme = surfaceScheme(surface);
   const code = (...parts: string[]) => [tessPrelude(), commonWgsl, ...parts].join('\n');
-  const surfaceWgsl =
-    surface === 'catmull-clark' ? ccSurfaceWgsl : isAccSurface(surface) ? [ACC_SURFACE_WGSL, accTessWgsl].join('\n') : phongSurfaceWgsl;
+  const surfaceWgsl = scheme.tessWgsl;
   const modules = {
     // The bulge term evaluates the surface inside each triangle; the edge term reads it.
     factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl),
@@ -102,7 +98,9 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
     pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
   ];
-  if (surface === 'catmull-clark') {
+  // The Catmull-Clark patch build is the tessellator's own (into its work arena); AccPatches
+  // builds the ACC patches itself, and Phong reads the cage.
+  if (scheme.patchBuild === 'refinement') {
     passes.push(
       pass('ccPoints', 'cc level points', 'ccBuild', 'points'),
       pass('ccSlices', 'cc ev slices', 'ccBuild', 'slices'),

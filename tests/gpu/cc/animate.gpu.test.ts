@@ -15,7 +15,7 @@ import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh, type PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from '../../../src/gpu/device/readback.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
-import { sampleSurface } from '../../../src/gpu/cc/sample.ts';
+import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import type { FactorParams } from '../../../src/gpu/contract/tessellated-mesh.ts';
 import { decodeBary } from '../../../src/gpu/contract/contract.ts';

@@ -12,7 +12,7 @@ import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from '../../../src/gpu/device/readback.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
-import { sampleSurface } from '../../../src/gpu/cc/sample.ts';
+import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import { decodeBary } from '../../../src/gpu/contract/contract.ts';
 import { loadCage } from '../../../src/mesh/index.ts';

@@ -54,7 +54,7 @@ import { decodeBary } from '../../../src/gpu/contract/contract.ts';
 import type { Cage } from '../../../src/mesh/types.ts';
 import type { PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
 import { SHARPNESS_INFINITE } from '../../../src/mesh/types.ts';
-import { sampleSurface } from '../../../src/gpu/cc/sample.ts';
+import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import { CCReference } from '../../support/cc-checks.ts';
 import { angleBetween } from '../../support/tess-checks.ts';
 

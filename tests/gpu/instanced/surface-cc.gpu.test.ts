@@ -17,7 +17,7 @@ import { CCReference } from '../../support/cc-checks.ts';
 import { loadCage } from '../../../src/mesh/index.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
-import { sampleSurface } from '../../../src/gpu/cc/sample.ts';
+import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import {
   InstancedTessellator,
   prepareInstanced,

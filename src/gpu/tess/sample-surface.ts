@@ -5,10 +5,9 @@
  * submitted (the uniforms and the patch build are then current).
  */
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
-import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './shaders.ts';
-import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
+import { surfaceScheme } from '../surface/registry.ts';
 import { TESS_INPUTS, tessPrelude } from '../contract/contract.ts';
-import type { Tessellator } from '../tess/tessellator.ts';
+import type { Tessellator } from './tessellator.ts';
 import { readBuffer } from '../device/readback.ts';
 
 const KERNEL = /* wgsl */ `
@@ -43,7 +42,7 @@ export async function sampleSurface(
   if (!byKind) pipelines.set(device, (byKind = new Map()));
   let pipe = byKind.get(tess.surface);
   if (!pipe) {
-    const surface = tess.surface === 'catmull-clark' ? ccSurfaceWgsl : phongSurfaceWgsl;
+    const surface = surfaceScheme(tess.surface).tessWgsl;
     const module = device.createShaderModule({
       label: 'surface samples',
       code: [tessPrelude(TESS_INPUTS), commonWgsl, surface, KERNEL].join('\n'),
@@ -67,7 +66,7 @@ export async function sampleSurface(
       { binding: 0, resource: { buffer: tess.paramsBuffer } },
       { binding: 1, resource: { buffer: tess.staticBuffer } },
       { binding: 2, resource: { buffer: tess.cageBuffer } },
-      ...(tess.surface === 'catmull-clark' ? [{ binding: 3, resource: { buffer: tess.workBuffer } }] : []),
+      ...(surfaceScheme(tess.surface).readsWork ? [{ binding: 3, resource: { buffer: tess.workBuffer } }] : []),
       { binding: 4, resource: { buffer: input } },
       { binding: 5, resource: { buffer: output } },
     ],

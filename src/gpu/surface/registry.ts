@@ -1,0 +1,129 @@
+/**
+ * The surfaces the tessellators evaluate, behind one interface, as OpenSubdiv's schemes plug into
+ * its patch builder: Phong tessellation, the exact Catmull-Clark limit, and the three ACC
+ * approximations of that limit (Bezier, Gregory, Pm). A tessellator, a sampler or an error view
+ * asks its surface what it needs (the evaluator's WGSL, the per-frame patch build, whether it is
+ * the exact limit, what it prepares from a cage) and never tells surfaces apart by name: this file
+ * is the one place where the names are told apart (tests/gpu/surface/registry.test.ts holds the
+ * rest of src/ to that).
+ *
+ * Each surface's evaluator defines `evalSurface(t, w)` (the point and normal at barycentric
+ * weights w of prepared triangle t) over the compute tessellator's bindings: Phong reads the cage
+ * arena only; the Catmull-Clark limit also reads the refined points and limits that its patch
+ * build writes into the work arena every frame; an ACC scheme reads its patches' control points,
+ * which AccPatches rebuilds from the cage every frame.
+ */
+import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
+import accTessWgsl from '../../../wgsl/acc/surface-tess.wgsl?raw';
+import type { Cage } from '../../mesh/types.ts';
+import { ACC_SCHEMES, type AccScheme } from '../../subdiv/acc.ts';
+import { CC_SURFACE_WGSL } from '../cc/shaders.ts';
+import { buildCatmullClark, type CatmullClarkData } from '../cc/build.ts';
+import { ACC_SURFACE_WGSL } from '../acc/patches.ts';
+import { prepareAccSurface, type AccSurface } from '../acc/surface.ts';
+import type { PreparedMesh } from '../tess/prepare.ts';
+
+export type SurfaceId = 'phong' | 'catmull-clark' | AccScheme;
+
+/** What a surface prepares from a cage once per model: the tables or patches its evaluator reads
+ * (none for Phong). The GPU objects in it (ACC patches) are released with releaseSurfaceData. */
+export interface SurfaceData {
+  cc?: CatmullClarkData;
+  acc?: AccSurface;
+}
+
+export interface SurfaceScheme {
+  readonly id: SurfaceId;
+  /** As the panel, the stats and the messages name it. */
+  readonly name: string;
+  /** Defines `evalSurface(t, w)` over the compute tessellator's bindings (after its prelude and
+   * wgsl/tess/common.wgsl). */
+  readonly tessWgsl: string;
+  /** What rebuilds its control points from the cage every frame: 'refinement', the tessellator's
+   * own Catmull-Clark passes (refined points and limits into the work arena); 'acc-patches',
+   * AccPatches' build pass; 'none' (Phong reads the cage itself). */
+  readonly patchBuild: 'none' | 'refinement' | 'acc-patches';
+  /** The exact Catmull-Clark limit surface: the reference every error view measures against, and
+   * the only surface whose buffers the instanced tessellator borrows. */
+  readonly exactLimit: boolean;
+  /** Normals split at infinitely sharp creases, because the surface has a crease there (Phong and
+   * the ACC schemes have one normal per cage vertex, so both sides would be the same). */
+  readonly splitsCreases: boolean;
+  /** Its evaluator reads the tessellator's work arena (the patch build's output). */
+  readonly readsWork: boolean;
+  /** Whether the data has what this surface's evaluator reads. */
+  hasData(data: SurfaceData): boolean;
+  /** The tables or patches for a prepared cage. Throws, with the reason, on a cage the surface
+   * refuses (an ACC scheme: faces other than quads and triangles, non-manifold vertices; the
+   * Catmull-Clark build: sharpness beyond its levels). */
+  prepare(device: GPUDevice, cage: Cage, mesh: PreparedMesh): SurfaceData;
+}
+
+const phong: SurfaceScheme = {
+  id: 'phong',
+  name: 'Phong',
+  tessWgsl: phongSurfaceWgsl,
+  patchBuild: 'none',
+  exactLimit: false,
+  splitsCreases: false,
+  readsWork: false,
+  hasData: () => true,
+  prepare: () => ({}),
+};
+
+const catmullClark: SurfaceScheme = {
+  id: 'catmull-clark',
+  name: 'Catmull-Clark',
+  tessWgsl: CC_SURFACE_WGSL,
+  patchBuild: 'refinement',
+  exactLimit: true,
+  splitsCreases: true,
+  readsWork: true,
+  hasData: (data) => data.cc !== undefined,
+  prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),
+};
+
+const ACC_NAMES: Record<AccScheme, string> = { 'bezier-acc': 'Bezier ACC', 'gregory-acc': 'Gregory ACC', 'pm-acc': 'Pm ACC' };
+
+function accScheme(scheme: AccScheme): SurfaceScheme {
+  return {
+    id: scheme,
+    name: ACC_NAMES[scheme],
+    tessWgsl: [ACC_SURFACE_WGSL, accTessWgsl].join('\n'),
+    patchBuild: 'acc-patches',
+    exactLimit: false,
+    splitsCreases: false,
+    readsWork: false,
+    hasData: (data) => data.acc?.patches.scheme === scheme,
+    prepare: (device, cage, mesh) => ({ acc: prepareAccSurface(device, cage, mesh, scheme) }),
+  };
+}
+
+/** Every surface, in the order the panel lists them. */
+export const SURFACE_SCHEMES: readonly SurfaceScheme[] = [catmullClark, phong, ...ACC_SCHEMES.map(accScheme)];
+export const SURFACE_IDS: readonly SurfaceId[] = SURFACE_SCHEMES.map((s) => s.id);
+
+const byId = new Map<string, SurfaceScheme>(SURFACE_SCHEMES.map((s) => [s.id, s]));
+
+/** The surface of that id; throws on an unknown one (a URL parameter, a CLI flag). */
+export function surfaceScheme(id: SurfaceId): SurfaceScheme {
+  const s = byId.get(id);
+  if (!s) throw new Error(`unknown surface '${id}' (one of ${SURFACE_IDS.join(', ')})`);
+  return s;
+}
+
+/** Whether a string names a surface. */
+export function isSurfaceId(id: string): id is SurfaceId {
+  return byId.has(id);
+}
+
+/** Whether the surface approximates the Catmull-Clark limit with patches (an ACC scheme): what the
+ * error views measure. */
+export function isAccSurface(id: SurfaceId): id is AccScheme {
+  return surfaceScheme(id).patchBuild === 'acc-patches';
+}
+
+/** Release the GPU objects a SurfaceData holds (ACC patches); the tables are plain arrays. */
+export function releaseSurfaceData(data: SurfaceData): void {
+  data.acc?.patches.destroy();
+}

@@ -1,0 +1,119 @@
+/**
+ * The surfaces behind one interface (src/gpu/surface/registry.ts): what each declares, and that
+ * the rest of src/ asks a surface rather than comparing its name.
+ */
+import { readdirSync, readFileSync, statSync } from 'node:fs';
+import { join, relative } from 'node:path';
+import { describe, expect, it } from 'vitest';
+import {
+  isAccSurface,
+  isSurfaceId,
+  SURFACE_IDS,
+  SURFACE_SCHEMES,
+  surfaceScheme,
+  type SurfaceId,
+} from '../../../src/gpu/surface/registry.ts';
+import { tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
+
+const ROOT = new URL('../../../', import.meta.url).pathname;
+
+function sources(dir: string): string[] {
+  return readdirSync(dir).flatMap((f) => {
+    const p = join(dir, f);
+    return statSync(p).isDirectory() ? sources(p) : p.endsWith('.ts') ? [p] : [];
+  });
+}
+
+/** A comparison of a value with a surface's name, a `case` on one, or the demo's name-list test. */
+const NAME_BRANCH =
+  /(===|!==)\s*'(catmull-clark|phong|bezier-acc|gregory-acc|pm-acc)'|'(catmull-clark|phong|bezier-acc|gregory-acc|pm-acc)'\s*(===|!==)|case '(catmull-clark|phong|bezier-acc|gregory-acc|pm-acc)'|\bisAcc\(/g;
+
+/**
+ * Files that still branch on a surface's name, and how many times: the demo (src/app), whose
+ * modes are not yet behind the interface, and the instanced tessellator's choice of vertex stage.
+ * Each count may only fall; a file not listed may not start. The CPU yardsticks in src/subdiv
+ * are the schemes themselves (the ACC module choosing among its own three variants), not a
+ * consumer of them, and are left out.
+ */
+const NOT_YET: Record<string, number> = {
+  'src/app/controller.ts': 7,
+  'src/app/instanced-view.ts': 5,
+  'src/app/main.ts': 19,
+  'src/app/params.ts': 2,
+  'src/app/stats.ts': 2,
+  'src/gpu/instanced/displace-vertex.ts': 1,
+  'src/gpu/instanced/instanced.ts': 1,
+  'src/gpu/tess/tessellator.ts': 3,
+};
+
+describe('the surface registry', () => {
+  it('declares every surface once, with a name and an evaluator of evalSurface', () => {
+    expect(new Set(SURFACE_IDS).size).toBe(SURFACE_SCHEMES.length);
+    expect(SURFACE_IDS).toEqual(['catmull-clark', 'phong', 'bezier-acc', 'gregory-acc', 'pm-acc']);
+    for (const s of SURFACE_SCHEMES) {
+      expect(surfaceScheme(s.id)).toBe(s);
+      expect(s.name.length, s.id).toBeGreaterThan(0);
+      expect(s.tessWgsl, s.id).toMatch(/fn evalSurface\s*\(/);
+    }
+    expect(new Set(SURFACE_SCHEMES.map((s) => s.name)).size).toBe(SURFACE_SCHEMES.length);
+  });
+
+  it('has one exact limit, the one surface that reads the work arena and splits creases', () => {
+    const exact = SURFACE_SCHEMES.filter((s) => s.exactLimit);
+    expect(exact.map((s) => s.id)).toEqual(['catmull-clark']);
+    for (const s of SURFACE_SCHEMES) {
+      expect(s.readsWork, s.id).toBe(s.patchBuild === 'refinement');
+      expect(s.splitsCreases, s.id).toBe(s.exactLimit);
+    }
+    expect(SURFACE_IDS.filter(isAccSurface)).toEqual(['bezier-acc', 'gregory-acc', 'pm-acc']);
+  });
+
+  it("the tessellator's passes follow the surface's patch build, and its evaluator is in every evaluating pass", () => {
+    for (const s of SURFACE_SCHEMES) {
+      const passes = tessellatorPasses(s.id);
+      const build = passes.filter((p) => p.group === 'ccBuild').map((p) => p.name);
+      expect(build.length > 0, s.id).toBe(s.patchBuild === 'refinement');
+      for (const p of passes.filter((q) => ['factors', 'corners', 'edges', 'emitVertices'].includes(q.name)))
+        expect(p.code.includes(s.tessWgsl), `${s.id} ${p.name}`).toBe(true);
+    }
+  });
+
+  it('tells what it needs prepared, without a GPU for the surfaces that need none', () => {
+    const phong = surfaceScheme('phong');
+    expect(phong.hasData({})).toBe(true);
+    expect(surfaceScheme('catmull-clark').hasData({})).toBe(false);
+    expect(surfaceScheme('gregory-acc').hasData({})).toBe(false);
+  });
+
+  it('refuses an unknown name with the list of known ones', () => {
+    expect(isSurfaceId('loop')).toBe(false);
+    expect(isSurfaceId('pm-acc')).toBe(true);
+    expect(() => surfaceScheme('loop' as SurfaceId)).toThrow(/unknown surface 'loop' \(one of catmull-clark, phong/);
+  });
+});
+
+describe('no module outside the registry branches on a surface name', () => {
+  const found: Record<string, number> = {};
+  for (const f of sources(join(ROOT, 'src'))) {
+    const rel = relative(ROOT, f);
+    if (rel === 'src/gpu/surface/registry.ts' || rel.startsWith('src/subdiv/')) continue;
+    // Comments may name surfaces; only code counts.
+    const code = readFileSync(f, 'utf8')
+      .replace(/\/\*[\s\S]*?\*\//g, '')
+      .replace(/\/\/[^\n]*/g, '');
+    const n = code.match(NAME_BRANCH)?.length ?? 0;
+    if (n) found[rel] = n;
+  }
+
+  it('no new file branches on a name', () => {
+    expect(Object.keys(found).filter((f) => !(f in NOT_YET))).toEqual([]);
+  });
+
+  it('the files not yet converted branch no more than they did', () => {
+    for (const [f, n] of Object.entries(found)) if (f in NOT_YET) expect(n, f).toBeLessThanOrEqual(NOT_YET[f]);
+  });
+
+  it('the pattern finds a branch (so a zero above means something)', () => {
+    expect("if (s === 'phong') x(); switch (s) { case 'pm-acc': }".match(NAME_BRANCH)?.length).toBe(2);
+  });
+});
