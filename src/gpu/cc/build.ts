@@ -113,6 +113,10 @@
  *   vfan     per prepared vertex (the cage's, then the face centres of prepare.ts),
  *            CC_VERTEX_LIMIT_WORD: its fan (limit position and normal for the factor rule), or
  *            (crease bit) the word offset of its crease record in patchIdx, or ~0
+ *
+ * The files: this one holds the data's shape and buildCatmullClark, the driver of the steps;
+ * src/gpu/cc/levels.ts (1: levels and point rules), src/gpu/cc/fans.ts (2: fans, vertex limits,
+ * their packing), src/gpu/cc/regions.ts and src/gpu/cc/single-crease.ts (3: regions, tri words).
  */
 import {
   type Cage,
