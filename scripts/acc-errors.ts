@@ -19,7 +19,8 @@
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { loadCage, type Cage } from '../src/mesh/index.ts';
-import { ACC_SCHEMES, AccError, AccSurface, KIND_NAMES } from '../src/subdiv/acc.ts';
+import { ACC_SCHEMES, AccError, KIND_NAMES } from '../src/subdiv/acc.ts';
+import { AccSurface } from '../src/subdiv/acc-evaluate.ts';
 import { ExactAt, accErrors, ccStep, continuity, prism, smoothEdges } from '../tests/support/acc-checks.ts';
 import { AccPatches } from '../src/gpu/acc/patches.ts';
 import { Tessellator } from '../src/gpu/tess/tessellator.ts';

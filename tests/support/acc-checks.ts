@@ -5,7 +5,8 @@
  */
 import { makeCage, type Cage, DEFAULT_OPTIONS } from '../../src/mesh/index.ts';
 import { Surface, levelFromCage, refine } from '../../src/subdiv/index.ts';
-import type { AccSurface, V3 } from '../../src/subdiv/acc.ts';
+import type { AccSurface } from '../../src/subdiv/acc-evaluate.ts';
+import type { V3 } from '../../src/subdiv/acc-patches.ts';
 import { faceParam } from '../../src/gpu/tess/face-params.ts';
 import { prepareMesh, type PreparedMesh } from '../../src/gpu/tess/prepare.ts';
 import { angleBetween } from './tess-checks.ts';

@@ -1,4 +1,4 @@
-// A cage made for single-crease patches (src/gpu/cc/build.ts singleCrease): a cube whose faces
+// A cage made for single-crease patches (src/gpu/cc/single-crease.ts singleCrease): a cube whose faces
 // are n × n grids, with horizontal crease loops round its sides. Away from the cube's corners
 // every vertex of a loop is an interior valence-4 vertex with the crease running straight
 // through it, so the faces along a loop are regular but for that one crease.

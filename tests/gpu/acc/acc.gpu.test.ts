@@ -11,7 +11,8 @@
 import { describe, it, expect, afterAll } from 'vitest';
 import { getDevice, releaseDevice } from '../../support/gpu-device.ts';
 import { loadCage, type Cage } from '../../../src/mesh/index.ts';
-import { ACC_SCHEMES, AccSurface } from '../../../src/subdiv/acc.ts';
+import { ACC_SCHEMES } from '../../../src/subdiv/acc.ts';
+import { AccSurface } from '../../../src/subdiv/acc-evaluate.ts';
 import { AccPatches } from '../../../src/gpu/acc/patches.ts';
 import { bboxDiagonal, boundaryCages, octahedron, randomFaceParams, valence2Cube } from '../../support/acc-checks.ts';
 import { angleBetween } from '../../support/tess-checks.ts';

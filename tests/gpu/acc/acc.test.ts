@@ -9,18 +9,15 @@ import { loadCage, makeCage, type Cage } from '../../../src/mesh/index.ts';
 import {
   ACC_SCHEMES,
   AccError,
-  AccSurface,
   KIND_BEZIER,
   KIND_PM_TRI_LS,
   KIND_REGULAR,
   SECTOR_CORNER,
   SECTOR_CREASE,
-  type V3,
-  cross3,
-  evalBicubic,
-  evalTangentPatches,
   valenceConstants,
 } from '../../../src/subdiv/acc.ts';
+import { type V3, cross3 } from '../../../src/subdiv/acc-patches.ts';
+import { AccSurface, evalBicubic, evalTangentPatches } from '../../../src/subdiv/acc-evaluate.ts';
 import {
   ExactAt,
   accErrors,

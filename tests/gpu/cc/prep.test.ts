@@ -4,7 +4,9 @@
  * lookup the checks use. (Positions play no part in it: the cages' positions are arbitrary.)
  */
 import { describe, it, expect } from 'vitest';
-import { buildCatmullClark, regionOf, REGION_PATCH, REGION_SECTOR, TOTAL_DEPTH, type CatmullClarkData } from '../../../src/gpu/cc/build.ts';
+import { buildCatmullClark, regionOf, type CatmullClarkData } from '../../../src/gpu/cc/build.ts';
+import { REGION_PATCH, REGION_SECTOR } from '../../../src/gpu/cc/regions.ts';
+import { TOTAL_DEPTH } from '../../../src/gpu/cc/fans.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { CC_FAN_WORD } from '../../../src/gpu/cc/words.ts';
 import type { Cage } from '../../../src/mesh/index.ts';

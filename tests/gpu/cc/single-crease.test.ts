@@ -6,7 +6,8 @@
  * is the closed-form limit of the cage vertices on such creases (wgsl/cc/build.wgsl vlimits).
  */
 import { describe, it, expect } from 'vitest';
-import { buildCatmullClark, rot, REGION_PATCH, type CatmullClarkData } from '../../../src/gpu/cc/build.ts';
+import { buildCatmullClark, rot, type CatmullClarkData } from '../../../src/gpu/cc/build.ts';
+import { REGION_PATCH } from '../../../src/gpu/cc/regions.ts';
 import { CC_REGION_WORD, CC_VERTEX_LIMIT_WORD } from '../../../src/gpu/cc/words.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { DEFAULT_OPTIONS, type Cage } from '../../../src/mesh/index.ts';

@@ -45,7 +45,7 @@ import { DEFAULT_OPTIONS, loadCage, uvAtSubFace, type Cage } from '../../../src/
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';
 import { type HeightMap, type HeightWrap, sampleHeight } from '../../../src/mesh/heightmap.ts';
 import { DisplacedSurface, Surface } from '../../../src/subdiv/index.ts';
-import { AccSurface } from '../../../src/subdiv/acc.ts';
+import { AccSurface } from '../../../src/subdiv/acc-evaluate.ts';
 
 /** × the model's diagonal: the issue's bound for the displaced surface (as the compute
  * tessellator's test, whose comment gives the 8-bit budget). */

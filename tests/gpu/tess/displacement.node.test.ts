@@ -42,7 +42,7 @@ import { DEFAULT_OPTIONS, loadCage, uvAtSubFace, type Cage } from '../../../src/
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';
 import { type DisplacedModelEntry, type HeightMap, sampleHeight } from '../../../src/mesh/heightmap.ts';
 import { DisplacedSurface, Surface } from '../../../src/subdiv/index.ts';
-import { AccSurface } from '../../../src/subdiv/acc.ts';
+import { AccSurface } from '../../../src/subdiv/acc-evaluate.ts';
 import type { Surface as SurfaceKind } from '../../../src/gpu/tess/passes.ts';
 
 const POSITION_TOL = 1e-5; // × the model's bounding-box diagonal

@@ -1,0 +1,306 @@
+/**
+ * The uniform levels of the Catmull-Clark preparation (part 1 of the header of src/gpu/cc/build.ts):
+ * each level's topology and sharpness, the rule and inputs of every point one refinement makes,
+ * and the per-level caches of which vertices are regular. Topology only: the GPU makes the points
+ * from these rules (wgsl/cc/build.wgsl).
+ */
+import { type HalfEdges, type Sharpness, SHARPNESS_INFINITE, isRegularVertex, vertexAdjacency } from '../../mesh/index.ts';
+import { CC_PAIR_WORD, CC_RULE_WORD } from './words.ts';
+import { U32, f32bits } from './word-list.ts';
+
+export const RULE_FACE = 0;
+export const RULE_EDGE = 1;
+export const RULE_VERTEX = 2;
+export const VRULE_SMOOTH = 0;
+export const VRULE_CREASE = 1;
+export const VRULE_CORNER = 2;
+/** Deepest uniform level tried before a face is declared unsupported. */
+export const MAX_LEVEL = 6;
+
+export interface Level {
+  he: HalfEdges;
+  edgeSharp: Float64Array;
+  vertSharp: Float64Array;
+  hole: Uint8Array;
+  boundary: Uint8Array;
+  /** Global point index of this level's vertex 0. */
+  base: number;
+  regular: Int8Array; // -1 unknown
+  eligible: Int8Array; // -1 unknown
+}
+
+const dec = (s: number): number => (s <= 1 ? 0 : s >= SHARPNESS_INFINITE ? SHARPNESS_INFINITE : Math.fround(s - 1));
+const INF = SHARPNESS_INFINITE;
+
+function makeLevel(he: HalfEdges, edgeSharp: Float64Array, vertSharp: Float64Array, hole: Uint8Array, base: number): Level {
+  const boundary = new Uint8Array(he.nVerts);
+  for (let e = 0; e < he.nEdges; e++)
+    if (he.edgeFaceCount[e] === 1) {
+      boundary[he.edgeVerts[2 * e]] = 1;
+      boundary[he.edgeVerts[2 * e + 1]] = 1;
+    }
+  return {
+    he,
+    edgeSharp,
+    vertSharp,
+    hole,
+    boundary,
+    base,
+    regular: new Int8Array(he.nVerts).fill(-1),
+    eligible: new Int8Array(he.nVerts).fill(-1),
+  };
+}
+
+export function vertexRuleOf(nSharp: number, vs: number): number {
+  if (vs > 0 || nSharp >= 3) return VRULE_CORNER;
+  return nSharp === 2 ? VRULE_CREASE : VRULE_SMOOTH; // 0: smooth, 1: dart (smooth mask)
+}
+
+/** Refine level L's topology once: the rules of level L+1's points, and level L+1. */
+function refineLevel(L: Level, rules: U32, inputs: U32): Level {
+  const m = L.he;
+  const nV = m.nVerts,
+    nE = m.nEdges,
+    nF = m.nFaces;
+  const base1 = L.base + nV;
+  const fBase = base1 + nV + nE,
+    vBase = L.base;
+  // Vertex points.
+  for (let v = 0; v < nV; v++) {
+    const e0 = m.vertEdgeOffsets[v],
+      e1 = m.vertEdgeOffsets[v + 1];
+    const h0 = m.vertHeOffsets[v],
+      h1 = m.vertHeOffsets[v + 1];
+    const first = inputs.n;
+    inputs.push(vBase + v);
+    let nSharp = 0,
+      nSharpChild = 0,
+      ia = 0,
+      ib = 0,
+      ca = 0,
+      cb = 0;
+    let tSum = 0,
+      tCount = 0;
+    const vs = L.vertSharp[v];
+    if (vs > 0 && dec(vs) === 0) {
+      tSum = Math.fround(vs);
+      tCount = 1;
+    }
+    for (let k = e0; k < e1; k++) {
+      const e = m.vertEdges[k];
+      inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
+      const s = L.edgeSharp[e];
+      if (s > 0) {
+        if (nSharp === 0) ia = k - e0;
+        else if (nSharp === 1) ib = k - e0;
+        nSharp++;
+      }
+      if (dec(s) > 0) {
+        if (nSharpChild === 0) ca = k - e0;
+        else if (nSharpChild === 1) cb = k - e0;
+        nSharpChild++;
+      }
+      if (s > 0 && dec(s) === 0) {
+        tSum = Math.fround(tSum + s);
+        tCount++;
+      }
+    }
+    for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
+    const pr = vertexRuleOf(nSharp, vs);
+    let cr = vertexRuleOf(nSharpChild, dec(vs));
+    let W = 1;
+    if ((pr === VRULE_CREASE || pr === VRULE_CORNER) && cr !== pr) {
+      W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
+    } else cr = pr;
+    // The crease pair: the parent's if it is a crease, else the child's.
+    if (pr !== VRULE_CREASE) {
+      ia = ca;
+      ib = cb;
+    }
+    if (e1 - e0 >= 1 << 12 || h1 - h0 >= 1 << 12) throw new Error(`vertex of valence ${e1 - e0} is not supported`);
+    rules.push(CC_RULE_WORD.pack({ kind: RULE_VERTEX, parent: pr, child: cr, sharp: 0, count: e1 - e0, faces: h1 - h0 }));
+    rules.push(first);
+    // A sharp vertex (either rule not smooth) carries its crease pair and W after its inputs.
+    if (pr !== VRULE_SMOOTH || cr !== VRULE_SMOOTH) {
+      inputs.push(CC_PAIR_WORD.pack({ a: ia, b: ib }));
+      inputs.push(f32bits(W));
+    }
+  }
+  // Edge points.
+  for (let e = 0; e < nE; e++) {
+    const first = inputs.n;
+    inputs.push(vBase + m.edgeVerts[2 * e]);
+    inputs.push(vBase + m.edgeVerts[2 * e + 1]);
+    let n = 2;
+    if (m.edgeFaceCount[e] === 2) {
+      const h = m.edgeHe[e];
+      inputs.push(fBase + m.heFace[h]);
+      inputs.push(fBase + m.heFace[m.heTwin[h]]);
+      n = 4;
+    }
+    // An interior edge with sharpness carries it after its inputs (flag bit 2).
+    const sharpEdge = n === 4 && L.edgeSharp[e] !== 0;
+    if (sharpEdge) inputs.push(f32bits(L.edgeSharp[e]));
+    rules.push(CC_RULE_WORD.pack({ kind: RULE_EDGE, parent: 0, child: 0, sharp: sharpEdge, count: n, faces: 0 }));
+    rules.push(first);
+  }
+  // Face points.
+  for (let f = 0; f < nF; f++) {
+    const a = m.faceOffsets[f],
+      b = m.faceOffsets[f + 1];
+    rules.push(CC_RULE_WORD.pack({ kind: RULE_FACE, parent: 0, child: 0, sharp: 0, count: b - a, faces: 0 }));
+    rules.push(inputs.n);
+    for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
+  }
+  // Level L+1 topology.
+  const nHe = m.faceIndices.length;
+  const faceOffsets = new Int32Array(nHe + 1);
+  const faceIndices = new Int32Array(4 * nHe);
+  const hole = new Uint8Array(nHe);
+  for (let h = 0; h < nHe; h++) {
+    faceOffsets[h + 1] = 4 * (h + 1);
+    faceIndices[4 * h] = m.faceIndices[h];
+    faceIndices[4 * h + 1] = nV + m.heEdge[h];
+    faceIndices[4 * h + 2] = nV + nE + m.heFace[h];
+    faceIndices[4 * h + 3] = nV + m.heEdge[m.hePrev[h]];
+    hole[h] = L.hole[m.heFace[h]];
+  }
+  const nV1 = nV + nE + nF;
+  const he = refinedHalfEdges(m, nV1, faceOffsets, faceIndices);
+  const edgeSharp = new Float64Array(he.nEdges);
+  for (let e = 0; e < he.nEdges; e++) {
+    const a = he.edgeVerts[2 * e],
+      b = he.edgeVerts[2 * e + 1];
+    const lo = Math.min(a, b),
+      hi = Math.max(a, b);
+    if (lo < nV && hi >= nV && hi < nV + nE) edgeSharp[e] = dec(L.edgeSharp[hi - nV]);
+  }
+  const vertSharp = new Float64Array(nV1);
+  for (let v = 0; v < nV; v++) vertSharp[v] = dec(L.vertSharp[v]);
+  return makeLevel(he, edgeSharp, vertSharp, hole, base1);
+}
+
+/**
+ * Half-edges of a refined level without a hash map: child face h (parent half-edge h) is
+ * [V, E_h, F, E_prev(h)] and its 4 half-edges 4h..4h+3 pair with known neighbours: (V→E_h) with
+ * the last half-edge of the child of next(twin h); (E_h→F) with (F→E_h) of next(h)'s child;
+ * (F→E_p) with (E_p→F) of prev(h)'s child; (E_p→V) with the first of twin(prev h)'s child.
+ */
+function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array, faceIndices: Int32Array): HalfEdges {
+  const nHp = m.faceIndices.length;
+  const nHe = 4 * nHp;
+  const heFace = new Int32Array(nHe),
+    heNext = new Int32Array(nHe),
+    hePrev = new Int32Array(nHe),
+    heTwin = new Int32Array(nHe);
+  for (let h = 0; h < nHp; h++) {
+    const b = 4 * h;
+    for (let j = 0; j < 4; j++) {
+      heFace[b + j] = h;
+      heNext[b + j] = b + ((j + 1) & 3);
+      hePrev[b + j] = b + ((j + 3) & 3);
+    }
+    const t = m.heTwin[h],
+      tp = m.heTwin[m.hePrev[h]];
+    heTwin[b] = t >= 0 ? 4 * m.heNext[t] + 3 : -1;
+    heTwin[b + 1] = 4 * m.heNext[h] + 2;
+    heTwin[b + 2] = 4 * m.hePrev[h] + 1;
+    heTwin[b + 3] = tp >= 0 ? 4 * tp : -1;
+  }
+  const heEdge = new Int32Array(nHe);
+  let nEdges = 0;
+  for (let h = 0; h < nHe; h++) if (heTwin[h] < 0 || h < heTwin[h]) nEdges++;
+  const edgeVerts = new Int32Array(2 * nEdges),
+    edgeFaceCount = new Int32Array(nEdges),
+    edgeHe = new Int32Array(nEdges);
+  let e = 0;
+  for (let h = 0; h < nHe; h++) {
+    const t = heTwin[h];
+    if (t >= 0 && t < h) {
+      heEdge[h] = heEdge[t];
+      continue;
+    }
+    heEdge[h] = e;
+    edgeVerts[2 * e] = faceIndices[h];
+    edgeVerts[2 * e + 1] = faceIndices[heNext[h]];
+    edgeFaceCount[e] = t >= 0 ? 2 : 1;
+    edgeHe[e] = h;
+    e++;
+  }
+  const { vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges } = vertexAdjacency(nVerts, faceIndices, edgeVerts);
+  return {
+    nVerts,
+    nFaces: nHp,
+    nEdges,
+    faceOffsets,
+    faceIndices,
+    heFace,
+    heNext,
+    hePrev,
+    heTwin,
+    heEdge,
+    edgeVerts,
+    edgeFaceCount,
+    edgeHe,
+    vertHeOffsets,
+    vertHe,
+    vertEdgeOffsets,
+    vertEdges,
+  };
+}
+
+export function isRegular(L: Level, v: number): boolean {
+  if (L.regular[v] < 0) L.regular[v] = isRegularVertex(L.he, v, L.edgeSharp, L.vertSharp, !!L.boundary[v]) ? 1 : 0;
+  return L.regular[v] === 1;
+}
+
+export function isQuadHe(m: HalfEdges, h: number): boolean {
+  return m.faceOffsets[m.heFace[h] + 1] - m.faceOffsets[m.heFace[h]] === 4;
+}
+
+/**
+ * The uniform levels of a cage, refined on demand: level(l) refines the whole cage up to level l
+ * the first time a face or a fan needs it, so a cage gets only as many levels as its worst face
+ * (G in the header of src/gpu/cc/build.ts). Refining appends the new points' rules and inputs and
+ * the level's dispatch ranges, in the order the levels are made.
+ */
+export interface LevelStack {
+  levels: Level[];
+  rules: U32;
+  inputs: U32;
+  /** Global point index ranges for the level dispatches: per level [faceFirst, faceCount, veFirst, veCount]. */
+  levelRanges: [number, number, number, number][];
+  level: (l: number) => Level;
+}
+
+/** Level 0 (the cage) and the means to refine further; refuses levels past MAX_LEVEL with the cage's sharpest crease. */
+export function levelStack(topo: HalfEdges, sharp: Sharpness): LevelStack {
+  const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0)];
+  const rules = new U32(),
+    inputs = new U32();
+  const levelRanges: [number, number, number, number][] = [];
+  const maxSemiSharp = (): number => {
+    let m = 0;
+    for (const x of sharp.edge) if (x < INF) m = Math.max(m, x);
+    for (const x of sharp.vertex) if (x < INF) m = Math.max(m, x);
+    return m;
+  };
+  const level = (l: number): Level => {
+    if (l > MAX_LEVEL)
+      throw new Error(
+        `Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (semi-sharp creases decay one level per unit of ` +
+          `sharpness; this cage has sharpness up to ${+maxSemiSharp().toPrecision(3)}: not supported)`,
+      );
+    while (levels.length <= l) {
+      const L = levels[levels.length - 1];
+      const N = refineLevel(L, rules, inputs);
+      const nV = L.he.nVerts,
+        nE = L.he.nEdges,
+        nF = L.he.nFaces;
+      levelRanges.push([N.base + nV + nE, nF, N.base, nV + nE]);
+      levels.push(N);
+    }
+    return levels[l];
+  };
+  return { levels, rules, inputs, levelRanges, level };
+}
