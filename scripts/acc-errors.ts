@@ -11,10 +11,11 @@
  * patch build (src/gpu/tess/tessellator.ts encodePatchBuild): wall clock per build of 20 builds queued in
  * one submission, median of 5, after a warm-up. On SwiftShader only the ratio means anything.
  *
- * Cages: the notes' §5 test cages (cube and n-prisms after one CC step, on the notes' 9×9 dyadic
- * grid per face, to compare with the notes' numbers), the project's models, and the talk models
- * from ../shared/cages when present (read there, never copied). Cages a scheme refuses (n-gons,
- * holes) are listed with the reason. The normal jump is over smooth edges (creases may jump).
+ * Cages: the test cages of tests/gpu/acc/acc.test.ts (cube and n-prisms after one CC step, on a 9×9
+ * dyadic grid per face, to compare with the reference errors measured for this project there), the
+ * project's models, and the talk models from ../shared/cages when present (read there, never
+ * copied). Cages a scheme refuses (n-gons, holes) are listed with the reason. The normal jump is
+ * over smooth edges (creases may jump).
  */
 import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -86,7 +87,7 @@ async function accBuildMs(cage: Cage, scheme: (typeof ACC_SCHEMES)[number]): Pro
 }
 const fmtMs = (x: number) => (x < 1 ? x.toFixed(3) : x.toFixed(2));
 
-/** The notes' n-prism (unit circle, z = ±1, n-gon caps), as tests/subdiv-fixtures pentPrism. */
+/** The n-prism (unit circle, z = ±1, n-gon caps), as tests/subdiv-fixtures pentPrism. */
 function flatPrism(n: number): Cage {
   if (n === 5) return pentPrism();
   const p: number[] = [];

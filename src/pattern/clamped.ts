@@ -42,8 +42,8 @@
  *      has collapsed.
  *   4. Gap strip: what is left, between the inner chain u_{nb−1}, …, u_{k_0} (the bottom's tail,
  *      walked back from B), E_1, …, E_nl = C and the right edge B = O_0, O_1, …, O_nr = C, is a
- *      convex polygon (the turn at u_{k_0} is u_{k_0} − c ≥ 0; the others are shown in the notes
- *      of tests/pattern/clamped.test.ts), so any triangulation of it has no flip. It is cut to avoid
+ *      convex polygon (the turn at u_{k_0} is u_{k_0} − c ≥ 0; the others are shown in the header
+ *      comment of tests/pattern/clamped.test.ts), so any triangulation of it has no flip. It is cut to avoid
  *      CAPS: triangles whose three distinct vertices lie nearly on one line. In the domain they
  *      are harmless, but their vertices lie on a curve of the surface (an edge, the clamp line)
  *      and the flat triangle through them folds under it: the dark dotted lines of issue 13.

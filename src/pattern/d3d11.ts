@@ -4,8 +4,9 @@
  * reference class `CHWTessellator` of Microsoft's "D3D11 Fixed Function Tessellator Reference"
  * (checked by `npm run check:golden` against the golden data in shared/golden).
  *
- * This is an independent implementation written from the algorithm's description (notes
- * §2.1–2.8); the structure and names are ours.
+ * This is an independent implementation written from the algorithm as Microsoft's reference
+ * and the D3D11.3 functional specification (§11.7, the tessellator) describe it; the structure and
+ * names are ours.
  *
  * D3D11's conventions, kept as they are:
  * - Triangle domain: barycentric (u, v, w) with w = ONE − u − v. Edge factor 0 belongs to the
@@ -240,7 +241,8 @@ function processTri(p: D3D11Partitioning, factors: readonly [number, number, num
 }
 
 // ---------------------------------------------------------------------------------------------
-// Closed forms (notes §2.6), on the processed 16.16 values
+// Closed forms (fitted for this project to the reference's counts; checked against it by
+// tests/pattern/d3d11.test.ts), on the processed 16.16 values
 // ---------------------------------------------------------------------------------------------
 
 /** Segments for a processed factor: ⌈F⌉ (integer), 2⌈(F+1)/2⌉−1 (odd), 2⌈F/2⌉ (even). */
@@ -255,7 +257,7 @@ export function d3d11SegmentCount(partitioning: D3D11Partitioning, factor: numbe
   return e ? segmentsOf(e) : 0;
 }
 
-/** Vertex and triangle counts of `d3d11Triangle`, in closed form (notes §2.6). */
+/** Vertex and triangle counts of `d3d11Triangle`, in closed form. */
 export function d3d11TriCounts(
   partitioning: D3D11Partitioning,
   factors: [number, number, number],

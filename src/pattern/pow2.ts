@@ -220,7 +220,8 @@ export function pow2Pattern(domain: PatchDomain, L: number): Pow2Pattern {
 /**
  * Snap edge parameter t ∈ [0, P] (measured from the patch's corner k) of a pattern at level P
  * onto the coarse grid of an edge at level Le ≤ P, rounding down in the canonical direction
- * (notes §6.4 snapCanon). Monotone and onto {0, R, 2R, … P} with R = P / Le; 0 and P are fixed.
+ * (the T-junction snap of Dyken, Reimers, Seland 2009, made canonical so both patches of an
+ * edge agree). Monotone and onto {0, R, 2R, … P} with R = P / Le; 0 and P are fixed.
  */
 export function snapEdgeParam(t: number, P: number, Le: number, canonical: boolean): number {
   const R = P / Le;
@@ -298,7 +299,8 @@ export interface PatternEntry {
 }
 
 /**
- * Every pattern of both domains in one vertex array and one index array (notes §6.1), in the
+ * Every pattern of both domains in one vertex array and one index array (the refinement
+ * patterns of Boubekeur & Schlick 2005, as NVIDIA's 2009 "Instanced Tessellation" sample), in the
  * order quad 1, 2, … 64, then triangle 1, 2, … 64 (entry index = domain·7 + log2 L).
  *   ij       one u32 per vertex: i | j << 16 (the vertex shader reads it as vertex_index, which
  *            includes the draw's baseVertex)

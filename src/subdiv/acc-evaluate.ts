@@ -85,7 +85,7 @@ export function evalTangentPatches(q: V3[], u: number, v: number): { Tu: V3; Tv:
   return { Tu, Tv };
 }
 
-/** Blended 16-point Bézier of a GREGORY_QUAD (20 points) at (u, v) (notes §3.1). */
+/** Blended 16-point Bézier of a GREGORY_QUAD (20 points) at (u, v) (Loop, Schaefer, Ni, Castaño 2009). */
 export function gregoryQuadBezier(q: V3[], u: number, v: number): V3[] {
   const G = (k: number, i: number): V3 => q[5 * k + i]; // i: 0 P, 1 E⁺, 2 E⁻, 3 F⁺, 4 F⁻
   const blend = (F1: V3, w1: number, F2: V3, w2: number): V3 => (w1 + w2 > 0 ? mul(add(mul(F1, w1), mul(F2, w2)), 1 / (w1 + w2)) : F1);
@@ -140,7 +140,8 @@ export function evalQuartic(Q: V3[], a: number, b: number, c: number): { P: V3; 
   return { P: comb([a, Ra], [b, Rb], [c, Rc]), Da: mul(Ra, 4), Db: mul(Rb, 4), Dc: mul(Rc, 4) };
 }
 
-/** Quartic coefficients of a GREGORY_TRI (15 points) at barycentrics λ (notes §3.2). */
+/** Quartic coefficients of a GREGORY_TRI (15 points) at barycentrics λ (Loop, Schaefer, Ni, Castaño 2009; our G1
+ * blend, see src/subdiv/acc.ts). */
 export function gregoryTriQuartic(q: V3[], l: [number, number, number]): V3[] {
   const G = (k: number, i: number): V3 => q[5 * k + i];
   const Q: V3[] = new Array(15);
@@ -173,7 +174,7 @@ export function gregoryTriQuartic(q: V3[], l: [number, number, number]): V3[] {
   return Q;
 }
 
-/** Quartic coefficients of sector k of a Pm patch (m = 4 c-patch, m = 3 triangle): notes §4.2–4.3. */
+/** Quartic coefficients of sector k of a Pm patch (m = 4 c-patch, m = 3 triangle): Myles, Ni, Peters 2008. */
 export function pmSectorQuartic(q: V3[], m: number, k: number): V3[] {
   const S = (j: number, i: number): V3 => q[6 * (((j % m) + m) % m) + i]; // 0 c, 1 t⁺, 2 t⁻(next corner), 3 b211, 4 b121, 5 b112
   const Q: V3[] = new Array(15);
@@ -217,7 +218,7 @@ export function pmSectorQuartic(q: V3[], m: number, k: number): V3[] {
 
 /**
  * Sector of a Pm quad at (u, v), its local (s, t, w) and their derivatives with respect to u and v
- * (notes §4.2 table), so the normal is ∂P/∂u × ∂P/∂v in every sector.
+ * (the c-patch of Myles, Ni, Peters 2008), so the normal is ∂P/∂u × ∂P/∂v in every sector.
  */
 export function pmQuadSector(u: number, v: number): { k: number; stw: V3; du: V3; dv: V3 } {
   if (v <= u) {
@@ -228,7 +229,7 @@ export function pmQuadSector(u: number, v: number): { k: number; stw: V3; du: V3
   return { k: 3, stw: [v - u, 1 - u - v, 2 * u], du: [-1, -1, 2], dv: [1, -1, 0] };
 }
 
-/** Sector of a Pm triangle at (u, v) = (λ1, λ2) and derivatives of (s, t, w) (notes §4.3 table). */
+/** Sector of a Pm triangle at (u, v) = (λ1, λ2) and derivatives of (s, t, w) (Myles, Ni, Peters 2008). */
 export function pmTriSector(u: number, v: number): { k: number; stw: V3; du: V3; dv: V3 } {
   const l0 = 1 - u - v,
     l1 = u,

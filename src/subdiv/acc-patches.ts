@@ -45,7 +45,8 @@ export const normalize3 = (a: V3): V3 => {
   return l > 0 ? mul(a, 1 / l) : [0, 0, 0];
 };
 
-/** Everything a patch needs from one of its corners (notes §0, §2.1–2.2, §3.1, §4.1). */
+/** Everything a patch needs from one of its corners (Loop & Schaefer 2008; Loop, Schaefer, Ni,
+ * Castaño 2009; Myles, Ni, Peters 2008). */
 export interface CornerInfo {
   n: number;
   k: ValenceConstants;
@@ -262,7 +263,7 @@ function geometryPatch(C: CornerInfo[]): V3[] {
 }
 
 /**
- * Tangent-patch edge rows (notes §2.3): the cross-derivative coefficients x1, x2 pointing into the
+ * Tangent-patch edge rows (Loop & Schaefer 2008): the cross-derivative coefficients x1, x2 pointing into the
  * face along the edge from corner A to corner B (a0, a2 the along-edge mask tangents, h1, h2 the
  * edge's inner points, g1, g2 the interior points next to them).
  */
@@ -277,7 +278,7 @@ function bezierPatch(C: CornerInfo[]): V3[] {
   const b = geometryPatch(C);
   const B = (i: number, j: number): V3 => b[i + 4 * j];
   const c = C.map((x) => x.k.c);
-  // ∂u, ∂v at the corners (notes §2.2 table).
+  // ∂u, ∂v at the corners (Loop & Schaefer 2008).
   const du = [C[0].t0, mul(C[1].t1, -1), mul(C[2].t0, -1), C[3].t1];
   const dv = [C[0].t1, C[1].t0, mul(C[2].t1, -1), mul(C[3].t0, -1)];
   const U: V3[] = new Array(8),
@@ -309,7 +310,7 @@ function bezierPatch(C: CornerInfo[]): V3[] {
   return [...b, ...U, ...V];
 }
 
-/** Gregory quad (m = 4, denominators 3) or triangle (m = 3, denominators 4): notes §3.1–3.2. */
+/** Gregory quad (m = 4, denominators 3) or triangle (m = 3, denominators 4): Loop, Schaefer, Ni, Castaño 2009. */
 function gregoryPatch(C: CornerInfo[]): V3[] {
   const m = C.length,
     den = m === 4 ? 3 : 4;
@@ -335,8 +336,8 @@ function gregoryPatch(C: CornerInfo[]): V3[] {
 }
 
 /**
- * Pm patch, quad c-patch (m = 4) or triangle (m = 3), notes §4.1, §4.3. `loopSchaefer`: corner and
- * tangent points are the Loop–Schaefer limit and edge points (Bezier-ACC triangles).
+ * Pm patch, quad c-patch (m = 4) or triangle (m = 3): Myles, Ni, Peters 2008, as nvmesh builds it.
+ * `loopSchaefer`: corner and tangent points are the Loop–Schaefer limit and edge points (Bezier-ACC triangles).
  */
 function pmPatch(C: CornerInfo[], face: V3[], loopSchaefer: boolean): V3[] {
   const m = C.length,

@@ -1,17 +1,17 @@
 /**
  * Approximate Catmull-Clark (ACC) patches: the CPU yardstick (f64) of the three schemes of NVIDIA's
- * 2009 instanced-tessellation sample, restated in ../shared/notes/acc-and-instanced.md §0–5:
+ * 2009 "Instanced Tessellation" sample, after the papers below:
  *
  *   bezier-acc   Loop & Schaefer 2008: 16-point bicubic geometry patch + two tangent patches
  *                (T_u quadratic×cubic, T_v cubic×quadratic) whose cross product is the shading normal.
  *   gregory-acc  Loop, Schaefer, Ni & Castaño 2009: 20-point Gregory quad, 15-point Gregory triangle
- *                (quartic, our G1 blend rule of notes §3.2, not the sample's inconsistent one).
+ *                (quartic, our G1 blend rule (acc-evaluate.ts), not the sample's inconsistent one).
  *   pm-acc       24-point c-patch (4 quartic sectors) for quads, 19-point Pm triangle (3 sectors + centre).
  *
  * In every scheme a regular quad (4 interior valence-4 corners whose rings are all quads) is the
- * bicubic B-spline converted to Bézier form, exactly (notes §1). The other constructions are the
- * ones of the notes; where the notes leave a choice we take:
- *   - Gregory edge length s_n: nvmesh's table (it produced the sample's data; notes §3.1).
+ * bicubic B-spline converted to Bézier form, exactly. The other constructions are the
+ * papers'; where they leave a choice we take:
+ *   - Gregory edge length s_n: nvmesh's table (Castaño's nvmesh produced the sample's data).
  *   - λ_n, σ_n, cos tables: the closed forms in f64 (not the Pm code's rounded σ table), any valence.
  *   - Diagonal D_i of a ring face: quad = opposite vertex; triangle = centroid (Bezier, Gregory:
  *     the exact CC limit) or edge midpoint (Pm, as nvmesh; its corners next to triangles miss the limit).
@@ -20,7 +20,7 @@
  *     points M_j as tangent points (kind PM_TRI_LS); on triangle–triangle edges the Pm tangent points
  *     (of the midpoint rule, which the Pm twist terms need: an all-triangle cage is G1).
  *     The sample's plain Pm triangle has a different boundary cubic from the Bezier quad next to it
- *     and cracks (notes §2.5); this one is watertight. Its normal is the Pm triangle's own: across
+ *     and cracks; this one is watertight. Its normal is the Pm triangle's own: across
  *     quad–triangle edges, and triangle–triangle edges ending at a vertex that also has quads (the
  *     M_j are not coplanar with the Pm tangent points), the normal is not continuous (creature:
  *     up to ≈15°; with M_j on every edge it was 34°).
@@ -70,8 +70,8 @@
  *   points    control points (xyz; f64×3 here, vec4<f32> on the GPU with w unused), per kind:
  *     REGULAR     16  b_ij at i + 4j (i along u, j along v; corners c0..c3 at (0,0),(3,0),(3,3),(0,3))
  *     BEZIER      32  16 as REGULAR, then U_{a,c} (a = 0, 2; c = 0..3) at 16 + 2a + c, then
- *                     V_{c,a} (a = 0, 2; c = 0..3) at 24 + 2a + c (the sample's 32 float3, §2.4). The middle
- *                     rows U_{1,c} = 3(b_{2c} − b_{1c}), V_{c,1} = 3(b_{c2} − b_{c1}) are recomputed (§2.4).
+ *                     V_{c,a} (a = 0, 2; c = 0..3) at 24 + 2a + c (the sample's 32 float3). The middle
+ *                     rows U_{1,c} = 3(b_{2c} − b_{1c}), V_{c,1} = 3(b_{c2} − b_{c1}) are recomputed (as the sample does).
  *     GREGORY_QUAD 20 per corner k: P_k, E_k⁺, E_k⁻, F_k⁺, F_k⁻ at 5k + 0..4 (⁺ toward corner k+1)
  *     GREGORY_TRI 15  the same with 3 corners
  *     PM_QUAD     24  per sector k (corners k, k+1, centre): c_k, t_k⁺, t_{k+1}⁻, b211, b121, b112 at 6k + 0..5
@@ -89,7 +89,7 @@
  *     sectors   1 u32 per patch corner (4 per patch): type | k << 2 | a << 16, type SECTOR_SMOOTH
  *               (the whole cyclic ring), SECTOR_CREASE or SECTOR_CORNER: the corner's sector is ring
  *               edges a .. a+k (mod n) and ring faces a .. a+k−1; see "Boundaries and creases".
- *     Ring convention (notes §0, OpenSubdiv's): face i contains the directed edges v→e_i and
+ *     Ring convention (OpenSubdiv's): face i contains the directed edges v→e_i and
  *     e_{i+1}→v. Seen from a patch corner with rotation r, local e_j = e_{(r+j) mod n}: local e_0 is
  *     the face's next corner, e_1 its previous one, local face 0 the patch itself.
  *
@@ -144,10 +144,10 @@ export class AccError extends Error {
 }
 
 // ------------------------------------------------------------------------------------------------
-// Constants (notes §0). Shared with the GPU: the build pass reads them from a table written in f64
+// Constants. Shared with the GPU: the build pass reads them from a table written in f64
 // and rounded to f32 once (WGSL's cos is as coarse as 2^-11 on some GPUs).
 
-/** Gregory edge-point length s_n of nvmesh (notes §3.1), n = 3..12; 0.831134 for n ≥ 13. */
+/** Gregory edge-point length s_n of nvmesh (castano/nvidia-mesh-tools), n = 3..12; 0.831134 for n ≥ 13. */
 const S_TABLE = [0, 0, 0, 0.667791, 1, 1.11268, 1.1284, 1.10289, 1.06062, 1.01262, 0.963949, 0.916926, 0.872541];
 
 export interface ValenceConstants {
@@ -289,7 +289,7 @@ export interface AccTopology {
 export interface AccOptions {
   /**
    * Build regular quads with the scheme's own quad construction instead of the B-spline (tests: the
-   * schemes' regular exactness, and the guard that the Pm c-patch is NOT exact there, notes §8.3).
+   * schemes' regular exactness, and the guard that the Pm c-patch is NOT exact there).
    */
   noRegular?: boolean;
   /**

@@ -10,10 +10,10 @@
 //
 // Row convention: b0, b1, b2, b3 with b1 ON the crease at u = 0 and the row running away
 // from it (b0 is the point across the crease, b2/b3 inside the patch). The patch layout is
-// §3.1's: cp[4r + c], row r ~ v, column c ~ u, so the crease is grid column 1.
+// row-major: cp[4r + c], row r ~ v, column c ~ u, so the crease is grid column 1.
 //
 // Everything is written as WEIGHTS on b0..b3 (value and d/du), never as the 4×4 matrix
-// M = A⁻¹·diag(1, 2^k, 4^k, 8^k)·A·L^k, whose entries grow like 8^k (notes §6.7 item 4):
+// M = A⁻¹·diag(1, 2^k, 4^k, 8^k)·A·L^k, whose entries grow like 8^k:
 // each weight below is bounded by 2 in magnitude, including the d/du weights (the 1/r of the
 // local parameter cancels the r in front of every term that is not b1, and b1's d/du weight
 // is taken as minus the sum of the others, which is exact because Σ B'(t) = 0). The same
@@ -35,7 +35,7 @@ export function creaseWeights(): CreaseWeights {
 const Bt = new Float64Array(4),
   Dt = new Float64Array(4);
 
-/** C(phantom, u) with phantom = (2b1 − b2, b1, b2, b3): the infinitely sharp row (notes §3.3). */
+/** C(phantom, u) with phantom = (2b1 − b2, b1, b2, b3): the infinitely sharp row (OpenSubdiv's phantom point). */
 function phantomWeights(u: number, w: Float64Array, d: Float64Array): void {
   bsplineBasis(u, Bt, Dt);
   w[0] = 0;
@@ -74,7 +74,7 @@ const Pw = new Float64Array(4),
   Pd = new Float64Array(4);
 
 /**
- * Weights of one row across a crease of sharpness `sigma` at u ∈ [0,1] (notes §3.4).
+ * Weights of one row across a crease of sharpness `sigma` at u ∈ [0,1] (Nießner, Loop, Greiner 2012).
  * OpenSubdiv semantics: sigma is float32 (read through Math.fround); ≤ 0 (or NaN) is smooth,
  * ≥ 10 infinitely sharp; σ = k + f with k = ⌊σ⌋ and f exact.
  *   σ ≥ 10 : phantom(u)
@@ -147,10 +147,10 @@ export interface CreasePatchPoint {
 
 /**
  * A 4×4 bicubic B-spline patch (cp: 16 xyz points, cp[3(4r + c) + xyz], row r ~ v,
- * column c ~ u, corner c0 at grid (1,1), notes §3.1) with a semi-sharp crease of sharpness
+ * column c ~ u, corner c0 at grid (1,1)) with a semi-sharp crease of sharpness
  * `sigma` along its u = 0 side (grid column 1). Tensor form: the crease weights in u, the
  * plain B-spline in v, evaluated separably as P(u,v) = Σ_c w_c(u)·(Σ_r B_r(v)·cp[r][c]).
- * Infinitely sharp (σ ≥ 10) gives the phantom column 0 = 2·col1 − col2 of §3.3.
+ * Infinitely sharp (σ ≥ 10) gives the phantom column 0 = 2·col1 − col2 (OpenSubdiv's phantom points).
  */
 export function evalCreasePatch(cp: ArrayLike<number>, sigma: number, u: number, v: number): CreasePatchPoint {
   if (cp.length !== 48) throw new RangeError(`a patch is 16 xyz points: got ${cp.length} numbers`);

@@ -138,13 +138,13 @@ function outerEdges(p: D3D11Partitioning, factors: Tri3, m: TriPattern): number[
 // ---------------------------------------------------------------------------------------------
 
 describe('d3d11 tables', () => {
-  it('derives the 33-entry ruler table of the notes (§2.4)', () => {
+  it('derives the 33-entry ruler table of the reference tessellator', () => {
     expect(RULER_BIRTH_ORDER).toEqual([
       0, 32, 16, 8, 17, 4, 18, 9, 19, 2, 20, 10, 21, 5, 22, 11, 23, 1, 24, 12, 25, 6, 26, 13, 27, 3, 28, 14, 29, 7, 30, 15, 31,
     ]);
   });
 
-  it('counts segments per notes §2.2', () => {
+  it('counts segments as the reference tessellator does', () => {
     const cases: [D3D11Partitioning, number, number][] = [
       ['integer', 1, 1],
       ['integer', 1.01, 2],
@@ -177,7 +177,7 @@ describe('d3d11 tables', () => {
 // ---------------------------------------------------------------------------------------------
 
 describe('d3d11Line', () => {
-  it('reproduces the oracle outputs of notes §2.3 (4 decimals)', () => {
+  it('reproduces the reference tessellator outputs (4 decimals)', () => {
     const cases: [D3D11Partitioning, number, number[]][] = [
       ['fractional_even', 4, [0, 0.25, 0.5, 0.75, 1]],
       ['fractional_even', 4.5, [0, 0.2292, 0.2708, 0.5, 0.7292, 0.7708, 1]],
@@ -361,8 +361,8 @@ describe('d3d11Line', () => {
 // Triangle domain
 // ---------------------------------------------------------------------------------------------
 
-// V / T for integer (= pow2 in hardware), fractional_odd, fractional_even: notes §2.6 and the
-// golden README's spec, extra and edge tables.
+// V / T for integer (= pow2 in hardware), fractional_odd, fractional_even: the closed forms of
+// src/pattern/d3d11.ts and the golden README's spec, extra and edge tables.
 const COUNT_TABLE: [Tri3, number, [number, number] | null, [number, number] | null, [number, number]][] = [
   [[1, 1, 1], 1, [3, 1], [3, 1], [7, 6]],
   [[2, 2, 2], 2, [7, 6], [12, 13], [7, 6]],
@@ -412,7 +412,7 @@ const COUNT_TABLE: [Tri3, number, [number, number] | null, [number, number] | nu
 ];
 
 describe('d3d11Triangle', () => {
-  it('has the reference vertex / triangle counts (notes §2.5–2.6, golden README)', () => {
+  it('has the reference vertex / triangle counts (D3D11 reference tessellator, golden README)', () => {
     for (const [factors, inside, integer, odd, even] of COUNT_TABLE) {
       const want: [D3D11Partitioning, [number, number] | null][] = [
         ['integer', integer],

@@ -46,7 +46,10 @@ function edgeBits(p: Pow2Pattern): Uint8Array {
   return m;
 }
 
-/** Run every §8.10 check on one pattern under one assignment of edge levels and directions. */
+/**
+ * Run every snap check (edge sets, canonical agreement, orientation, degenerates) on one pattern under
+ * one assignment of edge levels and directions.
+ */
 function checkSnap(p: Pow2Pattern, levels: number[], canonical: boolean[]): void {
   const P = p.level;
   const xy = snapped(p, levels, canonical);
@@ -93,7 +96,7 @@ function checkSnap(p: Pow2Pattern, levels: number[], canonical: boolean[]): void
   }
 }
 
-describe('power-of-two patterns (§8.11)', () => {
+describe('power-of-two patterns', () => {
   for (const domain of DOMAINS) {
     it(`${domain}: counts, indices in range, counter-clockwise, covering the domain`, () => {
       for (const L of POW2_LEVELS) {
@@ -140,7 +143,7 @@ describe('power-of-two patterns (§8.11)', () => {
   });
 });
 
-describe('snap function (§8.10)', () => {
+describe('snap function', () => {
   it('every (P, Le): the snapped edge is {j/Le}, monotone, ends fixed', () => {
     for (const P of POW2_LEVELS) {
       for (const Le of POW2_LEVELS.filter((l) => l <= P)) {

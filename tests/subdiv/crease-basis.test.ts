@@ -1,8 +1,8 @@
-// The single semi-sharp crease in closed form (src/subdiv/crease-basis.ts, notes §3.4)
+// The single semi-sharp crease in closed form (src/subdiv/crease-basis.ts; Nießner, Loop, Greiner 2012)
 // against refinement: (1) the exact CPU reference (src/subdiv, local feature-adaptive
 // refinement with OpenSubdiv's crease rules) on jittered tori with a straight crease loop
 // of constant sharpness through valence-4 vertices; (2) an independent 1D refinement of one
-// row; plus closed values (§7.2) and the affine-in-f property.
+// row; plus closed values (reference values measured for this project) and the affine-in-f property.
 import { describe, expect, it } from 'vitest';
 import { makeCage } from '../../src/mesh/index.ts';
 import { Surface, type SurfacePoint } from '../../src/subdiv/index.ts';
@@ -224,7 +224,7 @@ describe('crease row weights', () => {
     }
   });
 
-  it('on the crease, integer σ = k gives b1 + 2^-k (b0 − 2 b1 + b2)/6 (§7.2: z = 1 − 1/(3·2^k) for the row (−1, 1, 1, 1))', () => {
+  it('on the crease, integer σ = k gives b1 + 2^-k (b0 − 2 b1 + b2)/6 (z = 1 − 1/(3·2^k) for the row (−1, 1, 1, 1))', () => {
     for (let k = 0; k <= 9; k++) {
       const w = creaseRowWeights(k, 0);
       const r = 2 ** -k;
@@ -233,7 +233,7 @@ describe('crease row weights', () => {
     }
     // σ = 0 is the uniform B-spline: (b0 + 4 b1 + b2)/6 on the crease, (b1 + 4 b2 + b3)/6 at u = 1.
     expect(maxDiff(creaseRowWeights(0, 1).value, [0, 1 / 6, 2 / 3, 1 / 6])).toBeLessThanOrEqual(2e-16);
-    // σ ≥ 10: interpolates b1 with tangent b2 − b1 (the phantom row 2 b1 − b2, §3.3).
+    // σ ≥ 10: interpolates b1 with tangent b2 − b1 (the phantom row 2 b1 − b2).
     expect(Array.from(creaseRowWeights(10, 0).value)).toEqual([0, 1, 0, 0]);
     expect(Array.from(creaseRowWeights(10, 0).du)).toEqual([0, -1, 1, 0]);
     expect(Array.from(creaseRowWeights(1e6, 0.5).value)).toEqual(Array.from(creaseRowWeights(10, 0.5).value));
@@ -251,7 +251,7 @@ describe('crease row weights', () => {
     expect(() => evalCreaseRow(1, 0.5, [1, 2, 3])).toThrow(RangeError);
   });
 
-  it('is affine in the fractional part: W(k + f) = (1 − f) W(k) + f W(k + 1) (§7.2), for k + 1 < 10', () => {
+  it('is affine in the fractional part: W(k + f) = (1 − f) W(k) + f W(k + 1), for k + 1 < 10', () => {
     // Not across 10: σ = 10 is infinitely sharp, not "10 sharp levels", so 9 < σ < 10 is no blend of 9 and 10.
     for (const sigma of [0.5, 2.3, 3.7, 8.5]) {
       const s = Math.fround(sigma),

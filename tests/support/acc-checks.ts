@@ -118,7 +118,7 @@ export function valence2Cube(base: Cage): Cage {
   return makeCage(P, faces);
 }
 
-/** Regular octahedron: all triangles, valence 4 (notes §8.5). */
+/** Regular octahedron: all triangles, valence 4. */
 export function octahedron(): Cage {
   return makeCage(
     [1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1],

@@ -237,7 +237,7 @@ fn bAt(k: u32, which: u32) -> vec3<f32> {
   return C[k].v + C[k].f0;
 }
 
-// Tangent-patch cross row along an edge A → B (notes §2.3).
+// Tangent-patch cross row along an edge A → B (Loop & Schaefer 2008).
 fn crossRow(cA: f32, cB: f32, a0: vec3<f32>, a2: vec3<f32>, h1: vec3<f32>, h2: vec3<f32>, g1: vec3<f32>, g2: vec3<f32>) -> array<vec3<f32>, 2> {
   let a1 = 3.0 * (h2 - h1);
   return array<vec3<f32>, 2>(
@@ -247,7 +247,7 @@ fn crossRow(cA: f32, cB: f32, a0: vec3<f32>, a2: vec3<f32>, h1: vec3<f32>, h2: v
 
 fn bezierPatch() {
   geometryPatch();
-  // Corner derivative table (notes §2.2): U_{0,0}, U_{2,0}, U_{2,3}, U_{0,3}; V_{0,0}, V_{3,0}, V_{3,2}, V_{0,2}.
+  // Corner derivative table (Loop & Schaefer 2008): U_{0,0}, U_{2,0}, U_{2,3}, U_{0,3}; V_{0,0}, V_{3,0}, V_{3,2}, V_{0,2}.
   put(16u, C[0].t0); put(20u, -C[1].t1); put(23u, -C[2].t0); put(19u, C[3].t1);
   put(24u, C[0].t1); put(27u, C[1].t0); put(31u, -C[2].t1); put(28u, -C[3].t0);
   // b01 = corner 0 toward previous, b02 = corner 3 toward next, b11 = f(0), b12 = f(3), …
@@ -285,7 +285,7 @@ fn gregoryPatch(m: u32) {
   }
 }
 
-// Pm patch (notes §4.1, §4.3): quad c-patch (m = 4) or triangle (m = 3); ls: Loop–Schaefer boundary.
+// Pm patch (Myles, Ni, Peters 2008): quad c-patch (m = 4) or triangle (m = 3); ls: Loop–Schaefer boundary.
 fn pmPatch(m: u32, ls: bool) {
   let mu = select(1.5, 1.0, m == 4u);
   var cc: array<vec3<f32>, 4>;

@@ -34,7 +34,7 @@ fn vertexError(i: u32) -> vec2<f32> {
   if (b == BARY_CORNER2) { w1 = 0u; w2 = ONE; }
   let m = aux[heatPass.offTriMap + t];
   let accPatch = accTriWord_face(m);
-  // Regular patches are the bicubic B-spline itself in every scheme (notes §1; f64 error
+  // Regular patches are the bicubic B-spline itself in every scheme (f64 error
   // ≤ 1e-15 in tests/gpu/acc/acc.test.ts): what the two f32 evaluators would differ by there is their
   // own rounding, not the scheme's error, so they show the sample's zero.
   if (accPatchWord(2u * accPatch) == KIND_REGULAR) { return vec2<f32>(0.0); }

@@ -15,7 +15,7 @@
 //   BEZIER        bicubic geometry patch; normal = T_u × T_v of the two tangent patches
 //   GREGORY_QUAD  the 16-point Bézier with the rational interior blends; normal of that frozen
 //                 Bézier (the blend weights' derivatives ignored, as the sample and OpenSubdiv)
-//   GREGORY_TRI   quartic triangle with the three blended interior points (our G1 rule, notes §3.2)
+//   GREGORY_TRI   quartic triangle with the three blended interior points (our G1 rule, src/subdiv/acc-evaluate.ts)
 //   PM_QUAD       c-patch: one of 4 quartic sectors; PM_TRI / PM_TRI_LS: one of 3 sectors
 // Quartics are evaluated by de Casteljau down to three points R; ∂P/∂(s,t,w) = 4R, and the chain
 // rule through the sector's (s,t,w)(u,v) gives ∂u, ∂v, so the normal is ∂u × ∂v in every sector.
@@ -133,7 +133,7 @@ fn accGregoryTri(o: u32, l: vec3<f32>) {
   }
 }
 
-// Sector k of a Pm patch with m sectors into accQ (notes §4.2–4.3).
+// Sector k of a Pm patch with m sectors into accQ (Myles, Ni, Peters 2008).
 fn accPmSector(o: u32, m: u32, k: u32) {
   let kp = (k + m - 1u) % m;
   let kn = (k + 1u) % m;
@@ -199,7 +199,7 @@ fn evalAccPatch(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
     var tv = r[2];
     if (kind == 1u) {
       // Tangent patches: T_u quadratic in u × cubic in v, T_v cubic in u × quadratic in v; middle
-      // rows from the geometry patch (notes §2.3–2.4).
+      // rows from the geometry patch (Loop & Schaefer 2008).
       let b2u = accBern2(u);
       let b2v = accBern2(v);
       let b3u = accBern3(u);

@@ -6,7 +6,7 @@
 //            edge and vertex points, which read the new face points), its rule from its word
 //   slices   the EV slice kernel: one thread per sector, several fans per workgroup, the fan's
 //            2-ring ping-ponged in workgroup memory, one Catmull-Clark step per iteration
-//   limits   one thread per fan: limit position and tangents of its centre (notes §2)
+//   limits   one thread per fan: limit position and tangents of its centre (Halstead, Kass, DeRose 1993)
 //   vlimits  one thread per prepared vertex: its fan's limit where the factor rule reads it
 
 // Declared by the generated prelude (src/gpu/contract/contract.ts ccBuildPrelude): Params, the constants
@@ -26,7 +26,7 @@ fn setPt(p: u32, v: vec3<f32>) {
 }
 fn inp(i: u32) -> vec3<f32> { return pt(staticBuf[params.ccInputs + i]); }
 
-// Vertex masks (notes §1.3) over the inputs [v, e_0..e_{m-1}, F_0..F_{k-1}].
+// Vertex masks (OpenSubdiv's Catmull-Clark vertex rules) over the inputs [v, e_0..e_{m-1}, F_0..F_{k-1}].
 fn vertexMask(rule: u32, first: u32, m: u32, k: u32, ia: u32, ib: u32) -> vec3<f32> {
   let v = inp(first);
   if (rule == 2u) { return v; }
@@ -87,7 +87,7 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 }
 
 // ---------------------------------------------------------------------------------------------
-// The EV slice kernel (notes §6.2). Sector i of a fan owns the points (a, b), a ∈ {1,2},
+// The EV slice kernel (src/gpu/cc/build.ts, "2. Fans"). Sector i of a fan owns the points (a, b), a ∈ {1,2},
 // b ∈ {0,1,2} of its frame (a along axis i, b along axis i+1); (0, b) belongs to sector i+1,
 // (a, −1) to sector i−1, (0, 0) is the centre. Per step: face points → barrier → edge and
 // vertex points (they read only old points and the new face points, so one stage) and the
@@ -233,7 +233,8 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 }
 
 // ---------------------------------------------------------------------------------------------
-// Limit position and tangents of each fan's centre (notes §2.1–2.3) from its last level: the
+// Limit position and tangents of each fan's centre (Halstead, Kass, DeRose 1993; OpenSubdiv's crease and corner
+// masks) from its last level: the
 // start-level ring when the fan has no slices, else its step-D ring and centre (offsets from
 // the anchor; step D's ring is always stored).
 // Written at the fan's limit base: P (absolute), T1, T2 (normal = T1 × T2).

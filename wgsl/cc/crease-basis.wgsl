@@ -10,9 +10,9 @@
 //     b2, b3 inside the patch. value(u) = Σ value[i]·b_i, d/du = Σ du[i]·b_i.
 //     sigma: OpenSubdiv sharpness as stored (f32): ≤ 0 smooth (plain B-spline),
 //     ≥ 10 infinitely sharp (phantom b0 = 2 b1 − b2). u ∈ [0,1].
-//   fn creaseBSplineWeights(t: f32) -> CreaseWeights      (the plain cubic B-spline, §3.1)
+//   fn creaseBSplineWeights(t: f32) -> CreaseWeights      (the plain cubic B-spline)
 //
-// Patch use (layout §3.1: cp[4r + c], row r ~ v, column c ~ u, crease on column 1 after the
+// Patch use (layout: cp[4r + c], row r ~ v, column c ~ u, crease on column 1 after the
 // caller's rotation). The crease changes the u basis only, so the separable evaluation stays:
 //   let wu = creaseRowWeights(sigma, u);
 //   let wv = creaseBSplineWeights(v);
@@ -22,7 +22,7 @@
 //   (sub-patch derivative scaling by 2^L as for any patch).
 //
 // Why weights and not the 4×4 matrix: the matrix M = A⁻¹·diag(1, 2^k, 4^k, 8^k)·A·L^k has
-// entries growing like 8^k (≈ 1933 at k = 5; notes §6.7 item 4). Every weight here is
+// entries growing like 8^k (≈ 1933 at k = 5). Every weight here is
 // bounded by 2 in magnitude, value and d/du alike, and 2^-k and u·2^k are exact (ldexp).
 // Agreement with the f64 twin: ≤ 1e-6 absolute per weight (tests/gpu/cc/crease-basis.gpu.test.ts).
 
@@ -42,7 +42,7 @@ fn creaseBSplineWeights(t: f32) -> CreaseWeights {
   return CreaseWeights(b, d);
 }
 
-// C(phantom row, u), phantom = (2 b1 − b2, b1, b2, b3): the infinitely sharp row (notes §3.3).
+// C(phantom row, u), phantom = (2 b1 − b2, b1, b2, b3): the infinitely sharp row (OpenSubdiv's phantom point).
 fn creasePhantomWeights(u: f32) -> CreaseWeights {
   let B = creaseBSplineWeights(u);
   return CreaseWeights(

@@ -3,13 +3,13 @@
 // n-gons: the kite sub-face k of the regular n-gon and its (s,t), as src/gpu/tess/face-params.ts),
 // then to its region (src/gpu/cc/build.ts: region (i, j) of the face's 2^d × 2^d split):
 //   PATCH  a regular bicubic B-spline patch over 16 refined points, phantom rows/columns for
-//          boundaries and infinitely sharp edges (notes §3.3), position and analytic normal;
+//          boundaries and infinitely sharp edges (OpenSubdiv's phantom points), position and analytic normal;
 //          or a single-crease patch: one semi-sharp crease on its x = 0 side, the closed-form
-//          change of basis across it (wgsl/cc/crease-basis.wgsl, notes §3.4);
+//          change of basis across it (wgsl/cc/crease-basis.wgsl; Nießner, Loop, Greiner 2012);
 //   SECTOR a sector of an extraordinary vertex's fan: after L = ceil(log2(1/max(a,b))) steps
 //          the point lies on one of the regular sub-patches A, B, C of the fan's slice at step
-//          L (notes §6.2); inside the last square (2^-7 of the face) a radial blend from the
-//          vertex's limit to the exact ring round it (notes §6.3).
+//          L (src/gpu/cc/build.ts, "2. Fans"); inside the last square (2^-7 of the face) a radial blend from the
+//          vertex's limit to the exact ring round it.
 // Optionally (params.ccFlat) blends from the flat triangle of the corners' limit positions to
 // the surface as the tess factor rises from 1 to 4.
 
@@ -30,7 +30,7 @@ fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
 
 // Bicubic B-spline patch of 16 points (row-major, row ~ y), all relative to point 5 (the
 // corner (0,0): f32 precision of small patches), phantom mask bit j = side j (0: row 0, 1:
-// column 3, 2: row 3, 3: column 0) reflected (notes §3.3: rows first, then columns).
+// column 3, 2: row 3, 3: column 0) reflected (rows first, then columns, as OpenSubdiv does).
 fn ccBicubic(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
   return ccBicubicW(cp, mask, ccBasis(x), y);
 }
@@ -90,7 +90,7 @@ fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
 
 // A patch region: its 16 point indices at word `base` of patchIdx. A bicubic B-spline patch, or
 // a single-crease patch (one semi-sharp crease σ on the frame's x = 0 side, σ's f32 bits after
-// the indices; notes §3.4): the closed-form crease row weights in x times the cubic B-spline in
+// the indices; Nießner, Loop, Greiner 2012): the closed-form crease row weights in x times the cubic B-spline in
 // y (wgsl/cc/crease-basis.wgsl), which also gives both derivatives for the normal.
 fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
   var cp: array<vec3<f32>, 16>;

@@ -21,7 +21,7 @@
 // array), 2 dynamic (per edge, from the view: distance and curvature), 3 factor rule (per edge,
 // the compute tessellator's adaptive rule). In modes 0 and 1 an edge's level is the minimum over
 // its patches' levels and a patch keeps its own level; in modes 2 and 3 the edge's level is
-// computed once per edge and the patch's level is the maximum over its edges (notes §6.2).
+// computed once per edge and the patch's level is the maximum over its edges.
 // Either way both patches of an edge read the same stored value.
 
 @group(0) @binding(3) var<storage, read_write> work: array<atomic<u32>>;
@@ -51,7 +51,8 @@ fn patchEdges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_i
   }
 }
 
-// Mode 2: the edge's level from the surface seen from the camera (notes §6.5, recommended form).
+// Mode 2: the edge's level from the surface seen from the camera (this project's form; NVIDIA's
+// 2009 sample blends the control polygon's screen length with an object-space term).
 // Three points of the edge (its ends and middle, evaluated by the patch that owns it) are projected
 // to pixels. Distance term: the chord's length over params.targetPixels. Curvature term: a curve
 // whose middle departs d pixels from its chord is matched by N uniform segments within d / N²

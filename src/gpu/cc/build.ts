@@ -11,7 +11,8 @@
  *    creases: see below). Level
  *    L+1 numbers its points [vertex points | edge points | face points] of level L (a vertex
  *    keeps its index at every deeper level); child face j of face f is half-edge
- *    faceOffsets[f]+j, [V(c_j), E(c_j c_j+1), F, E(c_j-1 c_j)]. Sharpness decays by notes §1.4.
+ *    faceOffsets[f]+j, [V(c_j), E(c_j c_j+1), F, E(c_j-1 c_j)]. Sharpness decays by s − 1 a level
+ *    (DeRose, Kass, Truong 1998; OpenSubdiv's uniform creasing).
  *    Each new point carries a RULE (2 words: kind and counts, first input) and its inputs
  *    (point indices): face point (N corners), edge point (ends + the two new face points;
  *    sharpness s: smooth, or after the inputs when not 0: crease, blend), vertex point (v, far
@@ -23,7 +24,7 @@
  *    and its own sharpness are 0 or infinite, each neighbour (1,0) is a valence-4 vertex
  *    whose only sharp edges are the two halves of the axis (or a valence-3 boundary vertex on
  *    a boundary axis) and each diagonal (1,1) is a smooth interior valence-4 vertex. Then
- *    (notes §6.2) one refinement step of the fan reads only the axis sharpness and the
+ *    one refinement step of the fan reads only the axis sharpness and the
  *    centre's rule: every other point touched is a face point, an edge point of an edge made
  *    inside a face (sharpness 0), or the vertex point of (1,0) / (1,1) above; and after one
  *    step the new (1,0), (1,1) are again of that kind. So the slice kernel is exact at every
@@ -36,7 +37,7 @@
  *    region; its fan may start at a coarser level s ≤ d: offset d − s). d = 0 for regular
  *    quads (1 region), 1 for quads at an EV (4), 2 where triangles are involved (16 per quad,
  *    12 per triangle), as in the talk's table, and deeper only where semi-sharp creases fail
- *    the single-crease test. A single-crease patch (singleCrease; notes §3.4, OpenSubdiv's
+ *    the single-crease test. A single-crease patch (singleCrease; Nießner, Loop, Greiner 2012, OpenSubdiv's
  *    isSingleCreasePatch conditions): a quad whose 4 corners are interior valence-4 vertices
  *    of quads without vertex sharpness, whose only sharp edges at the corners are the 3
  *    collinear edges A'A, AB, BB' of one side AB, all of one semi-sharp σ. Its limit is the
@@ -63,7 +64,7 @@
  * positions; p ≥ ccCageVerts at offPoints + 3(p − ccCageVerts)):
  *   [cage | level 1 | … | level G | fan slices | fan limits]
  *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary), all as OFFSETS from the
- *     fan's anchor (its centre at level s: f32 precision of deep levels, notes §6.7):
+ *     fan's anchor (its centre at level s: f32 precision of deep levels):
  *       centres   D points, the centre after step k = 1..D at slot k − 1;
  *       rings     the fan's 1-ring, (1,0) and (1,1) of each sector at slot 2i, 2i + 1, after
  *                 the steps k ≡ D (mod 2) only (ceil(D/2) rings; step D's is always there),

@@ -27,7 +27,7 @@ function plainValence4(L: Level, v: number): boolean {
 const turnHe = (m: HalfEdges, h: number): number => m.heTwin[m.hePrev[h]];
 
 /**
- * A single-crease patch (notes §3.4; OpenSubdiv's isSingleCreasePatch conditions): level face g
+ * A single-crease patch (Nießner, Loop, Greiner 2012; OpenSubdiv's isSingleCreasePatch conditions): level face g
  * is a quad whose 4 corners are interior valence-4 vertices of quads without vertex sharpness,
  * and the only sharp edges at its corners are the 3 collinear edges A'A, AB, BB' of one of its
  * sides AB, all of the same semi-sharp σ. Then its limit is the tensor product of the cubic

@@ -9,7 +9,7 @@
  * triangle (centre, k, k + 1) of a face fanned round its centre (n ≥ 5, prepare.ts), maps
  * linearly into the regular n-gon (the centre at its origin), where sub-face k is the kite
  * around corner k and (s, t) inverts the kite's bilinear map. For a triangle this is the closed
- * form of the notes (k = argmax w, s = 2·w_{k+1} along edge k→k+1).
+ * form k = argmax w, s = 2·w_{k+1} along edge k→k+1 (checked in tests/gpu/tess/factors.test.ts).
  */
 import type { PreparedMesh } from './prepare.ts';
 import type { Cage } from '../../mesh/types.ts';

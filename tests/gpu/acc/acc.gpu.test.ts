@@ -2,8 +2,8 @@
  * ACC patches on a real WebGPU adapter (Dawn in Node, headless Chromium; SwiftShader in CI): the
  * patch build (wgsl/acc/build.wgsl) against the f64 yardstick (src/subdiv/acc.ts) point by point,
  * and the surface (wgsl/acc/surface.wgsl evalAccPatch) at a few hundred random (face, u, v) per
- * scheme, corners, edges and the c-patch diagonal included, on the cube of the notes' §8 reference
- * vectors, an all-triangle octahedron, small project models and cages with boundaries, creases,
+ * scheme, corners, edges and the c-patch diagonal included, on the cube of the reference
+ * vectors of tests/gpu/acc/acc.test.ts, an all-triangle octahedron, small project models and cages with boundaries, creases,
  * corners and a cone point. f32 tolerances, relative to the
  * bounding-box diagonal: control points and positions 2e-6; normals 0.02° (measured: ≤ 2e-7 and
  * ≤ 0.003°). No NaN anywhere. A moved cage re-runs only the build and matches again.

@@ -55,7 +55,7 @@ const cubeTop = () => {
   return { c, S, face: 0 }; // cube() face 0 is [4,5,6,7]
 };
 
-describe('constants (notes §8.9)', () => {
+describe('constants', () => {
   it('λ_n, 1/(nλ_n), σ_4, the n = 4 masks', () => {
     expect(valenceConstants(3).lambda).toBeCloseTo(0.410097, 6);
     expect(valenceConstants(5).lambda).toBeCloseTo(0.549988, 6);
@@ -86,7 +86,7 @@ describe('constants (notes §8.9)', () => {
   });
 });
 
-describe('cube reference vectors (notes §8.6–8.8)', () => {
+describe('cube reference vectors (values measured for this project)', () => {
   const { S, face } = cubeTop();
   it('Bezier ACC: geometry and tangent patches', () => {
     const q = S('bezier-acc').patch(face);
@@ -142,7 +142,7 @@ describe('cube reference vectors (notes §8.6–8.8)', () => {
 const sub = (a: V3, b: V3): V3 => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
 const mulv = (a: V3, s: number): V3 => [a[0] * s, a[1] * s, a[2] * s];
 
-describe('n-fold symmetry (notes §8.8)', () => {
+describe('n-fold symmetry', () => {
   for (const n of [3, 5, 6, 8]) {
     it(`valence ${n}: corner normal on the axis, E⁺ / t⁺ rotate, F⁺ and F⁻ mirror`, () => {
       const cage = ccStep(prism(n, 0));
@@ -197,7 +197,7 @@ describe('n-fold symmetry (notes §8.8)', () => {
   }
 });
 
-describe('affine invariance and planar cages (notes §8.1–8.2)', () => {
+describe('affine invariance and planar cages', () => {
   const A = [
       [0.8, 0.3, -0.2],
       [-0.1, 1.2, 0.4],
@@ -238,7 +238,7 @@ describe('affine invariance and planar cages (notes §8.1–8.2)', () => {
   }
 });
 
-describe('regular exactness (notes §8.3)', () => {
+describe('regular exactness', () => {
   const torusCage = loadCage(torus).cage;
   const exact = new ExactAt(torusCage);
   const params = randomFaceParams(torusCage, 400);
@@ -279,7 +279,7 @@ describe('regular exactness (notes §8.3)', () => {
   });
 });
 
-describe('corners = Catmull-Clark limit (notes §8.6)', () => {
+describe('corners = Catmull-Clark limit', () => {
   const exact = new ExactAt(creatureCage);
   const cornerParam = (m: number, k: number): [number, number] =>
     m === 4
@@ -316,13 +316,13 @@ describe('corners = Catmull-Clark limit (notes §8.6)', () => {
           checked++;
         }
       expect(checked).toBeGreaterThan(1000);
-      // Pm's midpoint rule next to triangles misses the limit (notes §4.4): the check can tell.
+      // Pm's midpoint rule next to triangles misses the limit: the check can tell.
       if (s === 'pm-acc') expect(nearTriangle).toBeGreaterThan(0);
     });
   }
 });
 
-describe('across-edge continuity (notes §8.4–8.5)', () => {
+describe('across-edge continuity', () => {
   const cages: [string, Cage][] = [
     ['prism 5 (CC step)', ccStep(prism(5))],
     ['prism 6 (CC step)', ccStep(prism(6))],
@@ -457,8 +457,8 @@ describe('boundaries, infinitely sharp creases and corners', () => {
   });
 });
 
-describe('errors against exact Catmull-Clark (notes §5)', () => {
-  it("cube after one CC step, 9×9 grid per face: the notes' measured max position / normal errors", () => {
+describe('errors against exact Catmull-Clark', () => {
+  it('cube after one CC step, 9×9 grid per face: reference max position / normal errors measured for this project', () => {
     const cage = ccStep(cube());
     const exact = new ExactAt(cage);
     const params: [number, number, number][] = [];
@@ -471,7 +471,7 @@ describe('errors against exact Catmull-Clark (notes §5)', () => {
     for (const s of ACC_SCHEMES) {
       const e = accErrors(new AccSurface(cage, s), exact, params);
       expect(e.nan).toBe(0);
-      expect(Math.abs(e.maxP - expected[s][0]), s).toBeLessThan(0.000055); // the notes round to 0.01%
+      expect(Math.abs(e.maxP - expected[s][0]), s).toBeLessThan(0.000055); // the reference values are rounded to 0.01%
       expect(Math.abs(e.maxN - expected[s][1]), s).toBeLessThan(0.0055); // and to 0.01°
     }
   });

@@ -250,7 +250,7 @@ describe('face parameters for --params', () => {
     expect(faceParam(mesh, cage, 0, [1 / 3, 1 / 3, 1 / 3])).toEqual({ face: 0, u: 2 / 3, v: 1 / 3 });
     expect(faceParam(mesh, cage, 1, [0, 0.5, 0.5])).toEqual({ face: 0, u: 0.5, v: 1 });
   });
-  it("on a triangle face equals the notes' closed form (k = argmax, s = 2·w_{k+1} on edge k→k+1)", () => {
+  it('on a triangle face equals the closed form (k = argmax, s = 2·w_{k+1} on edge k→k+1)', () => {
     const cage = makeCage([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2]]);
     const mesh = prepareMesh(cage);
     fc.assert(
