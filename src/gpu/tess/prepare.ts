@@ -30,7 +30,7 @@ import { type Cage, type SubdivOptions, SHARPNESS_INFINITE } from '../../mesh/ty
 import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../../pattern/clamped.ts';
 import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from '../contract/contract.ts';
-import { phongTriAlphas } from '../surface/phong.ts';
+import { phongTriAlphas } from '../surface/phong-alpha.ts';
 
 /** Faces with at least this many corners are fanned round a centre vertex (see above). */
 export const CENTRE_FAN_MIN_CORNERS = 5;

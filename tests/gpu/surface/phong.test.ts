@@ -7,7 +7,8 @@ import { describe, expect, it } from 'vitest';
 import { readFileSync, readdirSync } from 'node:fs';
 import { loadCage } from '../../../src/mesh/index.ts';
 import { type PreparedMesh, prepareMesh } from '../../../src/gpu/tess/prepare.ts';
-import { PHONG_MIN_JACOBIAN, phongPoint, phongTriAlphas } from '../../../src/gpu/surface/phong.ts';
+import { phongPoint } from '../../../src/gpu/surface/phong.ts';
+import { PHONG_MIN_JACOBIAN, phongTriAlphas } from '../../../src/gpu/surface/phong-alpha.ts';
 import { PHONG_ALPHA } from '../../../src/gpu/tess/factors.ts';
 
 const MODELS = new URL('../../../public/models/', import.meta.url);
