@@ -129,7 +129,7 @@ import {
   vertexRing,
 } from '../../mesh/index.ts';
 import { fannedRoundCentre, type PreparedMesh } from '../tess/prepare.ts';
-import { NO_OWNER, OWNER_WORD } from '../contract/contract.ts';
+import { NO_OWNER, OWNER_WORD } from '../contract/tess.ts';
 import { CC_FAN_WORD, CC_PAIR_WORD, CC_REGION_WORD, CC_RULE_WORD, CC_THREAD_WORD, CC_TRI_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 
 /** Patch colours for the demo ("show irregular patches"). */

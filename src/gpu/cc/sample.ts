@@ -7,7 +7,8 @@
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
 import { CC_SURFACE_WGSL as ccSurfaceWgsl } from './shaders.ts';
 import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
-import { TESS_INPUTS, tessPrelude } from '../contract/contract.ts';
+import { TESS_INPUTS } from '../contract/tess.ts';
+import { tessPrelude } from '../contract/contract.ts';
 import type { Tessellator } from '../tess/tessellator.ts';
 import { readBuffer } from '../device/readback.ts';
 

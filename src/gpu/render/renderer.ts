@@ -13,7 +13,7 @@
  * a colour format, and a texture to draw into.
  *
  * The per-frame uniforms (SCENE_UNIFORMS) and the bind group layouts (RENDER_BIND_GROUPS,
- * RENDER_PIPELINE_GROUPS) are declared in contract.ts; every render shader is the generated
+ * RENDER_PIPELINE_GROUPS) are declared in contract/render.ts; every render shader is the generated
  * uniform declaration followed by its .wgsl files (RENDER_SHADERS).
  */
 import commonWGSL from '../../../wgsl/render/common.wgsl?raw';
@@ -35,10 +35,10 @@ import {
   RENDER_BIND_GROUPS,
   RENDER_PIPELINE_GROUPS,
   SCENE_UNIFORMS,
-  sceneWgsl,
   type RenderBindGroup,
   type RenderPipelineName,
-} from '../contract/contract.ts';
+} from '../contract/render.ts';
+import { sceneWgsl } from '../contract/contract.ts';
 
 /** The WGSL sources of each pipeline's shader module, in order (the two cage pipelines share one). */
 export const RENDER_SHADERS: Record<RenderPipelineName, readonly string[]> = {
@@ -144,8 +144,8 @@ const TIMED_PASSES = ['shadow', 'lit'] as const;
 /** Timing slots: one per region of a split view (DrawOptions.region.slot). */
 const TIMING_SLOTS = 2;
 
-/** The patch colours (declared in contract.ts, where the lit shader's palette comes from too). */
-export { PATCH_COLOURS } from '../contract/contract.ts';
+/** The patch colours (declared in contract/render.ts, where the lit shader's palette comes from too). */
+export { PATCH_COLOURS } from '../contract/render.ts';
 
 export class Renderer {
   readonly device: GPUDevice;

@@ -10,7 +10,7 @@ import { prepareMesh, type PreparedMesh } from './prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from '../device/readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
-import { decodeBary, NO_OWNER } from '../contract/contract.ts';
+import { decodeBary, NO_OWNER } from '../contract/tess.ts';
 import { bakeTables } from '../../pattern/tables.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../cc/build.ts';
 import { isAccSurface, type Surface } from './passes.ts';

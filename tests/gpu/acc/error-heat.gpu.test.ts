@@ -24,7 +24,7 @@ import { prepareAccSurface } from '../../../src/gpu/acc/surface.ts';
 import { AccHeatPass, cageDiagonal, HEAT_RAMP } from '../../../src/gpu/acc/heat.ts';
 import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { AccSurface, KIND_REGULAR, type AccScheme } from '../../../src/subdiv/acc.ts';
-import { decodeBary } from '../../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import { loadCage, makeCage } from '../../../src/mesh/index.ts';
 import { Renderer } from '../../../src/gpu/render/renderer.ts';
 import { destroyMesh, uploadCageMesh } from '../../../src/gpu/render/cage-mesh.ts';
