@@ -46,7 +46,8 @@ import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSur
 import type { Tessellator } from '../tess/tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
-import { meshFaceStates, RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from '../render/renderer.ts';
+import { meshFaceStates, RENDER_SHADERS } from '../render/pipelines.ts';
+import type { ShadingResources, SurfaceDrawer } from '../render/renderer.ts';
 import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
 import { defineStruct } from '../contract/layout.ts';
 import { defineBits } from '../contract/define.ts';

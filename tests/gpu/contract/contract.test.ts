@@ -50,7 +50,7 @@ import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../.
 import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../../../src/pattern/tables.ts';
 import { defineStruct } from '../../../src/gpu/contract/layout.ts';
 import { packPatternFrame } from '../../../src/gpu/tess/prepare.ts';
-import { RENDER_SHADERS } from '../../../src/gpu/render/renderer.ts';
+import { RENDER_SHADERS } from '../../../src/gpu/render/pipelines.ts';
 import { chooseFrame } from '../../../src/pattern/clamped.ts';
 
 // ---- WGSL's uniform layout rules (WGSL spec, "Memory layout"), for the types the contract uses.
