@@ -283,7 +283,7 @@ export function rowZeroKept(bottom: readonly number[], nl: number, nr: number, c
 
 /** Strips of at most this many vertices are triangulated exactly (stripTriangulation); larger
  * ones by the greedy gap matching. At most 16: the GPU stores a polygon index in 4 bits (the
- * WGSL reads the number from src/gpu/contract/contract.ts TESS_CONSTANTS). 8, not 16: on the cameras of
+ * WGSL reads the number from src/gpu/contract/tess.ts TESS_CONSTANTS). 8, not 16: on the cameras of
  * tests/gpu/tess/no-folds.test.ts 16 folds no fewer triangles (on 12 other seeded cameras it took the
  * creased box from 5 to 0), and the plan pass's O(n³) search cost about twice as much on
  * SwiftShader. */

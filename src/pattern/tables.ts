@@ -39,7 +39,7 @@ import type { LinePattern, TriPattern } from './types.ts';
 export const TABLE_MAGIC = 0x4c534554;
 export const TABLE_VERSION = 2;
 /** The header's words, in order (the layout above): the one list that the writer, the reader and
- * the WGSL getters (src/gpu/contract/contract.ts, `tableHeader_stateCount()` …) all index by. */
+ * the WGSL getters (src/gpu/contract/tess.ts, `tableHeader_stateCount()` …) all index by. */
 export const TABLE_HEADER_FIELDS = [
   'magic',
   'version',

@@ -13,7 +13,7 @@ import { type Cage, loadCage, makeCage } from '../../src/mesh/index.ts';
 import { type HeightMap, heightMapFromFunction, makeHeightMap, sampleHeight } from '../../src/mesh/heightmap.ts';
 import { DisplacedSurface, type SurfaceParam, Surface, faceEdgeParam, weldOwnerFaces } from '../../src/subdiv/index.ts';
 import { prepareMesh } from '../../src/gpu/tess/prepare.ts';
-import { OWNER_WORD } from '../../src/gpu/contract/contract.ts';
+import { OWNER_WORD } from '../../src/gpu/contract/tess.ts';
 import { readFileSync } from 'node:fs';
 
 type V3 = [number, number, number];

@@ -10,7 +10,7 @@ import { faceParam } from '../../src/gpu/tess/face-params.ts';
 import type { PreparedMesh } from '../../src/gpu/tess/prepare.ts';
 import { regionOf, type CatmullClarkData } from '../../src/gpu/cc/build.ts';
 import { angleBetween } from './tess-checks.ts';
-import { decodeBary } from '../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../src/gpu/contract/tess.ts';
 import { readMesh, type MeshReadback } from '../../src/gpu/device/readback.ts';
 import type { Tessellator } from '../../src/gpu/tess/tessellator.ts';
 import type { FactorParams } from '../../src/gpu/contract/tessellated-mesh.ts';

@@ -9,7 +9,7 @@ import { hableLine } from '../../src/pattern/hable-line.ts';
 import { NO_OWNER } from '../../src/gpu/tess/prepare.ts';
 import type { PreparedMesh } from '../../src/gpu/tess/prepare.ts';
 import type { MeshReadback } from '../../src/gpu/device/readback.ts';
-import { decodeBary, OWNER_WORD } from '../../src/gpu/contract/contract.ts';
+import { decodeBary, OWNER_WORD } from '../../src/gpu/contract/tess.ts';
 
 export interface TessReport {
   problems: string[];

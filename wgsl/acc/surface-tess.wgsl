@@ -1,6 +1,6 @@
 // The ACC surfaces (Bezier, Gregory, Pm ACC: wgsl/acc/surface.wgsl, built every frame by
 // src/gpu/acc/patches.ts AccPatches) as the tessellator's surface: the triangle's ACC patch word
-// (ACC_TRI_WORD, src/gpu/contract/contract.ts) gives its patch and its corners' patch parameters, and the
+// (ACC_TRI_WORD, src/gpu/contract/tess.ts) gives its patch and its corners' patch parameters, and the
 // patch parameter of the point is their interpolation by the point's weights (quads split on the
 // 0–2 diagonal, triangles (u, v) = (w1, w2)): the same (face, u, v) as src/gpu/acc/patches.ts accFaceParam.
 // The ACC patch table and control points live in the tessellator's own arenas (TESS_STATIC

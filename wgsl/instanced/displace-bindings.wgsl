@@ -3,7 +3,7 @@
 // wgsl/instanced/surface-cc.wgsl). Bindings 0–2 here; src/gpu/instanced/displace-vertex.ts moves them to
 // 2–4 on ACC, whose patches and control points hold 0 and 1. Named as the Catmull-Clark surface's
 // borrowed buffers, so one rename list (src/gpu/instanced/surface-cc.ts RENAMES) serves both.
-//   ccParams  its Params (src/gpu/contract/contract.ts TESS_PARAMS: dispOn, dispScale, … and where its arrays lie)
+//   ccParams  its Params (src/gpu/contract/tess.ts TESS_PARAMS: dispOn, dispScale, … and where its arrays lie)
 //   ccStatic  its TESS_STATIC arena (triEdges, edgeOwner, vertexOwner, heightTexels, dispTri)
 //   ccCage    its TESS_CAGE arena (cornerUvs)
 

@@ -12,7 +12,7 @@ fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
 }
 
 // Patch colours, the sample's "show irregular patches" (wgsl/render/instanced.wgsl;
-// src/gpu/contract/contract.ts PATCH_COLOURS order): a regular patch (a plain bicubic, ACC kind 0), an
+// src/gpu/contract/render.ts PATCH_COLOURS order): a regular patch (a plain bicubic, ACC kind 0), an
 // irregular quad (Bezier, Gregory or Pm ACC around an extraordinary vertex), a triangle.
 fn patchColourIndex(p: u32) -> u32 {
   if (accPatches[2u * patchWord(p, 6u)] == 0u) { return 0u; }

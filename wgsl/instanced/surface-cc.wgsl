@@ -7,7 +7,7 @@
 // wgsl/tess/common.wgsl accessors it calls → the cc-prefixed ones below). It reads the buffers of a
 // compute Tessellator with the Catmull-Clark surface for the same prepared mesh (borrowed, as
 // src/gpu/acc/error.ts does), bound here in group 3:
-//   ccParams  its Params uniform (src/gpu/contract/contract.ts TESS_PARAMS: where its tables lie)
+//   ccParams  its Params uniform (src/gpu/contract/tess.ts TESS_PARAMS: where its tables lie)
 //   ccStatic  its TESS_STATIC arena (the Catmull-Clark tables: regions, fans, patch indices)
 //   ccCage    its TESS_CAGE arena (the refined points and limits its patch build writes)
 //   ccWork    its TESS_WORK arena: read by the flat-baseline branch of evalSurface only, which
@@ -37,7 +37,7 @@ fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
   return ccEvalSurface(pt.t, pt.w);
 }
 
-// Patch colours (wgsl/render/instanced.wgsl; src/gpu/contract/contract.ts PATCH_COLOURS order): a quad
+// Patch colours (wgsl/render/instanced.wgsl; src/gpu/contract/render.ts PATCH_COLOURS order): a quad
 // that is one regular bicubic patch of the exact surface (region depth 0 in its CcTriWord:
 // src/gpu/cc/build.ts) in the regular colour, any other quad (at an extraordinary vertex, next to
 // a triangle, on a crease that needs refinement) in the irregular one, triangle patches

@@ -7,7 +7,7 @@ fn patchSurface(p: u32, P: u32, i: u32, j: u32) -> SurfacePoint {
   return evalSurface(pt.t, pt.w);
 }
 
-// Patch colours (wgsl/render/instanced.wgsl; src/gpu/contract/contract.ts PATCH_COLOURS order): quad
+// Patch colours (wgsl/render/instanced.wgsl; src/gpu/contract/render.ts PATCH_COLOURS order): quad
 // patches in the regular colour, triangle patches in the triangle colour.
 fn patchColourIndex(p: u32) -> u32 { return select(0u, 2u, patchIsTri(p)); }
 

@@ -1,6 +1,6 @@
 // Shared by every render and wire shader (the renderer prepends it). Before it comes the
 // generated declaration of the per-frame uniforms, `scene: SceneUniforms` at group 0 binding 0
-// (src/gpu/contract/contract.ts SCENE_UNIFORMS: its fields and their meaning are declared there).
+// (src/gpu/contract/render.ts SCENE_UNIFORMS: its fields and their meaning are declared there).
 
 // Colours are written as sRGB, like a colour picker gives them; lighting happens in linear
 // space and the render target is an -srgb view, which encodes on store.

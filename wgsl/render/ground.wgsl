@@ -2,7 +2,7 @@
 // backdrop (prepended: wgsl/render/common.wgsl, wgsl/render/shading.wgsl). Drawn as a 4-vertex strip.
 
 // GROUND_EXTENT (in bounding radii) comes with the prelude: camera.ts fits the clip planes and
-// the light's box to the same number (src/gpu/contract/contract.ts).
+// the light's box to the same number (src/gpu/contract/render.ts).
 
 struct VertexOut {
   @builtin(position) clip: vec4f,

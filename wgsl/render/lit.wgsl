@@ -21,7 +21,7 @@ struct VertexOut {
   @location(2) patchWeights: vec4f,
 }
 
-// PATCH_SRGB (the prelude) holds the colours of the kinds, the legend's (src/gpu/contract/contract.ts PATCH_COLOURS).
+// PATCH_SRGB (the prelude) holds the colours of the kinds, the legend's (src/gpu/contract/render.ts PATCH_COLOURS).
 fn patchColour(w: vec4f) -> vec3f {
   let c = w.x * linearFromSrgb(PATCH_SRGB[0]) + w.y * linearFromSrgb(PATCH_SRGB[1])
     + w.z * linearFromSrgb(PATCH_SRGB[2]) + w.w * linearFromSrgb(PATCH_SRGB[3]);

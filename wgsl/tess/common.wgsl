@@ -134,7 +134,7 @@ fn factorNormal(v: u32) -> vec3<f32> { return cageVec3(params.offFactorNormal + 
 // with the uv's derivatives along the same weights (wgsl/tess/displace.wgsl).
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32>, du: vec3<f32>, dv: vec3<f32> }
 
-// A BaryWord (src/gpu/contract/contract.ts): (w1, w2) in 16 bits each; a corner of the source triangle
+// A BaryWord (src/gpu/contract/tess.ts): (w1, w2) in 16 bits each; a corner of the source triangle
 // is stored as a sentinel whose fields would sum past 2^16.
 fn packBary(w: vec3<u32>) -> u32 {
   if (w.y == ONE) { return BARY_CORNER1; }

@@ -66,7 +66,7 @@ fn rowZeroKept(L: TriLines) -> u32 {
 // makes the moves once per triangle and stores one bit each (gapMoveWords words a triangle); the
 // emit pass finds move g by counting bits.
 
-// Words of a triangle's gap strip in work's gapMoves: contract.ts gapMoveWords, the same formula
+// Words of a triangle's gap strip in work's gapMoves: src/gpu/contract/tess.ts gapMoveWords, the same formula
 // (the greedy's moves, a bit each, or a small strip's triangles, 16 bits each).
 fn gapMoveWords() -> u32 { return max((3u * (params.maxFactor + 1u) + 31u) / 32u, (STRIP_DP_VERTICES - 2u + 1u) / 2u); }
 

@@ -15,7 +15,9 @@
  */
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
 import { CC_SURFACE_WGSL as ccSurfaceWgsl } from '../cc/shaders.ts';
-import { groupsFor, TESS_INPUTS, tessPrelude } from '../contract/contract.ts';
+import { groupsFor } from '../contract/constants.ts';
+import { TESS_INPUTS } from '../contract/tess.ts';
+import { tessPrelude } from '../contract/contract.ts';
 import type { Cage } from '../../mesh/index.ts';
 import { ACC_SURFACE_WGSL, type AccPatches, accBindingsWgsl } from './patches.ts';
 import { accTriangleWords } from './surface.ts';
@@ -49,7 +51,7 @@ fn accErrors(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
 
 const pipelines = new WeakMap<GPUDevice, GPUComputePipeline>();
 
-/** Per cage triangle: its face and the ACC (u, v) of its corners (contract.ts ACC_TRI_WORD:
+/** Per cage triangle: its face and the ACC (u, v) of its corners (contract/tess.ts ACC_TRI_WORD:
  * face << 6 | bit 2i: u_i, bit 2i + 1: v_i), as the compute tessellator's ACC surface reads them. */
 export function accTriangleMap(mesh: PreparedMesh, cage: Cage): Uint32Array {
   return mesh.triangleCount ? accTriangleWords(mesh, cage) : new Uint32Array(1);

@@ -36,7 +36,7 @@ import {
   valenceTable,
 } from '../../subdiv/acc.ts';
 import { readBuffer } from '../device/readback.ts';
-import { constantsWgsl, groupsFor } from '../contract/contract.ts';
+import { constantsWgsl, groupsFor } from '../contract/constants.ts';
 import { faceParam } from '../tess/face-params.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 

@@ -1,13 +1,13 @@
 /**
  * An ACC scheme as the compute tessellator's surface (Tessellator surface 'bezier-acc',
  * 'gregory-acc' or 'pm-acc'): the patches and their per-frame build (src/gpu/acc/patches.ts AccPatches)
- * and, per prepared triangle, its patch and its corners' patch parameters (contract.ts
+ * and, per prepared triangle, its patch and its corners' patch parameters (contract/tess.ts
  * ACC_TRI_WORD), which wgsl/acc/surface-tess.wgsl interpolates by the point's weights.
  */
 import type { Cage } from '../../mesh/types.ts';
 import { KIND_REGULAR, type AccOptions, type AccScheme } from '../../subdiv/acc.ts';
 import { AccPatches, accFaceParam } from './patches.ts';
-import { ACC_TRI_WORD } from '../contract/contract.ts';
+import { ACC_TRI_WORD } from '../contract/tess.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
 export interface AccSurface {
@@ -41,7 +41,7 @@ export function accTriangleWords(mesh: PreparedMesh, cage: Cage): Uint32Array {
 }
 
 /**
- * The patch colours' kind (src/gpu/contract/contract.ts PATCH_COLOURS: 0 regular, 1 irregular quad,
+ * The patch colours' kind (src/gpu/contract/render.ts PATCH_COLOURS: 0 regular, 1 irregular quad,
  * 2 triangle) of every prepared triangle on an ACC surface, the NVIDIA sample's "show irregular
  * patches": a regular patch is the plain bicubic (KIND_REGULAR), every other quad an irregular
  * one, and triangles (Gregory or Pm triangles) their own colour.

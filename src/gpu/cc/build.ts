@@ -129,7 +129,7 @@ import {
   computeSharpness,
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
-import { WORKGROUP_SIZE } from '../contract/contract.ts';
+import { WORKGROUP_SIZE } from '../contract/constants.ts';
 import { CC_FAN_WORD, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
 import { levelStack } from './levels.ts';
 import { fanTable, packFans, packThreads, vertexLimits } from './fans.ts';

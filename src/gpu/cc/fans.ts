@@ -6,7 +6,9 @@
  */
 import { type HalfEdges, SHARPNESS_INFINITE, vertexRing } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
-import { CC_NONE, NO_OWNER, OWNER_WORD, WORKGROUP_SIZE } from '../contract/contract.ts';
+import { CC_NONE } from '../contract/cc.ts';
+import { NO_OWNER, OWNER_WORD } from '../contract/tess.ts';
+import { WORKGROUP_SIZE } from '../contract/constants.ts';
 import { CC_FAN_WORD, CC_PAIR_WORD, CC_THREAD_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
 import { U32, f32bits } from './word-list.ts';
 import { type Level, type LevelStack, MAX_LEVEL, VRULE_CREASE, VRULE_SMOOTH, isQuadHe, isRegular, vertexRuleOf } from './levels.ts';

@@ -6,7 +6,7 @@
  */
 import { type Cage, type Classification, type Sharpness, type Topology, FaceKind, SHARPNESS_INFINITE } from '../../mesh/index.ts';
 import { fannedRoundCentre, type PreparedMesh } from '../tess/prepare.ts';
-import { CC_NONE } from '../contract/contract.ts';
+import { CC_NONE } from '../contract/cc.ts';
 import { CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
 import { U32, f32bits } from './word-list.ts';
 import { type Level, type LevelStack, isRegular } from './levels.ts';

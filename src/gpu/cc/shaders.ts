@@ -2,13 +2,15 @@
  * The Catmull-Clark shader sources with what they include. The evaluator: the packed words'
  * getters (words.ts), wgsl/cc/crease-basis.wgsl for single-crease patches, wgsl/cc/surface.wgsl
  * (after the tessellator's prelude). The patch build: its own prelude (Params, the shared
- * constants, CC_BUILD_GROUP's bindings and the level range struct, from contract.ts), the
- * getters, wgsl/cc/build.wgsl.
+ * constants, CC_BUILD_GROUP's bindings and the level range struct: contract/contract.ts
+ * ccBuildPrelude), the getters, wgsl/cc/build.wgsl.
  */
 import creaseBasisWgsl from '../../../wgsl/cc/crease-basis.wgsl?raw';
 import surfaceWgsl from '../../../wgsl/cc/surface.wgsl?raw';
 import buildWgsl from '../../../wgsl/cc/build.wgsl?raw';
-import { CC_NONE, ccBuildPrelude, wgslConstants } from '../contract/contract.ts';
+import { wgslConstants } from '../contract/define.ts';
+import { CC_NONE } from '../contract/cc.ts';
+import { ccBuildPrelude } from '../contract/contract.ts';
 import { CC_WORDS } from './words.ts';
 
 const wordsWgsl = CC_WORDS.map((w) => w.wgsl).join('\n');

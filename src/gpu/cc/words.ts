@@ -1,10 +1,10 @@
 /**
  * Packed words of the Catmull-Clark data (src/gpu/cc/build.ts has the layouts) declared once for
- * TypeScript and WGSL (defineBits, src/gpu/contract/contract.ts): build.ts packs through .pack, the CPU
+ * TypeScript and WGSL (defineBits, src/gpu/contract/define.ts): build.ts packs through .pack, the CPU
  * side of the region lookup reads through .get, and src/gpu/cc/shaders.ts prepends the generated
  * getters (`ccFanWord_depth(w)`, …) to the shaders, which decode nothing by hand.
  */
-import { defineBits } from '../contract/contract.ts';
+import { defineBits } from '../contract/define.ts';
 
 /**
  * Word 0 of a region. kind: 1 patch, 2 EV sector; rot: the region's frame is rot_rot of the

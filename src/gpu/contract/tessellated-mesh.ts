@@ -6,7 +6,7 @@
  *   positions  array<f32>, 3 per vertex            usage VERTEX | STORAGE | COPY_SRC
  *   normals    array<f32>, 3 per vertex            usage VERTEX | STORAGE | COPY_SRC
  *   bary       array<u32>, 1 per vertex            (w1, w2) of the source triangle, 16 bits each
- *              (contract.ts BARY_WORD);
+ *              (tess.ts BARY_WORD);
  *              a vertex at a corner of its source triangle stores 0 (corner 0), 0xFFFFFFFF
  *              (corner 1) or 0xFFFFFFFE (corner 2): those sums exceed 2^16, so they cannot be
  *              a real point (w1 + w2 ≤ 2^16, and no non-corner weight reaches 2^16).
@@ -46,5 +46,5 @@ export interface FactorParams {
   fovY: number;
 }
 
-/** The bary word's corner sentinels (declared with BARY_WORD in contract.ts). */
-export { BARY_CORNER1, BARY_CORNER2 } from './contract.ts';
+/** The bary word's corner sentinels (declared with BARY_WORD in tess.ts). */
+export { BARY_CORNER1, BARY_CORNER2 } from './tess.ts';

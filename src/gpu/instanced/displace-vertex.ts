@@ -40,7 +40,7 @@ import bindingsWgsl from '../../../wgsl/instanced/displace-bindings.wgsl?raw';
 import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
 import vertexWgsl from '../../../wgsl/instanced/displace.wgsl?raw';
 import accTriWgsl from '../../../wgsl/instanced/displace-acc.wgsl?raw';
-import { DISP_TRI_WORD, OWNER_WORD, TESS_PARAMS } from '../contract/contract.ts';
+import { DISP_TRI_WORD, OWNER_WORD, TESS_PARAMS } from '../contract/tess.ts';
 import { renameBorrowed, uploadLenderParams } from './surface-cc.ts';
 import { Tessellator } from '../tess/tessellator.ts';
 import { bakeTables } from '../../pattern/tables.ts';

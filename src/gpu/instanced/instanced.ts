@@ -46,10 +46,12 @@ import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSur
 import type { Tessellator } from '../tess/tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
-import { meshFaceStates, RENDER_SHADERS, type ShadingResources, type SurfaceDrawer } from '../render/renderer.ts';
+import { meshFaceStates, RENDER_SHADERS } from '../render/pipelines.ts';
+import type { ShadingResources, SurfaceDrawer } from '../render/renderer.ts';
 import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
 import { defineStruct } from '../contract/layout.ts';
-import { constantsWgsl, defineBits, grid2d, WORKGROUP_SIZE } from '../contract/contract.ts';
+import { defineBits } from '../contract/define.ts';
+import { constantsWgsl, grid2d, WORKGROUP_SIZE } from '../contract/constants.ts';
 import { readBuffer } from '../device/readback.ts';
 import { faceParam, type FaceParam } from '../tess/face-params.ts';
 import { edgeFactor, type Vec3 } from '../tess/factors.ts';

@@ -27,7 +27,7 @@
  */
 import ccGlueWgsl from '../../../wgsl/instanced/surface-cc.wgsl?raw';
 import { CC_SURFACE_WGSL } from '../cc/shaders.ts';
-import { TESS_PARAMS } from '../contract/contract.ts';
+import { TESS_PARAMS } from '../contract/tess.ts';
 import { Tessellator } from '../tess/tessellator.ts';
 import { bakeTables } from '../../pattern/tables.ts';
 import type { CatmullClarkData } from '../cc/build.ts';

@@ -7,7 +7,7 @@
  * everything nearer than about twice the near plane.
  */
 import { mat4, vec3 } from 'gl-matrix';
-import { GROUND_EXTENT } from '../contract/contract.ts';
+import { GROUND_EXTENT } from '../contract/render.ts';
 
 export type Vec3 = [number, number, number];
 
@@ -47,7 +47,7 @@ export interface CameraMatrices {
 export const MAX_PITCH = Math.PI / 2 - 0.01;
 export const DEFAULT_FOV_Y = (40 * Math.PI) / 180;
 /** How far the ground plane reaches from the model's centre, in bounding radii (declared in
- * contract.ts: the ground shader reads the same number). */
+ * contract/render.ts: the ground shader reads the same number). */
 export { GROUND_EXTENT };
 
 /** Axis-aligned bounds of xyz triples. Empty input gives the unit cube around the origin. */

@@ -13,43 +13,18 @@
  * a colour format, and a texture to draw into.
  *
  * The per-frame uniforms (SCENE_UNIFORMS) and the bind group layouts (RENDER_BIND_GROUPS,
- * RENDER_PIPELINE_GROUPS) are declared in contract.ts; every render shader is the generated
- * uniform declaration followed by its .wgsl files (RENDER_SHADERS).
+ * RENDER_PIPELINE_GROUPS) are declared in contract/render.ts; every render shader is the generated
+ * uniform declaration followed by its .wgsl files (RENDER_SHADERS, pipelines.ts, which creates
+ * the pipelines); the timestamps' resources are render-timing.ts.
  */
-import commonWGSL from '../../../wgsl/render/common.wgsl?raw';
-import shadingWGSL from '../../../wgsl/render/shading.wgsl?raw';
-import shadowWGSL from '../../../wgsl/render/shadow.wgsl?raw';
-import litWGSL from '../../../wgsl/render/lit.wgsl?raw';
-import groundWGSL from '../../../wgsl/render/ground.wgsl?raw';
-import backdropWGSL from '../../../wgsl/render/backdrop.wgsl?raw';
-import wireArgsWGSL from '../../../wgsl/render/wire-args.wgsl?raw';
-import wireLinesWGSL from '../../../wgsl/render/wire-lines.wgsl?raw';
-import wireCageWGSL from '../../../wgsl/render/wire-cage.wgsl?raw';
-import heatWGSL from '../../../wgsl/render/heat.wgsl?raw';
-import { HEAT_BIND_GROUP, HEAT_UNIFORMS, heatRenderWgsl, type HeatView } from '../acc/heat.ts';
+import { HEAT_UNIFORMS, type HeatView } from '../acc/heat.ts';
 import type { TessellatedMesh } from '../contract/tessellated-mesh.ts';
-import { CAGE_LINE_STRIDE, type CageLines } from './cage-mesh.ts';
+import type { CageLines } from './cage-mesh.ts';
 import { mapWithin, MapStalled, TIMING_MAP_DEADLINE_MS } from '../device/map-within.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
-import {
-  RENDER_BIND_GROUPS,
-  RENDER_PIPELINE_GROUPS,
-  SCENE_UNIFORMS,
-  sceneWgsl,
-  type RenderBindGroup,
-  type RenderPipelineName,
-} from '../contract/contract.ts';
-
-/** The WGSL sources of each pipeline's shader module, in order (the two cage pipelines share one). */
-export const RENDER_SHADERS: Record<RenderPipelineName, readonly string[]> = {
-  shadow: [sceneWgsl, commonWGSL, shadowWGSL],
-  lit: [sceneWgsl, commonWGSL, shadingWGSL, litWGSL],
-  ground: [sceneWgsl, commonWGSL, shadingWGSL, groundWGSL],
-  backdrop: [sceneWgsl, commonWGSL, backdropWGSL],
-  wireframe: [sceneWgsl, commonWGSL, wireLinesWGSL],
-  cage: [sceneWgsl, commonWGSL, wireCageWGSL],
-  wireArgs: [wireArgsWGSL],
-};
+import { SCENE_UNIFORMS } from '../contract/render.ts';
+import { createRenderPipelines, DEPTH_FORMAT } from './pipelines.ts';
+import { createRenderTiming, type RenderTiming, TIMED_PASSES, TIMING_SLOTS } from './render-timing.ts';
 
 export interface RendererOptions {
   /** Format of the views render() draws into (an -srgb format gives correct blending). */
@@ -112,40 +87,8 @@ export interface ShadingResources {
   sampleCount: number;
 }
 
-const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
-/** An open surface's back faces are drawn this far behind its front faces (depthBias, in the
- * depth format's units, and depthBiasSlopeScale): see the lit pipelines. */
-const BACK_FACE_DEPTH_BIAS = 4;
-const BACK_FACE_DEPTH_SLOPE = 4.0;
-
-/** The primitive and depth states of a lit (or heat) draw of a mesh's front or back faces: the
- * back faces' draw is depth-biased behind the front faces' (the lit pipelines say why). The
- * instanced tessellator's drawer uses the same. */
-export function meshFaceStates(
-  back: boolean,
-  depthFormat: GPUTextureFormat,
-): { primitive: GPUPrimitiveState; depthStencil: GPUDepthStencilState } {
-  return {
-    primitive: { topology: 'triangle-list', cullMode: back ? 'front' : 'back', frontFace: 'ccw' },
-    depthStencil: {
-      format: depthFormat,
-      depthWriteEnabled: true,
-      depthCompare: 'less',
-      ...(back ? { depthBias: BACK_FACE_DEPTH_BIAS, depthBiasSlopeScale: BACK_FACE_DEPTH_SLOPE } : {}),
-    },
-  };
-}
-/** Vertex buffers of the mesh: positions then normals, float32x3, tightly packed. */
-const MESH_BUFFERS: GPUVertexBufferLayout[] = [
-  { arrayStride: 12, attributes: [{ shaderLocation: 0, offset: 0, format: 'float32x3' }] },
-  { arrayStride: 12, attributes: [{ shaderLocation: 1, offset: 0, format: 'float32x3' }] },
-];
-const TIMED_PASSES = ['shadow', 'lit'] as const;
-/** Timing slots: one per region of a split view (DrawOptions.region.slot). */
-const TIMING_SLOTS = 2;
-
-/** The patch colours (declared in contract.ts, where the lit shader's palette comes from too). */
-export { PATCH_COLOURS } from '../contract/contract.ts';
+/** The patch colours (declared in contract/render.ts, where the lit shader's palette comes from too). */
+export { PATCH_COLOURS } from '../contract/render.ts';
 
 export class Renderer {
   readonly device: GPUDevice;
@@ -171,7 +114,7 @@ export class Renderer {
 
   /** [open, closed] (setMesh's `closed`). */
   #shadowPipelines: GPURenderPipeline[] = [];
-  /** [front faces, back faces]: a closed surface draws the first, an open one both (below). */
+  /** [front faces, back faces]: a closed surface draws the first, an open one both (pipelines.ts says why). */
   #litPipelines: GPURenderPipeline[] = [];
   #closed = false;
   #groundPipeline: GPURenderPipeline;
@@ -213,15 +156,7 @@ export class Renderer {
     return this.#timingStalled;
   }
 
-  #timing: {
-    querySet: GPUQuerySet;
-    resolve: GPUBuffer;
-    read: GPUBuffer;
-    state: 'idle' | 'copied' | 'mapping';
-    last: Record<string, number>;
-    /** The slots the copied frame wrote. */
-    slots: number;
-  } | null = null;
+  #timing: RenderTiming | null = null;
 
   static create(device: GPUDevice, options: RendererOptions): Renderer {
     return new Renderer(device, options);
@@ -258,12 +193,8 @@ export class Renderer {
       usage: GPUBufferUsage.INDIRECT | GPUBufferUsage.STORAGE,
     });
 
-    const layouts = {} as Record<RenderBindGroup, GPUBindGroupLayout>;
-    for (const [name, entries] of Object.entries(RENDER_BIND_GROUPS) as [RenderBindGroup, readonly GPUBindGroupLayoutEntry[]][]) {
-      // A vertex-visible storage layout is itself invalid where the vertex stage has none.
-      if (name === 'vertexStorage' && !this.vertexStorage) continue;
-      layouts[name] = device.createBindGroupLayout({ label: `${name} bind group layout`, entries: [...entries] });
-    }
+    const pipelines = createRenderPipelines(device, this.colorFormat, this.sampleCount, this.vertexStorage);
+    const layouts = pipelines.layouts;
     this.#vertexStorageLayout = layouts.vertexStorage ?? null;
     this.#wireArgsLayout = layouts.wireArgs;
     this.#patchKinds = device.createBuffer({
@@ -285,180 +216,23 @@ export class Renderer {
       ],
     });
 
-    const pipelineLayout = (name: RenderPipelineName) =>
-      device.createPipelineLayout({
-        label: `${name} pipeline layout`,
-        // Without vertex-stage storage the lit pipeline has no patch-colour group (litVertexPlain).
-        bindGroupLayouts: RENDER_PIPELINE_GROUPS[name].filter((g) => layouts[g]).map((g) => layouts[g]),
-      });
-    const module = (name: RenderPipelineName) =>
-      device.createShaderModule({ label: `${name} shader`, code: RENDER_SHADERS[name].join('\n') });
-    const shadowModule = module('shadow');
-    const litModule = module('lit');
-    const groundModule = module('ground');
-    const backdropModule = module('backdrop');
-    const wireModule = this.vertexStorage ? module('wireframe') : null;
-    const cageModule = module('cage');
-    const wireArgsModule = module('wireArgs');
-
-    if (this.vertexStorage)
-      this.#heatLayout = device.createBindGroupLayout({ label: 'heat bind group layout', entries: [...HEAT_BIND_GROUP] });
     this.#heatUniforms = device.createBuffer({
       label: 'heat uniforms',
       size: HEAT_UNIFORMS.size,
       usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
-    // The lit pipeline's groups with the heat group in place of the patch colours' (group 2).
-    const heatLayout = this.#heatLayout
-      ? device.createPipelineLayout({
-          label: 'heat pipeline layout',
-          bindGroupLayouts: [layouts.scene, layouts.shading, this.#heatLayout],
-        })
-      : null;
-    const heatModule = device.createShaderModule({
-      label: 'heat shader',
-      code: [sceneWgsl, commonWGSL, heatRenderWgsl, heatWGSL].join('\n'),
-    });
+    this.#heatLayout = pipelines.heatGroupLayout;
+    this.#shadowPipelines = pipelines.shadow;
+    this.#litPipelines = pipelines.lit;
+    this.#heatPipelines = pipelines.heat;
+    this.#groundPipeline = pipelines.ground;
+    this.#backdropPipeline = pipelines.backdrop;
+    this.#wirePipeline = pipelines.wire;
+    this.#wireArgsPipeline = pipelines.wireArgs;
+    this.#cageHiddenPipeline = pipelines.cageHidden;
+    this.#cageVisiblePipeline = pipelines.cageVisible;
 
-    const multisample = { count: this.sampleCount };
-    const blend: GPUBlendState = {
-      color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha', operation: 'add' },
-      alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha', operation: 'add' },
-    };
-    const opaqueTarget = [{ format: this.colorFormat }];
-    const blendedTarget = [{ format: this.colorFormat, blend }];
-    // Overlays test against the mesh's depth but never write it.
-    const overlayDepth = (compare: GPUCompareFunction): GPUDepthStencilState => ({
-      format: DEPTH_FORMAT,
-      depthWriteEnabled: false,
-      depthCompare: compare,
-    });
-
-    // The shadow pipeline twice, by the mesh's cage (setMesh): an open surface casts from both
-    // faces; a closed one's shadow map keeps the faces turned AWAY from the light: the lit side
-    // then never shadows itself (culling those back faces there drew acne stripes all over the
-    // lit side).
-    for (const closed of [false, true]) {
-      this.#shadowPipelines[+closed] = device.createRenderPipeline({
-        label: closed ? 'shadow pipeline (closed: faces towards the light culled)' : 'shadow pipeline (open: two-sided)',
-        layout: pipelineLayout('shadow'),
-        vertex: { module: shadowModule, entryPoint: 'shadowVertex', buffers: [MESH_BUFFERS[0]] },
-        primitive: { topology: 'triangle-list', cullMode: closed ? 'front' : 'none', frontFace: 'ccw' },
-        // Slope-scaled bias against acne on surfaces the light grazes.
-        depthStencil: { format: DEPTH_FORMAT, depthWriteEnabled: true, depthCompare: 'less', depthBias: 2, depthBiasSlopeScale: 2.0 },
-      });
-    }
-    // The lit and heat pipelines by the faces they draw. A closed surface draws its front faces
-    // only: its back faces would fight them along occlusion contours (the dotted brow of issue
-    // 13) and show where a thin sliver folds. An open surface also draws its back faces (lit from
-    // the side seen, wgsl/render/lit.wgsl), in a second draw pushed back by a slope-scaled depth bias:
-    // at an occlusion contour the tessellation folds over by a fraction of a pixel, the two
-    // sheets there lie at one depth and steep, and the bias lets the front sheet win, where one
-    // depth test for both drew the back sheet's inside as dark dots along the contour. An inside
-    // seen through an opening has no front face near it in depth, so it shows as before.
-    for (const back of [false, true]) {
-      const side = back ? 'back faces, depth-biased behind the front faces' : 'front faces';
-      const { primitive, depthStencil } = meshFaceStates(back, DEPTH_FORMAT);
-      this.#litPipelines[+back] = device.createRenderPipeline({
-        label: `lit pipeline (${side})`,
-        layout: pipelineLayout('lit'),
-        vertex: { module: litModule, entryPoint: this.vertexStorage ? 'litVertex' : 'litVertexPlain', buffers: MESH_BUFFERS },
-        fragment: { module: litModule, entryPoint: 'litFragment', targets: opaqueTarget },
-        primitive,
-        depthStencil,
-        multisample,
-      });
-      if (!heatLayout) continue;
-      this.#heatPipelines[+back] = device.createRenderPipeline({
-        label: `heat pipeline (${side})`,
-        layout: heatLayout,
-        vertex: { module: heatModule, entryPoint: 'heatVertex', buffers: MESH_BUFFERS },
-        fragment: { module: heatModule, entryPoint: 'heatFragment', targets: opaqueTarget },
-        primitive,
-        depthStencil,
-        multisample,
-      });
-    }
-    this.#groundPipeline = device.createRenderPipeline({
-      label: 'ground pipeline',
-      layout: pipelineLayout('ground'),
-      vertex: { module: groundModule, entryPoint: 'groundVertex' },
-      fragment: { module: groundModule, entryPoint: 'groundFragment', targets: blendedTarget },
-      primitive: { topology: 'triangle-strip', cullMode: 'none' },
-      depthStencil: overlayDepth('less'),
-      multisample,
-    });
-    this.#backdropPipeline = device.createRenderPipeline({
-      label: 'backdrop pipeline',
-      layout: pipelineLayout('backdrop'),
-      vertex: { module: backdropModule, entryPoint: 'backdropVertex' },
-      fragment: { module: backdropModule, entryPoint: 'backdropFragment', targets: opaqueTarget },
-      primitive: { topology: 'triangle-list' },
-      depthStencil: overlayDepth('always'),
-      multisample,
-    });
-    if (wireModule)
-      this.#wirePipeline = device.createRenderPipeline({
-        label: 'wireframe pipeline',
-        layout: pipelineLayout('wireframe'),
-        vertex: { module: wireModule, entryPoint: 'wireVertex' },
-        fragment: { module: wireModule, entryPoint: 'wireFragment', targets: blendedTarget },
-        primitive: { topology: 'line-list' },
-        depthStencil: overlayDepth('less-equal'),
-        multisample,
-      });
-    const cageLayout = pipelineLayout('cage');
-    const cagePipeline = (label: string, opacity: number, compare: GPUCompareFunction) =>
-      device.createRenderPipeline({
-        label,
-        layout: cageLayout,
-        vertex: {
-          module: cageModule,
-          entryPoint: 'cageVertex',
-          buffers: [
-            {
-              arrayStride: CAGE_LINE_STRIDE,
-              attributes: [
-                { shaderLocation: 0, offset: 0, format: 'float32x3' },
-                { shaderLocation: 1, offset: 12, format: 'unorm8x4' },
-              ],
-            },
-          ],
-        },
-        fragment: { module: cageModule, entryPoint: 'cageFragment', targets: blendedTarget, constants: { OPACITY: opacity } },
-        primitive: { topology: 'line-list' },
-        depthStencil: overlayDepth(compare),
-        multisample,
-      });
-    // The cage mostly floats outside the limit surface; where it dips behind, show it as a ghost.
-    this.#cageHiddenPipeline = cagePipeline('cage overlay (hidden part) pipeline', 0.22, 'greater');
-    this.#cageVisiblePipeline = cagePipeline('cage overlay pipeline', 1.0, 'less-equal');
-    this.#wireArgsPipeline = device.createComputePipeline({
-      label: 'wireframe args pipeline',
-      layout: pipelineLayout('wireArgs'),
-      compute: { module: wireArgsModule, entryPoint: 'wireArgsMain' },
-    });
-
-    if (options.timestamps) {
-      const count = TIMED_PASSES.length * 2 * TIMING_SLOTS;
-      this.#timing = {
-        querySet: device.createQuerySet({ label: 'render timestamps', type: 'timestamp', count }),
-        // One 256-byte-aligned block per slot (resolveQuerySet's destination offset must be).
-        resolve: device.createBuffer({
-          label: 'render timestamps resolve',
-          size: 256 * (TIMING_SLOTS - 1) + 8 * TIMED_PASSES.length * 2,
-          usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC,
-        }),
-        read: device.createBuffer({
-          label: 'render timestamps readback',
-          size: count * 8,
-          usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST,
-        }),
-        state: 'idle',
-        last: {},
-        slots: 1,
-      };
-    }
+    if (options.timestamps) this.#timing = createRenderTiming(device);
   }
 
   /** The mesh to draw: the tessellator's output (its buffers live as long as it does) or the cage's.

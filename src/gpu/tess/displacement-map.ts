@@ -4,7 +4,7 @@
  * (wgsl/tess/displace.wgsl surfaceAt, called by wgsl/tess/outputs.wgsl for every surface). The CPU
  * reference of the same surface is src/subdiv/displace.ts.
  *
- * Data layout (arenas of src/gpu/contract/contract.ts, packed here once per cage and map):
+ * Data layout (arenas of src/gpu/contract/tess.ts, packed here once per cage and map):
  *   TESS_STATIC heightTexels  the map's raw texels, row-major from the image's top row, 4 per
  *                             word for 8-bit maps (texel i at bits 8·(i mod 4) of word i/4), 2
  *                             per word for 16-bit ones: 1 or 2 bytes a texel, as the talk counts.
@@ -35,7 +35,7 @@
 import type { Cage } from '../../mesh/types.ts';
 import type { HeightMap, HeightWrap } from '../../mesh/heightmap.ts';
 import { faceCornerUvs, faceSampleRange } from '../../mesh/uv.ts';
-import { DISP_TRI_WORD } from '../contract/contract.ts';
+import { DISP_TRI_WORD } from '../contract/tess.ts';
 import { fannedRoundCentre, type PreparedMesh } from './prepare.ts';
 
 /** What may change without re-uploading the map: the uniforms. */

@@ -10,7 +10,7 @@ import { prepareMesh, type PreparedMesh } from './prepare.ts';
 import { readBuffer, readMesh, type MeshReadback } from '../device/readback.ts';
 import { faceParam, type FaceParam } from './face-params.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
-import { decodeBary, NO_OWNER } from '../contract/contract.ts';
+import { decodeBary, NO_OWNER } from '../contract/tess.ts';
 import { bakeTables } from '../../pattern/tables.ts';
 import { releaseSurfaceData, surfaceScheme, type SurfaceData, type SurfaceId } from '../surface/registry.ts';
 import type { Cage } from '../../mesh/types.ts';

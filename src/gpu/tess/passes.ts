@@ -1,6 +1,6 @@
 /**
  * The compute tessellator's passes as code: which WGSL each pass compiles (the generated prelude
- * of contract.ts, then the files), its entry point, and the bindings that entry point uses, from
+ * of contract/contract.ts, then the files), its entry point, and the bindings that entry point uses, from
  * which its explicit bind group layout comes. tessellator.ts builds its pipelines from this, and
  * tests/contract*.test.ts check it against the contract without building anything.
  */
@@ -19,15 +19,10 @@ import scanWgsl from '../../../wgsl/tess/scan.wgsl?raw';
 import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
 import { CC_BUILD_WGSL as ccBuildWgsl } from '../cc/shaders.ts';
 import { type SurfaceId, surfaceScheme } from '../surface/registry.ts';
-import {
-  CC_BUILD_BINDINGS,
-  CC_BUILD_GROUP,
-  scanPrelude,
-  TESS_BINDINGS,
-  TESS_GROUP,
-  tessPrelude,
-  usedBindings,
-} from '../contract/contract.ts';
+import { CC_BUILD_BINDINGS, CC_BUILD_GROUP } from '../contract/cc.ts';
+import { scanPrelude, tessPrelude } from '../contract/contract.ts';
+import { TESS_BINDINGS, TESS_GROUP } from '../contract/tess.ts';
+import { usedBindings } from '../contract/define.ts';
 
 /** The tessellator's surfaces (src/gpu/surface/registry.ts): Phong tessellation, the exact
  * Catmull-Clark limit, or one of the three approximations of it. */
@@ -75,7 +70,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     weld: code(surfaceWgsl, displaceWgsl, outputsWgsl, weldWgsl),
     plan: code(patternWgsl, planWgsl),
     emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
-    // The patch build's own prelude (contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
+    // The patch build's own prelude (contract/contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
     ccBuild: ccBuildWgsl,
   };
   type Module = keyof typeof modules;

@@ -29,7 +29,7 @@
 import { type Cage, type SubdivOptions, SHARPNESS_INFINITE } from '../../mesh/types.ts';
 import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../../pattern/clamped.ts';
-import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from '../contract/contract.ts';
+import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from '../contract/tess.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
 
 /** Faces with at least this many corners are fanned round a centre vertex (see above). */
@@ -68,7 +68,7 @@ export interface PreparedMesh {
   triFan: Uint32Array;
   /** Two cage vertices per edge, lower index first. */
   edgeVerts: Uint32Array;
-  /** One triangle of each edge and the edge's local index in it (an OwnerWord, contract.ts). */
+  /** One triangle of each edge and the edge's local index in it (an OwnerWord, contract/tess.ts). */
   edgeOwner: Uint32Array;
   /** The edge's second triangle (an OwnerWord), NO_OWNER on a boundary edge: with edgeOwner, the
    * two triangles whose interiors the factor rule looks into (wgsl/tess/factors.wgsl). */
@@ -94,7 +94,7 @@ export interface PreparedMesh {
 export { NO_OWNER };
 
 /** The pattern frame of a triangle with these reverse flags, as a PatternFrameWord (its bits are
- * declared in contract.ts). */
+ * declared in contract/tess.ts). */
 export function packPatternFrame(reverse: Reverse): number {
   return PATTERN_FRAME_WORD.pack(chooseFrame(reverse));
 }

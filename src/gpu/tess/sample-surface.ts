@@ -6,7 +6,8 @@
  */
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
 import { surfaceScheme } from '../surface/registry.ts';
-import { TESS_INPUTS, tessPrelude } from '../contract/contract.ts';
+import { TESS_INPUTS } from '../contract/tess.ts';
+import { tessPrelude } from '../contract/contract.ts';
 import type { Tessellator } from './tessellator.ts';
 import { readBuffer } from '../device/readback.ts';
 

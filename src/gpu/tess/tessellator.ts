@@ -30,7 +30,7 @@
  * ever needed.
  *
  * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the scan's
- * uniforms, the constants, the packed words) is declared in contract.ts; which code each pass
+ * uniforms, the constants, the packed words) is declared in contract/tess.ts; which code each pass
  * compiles and which bindings its entry point uses is src/gpu/tess/passes.ts; the timestamps are
  * pass-timer.ts. This file builds the pipelines, uploads a mesh (setMesh: validate, pack, bind)
  * and records the passes (encode).
@@ -40,16 +40,12 @@ import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
 import { isAccSurface, type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './passes.ts';
 import { PassTimer } from '../device/pass-timer.ts';
+import type { ArenaLayout } from '../contract/define.ts';
+import { grid2d, groupsFor } from '../contract/constants.ts';
 import {
-  type ArenaLayout,
   ATTEMPTS,
   BUDGET,
-  CC_BUILD_GROUP,
-  CC_RANGE,
   EMIT_TRIANGLES_ARGS_OFFSET,
-  type CcBuildBinding,
-  grid2d,
-  groupsFor,
   SCAN_BLOCK,
   SCAN_GROUP,
   SCAN_PARAMS,
@@ -64,7 +60,8 @@ import {
   type TessBinding,
   type TessSizes,
   WELD_EDGES_ARGS_OFFSET,
-} from '../contract/contract.ts';
+} from '../contract/tess.ts';
+import { CC_BUILD_GROUP, CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
 import { phongTriAlphas } from '../surface/phong.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -74,7 +71,7 @@ import { PatternTables } from '../../pattern/tables.ts';
 export { prepareMesh, type PreparedMesh } from './prepare.ts';
 export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPasses } from './passes.ts';
 
-export { grid2d } from '../contract/contract.ts';
+export { grid2d } from '../contract/constants.ts';
 
 /** Compute passes one rebuild records (the patch build, the bulge term, factors and count + budget
  * per attempt, weld, plan, emit), each timed by a pair of timestamps. */
@@ -519,12 +516,12 @@ export class Tessellator {
     return this.requireMesh().work;
   }
 
-  /** Word offsets of the scratch buffer's arrays (contract.ts TESS_WORK), e.g. `.edgeF`. */
+  /** Word offsets of the scratch buffer's arrays (contract/tess.ts TESS_WORK), e.g. `.edgeF`. */
   get workLayout(): Readonly<Record<WorkName, number>> {
     return this.requireMesh().workLayout.offset;
   }
 
-  /** Float offsets of the cage buffer's arrays (contract.ts TESS_CAGE), e.g. `.limitPositions`. */
+  /** Float offsets of the cage buffer's arrays (contract/tess.ts TESS_CAGE), e.g. `.limitPositions`. */
   get cageLayout(): Readonly<Record<CageName, number>> {
     return this.requireMesh().cageLayout.offset;
   }

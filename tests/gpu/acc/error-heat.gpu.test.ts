@@ -25,7 +25,7 @@ import { AccHeatPass, cageDiagonal, HEAT_RAMP } from '../../../src/gpu/acc/heat.
 import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { KIND_REGULAR, type AccScheme } from '../../../src/subdiv/acc.ts';
 import { AccSurface } from '../../../src/subdiv/acc-evaluate.ts';
-import { decodeBary } from '../../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import { loadCage, makeCage } from '../../../src/mesh/index.ts';
 import { Renderer } from '../../../src/gpu/render/renderer.ts';
 import { destroyMesh, uploadCageMesh } from '../../../src/gpu/render/cage-mesh.ts';

@@ -18,7 +18,7 @@ import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import type { FactorParams } from '../../../src/gpu/contract/tessellated-mesh.ts';
-import { decodeBary } from '../../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import { loadCage, type Cage } from '../../../src/mesh/index.ts';
 import creasedBox from '../../../public/models/creased-box.obj?raw';
 import creature from '../../../public/models/creature.obj?raw';

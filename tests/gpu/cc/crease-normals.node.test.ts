@@ -50,7 +50,7 @@ import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { loadCage } from '../../../src/mesh/index.ts';
 import type { MeshReadback } from '../../../src/gpu/device/readback.ts';
-import { decodeBary } from '../../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import type { Cage } from '../../../src/mesh/types.ts';
 import type { PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
 import { SHARPNESS_INFINITE } from '../../../src/mesh/types.ts';

@@ -14,7 +14,7 @@ import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
-import { decodeBary } from '../../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import { cornerLimit, creasedGridCube } from '../../support/single-crease-fixture.ts';
 
 const POSITION_BOUND = 1e-5;
@@ -56,7 +56,7 @@ describe('single-crease patches on the GPU', () => {
     const samples = randomSamples(mesh, 3000);
     const gpu = await sampleSurface(t, samples);
     const nV = mesh.vertexCount;
-    // The limit positions, then the limit normals, 3 floats per vertex each (contract.ts TESS_CAGE).
+    // The limit positions, then the limit normals, 3 floats per vertex each (contract/tess.ts TESS_CAGE).
     expect(t.cageLayout.limitNormals).toBe(t.cageLayout.limitPositions + 3 * nV);
     const limits = new Float32Array(await readBuffer(device, t.cageBuffer, 4 * 6 * nV, 4 * t.cageLayout.limitPositions));
     expect((await device.popErrorScope())?.message).toBeUndefined();

@@ -5,17 +5,10 @@
  * Exact comparisons: nothing here is computed, only moved.
  */
 import { afterAll, describe, expect, it } from 'vitest';
-import {
-  BARY_WORD,
-  constantsWgsl,
-  OWNER_WORD,
-  PATTERN_FRAME_WORD,
-  SCAN_GROUP,
-  SCENE_UNIFORMS,
-  SHARED_CONSTANTS,
-  wgslPrefix,
-  type BitWord,
-} from '../../../src/gpu/contract/contract.ts';
+import { wgslPrefix, type BitWord } from '../../../src/gpu/contract/define.ts';
+import { constantsWgsl, SHARED_CONSTANTS } from '../../../src/gpu/contract/constants.ts';
+import { BARY_WORD, OWNER_WORD, PATTERN_FRAME_WORD, SCAN_GROUP } from '../../../src/gpu/contract/tess.ts';
+import { SCENE_UNIFORMS } from '../../../src/gpu/contract/render.ts';
 import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { getDevice, releaseDevice } from '../../support/gpu-device.ts';
 

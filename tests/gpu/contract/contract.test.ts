@@ -1,5 +1,5 @@
 /**
- * The TypeScript↔WGSL contract (src/gpu/contract/contract.ts), checked from the WGSL side: the generated
+ * The TypeScript↔WGSL contract (src/gpu/contract/), checked from the WGSL side: the generated
  * text is parsed back and laid out by WGSL's own rules (written out here, independently of
  * layout.ts), and must give the offsets, sizes and bit fields the TypeScript views use. The
  * renderer's shaders must declare exactly the bindings its pipeline layouts are built from.
@@ -8,35 +8,25 @@ import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
-  BARY_CORNER1,
-  BARY_CORNER2,
-  BARY_WORD,
-  constantsWgsl,
-  decodeBary,
   defineArena,
   defineBindGroup,
   defineBits,
-  GRID_X,
-  PATTERN_FRAME_WORD,
-  RENDER_BIND_GROUPS,
-  RENDER_PIPELINE_GROUPS,
-  SCAN_WORKGROUP_SIZE,
-  SCENE_UNIFORMS,
-  SHARED_CONSTANTS,
   STAGE,
   usedBindings,
-  WORKGROUP_SIZE,
   wgslPrefix,
   type BitWord,
-  GROUND_EXTENT,
-  PATCH_COLOURS,
-  sceneWgsl,
   wgslF32,
-  CC_BUILD_GROUP,
+} from '../../../src/gpu/contract/define.ts';
+import { constantsWgsl, GRID_X, SCAN_WORKGROUP_SIZE, SHARED_CONSTANTS, WORKGROUP_SIZE } from '../../../src/gpu/contract/constants.ts';
+import {
+  BARY_CORNER1,
+  BARY_CORNER2,
+  BARY_WORD,
+  decodeBary,
+  PATTERN_FRAME_WORD,
   OWNER_WORD,
   SCAN_GROUP,
   SCAN_PARAMS,
-  scanPrelude,
   TESS_BINDINGS,
   TESS_CAGE,
   TESS_CONSTANTS,
@@ -45,14 +35,22 @@ import {
   TESS_PARAMS,
   TESS_STATIC,
   TESS_WORK,
-  tessPrelude,
   type TessSizes,
-} from '../../../src/gpu/contract/contract.ts';
+} from '../../../src/gpu/contract/tess.ts';
+import { CC_BUILD_GROUP } from '../../../src/gpu/contract/cc.ts';
+import {
+  RENDER_BIND_GROUPS,
+  RENDER_PIPELINE_GROUPS,
+  SCENE_UNIFORMS,
+  GROUND_EXTENT,
+  PATCH_COLOURS,
+} from '../../../src/gpu/contract/render.ts';
+import { sceneWgsl, scanPrelude, tessPrelude } from '../../../src/gpu/contract/contract.ts';
 import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../../../src/pattern/tables.ts';
 import { defineStruct } from '../../../src/gpu/contract/layout.ts';
 import { packPatternFrame } from '../../../src/gpu/tess/prepare.ts';
-import { RENDER_SHADERS } from '../../../src/gpu/render/renderer.ts';
+import { RENDER_SHADERS } from '../../../src/gpu/render/pipelines.ts';
 import { chooseFrame } from '../../../src/pattern/clamped.ts';
 
 // ---- WGSL's uniform layout rules (WGSL spec, "Memory layout"), for the types the contract uses.

@@ -39,7 +39,7 @@ import { prepareAccSurface } from '../../../src/gpu/acc/surface.ts';
 import { AccPatches } from '../../../src/gpu/acc/patches.ts';
 import { faceParam } from '../../../src/gpu/tess/face-params.ts';
 import { phongPoint } from '../../../src/gpu/surface/phong.ts';
-import { decodeBary } from '../../../src/gpu/contract/contract.ts';
+import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import { DEFAULT_OPTIONS, loadCage, uvAtSubFace, type Cage } from '../../../src/mesh/index.ts';
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';

@@ -8,7 +8,7 @@
 import { describe, it, expect } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { prepareMesh, type PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
-import { OWNER_WORD } from '../../../src/gpu/contract/contract.ts';
+import { OWNER_WORD } from '../../../src/gpu/contract/tess.ts';
 import { loadCage, type Cage } from '../../../src/mesh/index.ts';
 import { cube, cubeFaces, quadTorus } from '../../support/subdiv-fixtures.ts';
 

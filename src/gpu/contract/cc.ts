@@ -1,0 +1,29 @@
+/**
+ * The Catmull-Clark patch build's side of the contract (src/gpu/cc/build.ts, wgsl/cc/build.wgsl):
+ * its bind group, the point range of a level dispatch, and the sentinel of its words. The words
+ * themselves are declared in src/gpu/cc/words.ts; what its shader starts with is assembled in
+ * contract.ts (ccBuildPrelude).
+ */
+import { defineBindGroup } from './define.ts';
+import { defineStruct } from './layout.ts';
+
+/** The point range of one level dispatch of the patch build (face points, or edge and vertex points). */
+export const CC_RANGE = defineStruct('Range', [
+  ['first', 'u32', 'Global index of the range’s first point.'],
+  ['count', 'u32'],
+] as const);
+
+/**
+ * The patch build's group (wgsl/cc/build.wgsl): it reads the static words, writes cageBuf, and its
+ * level dispatches take their point range in `range`.
+ */
+export const CC_BUILD_GROUP = defineBindGroup(0, {
+  params: { binding: 0, space: 'uniform', type: 'Params' },
+  staticBuf: { binding: 1, space: 'read', type: 'array<u32>' },
+  cageBuf: { binding: 2, space: 'read_write', type: 'array<f32>' },
+  range: { binding: 3, space: 'uniform', type: 'Range' },
+});
+export type CcBuildBinding = keyof typeof CC_BUILD_GROUP.binding;
+export const CC_BUILD_BINDINGS = Object.keys(CC_BUILD_GROUP.binding) as CcBuildBinding[];
+/** Sentinel of the Catmull-Clark words: no fan, no region, an idle slice thread. */
+export const CC_NONE = 0xffffffff;

@@ -1,0 +1,74 @@
+/**
+ * The renderer's side of the contract (src/gpu/render/renderer.ts, wgsl/render/*.wgsl): its
+ * per-frame uniforms (SCENE_UNIFORMS), its bind group layouts and which pipeline uses which, as the
+ * descriptors the renderer creates (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS), the ground's
+ * extent and the patch colours. What its shaders start with is assembled in contract.ts (sceneWgsl).
+ */
+import { STAGE } from './define.ts';
+import { defineStruct } from './layout.ts';
+
+/**
+ * The renderer's per-frame uniforms (wgsl/render/common.wgsl reads them as `scene`), written by
+ * Renderer every frame. The fields' comments travel into the generated WGSL.
+ */
+export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
+  ['viewProj', 'mat4x4<f32>', 'World to clip space of the camera (WebGPU clip space, z in 0..1).'],
+  ['lightViewProj', 'mat4x4<f32>', 'World to clip space of the light (the shadow map).'],
+  ['model', 'mat4x4<f32>', "Model to world: a rotation only (the model's up axis to +Y), so it also turns normals."],
+  ['eye', 'vec4<f32>', "xyz: the camera's position; w: the model's bounding radius."],
+  ['toLight', 'vec4<f32>', 'xyz: unit vector towards the light; w: one shadow-map texel in uv units.'],
+  ['center', 'vec4<f32>', "xyz: the bounding sphere's centre; w: the ground's height."],
+  ['viewport', 'vec4<f32>', 'x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.'],
+] as const);
+
+/** The renderer's bind group layouts, entry for entry. The WGSL declares each at its group index
+ * in the pipelines of RENDER_PIPELINE_GROUPS (tests/gpu/contract/contract.test.ts compares them). */
+export const RENDER_BIND_GROUPS = {
+  /** The per-frame uniforms (SCENE_UNIFORMS). */
+  scene: [{ binding: 0, visibility: STAGE.VERTEX | STAGE.FRAGMENT, buffer: { type: 'uniform' } }],
+  /** The shadow map and its comparison sampler. */
+  shading: [
+    { binding: 0, visibility: STAGE.FRAGMENT, texture: { sampleType: 'depth' } },
+    { binding: 1, visibility: STAGE.FRAGMENT, sampler: { type: 'comparison' } },
+  ],
+  /** Two arrays read by vertex index: the wireframe's indices and positions, or the patch
+   * colours' source triangles and kinds. */
+  vertexStorage: [
+    { binding: 0, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
+    { binding: 1, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
+  ],
+  /** The mesh's drawIndexedIndirect args in, the wireframe's drawIndirect args out. */
+  wireArgs: [
+    { binding: 0, visibility: STAGE.COMPUTE, buffer: { type: 'read-only-storage' } },
+    { binding: 1, visibility: STAGE.COMPUTE, buffer: { type: 'storage' } },
+  ],
+} as const satisfies Record<string, readonly GPUBindGroupLayoutEntry[]>;
+
+export type RenderBindGroup = keyof typeof RENDER_BIND_GROUPS;
+
+/** Which bind group layout sits at each group index of each of the renderer's pipelines. */
+export const RENDER_PIPELINE_GROUPS = {
+  shadow: ['scene'],
+  lit: ['scene', 'shading', 'vertexStorage'],
+  ground: ['scene', 'shading'],
+  backdrop: ['scene'],
+  wireframe: ['scene', 'vertexStorage'],
+  cage: ['scene'],
+  wireArgs: ['wireArgs'],
+} as const satisfies Record<string, readonly RenderBindGroup[]>;
+
+export type RenderPipelineName = keyof typeof RENDER_PIPELINE_GROUPS;
+
+/** How far the ground plane reaches from the model's centre, in bounding radii: the ground shader
+ * draws it that far, camera.ts fits the clip planes and the light's box around it. */
+export const GROUND_EXTENT = 4;
+
+/** Patch kinds (src/gpu/cc/build.ts PatchKind) in patch-colour mode, sRGB, indexed by kind: the
+ * lit shader's palette (PATCH_SRGB) and the demo's legend. */
+export const PATCH_COLOURS: readonly { kind: number; name: string; srgb: readonly [number, number, number] }[] = [
+  { kind: 0, name: 'regular', srgb: [0.56, 0.8, 0.52] },
+  // As NVIDIA's sample's "show irregular patches": irregular quads blue, triangles purple.
+  { kind: 1, name: 'irregular quad', srgb: [0.36, 0.56, 0.98] },
+  { kind: 2, name: 'triangle / n-gon region', srgb: [0.72, 0.46, 0.92] },
+  { kind: 3, name: 'crease', srgb: [0.96, 0.82, 0.3] },
+];
