@@ -7,15 +7,17 @@
  * Keyboard (figure focused): Space or K play/pause, ← → step 0.1 s (Shift: 1 s), Home/End.
  */
 import { LINE_MODES, TRI_MODES } from '../pattern/types.ts';
-import cssText from './figure.css?inline';
 import { download, exportGif, exportPng, exportSvg, exportWebm } from './export.ts';
 import { LINE_MODE_LABEL, TRI_MODE_LABEL, fmtFactor, plural } from './labels.ts';
 import { lineFigure } from './line-figure.ts';
 import type { FigureFrame } from './model.ts';
-import { STAGES, SHAPES, parseParams, toQuery, type Kind, type Message, type Params } from './params.ts';
+import { parseParams, toQuery, type Kind, type Message, type Params } from './params.ts';
 import { PALETTES, drawScene, type Palette } from './scene.ts';
 import { isAnimated, period } from './timeline.ts';
 import { triangleFigure } from './triangle-figure.ts';
+import { h, ICON_PAUSE, ICON_PLAY, injectStyle } from './dom.ts';
+import { appendViewOptions } from './view-options.ts';
+import { addFactorSliders, type SliderEls, toPos } from './sliders.ts';
 
 export interface PlayerOptions {
   kind: Kind;
@@ -34,45 +36,10 @@ export interface PlayerOptions {
   extraMessages?: Message[];
 }
 
-const styled = new WeakSet<Document | ShadowRoot>();
-function injectStyle(root: Document | ShadowRoot): void {
-  if (styled.has(root)) return;
-  styled.add(root);
-  const style = document.createElement('style');
-  style.textContent = cssText;
-  if (root instanceof Document) root.head.append(style);
-  else root.prepend(style);
-}
-
-type Attrs = Record<string, string | number | boolean | undefined>;
-function h<K extends keyof HTMLElementTagNameMap>(
-  tag: K,
-  attrs: Attrs = {},
-  ...children: (Node | string | null | undefined)[]
-): HTMLElementTagNameMap[K] {
-  const el = document.createElement(tag);
-  for (const [k, v] of Object.entries(attrs)) {
-    if (v === undefined || v === false) continue;
-    if (k === 'class') el.className = String(v);
-    else if (k === 'text') el.textContent = String(v);
-    else el.setAttribute(k, v === true ? '' : String(v));
-  }
-  for (const c of children) if (c !== null && c !== undefined) el.append(c);
-  return el;
-}
-
-const ICON_PLAY = '<svg width="12" height="12" viewBox="0 0 12 12" aria-hidden="true"><path d="M2 1l9 5-9 5z" fill="currentColor"/></svg>';
-const ICON_PAUSE =
-  '<svg width="12" height="12" viewBox="0 0 12 12" aria-hidden="true"><path d="M2 1h3v10H2zM7 1h3v10H7z" fill="currentColor"/></svg>';
-
 const GENERIC_CAPTION: Record<Kind, [string, string]> = {
   line: ['Line patterns', 'Points of each line pattern at the same tessellation factor. Red points are sliding or new.'],
   triangle: ['Triangle patterns', 'Triangle patterns at the same edge factors. Red vertices are the ones moving at this moment.'],
 };
-
-/** Log-scaled factor sliders: position 0..1000 ↔ factor 1..max. */
-const toPos = (f: number, max: number) => Math.round((1000 * Math.log(Math.max(1, f))) / Math.log(max));
-const fromPos = (p: number, max: number) => Math.round(Math.exp((p / 1000) * Math.log(max)) * 100) / 100;
 
 export function prefersReducedMotion(): boolean {
   return typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
@@ -99,7 +66,7 @@ export class DiagramPlayer {
     scrub?: HTMLInputElement;
     time?: HTMLElement;
     counts: HTMLElement;
-    sliders: Map<string, { input: HTMLInputElement; out: HTMLOutputElement; wrap: HTMLElement }>;
+    sliders: SliderEls;
     status?: HTMLElement;
     embed?: HTMLTextAreaElement;
     theme?: HTMLButtonElement;
@@ -471,72 +438,7 @@ export class DiagramPlayer {
 
     // Row 4: view options, theme, export, share.
     const opts = h('div', { class: 'td-row' });
-    const select = (label: string, values: readonly string[], get: () => string, set: (v: string) => void, testid: string) => {
-      const s = h('select', { 'aria-label': label, 'data-testid': testid });
-      for (const v of values) s.append(h('option', { value: v, text: v, selected: v === get() }));
-      s.addEventListener('change', () => {
-        set(s.value);
-        this.changed();
-      });
-      opts.append(h('label', {}, h('span', { class: 'td-label', text: `${label} ` }), s));
-    };
-    const toggle = (label: string, get: () => boolean, set: (v: boolean) => void) => {
-      const box = h('input', { type: 'checkbox', checked: get() });
-      box.addEventListener('change', () => {
-        set(box.checked);
-        this.changed();
-      });
-      opts.append(h('label', { class: 'td-chip' }, box, h('span', { text: label })));
-    };
-    if (p.kind === 'line') {
-      select(
-        'View',
-        ['line', 'trace'],
-        () => p.view,
-        (v) => (p.view = v as typeof p.view),
-        'view',
-      );
-      toggle(
-        'segments by size',
-        () => p.segments,
-        (v) => (p.segments = v),
-      );
-      toggle(
-        'weights',
-        () => p.labels,
-        (v) => (p.labels = v),
-      );
-      toggle(
-        'whole factors',
-        () => p.snap,
-        (v) => (p.snap = v),
-      );
-    } else {
-      select(
-        'Stage',
-        STAGES,
-        () => p.stage,
-        (v) => (p.stage = v as typeof p.stage),
-        'stage',
-      );
-      select(
-        'Shape',
-        SHAPES,
-        () => p.shape,
-        (v) => (p.shape = v as typeof p.shape),
-        'shape',
-      );
-      toggle(
-        'edge loops',
-        () => p.loops,
-        (v) => (p.loops = v),
-      );
-      toggle(
-        'vertices',
-        () => p.points,
-        (v) => (p.points = v),
-      );
-    }
+    appendViewOptions(opts, p, () => this.changed());
     els.theme = h('button', { type: 'button', 'data-testid': 'theme' });
     const themeLabel = () => (els.theme!.textContent = `Theme: ${p.theme}`);
     themeLabel();
@@ -625,84 +527,13 @@ export class DiagramPlayer {
     const p = this.params;
     this.els.sliders.clear();
     box.replaceChildren();
-    const add = (name: string, label: string, max: number, pin: (v: number) => void) => {
-      const input = h('input', {
-        type: 'range',
-        min: 0,
-        max: 1000,
-        step: 1,
-        'aria-label': `${label} (drag to pin)`,
-        'data-max': max,
-        'data-testid': `slider-${name}`,
-      });
-      const out = h('output', { text: '' });
-      input.addEventListener('input', () => {
-        pin(fromPos(Number(input.value), max));
-        this.changed();
-      });
-      const wrap = h('label', { class: 'td-slider' }, h('span', { class: 'td-label', text: label }), input, out);
-      box.append(wrap);
-      this.els.sliders.set(name, { input, out, wrap });
-    };
-    const range = (label: string, get: () => [number, number], set: (a: number, b: number) => void, max: number) => {
-      const [a, b] = get();
-      const from = h('input', {
-        type: 'number',
-        min: 1,
-        max,
-        step: 0.1,
-        value: a,
-        'aria-label': `${label} from`,
-        'data-testid': 'sweep-from',
-      });
-      const to = h('input', { type: 'number', min: 1, max, step: 0.1, value: b, 'aria-label': `${label} to`, 'data-testid': 'sweep-to' });
-      const apply = () => {
-        const x = Math.min(max, Math.max(1, Number(from.value) || 1));
-        const y = Math.min(max, Math.max(1, Number(to.value) || 1));
-        set(x, y);
-        this.rebuildSliders();
-        this.changed();
-      };
-      from.addEventListener('change', apply);
-      to.addEventListener('change', apply);
-      box.append(
-        h(
-          'div',
-          { class: 'td-slider', style: 'grid-template-columns: auto auto auto auto' },
-          h('span', { class: 'td-label', text: 'sweep' }),
-          from,
-          h('span', { class: 'td-label', text: 'to' }),
-          to,
-        ),
-      );
-    };
-    const mf = p.maxFactor;
-    if (p.kind === 'line') {
-      add('factor', 'factor', mf, (v) => (p.factor = [v]));
-      range(
-        'Factor',
-        () => [Math.min(...p.factor), Math.max(...p.factor)],
-        (a, b) => (p.factor = a === b ? [a] : [a, b]),
-        mf,
-      );
-    } else {
-      for (let i = 0; i < 3; i++) add(`f${i}`, `f${i}`, mf, (v) => (p.factors[i] = [v]));
-      if (p.modes.some((m) => m !== 'clamped')) {
-        add('inside', 'inside', 64, (v) => (p.inside = [v]));
-      }
-      const lo = Math.min(...p.factors.flat());
-      const hi = Math.max(...p.factors.flat());
-      range(
-        'Edge factors',
-        () => [lo, hi],
-        (a, b) => {
-          const tr = a === b ? [a] : [a, b];
-          p.factors = [tr, tr, tr];
-          p.inside = null;
-        },
-        mf,
-      );
-    }
+    addFactorSliders(
+      box,
+      p,
+      this.els.sliders,
+      () => this.changed(),
+      () => this.rebuildSliders(),
+    );
     if (this.frame) this.updateReadouts(this.frame);
   }
 

@@ -1314,7 +1314,7 @@ export class InstancedTessellator implements SurfaceDrawer {
   }
 
   /** SurfaceDrawer: the lit pass (evaluated again, shaded as the renderer's stored mesh): the
-   * front faces, then on an open cage its back faces (renderer.ts meshFaceStates). */
+   * front faces, then on an open cage its back faces (render/pipelines.ts meshFaceStates). */
   drawLit(pass: GPURenderPassEncoder, closed: boolean): void {
     this.drawBuckets(pass, 'lit', closed);
     if (!closed) this.drawBuckets(pass, 'lit', closed, true);

@@ -1,7 +1,7 @@
 /**
  * The compute tessellator's passes as code: which WGSL each pass compiles (the generated prelude
  * of contract/contract.ts, then the files), its entry point, and the bindings that entry point uses, from
- * which its explicit bind group layout comes. tessellator.ts builds its pipelines from this, and
+ * which its explicit bind group layout comes. pipelines.ts builds the tessellator's pipelines from this, and
  * tests/contract*.test.ts check it against the contract without building anything.
  */
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';

@@ -32,13 +32,16 @@
  * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the scan's
  * uniforms, the constants, the packed words) is declared in contract/tess.ts; which code each pass
  * compiles and which bindings its entry point uses is src/gpu/tess/passes.ts; the timestamps are
- * pass-timer.ts. This file builds the pipelines, uploads a mesh (setMesh: validate, pack, bind)
- * and records the passes (encode).
+ * pass-timer.ts; the pipelines are created by src/gpu/tess/pipelines.ts, and the arenas' words
+ * and the Params fields of a mesh are packed by src/gpu/tess/arenas.ts. This file uploads a mesh
+ * (setMesh: validate, pack, bind) and records the passes (encode).
  */
 import type { CatmullClarkData } from '../cc/build.ts';
 import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
-import { isAccSurface, type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './passes.ts';
+import { isAccSurface, type PassName, type SCAN_ENTRIES, type Surface } from './passes.ts';
+import { createTessPipelines, type Pipeline } from './pipelines.ts';
+import { type CageName, meshParams, type PackInput, packArenas, type WorkName } from './arenas.ts';
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { grid2d, groupsFor } from '../contract/constants.ts';
@@ -50,18 +53,13 @@ import {
   SCAN_GROUP,
   SCAN_PARAMS,
   scanSumsWords,
-  TESS_CAGE,
   TESS_FIXED_WORDS,
-  TESS_GROUP,
   TESS_PARAMS,
   TESS_SCANS,
-  TESS_STATIC,
-  TESS_WORK,
   type TessBinding,
-  type TessSizes,
   WELD_EDGES_ARGS_OFFSET,
 } from '../contract/tess.ts';
-import { CC_BUILD_GROUP, CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
+import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
 import { phongTriAlphas } from '../surface/phong.ts';
 import type { PreparedMesh } from './prepare.ts';
@@ -77,14 +75,6 @@ export { grid2d } from '../contract/constants.ts';
  * per attempt, weld, plan, emit), each timed by a pair of timestamps. */
 const TIMED_PASSES = 2 + 2 * ATTEMPTS + 3;
 
-interface Pipeline {
-  pipeline: GPUComputePipeline;
-  layout: GPUBindGroupLayout;
-  /** Its bindings by name, and their numbers (from its group). */
-  bindings: string[];
-  binding: Readonly<Record<string, number>>;
-}
-
 export interface TessellatorOptions {
   vertexCapacity?: number;
   triangleCapacity?: number;
@@ -97,9 +87,6 @@ export interface TessellatorOptions {
    * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
   flatBaseline?: boolean;
 }
-
-type WorkName = (typeof TESS_WORK.names)[number];
-type CageName = (typeof TESS_CAGE.names)[number];
 
 /** What setMesh packs before it binds. */
 interface Packed {
@@ -137,7 +124,7 @@ export class Tessellator {
   private readonly paramsBytes: ArrayBuffer;
   /** Indirect dispatch arguments of the emit passes, written by the budget pass. */
   private readonly emitArgs: GPUBuffer;
-  private readonly pipelines: Partial<Record<PassName, Pipeline>> = {};
+  private readonly pipelines: Partial<Record<PassName, Pipeline>>;
   private readonly scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
   private readonly scanLayout: GPUBindGroupLayout;
   private mesh?: MeshState;
@@ -179,33 +166,11 @@ export class Tessellator {
       usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
 
-    // Explicit layouts: each pass binds what its entry point uses, so a shared helper that starts
-    // reading one more buffer changes only the layouts of the passes that call it.
-    const modules = new Map<string, GPUShaderModule>();
-    for (const pass of tessellatorPasses(this.surface)) {
-      let module = modules.get(pass.module);
-      if (!module) modules.set(pass.module, (module = device.createShaderModule({ label: `tess ${pass.module}`, code: pass.code })));
-      const { names, entries } = passBindings(pass);
-      const layout = device.createBindGroupLayout({ label: pass.label, entries });
-      const pipeline = device.createComputePipeline({
-        label: pass.label,
-        layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
-        compute: { module, entryPoint: pass.entry },
-      });
-      const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
-      this.pipelines[pass.name] = { pipeline, layout, bindings: names, binding };
-    }
-    // The three scan steps share one bind group, so they share one layout: the whole SCAN_GROUP.
-    this.scanLayout = device.createBindGroupLayout({ label: 'scan', entries: SCAN_GROUP.layoutEntries() });
-    const scanModule = device.createShaderModule({ label: 'scan', code: scanCode });
-    const scanPipelineLayout = device.createPipelineLayout({ label: 'scan', bindGroupLayouts: [this.scanLayout] });
-    const scanPipeline = (step: keyof typeof SCAN_ENTRIES) =>
-      device.createComputePipeline({
-        label: `scan ${step}`,
-        layout: scanPipelineLayout,
-        compute: { module: scanModule, entryPoint: SCAN_ENTRIES[step] },
-      });
-    this.scanPipelines = { blocks: scanPipeline('blocks'), sums: scanPipeline('sums'), add: scanPipeline('add') };
+    ({
+      pipelines: this.pipelines,
+      scanPipelines: this.scanPipelines,
+      scanLayout: this.scanLayout,
+    } = createTessPipelines(device, this.surface));
 
     if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }
@@ -253,94 +218,24 @@ export class Tessellator {
     acc: AccSurface | undefined,
     disp: DisplacementData | undefined,
   ): Packed {
-    const split = this.splitsCreases;
-    const sizes: TessSizes = {
-      vertices: prepared.vertexCount,
-      extraSlots: this.extraSlots(prepared),
-      edges: prepared.edgeCount,
-      triangles: prepared.triangleCount,
-      maxFactor: this.maxFactor,
-      tableWords: this.tables.length,
-      ccWords: cc?.words.length ?? 0,
-      ccPoints: cc?.pointCount ?? 0,
-      limitVertices: cc ? prepared.vertexCount : 0,
-      accTriangles: acc ? prepared.triangleCount : 0,
-      accPatchWords: acc?.patches.topology.patches.length ?? 0,
-      accPoints: acc?.patches.topology.nPoints ?? 0,
-      heightWords: disp?.heightTexels.length ?? 0,
-      dispTriangles: disp ? prepared.triangleCount : 0,
-      dispEdges: disp ? prepared.edgeCount : 0,
-      cornerUvs: disp ? disp.cornerUvs.length / 2 : 0,
-    };
-
-    const staticLayout = TESS_STATIC.layout(sizes);
-    const staticWords = packArena(TESS_STATIC.names, staticLayout, new Uint32Array(staticLayout.words), {
+    const input: PackInput = {
+      prepared,
+      cc,
+      acc,
+      disp,
       tables: this.tables,
-      triVerts: prepared.triVerts,
-      triEdges: prepared.triEdges,
-      triPatternFrame: prepared.triPatternFrame,
-      edgeVerts: prepared.edgeVerts,
-      edgeOwner: prepared.edgeOwner,
-      edgeTwin: prepared.edgeTwin,
-      vertexOwner: prepared.vertexOwner,
-      cornerSlot: split ? prepared.cornerSlot : prepared.triVerts,
-      slotOwner: split ? prepared.slotOwner : undefined,
-      edgeSplit: split ? prepared.edgeSplit : undefined,
-      cc: cc?.words,
-      accTri: acc?.triangles,
-      accPatches: acc?.patches.topology.patches,
-      heightTexels: disp?.heightTexels,
-      dispTri: disp?.dispTri,
-      dispEdge: disp?.dispEdge,
-    });
-    const cageLayout = TESS_CAGE.layout(sizes);
-    // The refined points and the limits are written by the patch build.
-    const cageWords = packArena(TESS_CAGE.names, cageLayout, new Float32Array(cageLayout.words), {
-      positions: prepared.positions,
-      normals: prepared.normals,
-      phongAlpha: prepared.triPhongAlpha,
-      cornerUvs: disp?.cornerUvs,
-    });
-    const workLayout = TESS_WORK.layout(sizes);
+      maxFactor: this.maxFactor,
+      splitsCreases: this.splitsCreases,
+      extraSlots: this.extraSlots(prepared),
+    };
+    const packed = packArenas(input);
+    const { staticWords, cageLayout, cageWords, workLayout } = packed;
     if (4 * workLayout.words > this.device.limits.maxStorageBufferBindingSize) {
       throw new Error(
         `the cage is too large: its scratch buffer (${4 * workLayout.words} bytes) exceeds the device's storage binding limit`,
       );
     }
-    const ccBase = staticLayout.offset.cc;
-    TESS_PARAMS.write(new DataView(this.paramsBytes), {
-      nVerts: prepared.vertexCount,
-      nSlots: prepared.vertexCount + sizes.extraSlots,
-      nTris: prepared.triangleCount,
-      nEdges: prepared.edgeCount,
-      maxFactor: this.maxFactor,
-      vertexCapacity: this.output.vertexCapacity,
-      triangleCapacity: this.output.triangleCapacity,
-      ...TESS_STATIC.offsets(staticLayout),
-      ...TESS_CAGE.offsets(cageLayout),
-      ...TESS_WORK.offsets(workLayout),
-      offFactorPos: cc ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
-      offFactorNormal: cc ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
-      ccCageVerts: cc?.cageVertexCount ?? 0,
-      ccTri: ccBase + (cc?.offTri ?? 0),
-      ccPoly: ccBase + (cc?.offPoly ?? 0),
-      ccRegions: ccBase + (cc?.offRegions ?? 0),
-      ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0),
-      ccFans: ccBase + (cc?.offFans ?? 0),
-      ccSectors: ccBase + (cc?.offSectors ?? 0),
-      ccThreads: ccBase + (cc?.offThreads ?? 0),
-      ccCos: ccBase + (cc?.offCos ?? 0),
-      ccRules: ccBase + (cc?.offRules ?? 0),
-      ccInputs: ccBase + (cc?.offInputs ?? 0),
-      ccVertexFan: ccBase + (cc?.offVertexFan ?? 0),
-      nFans: cc?.fanCount ?? 0,
-      ccSliceGroups: cc?.sliceWorkgroups ?? 0,
-      ccMaxDepth: cc?.maxDepth ?? 0,
-      dispBits: disp?.map.bits ?? 8,
-      dispWidth: disp?.map.width ?? 1,
-      dispHeight: disp?.map.height ?? 1,
-      dispWrap: disp?.wrap === 'clamp' ? 1 : 0,
-    });
+    TESS_PARAMS.write(new DataView(this.paramsBytes), meshParams(input, packed, this.output));
     this.hasDisplacement = disp !== undefined;
     this.writeDisplacementParams();
 
@@ -686,21 +581,4 @@ export class Tessellator {
       b.destroy();
     this.timer?.destroy();
   }
-}
-
-/** Copy each array of `sources` to its place in an arena; an array not given stays zero (its
- * length is checked against the layout's when given). */
-function packArena<K extends string, T extends Uint32Array | Float32Array>(
-  names: readonly K[],
-  layout: { offset: Record<K, number>; length: Record<K, number> },
-  into: T,
-  sources: Partial<Record<K, ArrayLike<number>>>,
-): T {
-  for (const k of names) {
-    const src = sources[k];
-    if (!src) continue;
-    if (src.length !== layout.length[k]) throw new Error(`arena array ${k}: ${src.length} words given, ${layout.length[k]} laid out`);
-    into.set(src, layout.offset[k]);
-  }
-  return into;
 }
