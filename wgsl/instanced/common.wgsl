@@ -17,7 +17,8 @@
 //                patternIdx the patterns' local indices (the headless pass reads them)
 //                entries    4 per pattern (domain · 7 + log2 L): baseVertex, firstIndex,
 //                           indexCount, vertexCount
-//   cageBuf    f32: cage positions, then unit vertex normals, 3 per vertex, then the Phong
+//   cageBuf    f32 (INST_CAGE of src/gpu/instanced/buffer-layouts.ts, its offsets in params):
+//              cage positions, then unit vertex normals, 3 per vertex, then the Phong
 //              surface's α of each prepared triangle's three edges (src/gpu/surface/phong.ts)
 //
 // The surface contract is the compute tessellator's (wgsl/tess/common.wgsl): evalSurface gets a
@@ -46,7 +47,7 @@ struct FactorPoint { pos: vec3<f32>, normal: vec3<f32> }
 
 fn triVert(t: u32, i: u32) -> u32 { return staticBuf[params.offTriVerts + 3u * t + i]; }
 fn cageVec3(o: u32) -> vec3<f32> { return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]); }
-fn cagePos(v: u32) -> vec3<f32> { return cageVec3(3u * v); }
+fn cagePos(v: u32) -> vec3<f32> { return cageVec3(params.offPositions + 3u * v); }
 fn cageNormal(v: u32) -> vec3<f32> { return cageVec3(params.offNormals + 3u * v); }
 fn phongAlpha(t: u32, i: u32) -> f32 { return cageBuf[params.offPhongAlpha + 3u * t + i]; }
 

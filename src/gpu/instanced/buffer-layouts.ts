@@ -1,12 +1,25 @@
 /**
  * The instanced tessellator's buffer layouts shared with its WGSL (wgsl/instanced/common.wgsl,
- * levels.wgsl, draw.wgsl): the uniform structs (INST_PARAMS, INST_BUCKET, INST_FRAME), the packed
+ * levels.wgsl, draw.wgsl): the cage buffer's arena (INST_CAGE), the uniform structs (INST_PARAMS,
+ * INST_BUCKET, INST_FRAME), the packed
  * edge-owner word, the bucket count and stride, the patch record's size, the draw records' bytes
  * and the work buffer's layout.
  */
 import { defineStruct } from '../contract/layout.ts';
-import { defineBits } from '../contract/contract.ts';
+import { defineArena, defineBits } from '../contract/contract.ts';
 import { POW2_LEVEL_COUNT } from '../../pattern/pow2.ts';
+
+/**
+ * cageBuf (f32, wgsl/instanced/common.wgsl cagePos, cageNormal, phongAlpha): the cage positions and
+ * unit vertex normals (3 per vertex), then the Phong surface's α per triangle edge (3 per
+ * triangle). Positions first: an ACC surface's build (src/gpu/acc/patches.ts encode) reads xyz per
+ * cage vertex from offset 0 of this buffer.
+ */
+export const INST_CAGE = defineArena<'positions' | 'normals' | 'phongAlpha', { vertices: number; triangles: number }>([
+  ['positions', (s) => 3 * s.vertices],
+  ['normals', (s) => 3 * s.vertices],
+  ['phongAlpha', (s) => 3 * s.triangles],
+]);
 
 export const INST_PARAMS = defineStruct('InstParams', [
   ['viewProj', 'mat4x4<f32>'],
@@ -25,15 +38,14 @@ export const INST_PARAMS = defineStruct('InstParams', [
   ['pixelError', 'f32'],
   // Factor-rule mode: radians per pixel (fovY / viewport height), as the compute tessellator's Params.
   ['pixelAngle', 'f32'],
-  // staticBuf word offsets (wgsl/instanced/common.wgsl), cageBuf float offset of the normals.
+  // staticBuf word offsets (wgsl/instanced/common.wgsl), then cageBuf's float offsets (INST_CAGE).
   ['offTriVerts', 'u32'],
   ['offPatches', 'u32'],
   ['offEdgeOwner', 'u32'],
   ['offPatternIJ', 'u32'],
   ['offPatternIdx', 'u32'],
   ['offEntries', 'u32'],
-  ['offNormals', 'u32'],
-  ['offPhongAlpha', 'u32'],
+  ...INST_CAGE.offsetFields,
   // work word offsets (wgsl/instanced/levels.wgsl).
   ['offWanted', 'u32'],
   ['offEdgeCode', 'u32'],

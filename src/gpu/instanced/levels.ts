@@ -17,11 +17,12 @@ import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSur
 import type { Tessellator } from '../tess/tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
-import { constantsWgsl, grid2d } from '../contract/contract.ts';
+import { constantsWgsl, grid2d, type ArenaLayout } from '../contract/contract.ts';
 import { readBuffer } from '../device/readback.ts';
 import { phongTriAlphas } from '../surface/phong.ts';
 import { packPatterns, POW2_LEVEL_COUNT } from '../../pattern/pow2.ts';
 import {
+  INST_CAGE,
   INST_PARAMS,
   INST_BUCKET,
   INST_OWNER_WORD,
@@ -77,6 +78,8 @@ export class InstancedLevels {
     m: InstancedMesh;
     staticBuf: GPUBuffer;
     cageBuf: GPUBuffer;
+    /** Float offsets of the cage buffer's arrays (INST_CAGE). */
+    cageLayout: ArenaLayout<(typeof INST_CAGE.names)[number]>;
     work: GPUBuffer;
     layout: WorkLayout;
     meshGroup: GPUBindGroup;
@@ -282,11 +285,12 @@ export class InstancedLevels {
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
     });
     device.queue.writeBuffer(staticBuf, 0, words);
-    // Positions, normals, then the Phong surface's α per triangle edge (wgsl/instanced/common.wgsl).
-    const cage = new Float32Array(6 * pr.vertexCount + 3 * pr.triangleCount);
-    cage.set(pr.positions, 0);
-    cage.set(pr.normals, 3 * pr.vertexCount);
-    cage.set(pr.triPhongAlpha, 6 * pr.vertexCount);
+    // Positions, normals, then the Phong surface's α per triangle edge (INST_CAGE).
+    const cageLayout = INST_CAGE.layout({ vertices: pr.vertexCount, triangles: pr.triangleCount });
+    const cage = new Float32Array(cageLayout.words);
+    cage.set(pr.positions, cageLayout.offset.positions);
+    cage.set(pr.normals, cageLayout.offset.normals);
+    cage.set(pr.triPhongAlpha, cageLayout.offset.phongAlpha);
     const cageBuf = device.createBuffer({
       label: 'instanced cage',
       size: Math.max(16, cage.byteLength),
@@ -340,8 +344,7 @@ export class InstancedLevels {
       offPatternIJ: offsets[3],
       offPatternIdx: offsets[4],
       offEntries: offsets[5],
-      offNormals: 3 * pr.vertexCount,
-      offPhongAlpha: 6 * pr.vertexCount,
+      ...INST_CAGE.offsets(cageLayout),
       offWanted: layout.wanted,
       offEdgeCode: layout.edgeCode,
       offPatchLevel: layout.patchLevel,
@@ -356,7 +359,7 @@ export class InstancedLevels {
       layout: this.layouts.mesh,
       entries: [this.params, staticBuf, cageBuf, work].map((buffer, binding) => ({ binding, resource: { buffer } })),
     });
-    this.mesh = { m, staticBuf, cageBuf, work, layout, meshGroup };
+    this.mesh = { m, staticBuf, cageBuf, cageLayout, work, layout, meshGroup };
     const buckets = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
     const lists = this.listBases();
     this.patterns.entries.forEach((_, b) => INST_BUCKET.write(new DataView(buckets, BUCKET_STRIDE * b), this.bucketFields(b, lists)));
@@ -367,10 +370,10 @@ export class InstancedLevels {
    * lending tessellator gets them too; the next encodeLevels runs its patch build). */
   updateCage(positions: Float32Array, normals: Float32Array): void {
     const m = this.requireMesh();
-    this.device.queue.writeBuffer(m.cageBuf, 0, positions);
-    this.device.queue.writeBuffer(m.cageBuf, 12 * m.m.prepared.vertexCount, normals);
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.positions, positions);
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.normals, normals);
     // The Phong surface's α per edge follows the normals (phong.ts phongTriAlphas).
-    this.device.queue.writeBuffer(m.cageBuf, 24 * m.m.prepared.vertexCount, phongTriAlphas(m.m.prepared, positions, normals));
+    this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.phongAlpha, phongTriAlphas(m.m.prepared, positions, normals));
     this.ccSource?.updateCage(positions, normals);
     if (this.accPatches) {
       const enc = this.device.createCommandEncoder({ label: 'instanced ACC build' });
