@@ -15,13 +15,10 @@ import { headlessCamera, tessellateOnce } from '../src/gpu/tess/headless.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { loadCage } from '../src/mesh/index.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
-import {
-  factorRuleLevels,
-  InstancedTessellator,
-  prepareInstanced,
-  weldInstanced,
-  type LevelParams,
-} from '../src/gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../src/gpu/instanced/instanced.ts';
+import { factorRuleLevels, type LevelParams } from '../src/gpu/instanced/instanced-options.ts';
+import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
+import { weldInstanced } from '../src/gpu/instanced/headless-output.ts';
 import { ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 
 function option(argv: string[], name: string): string | undefined {

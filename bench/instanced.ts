@@ -40,7 +40,10 @@ import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/tess/factors.ts
 import { readBuffer } from '../src/gpu/device/readback.ts';
 import { bakeTables } from '../src/pattern/tables.ts';
 import { loadCage } from '../src/mesh/index.ts';
-import { InstancedTessellator, prepareInstanced, BUCKETS, type LevelParams } from '../src/gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../src/gpu/instanced/instanced.ts';
+import type { LevelParams } from '../src/gpu/instanced/instanced-options.ts';
+import { BUCKETS } from '../src/gpu/instanced/buffer-layouts.ts';
+import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';

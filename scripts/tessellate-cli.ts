@@ -54,16 +54,10 @@ import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, 
 import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { faceCount, type Cage } from '../src/mesh/index.ts';
-import {
-  prepareInstanced,
-  tessellateInstanced,
-  weldInstanced,
-  weldedToObj,
-  weldedVertexParams,
-  factorRuleLevels,
-  InstancedTessellator,
-  type LevelParams,
-} from '../src/gpu/instanced/instanced.ts';
+import { tessellateInstanced, InstancedTessellator } from '../src/gpu/instanced/instanced.ts';
+import { factorRuleLevels, type LevelParams } from '../src/gpu/instanced/instanced-options.ts';
+import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
+import { weldInstanced, weldedToObj, weldedVertexParams } from '../src/gpu/instanced/headless-output.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { AccPatches } from '../src/gpu/acc/patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';

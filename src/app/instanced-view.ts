@@ -8,14 +8,11 @@
  * (src/gpu/instanced/displace-vertex.ts): the view is then made with `displaced`, and holds the compute
  * Tessellator that lends the displacement arenas (on Catmull-Clark, the surface's own lender).
  */
-import {
-  InstancedTessellator,
-  prepareInstanced,
-  cpuLevels,
-  BUCKETS,
-  type InstancedMesh,
-  type LevelParams,
-} from '../gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../gpu/instanced/instanced.ts';
+import type { LevelParams } from '../gpu/instanced/instanced-options.ts';
+import { BUCKETS } from '../gpu/instanced/buffer-layouts.ts';
+import { prepareInstanced, type InstancedMesh } from '../gpu/instanced/prepare-patches.ts';
+import { cpuLevels } from '../gpu/instanced/cpu-twin.ts';
 import { prepareMesh } from '../gpu/tess/prepare.ts';
 import type { ShadingResources } from '../gpu/render/renderer.ts';
 import type { PackedPatterns } from '../pattern/pow2.ts';

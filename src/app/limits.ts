@@ -25,7 +25,7 @@ export function clampMessages(
   capacity: number,
 ): string[] {
   const out = [...deviceClamps];
-  // src/gpu/render/renderer.ts vertexStorage; src/gpu/instanced/instanced.ts checks its own count when asked for.
+  // src/gpu/render/renderer.ts vertexStorage; src/gpu/instanced/levels.ts checks its own count when asked for.
   if ((limits.maxStorageBuffersInVertexStage ?? 8) < 2)
     out.push(
       'no storage buffers in the vertex stage (WebGPU compatibility mode): the wireframe, patch colours, error heat maps and the instanced tessellator are not available; the surfaces draw as usual',

@@ -44,7 +44,7 @@ import {
   type DemoParams,
 } from './params.ts';
 import { countsFromRecords, InstancedView, type InstancedCounts } from './instanced-view.ts';
-import { factorRuleLevels, type LevelParams } from '../gpu/instanced/instanced.ts';
+import { factorRuleLevels, type LevelParams } from '../gpu/instanced/instanced-options.ts';
 import { AccError } from '../subdiv/acc.ts';
 import { HEAT_DEFAULT_RANGE, HEAT_RAMP, type HeatView } from '../gpu/acc/heat.ts';
 import type { Cage } from '../mesh/types.ts';

@@ -2,7 +2,7 @@
 import { describe, it, expect } from 'vitest';
 import { countsFromRecords } from '../../src/app/instanced-view.ts';
 import { renderStats, type StatsInput } from '../../src/app/stats.ts';
-import { BUCKETS } from '../../src/gpu/instanced/instanced.ts';
+import { BUCKETS } from '../../src/gpu/instanced/buffer-layouts.ts';
 import { packPatterns, patternTriangleCount, patternVertexCount } from '../../src/pattern/pow2.ts';
 
 describe('instanced counts', () => {

@@ -9,17 +9,16 @@ import { mat4 } from 'gl-matrix';
 import { loadCage } from '../../src/mesh/index.ts';
 import { prepareMesh } from '../../src/gpu/tess/prepare.ts';
 import { phongPoint } from '../../src/gpu/surface/phong.ts';
+import type { InstancedTessellator } from '../../src/gpu/instanced/instanced.ts';
 import {
   prepareInstanced,
-  patchTriangle,
-  snapPatchVertex,
   patchDomain,
   patchEdgeIds,
   patchCanonical,
-  type InstancedTessellator,
   type InstancedMesh,
-  type HeadlessInstanced,
-} from '../../src/gpu/instanced/instanced.ts';
+} from '../../src/gpu/instanced/prepare-patches.ts';
+import { patchTriangle, snapPatchVertex } from '../../src/gpu/instanced/cpu-twin.ts';
+import type { HeadlessInstanced } from '../../src/gpu/instanced/headless-output.ts';
 import { vertexEdges } from '../../src/pattern/pow2.ts';
 
 export function rng(seed: number) {

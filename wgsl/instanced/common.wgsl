@@ -1,10 +1,10 @@
 // Shared by the instanced tessellator's passes (src/gpu/instanced/instanced.ts). `struct InstParams` is
-// generated from src/gpu/instanced/instanced.ts INST_PARAMS and prepended; the surface module (a file that
+// generated from src/gpu/instanced/buffer-layouts.ts INST_PARAMS and prepended; the surface module (a file that
 // defines `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint`, e.g.
 // wgsl/surface/phong.wgsl, unchanged) is appended.
 //
 // Buffers:
-//   staticBuf  u32 words, written once per cage (src/gpu/instanced/instanced.ts uploadStatic):
+//   staticBuf  u32 words, written once per cage (src/gpu/instanced/levels.ts setMesh):
 //                triVerts   3 per cage triangle (src/gpu/tess/prepare.ts: quads split along 0–2,
 //                           n-gons fanned round a centre vertex)
 //                patches    PATCH_WORDS per patch: firstTri, flags, e0, e1, e2, e3, face, 0
@@ -17,7 +17,8 @@
 //                patternIdx the patterns' local indices (the headless pass reads them)
 //                entries    4 per pattern (domain · 7 + log2 L): baseVertex, firstIndex,
 //                           indexCount, vertexCount
-//   cageBuf    f32: cage positions, then unit vertex normals, 3 per vertex, then the Phong
+//   cageBuf    f32 (INST_CAGE of src/gpu/instanced/buffer-layouts.ts, its offsets in params):
+//              cage positions, then unit vertex normals, 3 per vertex, then the Phong
 //              surface's α of each prepared triangle's three edges (src/gpu/surface/phong.ts)
 //
 // The surface contract is the compute tessellator's (wgsl/tess/common.wgsl): evalSurface gets a
@@ -25,7 +26,7 @@
 // triVert, cagePos, cageNormal, phongAlpha and use PHONG_ALPHA and SurfacePoint, all defined here
 // over this tessellator's own buffers. The exact Catmull-Clark and ACC surfaces plug in the same
 // way: their module is appended instead of wgsl/surface/phong.wgsl, with whatever accessors it reads
-// (its control points, quadtree nodes) bound and defined next to these (see src/gpu/instanced/instanced.ts
+// (its control points, quadtree nodes) bound and defined next to these (see src/gpu/instanced/instanced-options.ts
 // InstancedOptions.surfaceWgsl). A quad patch's (u,v) maps to its two cage triangles exactly as
 // src/gpu/tess/face-params.ts inverts it, so those surfaces see the same face parameter.
 
@@ -46,7 +47,7 @@ struct FactorPoint { pos: vec3<f32>, normal: vec3<f32> }
 
 fn triVert(t: u32, i: u32) -> u32 { return staticBuf[params.offTriVerts + 3u * t + i]; }
 fn cageVec3(o: u32) -> vec3<f32> { return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]); }
-fn cagePos(v: u32) -> vec3<f32> { return cageVec3(3u * v); }
+fn cagePos(v: u32) -> vec3<f32> { return cageVec3(params.offPositions + 3u * v); }
 fn cageNormal(v: u32) -> vec3<f32> { return cageVec3(params.offNormals + 3u * v); }
 fn phongAlpha(t: u32, i: u32) -> f32 { return cageBuf[params.offPhongAlpha + 3u * t + i]; }
 

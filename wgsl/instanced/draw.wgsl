@@ -7,7 +7,7 @@
 //
 //   work (u32, read-only here): the layout of wgsl/instanced/levels.wgsl (edge codes, lists)
 //   bucket (uniform, one 256-byte slot per bucket, bound with a dynamic offset): INST_BUCKET in
-//     src/gpu/instanced/instanced.ts: listBase (word offset of the bucket's list in work), level, domain,
+//     src/gpu/instanced/buffer-layouts.ts: listBase (word offset of the bucket's list in work), level, domain,
 //     baseVertex, firstIndex, vertexCount, triangleCount (of the level's pattern),
 //     outVertexBase, outTriangleBase, instances (the headless pass only)
 

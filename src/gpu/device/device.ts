@@ -48,7 +48,7 @@ export const PIPELINE_LIMITS: Partial<Record<LimitName, number>> = {};
  * was cut): storage buffers in the vertex stage, of which compatibility mode gives none by
  * default. The wireframe, the patch colours and the heat maps read per-vertex data from storage (2:
  * src/gpu/render/renderer.ts vertexStorage); the instanced tessellator evaluates its surface from it (up
- * to 6: src/gpu/instanced/instanced.ts). Core WebGPU gives 8.
+ * to 6: src/gpu/instanced/levels.ts). Core WebGPU gives 8.
  */
 export const OPTIONAL_LIMITS: Partial<Record<LimitName, number>> = {
   maxStorageBuffersInVertexStage: 8,

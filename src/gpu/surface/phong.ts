@@ -18,10 +18,6 @@ import { BULGE_OFF_SCREEN, bulgeFactor, edgeFactor, type FactorRule, type Vec3 }
 import { ONE } from '../../pattern/fixed.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
-// The α rule has its own file, so the preparation (src/gpu/tess/prepare.ts) can use it without
-// importing this one, which reads the prepared mesh.
-export { PHONG_MIN_JACOBIAN, phongTriAlphas } from './phong-alpha.ts';
-
 /** The control point of edge i → j (the header's b_ij). */
 function edgeControl(pi: number[], ni: number[], pj: number[], nj: number[], alpha: number): number[] {
   const e = [pj[0] - pi[0], pj[1] - pi[1], pj[2] - pi[2]];

@@ -61,7 +61,7 @@ import {
 } from '../contract/tess.ts';
 import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
-import { phongTriAlphas } from '../surface/phong.ts';
+import { phongTriAlphas } from '../surface/phong-alpha.ts';
 import type { PreparedMesh } from './prepare.ts';
 import type { FactorParams, TessellatedMesh } from '../contract/tessellated-mesh.ts';
 import { PatternTables } from '../../pattern/tables.ts';

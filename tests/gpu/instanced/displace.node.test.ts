@@ -21,13 +21,10 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
 import { checkHeadless, randomLevels } from '../../support/instanced-checks.ts';
 import { angleBetween } from '../../support/tess-checks.ts';
-import {
-  InstancedTessellator,
-  prepareInstanced,
-  patchTriangle,
-  type InstancedMesh,
-  type HeadlessInstanced,
-} from '../../../src/gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../../../src/gpu/instanced/instanced.ts';
+import { prepareInstanced, type InstancedMesh } from '../../../src/gpu/instanced/prepare-patches.ts';
+import { patchTriangle } from '../../../src/gpu/instanced/cpu-twin.ts';
+import type { HeadlessInstanced } from '../../../src/gpu/instanced/headless-output.ts';
 import { ccSurfaceTessellator } from '../../../src/gpu/instanced/surface-cc.ts';
 import { displacementLender, ownerPoint } from '../../../src/gpu/instanced/displace-vertex.ts';
 import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';

@@ -8,7 +8,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { load } from '../../support/instanced-checks.ts';
-import { patchTriangle, patchDomain, patchEdgeIds, patchCanonical } from '../../../src/gpu/instanced/instanced.ts';
+import { patchDomain, patchEdgeIds, patchCanonical } from '../../../src/gpu/instanced/prepare-patches.ts';
+import { patchTriangle } from '../../../src/gpu/instanced/cpu-twin.ts';
 import { instancedDisplaceWgsl, ownerPoint } from '../../../src/gpu/instanced/displace-vertex.ts';
 import { renameBorrowed } from '../../../src/gpu/instanced/surface-cc.ts';
 import { edgePoint } from '../../../src/pattern/pow2.ts';

@@ -13,19 +13,12 @@ import { camera, checkHeadless, load, randomLevels } from '../../support/instanc
 import { loadCage } from '../../../src/mesh/index.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { phongPoint } from '../../../src/gpu/surface/phong.ts';
-import {
-  InstancedTessellator,
-  prepareInstanced,
-  cpuLevels,
-  patchDomain,
-  patchEdgeIds,
-  cpuDynamicEdgeLevel,
-  cpuFactorRuleEdgeLevel,
-  factorRuleLevels,
-  instancedVertexParams,
-  BUCKETS,
-  type LevelParams,
-} from '../../../src/gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../../../src/gpu/instanced/instanced.ts';
+import { factorRuleLevels, type LevelParams } from '../../../src/gpu/instanced/instanced-options.ts';
+import { BUCKETS } from '../../../src/gpu/instanced/buffer-layouts.ts';
+import { prepareInstanced, patchDomain, patchEdgeIds } from '../../../src/gpu/instanced/prepare-patches.ts';
+import { cpuLevels, cpuDynamicEdgeLevel, cpuFactorRuleEdgeLevel } from '../../../src/gpu/instanced/cpu-twin.ts';
+import { instancedVertexParams } from '../../../src/gpu/instanced/headless-output.ts';
 import { POW2_LEVEL_COUNT } from '../../../src/pattern/pow2.ts';
 import { Renderer } from '../../../src/gpu/render/renderer.ts';
 import { AccPatches } from '../../../src/gpu/acc/patches.ts';

@@ -1,5 +1,5 @@
 /**
- * The instanced tessellator's CPU side (src/gpu/instanced/instanced.ts), no GPU: patches and edges of the
+ * The instanced tessellator's CPU side (src/gpu/instanced/prepare-patches.ts, cpu-twin.ts), no GPU: patches and edges of the
  * project's cages, the level rule (an edge at the minimum of its patches), and the snap across
  * whole meshes: along every shared edge both patches, at their own pattern levels, land on
  * exactly {j / L_e}. (tests/gpu/instanced/instanced.gpu.test.ts holds the GPU to these same functions.)
@@ -7,17 +7,10 @@
 import { describe, it, expect } from 'vitest';
 import { loadCage } from '../../../src/mesh/index.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
-import {
-  prepareInstanced,
-  cpuLevels,
-  snapPatchVertex,
-  patchDomain,
-  patchEdgeIds,
-  patchCanonical,
-  patchTriangle,
-  PATCH_WORDS,
-  InstancedTessellator,
-} from '../../../src/gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../../../src/gpu/instanced/instanced.ts';
+import { PATCH_WORDS } from '../../../src/gpu/instanced/buffer-layouts.ts';
+import { prepareInstanced, patchDomain, patchEdgeIds, patchCanonical } from '../../../src/gpu/instanced/prepare-patches.ts';
+import { cpuLevels, snapPatchVertex, patchTriangle } from '../../../src/gpu/instanced/cpu-twin.ts';
 import { pow2Pattern, vertexEdges } from '../../../src/pattern/pow2.ts';
 import creature from '../../../public/models/creature.obj?raw';
 import gear from '../../../public/models/gear.obj?raw';

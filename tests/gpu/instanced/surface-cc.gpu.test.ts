@@ -18,17 +18,11 @@ import { loadCage } from '../../../src/mesh/index.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
-import {
-  InstancedTessellator,
-  prepareInstanced,
-  patchTriangle,
-  patchDomain,
-  cpuLevels,
-  cpuFactorRuleEdgeLevel,
-  factorRuleLevels,
-  type HeadlessInstanced,
-  type InstancedMesh,
-} from '../../../src/gpu/instanced/instanced.ts';
+import { InstancedTessellator } from '../../../src/gpu/instanced/instanced.ts';
+import { factorRuleLevels } from '../../../src/gpu/instanced/instanced-options.ts';
+import { prepareInstanced, patchDomain, type InstancedMesh } from '../../../src/gpu/instanced/prepare-patches.ts';
+import { patchTriangle, cpuLevels, cpuFactorRuleEdgeLevel } from '../../../src/gpu/instanced/cpu-twin.ts';
+import type { HeadlessInstanced } from '../../../src/gpu/instanced/headless-output.ts';
 import { edgePoint } from '../../../src/pattern/pow2.ts';
 import { ccEvaluatorWgsl, ccSurfaceTessellator } from '../../../src/gpu/instanced/surface-cc.ts';
 import type { Tessellator } from '../../../src/gpu/tess/tessellator.ts';

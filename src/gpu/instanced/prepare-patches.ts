@@ -1,0 +1,101 @@
+/**
+ * The instanced tessellator's CPU preparation of a cage: its patches (a quad face one quad patch,
+ * any other face its prepared triangles as triangle patches), their edges and each edge's owner
+ * (InstancedMesh, prepareInstanced), and the readers of a patch record (domain, edges, which
+ * sides run canonically).
+ */
+import { INST_OWNER_WORD, PATCH_WORDS } from './buffer-layouts.ts';
+import type { PreparedMesh } from '../tess/prepare.ts';
+import type { Cage } from '../../mesh/types.ts';
+import type { PatchDomain } from '../../pattern/pow2.ts';
+
+export interface InstancedMesh {
+  prepared: PreparedMesh;
+  quadCount: number;
+  triCount: number;
+  patchCount: number;
+  edgeCount: number;
+  /** PATCH_WORDS per patch: firstTri, flags, e0..e3, face, 0 (wgsl/instanced/common.wgsl). */
+  patches: Uint32Array;
+  /** Cage vertices of each patch's corners (4 per patch; a triangle's 4th is unused). */
+  corners: Uint32Array;
+  /** Two cage vertices per edge, lower first. */
+  edgeVerts: Uint32Array;
+  /** Per edge: patch · 4 + local edge of one patch that has it. */
+  edgeOwner: Uint32Array;
+}
+
+export function patchDomain(m: InstancedMesh, p: number): PatchDomain {
+  return m.patches[PATCH_WORDS * p + 1] & 1 ? 'tri' : 'quad';
+}
+export function patchEdgeIds(m: InstancedMesh, p: number): number[] {
+  const n = patchDomain(m, p) === 'tri' ? 3 : 4;
+  return Array.from({ length: n }, (_, k) => m.patches[PATCH_WORDS * p + 2 + k]);
+}
+export function patchCanonical(m: InstancedMesh, p: number): boolean[] {
+  const n = patchDomain(m, p) === 'tri' ? 3 : 4;
+  return Array.from({ length: n }, (_, k) => ((m.patches[PATCH_WORDS * p + 1] >> (1 + k)) & 1) === 1);
+}
+
+/** Patches and their edges from a cage and its prepared triangulation (src/gpu/tess/prepare.ts). */
+export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedMesh {
+  const holes = new Set(cage.holes);
+  const quads: { tri: number; face: number; c: number[] }[] = [];
+  const tris: { tri: number; face: number; c: number[] }[] = [];
+  // A quad is one patch (its first prepared triangle's id); every other face gives its prepared
+  // triangles (a triangle itself, or the fan round an n-gon's centre) as triangle patches.
+  let t = 0;
+  for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
+    if (holes.has(f)) continue;
+    const s = cage.faceOffsets[f],
+      n = cage.faceOffsets[f + 1] - s;
+    if (n < 3) continue;
+    if (prepared.triFace[t] !== f) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
+    const first = t;
+    while (t < prepared.triangleCount && prepared.triFace[t] === f) t++;
+    if (n === 4) quads.push({ tri: first, face: f, c: Array.from(cage.faceIndices.subarray(s, s + 4)) });
+    else for (let k = first; k < t; k++) tris.push({ tri: k, face: f, c: Array.from(prepared.triVerts.subarray(3 * k, 3 * k + 3)) });
+  }
+  if (t !== prepared.triangleCount) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
+  const all = [...quads, ...tris];
+  const patches = new Uint32Array(PATCH_WORDS * all.length);
+  const corners = new Uint32Array(4 * all.length);
+  const edgeIds = new Map<number, number>();
+  const edgeVerts: number[] = [];
+  const edgeOwner: number[] = [];
+  const nV = prepared.vertexCount;
+  all.forEach((q, p) => {
+    const n = q.c.length;
+    let flags = n === 3 ? 1 : 0;
+    const o = PATCH_WORDS * p;
+    patches[o] = q.tri;
+    for (let k = 0; k < n; k++) {
+      const a = q.c[k],
+        b = q.c[(k + 1) % n];
+      if (a < b) flags |= 1 << (1 + k);
+      const key = Math.min(a, b) * nV + Math.max(a, b);
+      let e = edgeIds.get(key);
+      if (e === undefined) {
+        e = edgeVerts.length / 2;
+        edgeIds.set(key, e);
+        edgeVerts.push(Math.min(a, b), Math.max(a, b));
+        edgeOwner.push(INST_OWNER_WORD.pack({ side: k, patchId: p }));
+      }
+      patches[o + 2 + k] = e;
+      corners[4 * p + k] = a;
+    }
+    patches[o + 1] = flags;
+    patches[o + 6] = q.face;
+  });
+  return {
+    prepared,
+    quadCount: quads.length,
+    triCount: tris.length,
+    patchCount: all.length,
+    edgeCount: edgeVerts.length / 2,
+    patches,
+    corners,
+    edgeVerts: Uint32Array.from(edgeVerts),
+    edgeOwner: Uint32Array.from(edgeOwner),
+  };
+}
