@@ -18,7 +18,7 @@ import type { Tessellator } from '../tess/tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
 import { constantsWgsl, grid2d } from '../contract/constants.ts';
-import { type ArenaLayout } from '../contract/define.ts';
+import type { ArenaLayout } from '../contract/define.ts';
 import { readBuffer } from '../device/readback.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
 import { packPatterns, POW2_LEVEL_COUNT } from '../../pattern/pow2.ts';

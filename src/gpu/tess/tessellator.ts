@@ -39,7 +39,8 @@
 import type { CatmullClarkData } from '../cc/build.ts';
 import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
-import { isAccSurface, type PassName, type SCAN_ENTRIES, type Surface } from './passes.ts';
+import type { PassName, SCAN_ENTRIES, Surface } from './passes.ts';
+import { surfaceScheme } from '../surface/registry.ts';
 import { createTessPipelines, type Pipeline } from './pipelines.ts';
 import { type CageName, meshParams, type PackInput, packArenas, type WorkName } from './arenas.ts';
 import { PassTimer } from '../device/pass-timer.ts';
@@ -204,7 +205,7 @@ export class Tessellator {
    * Catmull-Clark surface also needs the mesh's tables (src/gpu/cc/build.ts buildCatmullClark). */
   setMesh(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface, displacement?: DisplacementData): void {
     const ccData = this.validate(prepared, cc, acc);
-    const accData = isAccSurface(this.surface) ? acc : undefined;
+    const accData = surfaceScheme(this.surface).patchBuild === 'acc-patches' ? acc : undefined;
     const packed = this.pack(prepared, ccData, accData, displacement);
     this.releaseMesh();
     this.mesh = this.bind(prepared, ccData, packed, accData);
@@ -346,11 +347,10 @@ export class Tessellator {
     };
   }
 
-  /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) on the
-   * Catmull-Clark surface, which has a crease there; Phong and ACC have one normal per cage
-   * vertex, so both sides would be the same. */
+  /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) where the
+   * surface has a crease there (its SurfaceScheme says). */
   private get splitsCreases(): boolean {
-    return this.surface === 'catmull-clark';
+    return surfaceScheme(this.surface).splitsCreases;
   }
 
   /** Output vertices of the extra sectors: after the vertices, before the edge points. */
@@ -360,10 +360,11 @@ export class Tessellator {
 
   /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
   private validate(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): CatmullClarkData | undefined {
+    const scheme = surfaceScheme(this.surface);
     if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
-    if (this.surface === 'catmull-clark' && !cc)
-      throw new Error('the Catmull-Clark surface needs the tables of buildCatmullClark(cage, prepared)');
-    if (isAccSurface(this.surface)) {
+    if (scheme.patchBuild === 'refinement' && !cc)
+      throw new Error(`the ${scheme.name} surface needs the tables of buildCatmullClark(cage, prepared)`);
+    if (scheme.patchBuild === 'acc-patches') {
       if (!acc) throw new Error(`the ${this.surface} surface needs its patches (prepareAccSurface)`);
       if (acc.patches.scheme !== this.surface) throw new Error(`${acc.patches.scheme} patches given to a ${this.surface} tessellator`);
       if (acc.triangles.length !== prepared.triangleCount) throw new Error('the ACC patches were prepared for another mesh');
@@ -376,7 +377,7 @@ export class Tessellator {
         `the cage is too large for the output buffers even at factor 1 (${prepared.triangleCount} triangles, capacity ${this.output.triangleCapacity})`,
       );
     }
-    return this.surface === 'catmull-clark' ? cc : undefined;
+    return scheme.patchBuild === 'refinement' ? cc : undefined;
   }
 
   /** New cage positions (and normals) for the same topology, e.g. an animated cage. */
