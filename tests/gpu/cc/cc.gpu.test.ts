@@ -23,6 +23,7 @@ import icosphere from '../../../public/models/icosphere.obj?raw';
 import pawn from '../../../public/models/pawn.obj?raw';
 import sheet from '../../../public/models/sheet.obj?raw';
 import torus from '../../../public/models/torus.obj?raw';
+import { countingEncoder } from '../../support/count-dispatches.ts';
 
 const tables = bakeTables(64);
 let tess: Tessellator | undefined;
@@ -37,6 +38,10 @@ const NORMAL_BOUND_DEG = 0.1;
 const BLENDED_POSITION_BOUND = 1e-4;
 
 const camera = testCamera;
+
+/** Dispatches of one rebuild on the Catmull-Clark surface when first counted: 53 (torus, no
+ * extraordinary vertex) to 60 (creased box, the most levels); it may only fall. */
+const CC_DISPATCHES_TODAY = 60;
 
 async function tessellator(): Promise<Tessellator> {
   const device = await getDevice();
@@ -80,9 +85,12 @@ describe('Catmull-Clark surface against the CPU reference', () => {
       const ref = new CCReference(cage, mesh, cc);
       device.pushErrorScope('validation');
       t.setMesh(mesh, cc);
-      const enc = device.createCommandEncoder();
+      const { encoder: enc, counts } = countingEncoder(device.createCommandEncoder());
       t.encode(enc, camera(mesh, 1.5 * mesh.size, undefined, 4));
       device.queue.submit([enc.finish()]);
+      // The patch build adds one dispatch per refinement level and three for the slices and
+      // limits to the tessellator's chain (tests/gpu/tess/tessellator.gpu.test.ts counts it).
+      expect(counts.direct + counts.indirect, `${name}: ${JSON.stringify(counts)}`).toBeLessThanOrEqual(CC_DISPATCHES_TODAY);
       const out = await readMesh(device, t.output);
       const edgeF = new Uint32Array(await readBuffer(device, t.workBuffer, 4 * mesh.edgeCount, 4 * t.workLayout.edgeF));
       const samples = randomSamples(mesh, 2000);

@@ -13,11 +13,16 @@ import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import type { FactorParams } from '../../../src/gpu/contract/tessellated-mesh.ts';
 import type { Cage } from '../../../src/mesh/types.ts';
+import { countingEncoder } from '../../support/count-dispatches.ts';
 
 const tables = bakeTables(64);
 afterAll(() => releaseDevice());
 
 const camera = testCamera;
+
+/** Dispatches of one Phong rebuild on a small cage (one block per prefix sum), measured when the
+ * counting test was written: it may only fall. */
+const PHONG_DISPATCHES_TODAY = 51;
 
 // Pipelines compile once per capacity setting (SwiftShader compiles slowly).
 const tessellators = new Map<string, Tessellator>();
@@ -76,6 +81,22 @@ describe('compute tessellator', () => {
       });
     }
   }
+
+  it("a rebuild's dispatch chain on the Phong surface: counted, and no longer than today's", async () => {
+    // Each dispatch is a launch and a barrier on a GPU, so a short chain is a floor on the
+    // rebuild's time whatever the size. Today: the bulge pass, three budget attempts (factors,
+    // count, three scan steps per prefix sum, budget) recorded whatever the first one decides,
+    // then weld, plan and emit. The target of the throughput work is 12.
+    await tessellate(cube(), (m) => camera(m, 4, 16));
+    const device = await getDevice();
+    const tess = tessellators.get('{}')!;
+    const { encoder, counts } = countingEncoder(device.createCommandEncoder({ label: 'counted rebuild' }));
+    tess.encode(encoder, camera(prepareMesh(cube()), 4, 16));
+    device.queue.submit([encoder.finish()]);
+    console.log(`Phong rebuild (cube): ${counts.passes} compute passes, ${counts.direct} + ${counts.indirect} indirect dispatches`);
+    expect(counts.indirect).toBe(3);
+    expect(counts.direct + counts.indirect).toBeLessThanOrEqual(PHONG_DISPATCHES_TODAY);
+  });
 
   it('a cage of more triangles than one scan block covers (4096) matches the CPU', async () => {
     const big = torus(90, 48); // 4320 quads, 8640 triangles, ~13K edges: several scan blocks
