@@ -24,6 +24,7 @@ import { setLoading, setPageState } from './ui.ts';
 import { isAcc, SURFACE_NAMES } from './surfaces.ts';
 import { accPatchLegend, ccPatchLegend, compareLabel, heatLegend, instancedPatchLegend } from './legend.ts';
 import { DemoScene } from './demo-scene.ts';
+import { BuildStaleness } from './build-staleness.ts';
 
 /** Turntable speed, radians per second. */
 const SPIN_SPEED = 0.35;
@@ -46,7 +47,8 @@ export class TessellationDemo extends DemoScene {
   #tessTimes: Record<string, number> = {};
   #drawTimes: Record<string, number> = {};
   #rebuilds = 0;
-  #geometryDirty = true;
+  /** Which builds are stale (src/app/build-staleness.ts). */
+  readonly #staleness = new BuildStaleness();
   /** A build's counts still to be copied for reading back. */
   #countsOwed = false;
   #rebuiltThisFrame = false;
@@ -176,13 +178,13 @@ export class TessellationDemo extends DemoScene {
   }
 
   protected override onCameraChanged(): void {
-    if (this.geometry?.dependsOnCamera(this.params)) this.#geometryDirty = true;
+    this.#staleness.cameraMoved(this.geometry?.dependsOnCamera(this.params) ?? false);
     this.#otherMode.cameraMoved();
   }
 
   /** Factors or model changed: rebuild at the next frame. */
   invalidateGeometry(): void {
-    this.#geometryDirty = true;
+    this.#staleness.invalidate();
     this.requestFrame();
   }
 
@@ -200,9 +202,6 @@ export class TessellationDemo extends DemoScene {
     const m = cameraMatrices(cam, target.width / Math.max(1, target.height));
     const viewProj = m.viewProj as Float32Array;
 
-    // While spinning, adaptive factors follow the moving camera: rebuild every frame.
-    if (this.params.spin && geometry.dependsOnCamera(this.params)) this.#geometryDirty = true;
-    this.#rebuiltThisFrame = false;
     // The tessellator works in the cage's own space: hand it the camera in model space.
     const modelViewProj = mat4.multiply(mat4.create(), viewProj, this.modelMatrix) as Float32Array;
     const worldToModel = mat4.invert(mat4.create(), this.modelMatrix)!;
@@ -220,23 +219,27 @@ export class TessellationDemo extends DemoScene {
     const split = this.splitActive;
     // The compute tessellator builds when it is drawn (alone, or the split view's left half).
     const computeDrawn = !instanced || split;
+    const plan = this.#staleness.plan({
+      spin: this.params.spin,
+      dependsOnCamera: geometry.dependsOnCamera(this.params),
+      adaptive: this.params.mode === 'adaptive',
+      instanced: instanced !== null,
+      computeDrawn,
+      hasOutput: !!geometry.output,
+    });
+    this.#rebuiltThisFrame = plan.build;
     if (instanced) {
       // The instanced tessellator draws: its level pass when the levels may have changed.
-      if (this.params.spin && this.params.mode === 'adaptive') this.#geometryDirty = true;
-      if (this.#geometryDirty) {
+      if (plan.levels) {
         instanced.encode(encoder, this.#instancedLevels(factors));
-        if (!computeDrawn) this.#geometryDirty = false;
         this.#rebuilds++;
       } else instanced.copyIfOwed(encoder);
     }
-    const dirty = this.#geometryDirty;
-    if (computeDrawn && this.#geometryDirty && geometry.output) {
+    if (plan.build) {
       if (geometry instanceof TessellatorGeometry) geometry.flatBaseline = this.params.flat;
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
       this.#countsOwed = true;
-      this.#geometryDirty = false;
-      this.#rebuiltThisFrame = true;
       // The stats count tessellator builds; the flat cage's (drawn meanwhile while a surface is
       // prepared) encodes nothing.
       if (geometry instanceof TessellatorGeometry) this.#rebuilds++;
@@ -251,7 +254,7 @@ export class TessellationDemo extends DemoScene {
     // The comparison's right half, rebuilt with the left one (and when it is new).
     const compare = this.compareActive ? this.compareGeometry() : null;
     let compareRebuilt = false;
-    if (compare?.output && (dirty || this.compare.dirty)) {
+    if (compare?.output && (plan.stale || this.compare.dirty)) {
       compare.flatBaseline = this.params.flat;
       compare.encode(encoder, factors);
       this.compare.dirty = false;
