@@ -8,6 +8,7 @@
 import type { Cage } from '../mesh/types.ts';
 import { prepareMesh } from '../gpu/tess/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
+import { errorMessage } from './controller.ts';
 
 export interface CcTables {
   data: CatmullClarkData;
@@ -44,5 +45,46 @@ export class CcTableCache {
     const t0 = performance.now();
     const data = buildCatmullClark(cage, prepareMesh(cage));
     return { data, ms: performance.now() - t0 };
+  }
+}
+
+/**
+ * The same data once it has arrived (or why it cannot), for the views that draw without waiting
+ * for it: the error views' exact reference and a Catmull-Clark comparison, which the controller
+ * does not prepare it for. `arrived` runs when a cage's data settles.
+ */
+export class ArrivedTables {
+  readonly #done = new WeakMap<Cage, CcTables | string>();
+  readonly #asked = new WeakSet<Cage>();
+  readonly #cache: CcTableCache;
+  readonly #arrived: () => void;
+
+  constructor(cache: CcTableCache, arrived: () => void) {
+    this.#cache = cache;
+    this.#arrived = arrived;
+  }
+
+  /** The tables of `cage` if they have arrived; else asks for them and answers null. A refused
+   * cage answers its reason. */
+  get(cage: Cage): CatmullClarkData | string | null {
+    const done = this.#done.get(cage);
+    if (done !== undefined) return typeof done === 'string' ? done : done.data;
+    if (!this.#asked.has(cage)) {
+      this.#asked.add(cage);
+      this.#cache
+        .get(cage)
+        .then(
+          (t) => this.#done.set(cage, t),
+          (e: unknown) => this.#done.set(cage, errorMessage(e)),
+        )
+        .finally(this.#arrived);
+    }
+    return null;
+  }
+
+  /** Why the cage's data cannot be had, once that is known (null otherwise). */
+  refusal(cage: Cage): string | null {
+    const done = this.#done.get(cage);
+    return typeof done === 'string' ? done : null;
   }
 }

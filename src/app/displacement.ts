@@ -19,6 +19,13 @@ export interface HeightEntry {
   source: string;
 }
 
+/** The panel's displacement on a cage's map: on/off, the scale (the map's times the panel's), the mid level. */
+export interface DisplacementSettings {
+  enabled: boolean;
+  scale: number;
+  midLevel: number;
+}
+
 type DisplacedModel = DisplacedModelEntry;
 
 let index: Promise<DisplacedModel[]> | null = null;

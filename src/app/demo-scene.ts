@@ -1,0 +1,487 @@
+/**
+ * What the demo draws, on the current device: the model (the controller's: src/app/controller.ts)
+ * placed in the world, its surface's tessellator and the flat cage, the comparison's right half,
+ * the instanced tessellator, the error views, height maps and the cage overlay; and the load flow
+ * that changes them (models by name, URL or file, and PNG height maps). Drawing its frames, the
+ * stats and the legend are the demo's (src/app/tessellation-demo.ts).
+ */
+import { isClosed } from '../mesh/index.ts';
+import { boundsOf, transformBounds, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/render/camera.ts';
+import { uploadCageLines, type CageLines } from '../gpu/render/cage-mesh.ts';
+import { Renderer } from '../gpu/render/renderer.ts';
+import { clampMessages, wantedOutputLimits } from './limits.ts';
+import type { LimitName } from '../gpu/device/device.ts';
+import { ArrivedTables, CcTableCache, type CcTables } from './cc-tables.ts';
+import { DemoController, type DemoPorts, type Shown } from './controller.ts';
+import { DemoBase } from './demo-base.ts';
+import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
+import { isAccSurface } from '../gpu/tess/passes.ts';
+import { loadModelFromFile, loadModelFromUrl, type LoadedModel } from './models.ts';
+import { formatParams, type DemoParams } from './params.ts';
+import { HEAT_DEFAULT_RANGE } from '../gpu/acc/heat.ts';
+import type { ErrorStats } from './stats.ts';
+import { ErrorViews } from './error-views.ts';
+import { setLoading, setPageState, showToast } from './ui.ts';
+import type { DisplacementSettings, HeightEntry } from './displacement.ts';
+import { findEdge, uvCoverage, uvSeams } from '../mesh/index.ts';
+import { isAcc, SURFACE_NAMES } from './surfaces.ts';
+import { CompareView } from './compare-view.ts';
+import { InstancedDrawer } from './instanced-drawer.ts';
+import { fetchBuiltinModel, readHeightMap, userHeightEntry } from './model-loading.ts';
+
+export type CameraParams = Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>;
+
+/** What a model request carries to the page: the first view, and what the cage picker shows. */
+interface Placement {
+  camera?: CameraParams;
+  pick: string;
+}
+
+/** Where the page shows which model is picked (the panel, src/app/panel.ts). */
+export interface PickerDisplay {
+  /** Show this model as picked (when it came from the URL, or after a fallback). */
+  showPicked(name: string): void;
+}
+
+export abstract class DemoScene extends DemoBase {
+  params: DemoParams;
+  /** The model, its surface data and the surface drawn, and the one flow that changes them. */
+  readonly controller: DemoController<LoadedModel, CcTables, Placement>;
+  panel: PickerDisplay | null = null;
+  /** The model's bounds in world space, and its model-to-world rotation (up axis to +Y). */
+  #bounds: Bounds | null = null;
+  protected modelMatrix = upAxisMatrix('z') as Float32Array;
+
+  protected renderer: Renderer | null = null;
+  /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
+   * the flat cage (for before/after). */
+  protected tess: Partial<Record<TessSurface, TessellatorGeometry>> = {};
+  /** Height maps by cage: the project's displaced models' (fetched with the OBJ) and PNGs the
+   * user dropped (src/app/displacement.ts). */
+  #heights = new WeakMap<LoadedModel['cage'], HeightEntry>();
+  #flat: CageGeometry | null = null;
+  #cageLines: CageLines | null = null;
+  /** The instanced tessellator (`tessellator=instanced`, or the split view's right half). */
+  protected readonly instanced = new InstancedDrawer();
+
+  /** Catmull-Clark data per cage (topology only, cached): the controller's surface data. */
+  readonly #ccTables = new CcTableCache();
+  /** The same data once it has arrived, for the error views and a Catmull-Clark comparison: the
+   * error passes start with the next frame; a Catmull-Clark comparison builds then. */
+  protected readonly tables = new ArrivedTables(this.#ccTables, () => {
+    this.compare.dirty = true;
+    this.requestFrame();
+    this.updateStats(true);
+  });
+
+  /** The ACC error views' passes (src/app/error-views.ts), made with the device. */
+  protected errors: ErrorViews | null = null;
+  /** The error view's values the renderer has bound (their pass), to bind again only on change. */
+  #boundHeat: object | null = null;
+  /** The comparison view's right half (`compare=`). */
+  protected readonly compare = new CompareView();
+  /** Whether the model's cage is closed (the renderer culls back faces). */
+  protected closed = false;
+
+  /** Test hook (window.tessellab.holdPreparation): surface data waits while held, as slow data would. */
+  #hold: { held: boolean; promise: Promise<void>; release(): void } = { held: false, promise: Promise.resolve(), release() {} };
+
+  holdPreparation(hold: boolean): void {
+    if (hold === this.#hold.held) return;
+    if (!hold) {
+      this.#hold.release();
+      this.#hold = { held: false, promise: Promise.resolve(), release() {} };
+      return;
+    }
+    let release!: () => void;
+    const promise = new Promise<void>((r) => (release = r));
+    this.#hold = { held: true, promise, release };
+  }
+
+  constructor(canvas: HTMLCanvasElement, params: DemoParams) {
+    super(canvas, { frozenTime: params.t });
+    this.params = params;
+    this.controller = new DemoController(this.#ports(), params.surface);
+  }
+
+  /** The page's side of the controller. */
+  #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
+    return {
+      prepareSurface: (model) => this.#hold.promise.then(() => this.#ccTables.get(model.cage)),
+      surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage),
+      upload: (model, surface, data) => this.#upload(model, surface, data),
+      loading: (message) => setLoading(message),
+      preparing: () => this.updateStats(true),
+      failed: (title, message, kept) => {
+        showToast(message, { kind: 'error', title });
+        if (!kept) setPageState('error');
+      },
+      fellBack: (model, reason, surface) =>
+        showToast(`${reason}\n\nShowing the Phong surface instead.`, {
+          kind: 'info',
+          title: `No ${SURFACE_NAMES[surface] ?? surface} surface for ${model.title}`,
+          timeout: 10_000,
+        }),
+      shown: (model, previous, placement) => {
+        if (model !== previous) {
+          for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
+          this.placeModel(placement?.camera);
+        }
+        if (placement) this.panel?.showPicked(placement.pick);
+        this.onModelShown(previous);
+      },
+    };
+  }
+
+  get model(): LoadedModel | null {
+    return this.controller.model;
+  }
+
+  /** The shown model's Catmull-Clark tables (kept while another surface is drawn), or null. */
+  get cc(): CcTables | null {
+    return this.controller.data;
+  }
+
+  /** The output buffers the capacity asks for (positions: 12 bytes a vertex, indices: 12 a triangle). */
+  protected override wantedLimits(): Partial<Record<LimitName, number>> {
+    return wantedOutputLimits(this.#requestedCapacity);
+  }
+
+  get #requestedCapacity(): number {
+    return Math.round(this.params.capacity * 1e6);
+  }
+
+  /** What the device's limits cut (said once per device, and kept in the stats). */
+  protected clamps: string[] = [];
+
+  #reportClamps(): void {
+    const clamps = clampMessages(this.gpu.clamps, this.gpu.device.limits, this.#requestedCapacity);
+    const before = this.clamps.join('\n');
+    this.clamps = clamps;
+    // Once per device, and again only if a new device clamps differently.
+    if (clamps.length && clamps.join('\n') !== before) {
+      showToast(clamps.join('\n'), { kind: 'info', title: "Clamped to this GPU's limits", timeout: 10_000 });
+    }
+  }
+
+  protected override async onInit(): Promise<void> {
+    const device = this.gpu.device;
+    this.#reportClamps();
+    this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
+    this.#flat = new CageGeometry(device);
+    this.errors = new ErrorViews(device);
+    this.#boundHeat = null;
+    // After a device loss: upload the current model to the new device.
+    this.controller.reupload();
+  }
+
+  protected override onDeviceLost(): void {
+    this.renderer = null;
+    this.tess = {};
+    this.#flat = null;
+    this.#cageLines = null;
+    this.instanced.deviceLost();
+    this.errors = null;
+    this.#boundHeat = null;
+    this.compare.deviceLost();
+  }
+
+  /** The error views draw: asked for, and an ACC scheme is drawn by the compute tessellator. */
+  get errorViewActive(): boolean {
+    return (
+      this.params.errorView !== 'off' && isAcc(this.shownSurface) && this.model !== null && (!this.instancedActive || this.splitActive)
+    );
+  }
+
+  /** The comparison view: asked for, a surface is shown, and the instanced tessellator is off
+   * (its split view is the other use of the two halves). */
+  get compareActive(): boolean {
+    return this.params.compare !== null && this.shownSurface !== 'cage' && this.model !== null && !this.instancedActive;
+  }
+
+  /** The colour bar's top, in the view's unit. */
+  get errorRange(): number {
+    const view = this.params.errorView === 'normal' ? 'normal' : 'geometry';
+    return this.params.errRange ?? HEAT_DEFAULT_RANGE[view];
+  }
+
+  /** The comparison's tessellator with the model's cage on it, made or re-uploaded as needed;
+   * null while its data is not there, or when it refused the cage. */
+  protected compareGeometry(): TessellatorGeometry | null {
+    const model = this.model,
+      want = this.params.compare;
+    if (!model || !want) return null;
+    const cage = model.cage;
+    const displacement = this.#displacementSettings(model);
+    return this.compare.prepare(
+      this.gpu.device,
+      this.params.capacity * 1e6,
+      model,
+      want,
+      () => this.tables.get(cage),
+      this.#heights.get(cage),
+      displacement,
+    );
+  }
+
+  /** The error view's rows of the stats: the main surface and the comparison's right half. */
+  protected errorStats(): ErrorStats[] {
+    const model = this.model,
+      errors = this.errors;
+    if (!model || !errors || (this.params.errorView === 'off' && !this.compareActive)) return [];
+    const unavailable = this.tables.refusal(model.cage);
+    const out: ErrorStats[] = [];
+    const compare = this.compareActive;
+    const main = this.geometry instanceof TessellatorGeometry ? this.geometry : null;
+    if (isAcc(this.shownSurface) && (this.errorViewActive || compare))
+      out.push({ surface: this.shownSurface, side: compare ? 'left' : undefined, totals: errors.totals(main), unavailable });
+    const cmp = compare ? this.params.compare : null;
+    if (cmp && isAcc(cmp) && this.compare.holds(model.cage))
+      out.push({ surface: cmp, side: 'right', totals: errors.totals(this.compare.tessellator), unavailable });
+    return out;
+  }
+
+  /** The surface drawn now: the one asked for, but Phong where the model has no Catmull-Clark
+   * tables (refused, or still being built). */
+  get shownSurface(): Shown {
+    return this.controller.shownSurface;
+  }
+
+  /** What is drawn now: the tessellated surface or the flat cage. */
+  get geometry(): GeometrySource | null {
+    return this.#geometryFor(this.shownSurface);
+  }
+
+  #geometryFor(surface: Shown): GeometrySource | null {
+    return surface === 'cage' ? this.#flat : (this.tess[surface] ?? null);
+  }
+
+  /** The instanced tessellator draws, alone or in the split view (asked for, and a surface
+   * rather than the flat cage is shown). */
+  get instancedActive(): boolean {
+    return (
+      (this.params.tessellator === 'instanced' || this.params.split) &&
+      this.shownSurface !== 'cage' &&
+      this.model !== null &&
+      (this.renderer?.vertexStorage ?? true)
+    );
+  }
+
+  /** The split view: compute on the left half, instanced on the right, same cage and camera. */
+  get splitActive(): boolean {
+    return this.params.split && this.instancedActive;
+  }
+
+  /** Hand the renderer the instanced tessellator (the model's patches uploaded) or take it back,
+   * for `model` drawn as `surface` (at upload: before the controller commits them). */
+  protected syncDrawer(model: LoadedModel | null, surface: Shown): void {
+    const renderer = this.renderer;
+    if (!renderer) return;
+    renderer.setDrawer(null);
+    if ((this.params.tessellator !== 'instanced' && !this.params.split) || surface === 'cage' || !model) return;
+    // It evaluates in the vertex stage, from storage: not on a device without vertex-stage storage
+    // (compatibility mode; the clamp message says so once), where the compute tessellator draws.
+    if (!renderer.vertexStorage) return;
+    const height = this.#heights.get(model.cage)?.height ?? null;
+    const settings = this.#displacementSettings(model);
+    const view = this.instanced.sync(
+      this.gpu.device,
+      renderer.shadingResources,
+      model,
+      this.params.instSurface,
+      height,
+      settings,
+      this.params.flatShade,
+    );
+    // The split view hands it over per half, in onFrame.
+    if (!this.params.split) renderer.setDrawer(view.tess);
+  }
+
+  /** Test hook: the GPU's bucket draw records of the latest level pass, and the CPU's count for
+   * static mode (null in dynamic mode). */
+  instancedRecords(): ReturnType<InstancedDrawer['records']> {
+    return this.instancedActive ? this.instanced.records() : Promise.resolve(null);
+  }
+
+  /** The tessellator for `surface`, created on first use (the other one is freed). */
+  #tessellator(surface: TessSurface): TessellatorGeometry {
+    let tess = this.tess[surface];
+    if (!tess) {
+      for (const other of Object.values(this.tess)) other.destroy();
+      tess = new TessellatorGeometry(this.gpu.device, this.params.capacity * 1e6, surface);
+      this.tess = { [surface]: tess };
+    }
+    return tess;
+  }
+
+  /** Patch colours are on and there are patches to colour. */
+  get patchColours(): boolean {
+    // The instanced tessellator colours its patches by domain (quad, triangle) on any surface.
+    return (
+      this.params.patches &&
+      (this.shownSurface === 'catmull-clark' || isAccSurface(this.shownSurface as TessSurface) || this.instancedActive)
+    );
+  }
+
+  /** Hand the renderer the values of `pass` (null: none), unless they are bound already. */
+  protected bindHeat(renderer: Renderer, pass: { values: GPUBufferBinding } | null): void {
+    if (this.#boundHeat === pass) return;
+    renderer.setHeat(pass?.values ?? null);
+    this.#boundHeat = pass;
+  }
+
+  /** Load one of the project's models (by name), a URL, or a file; the picker shows which. */
+  loadBuiltin(name: string, camera?: CameraParams): Promise<boolean> {
+    const load = () => fetchBuiltinModel(name, this.#heights);
+    return this.controller.loadModel(load, name, { camera, pick: name });
+  }
+
+  loadUrl(url: string, camera?: CameraParams): Promise<boolean> {
+    const title = url.split('/').pop() || url;
+    return this.controller.loadModel(() => loadModelFromUrl(url, title), url, { camera, pick: title });
+  }
+
+  loadFile(file: File): Promise<boolean> {
+    if (/\.png$/i.test(file.name) || file.type.startsWith('image/')) return this.loadHeightMap(file);
+    return this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
+  }
+
+  /**
+   * A user's PNG height map on the shown model. It needs uvs on every face corner; a file that
+   * is not an image (or a model without uvs) leaves the current map as it was and says why.
+   */
+  async loadHeightMap(file: Blob & { name: string }): Promise<boolean> {
+    const model = this.model;
+    const fail = (message: string) => {
+      showToast(`${message}\n\nThe height map shown before is kept.`, { kind: 'error', title: `Cannot use ${file.name}` });
+      return false;
+    };
+    if (!model) return fail('No model is shown yet.');
+    let map: HeightEntry['height']['map'];
+    try {
+      map = await readHeightMap(file, model);
+    } catch (e) {
+      return fail((e as Error).message);
+    }
+    if (this.model !== model) return false; // another model came meanwhile
+    const before = this.#heights.get(model.cage);
+    const entry = userHeightEntry(map, file.name, model, before);
+    try {
+      for (const tess of this.#allTessellators()) tess.setHeightMap(model.cage, entry.height);
+    } catch (e) {
+      if (before) for (const tess of this.#allTessellators()) tess.setHeightMap(model.cage, before.height);
+      return fail((e as Error).message);
+    }
+    this.#heights.set(model.cage, entry);
+    this.syncDrawer(model, this.shownSurface); // the instanced tessellator's map
+    this.applyDisplacement();
+    showToast(`${file.name}: ${map.width}×${map.height}, ${map.bits}-bit, on ${model.title}.`, { title: 'Height map', timeout: 4000 });
+    return true;
+  }
+
+  /** The tessellators holding the model: the surface drawn and the comparison's. */
+  #allTessellators(): TessellatorGeometry[] {
+    return [...Object.values(this.tess), this.compare.tessellator].filter((t): t is TessellatorGeometry => !!t);
+  }
+
+  /** The displacement settings (panel, URL) on the tessellators drawn (the instanced one too); a redraw. */
+  applyDisplacement(model = this.model): void {
+    const settings = this.#displacementSettings(model);
+    for (const tess of this.#allTessellators()) tess.setDisplacement(settings);
+    this.instanced.view?.setDisplacement(settings);
+    this.invalidateGeometry();
+  }
+
+  #displacementSettings(model: LoadedModel | null): DisplacementSettings {
+    const entry = model ? this.#heights.get(model.cage) : undefined;
+    return {
+      enabled: this.params.disp && entry !== undefined,
+      scale: (entry?.scale ?? 0) * this.params.dscale,
+      midLevel: entry?.midLevel ?? 0.5,
+    };
+  }
+
+  /** The cage overlay's lines: plain, or the UV-seam view. */
+  uploadCageOverlay(model = this.model): void {
+    const renderer = this.renderer;
+    if (!model || !renderer) return;
+    let seam: ((a: number, b: number) => boolean) | undefined;
+    if (this.params.seams && uvCoverage(model.cage) !== 'none') {
+      const seams = uvSeams(model.cage, model.topology).edge;
+      seam = (a, b) => seams[findEdge(model.topology, a, b)] === 1;
+    }
+    this.#cageLines?.vertices.destroy();
+    this.#cageLines = uploadCageLines(this.gpu.device, model.cage, seam);
+    renderer.setCage(this.#cageLines);
+    this.requestFrame();
+  }
+
+  /** World bounds, light and camera for the current model and up axis. */
+  placeModel(camera?: CameraParams): void {
+    if (!this.model) return;
+    this.modelMatrix = upAxisMatrix(this.params.up) as Float32Array;
+    this.#bounds = transformBounds(boundsOf(this.model.cage.positions), this.modelMatrix);
+    this.renderer?.setBounds(this.#bounds);
+    this.setCamera(this.#initialCamera(this.#bounds, camera));
+    this.invalidateGeometry();
+  }
+
+  /** The controller's upload: `model` on this device, drawn as `surface`. Without a device (it
+   * was lost) there is nothing to do: onInit uploads what the controller shows to the new one. */
+  #upload(model: LoadedModel, surface: Shown, data: CcTables | null): void {
+    const renderer = this.renderer;
+    if (!renderer || !this.#flat) return;
+    this.#flat.setCage(model.cage);
+    const height = this.#heights.get(model.cage)?.height ?? null;
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined, height);
+    this.closed = isClosed(model.cage, model.topology);
+    renderer.setMesh(this.#geometryFor(surface)?.output ?? null, this.closed);
+    // The mesh bound may be another one now: the error views bind their values again.
+    this.#boundHeat = null;
+    renderer.setHeat(null);
+    this.compare.dirty = true;
+    const accKinds = surface !== 'cage' ? (this.tess[surface]?.accPatchKinds ?? null) : null;
+    renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : accKinds);
+    if (this.#bounds) renderer.setBounds(this.#bounds);
+    this.syncDrawer(model, surface);
+    this.uploadCageOverlay(model);
+    this.applyDisplacement(model);
+  }
+
+  #initialCamera(bounds: Bounds, p?: CameraParams): OrbitCamera {
+    const cam = this.frameBounds(bounds);
+    const deg = Math.PI / 180;
+    return {
+      ...cam,
+      yaw: p?.yaw != null ? p.yaw * deg : cam.yaw,
+      pitch: p?.pitch != null ? p.pitch * deg : cam.pitch,
+      distance: p?.dist != null ? p.dist * cam.subject.radius : cam.distance,
+    };
+  }
+
+  resetCamera(): void {
+    if (this.#bounds) this.setCamera(this.frameBounds(this.#bounds));
+  }
+
+  /** The current view as URL parameters (camera included), for sharing. */
+  shareUrl(): string {
+    const cam = this.camera;
+    const p: DemoParams = { ...this.params, t: null };
+    if (cam) {
+      p.yaw = (cam.yaw * 180) / Math.PI;
+      p.pitch = (cam.pitch * 180) / Math.PI;
+      p.dist = cam.distance / cam.subject.radius;
+    }
+    return `${location.origin}${location.pathname}${formatParams(p)}`;
+  }
+
+  /** A model (or another surface of it) is shown now: what was counted for the last one goes,
+   * and its first frame is drawn. */
+  protected abstract onModelShown(previous: LoadedModel | null): void;
+  /** Redraw the stats panel (throttled unless forced). */
+  abstract updateStats(force?: boolean): void;
+  /** Redraw the legend (patch colours or the error views' colour bar). */
+  abstract updateLegend(): void;
+  /** Something the build depends on changed: rebuild at the next frame. */
+  abstract invalidateGeometry(): void;
+}
