@@ -11,7 +11,7 @@ import type { DisplacementSettings, HeightEntry } from './displacement.ts';
 import { TessellatorGeometry } from './geometry.ts';
 import type { LoadedModel } from './models.ts';
 import type { CompareSurface } from './params.ts';
-import { SURFACE_NAMES } from './surfaces.ts';
+import { preparedAhead, SURFACE_NAMES } from './surfaces.ts';
 import { showToast } from './ui.ts';
 
 export class CompareView {
@@ -61,7 +61,7 @@ export class CompareView {
   ): TessellatorGeometry | null {
     if (this.refusal(model.cage, want) !== null) return null;
     let cc: CatmullClarkData | undefined;
-    if (want === 'catmull-clark') {
+    if (preparedAhead(want)) {
       const t = tables();
       if (t === null) return null;
       if (typeof t === 'string') {

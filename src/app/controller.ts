@@ -18,6 +18,7 @@
  * DOM-free and GPU-free: the page hands in `DemoPorts` (tests/app/controller.test.ts hands in fakes).
  */
 import type { Surface } from './params.ts';
+import { FALLBACK_SURFACE, preparedAhead } from './surfaces.ts';
 
 /** The message of anything thrown: an Error's message (a CageError's lists the lines), else its text. */
 export function errorMessage(e: unknown): string {
@@ -167,7 +168,7 @@ export class DemoController<M extends { title: string }, D, P = void> {
     const surface = this.#surface;
     let data: D | null = model === this.#model ? this.#data : null;
     let dataError: string | null = model === this.#model ? this.#dataError : null;
-    if (surface === 'catmull-clark' && !data) {
+    if (preparedAhead(surface) && !data) {
       const ready = this.#ports.surfaceReady(model);
       if (!ready) this.#ports.loading(BUILDING);
       this.#preparingFor = serial;
@@ -197,7 +198,7 @@ export class DemoController<M extends { title: string }, D, P = void> {
 
     let uploaded: { shown: Shown; dataError: string | null };
     try {
-      uploaded = this.#upload(model, surface === 'catmull-clark' && !data ? 'phong' : surface, data);
+      uploaded = this.#upload(model, preparedAhead(surface) && !data ? FALLBACK_SURFACE : surface, data);
     } catch (e) {
       this.#fail(`Could not tessellate ${what}`, e);
       // Put back what was shown (the GPU may hold half of the new model).
@@ -222,7 +223,7 @@ export class DemoController<M extends { title: string }, D, P = void> {
     this.#dataError = dataError;
     this.#shown = uploaded.shown;
     // Say why the surface asked for is not shown when this request is what found out.
-    if (dataError && uploaded.shown !== surface && (surface === 'catmull-clark' || uploaded.dataError))
+    if (dataError && uploaded.shown !== surface && (preparedAhead(surface) || uploaded.dataError))
       this.#ports.fellBack(model, dataError, surface);
     // The placement goes with the model's first showing (also when a surface change overtook its load).
     this.#ports.shown(model, previous, model !== previous ? placement : undefined);
@@ -259,27 +260,20 @@ export class DemoController<M extends { title: string }, D, P = void> {
   /** Upload for `surface`; where the Catmull-Clark upload (or an ACC scheme, which needs no data
    * prepared ahead: its patches are made at upload) refuses the model, Phong instead. */
   #upload(model: M, surface: Shown, data: D | null): { shown: Shown; dataError: string | null } {
-    if (surface !== 'catmull-clark' && surface !== 'phong' && surface !== 'cage') {
-      try {
-        this.#ports.upload(model, surface, null);
-        return { shown: surface, dataError: null };
-      } catch (e) {
-        this.#ports.upload(model, 'phong', null);
-        return { shown: 'phong', dataError: errorMessage(e) };
-      }
+    // The flat cage and the fallback take every cage; a surface prepared ahead without its data
+    // (the caller says why) is shown as the fallback.
+    if (surface === 'cage' || surface === FALLBACK_SURFACE || (preparedAhead(surface) && !data)) {
+      const shown = surface === 'cage' ? surface : FALLBACK_SURFACE;
+      this.#ports.upload(model, shown, null);
+      return { shown, dataError: null };
     }
-    if (surface === 'catmull-clark' && data) {
-      try {
-        this.#ports.upload(model, 'catmull-clark', data);
-        return { shown: 'catmull-clark', dataError: null };
-      } catch (e) {
-        this.#ports.upload(model, 'phong', null);
-        return { shown: 'phong', dataError: errorMessage(e) };
-      }
+    try {
+      this.#ports.upload(model, surface, preparedAhead(surface) ? data : null);
+      return { shown: surface, dataError: null };
+    } catch (e) {
+      this.#ports.upload(model, FALLBACK_SURFACE, null);
+      return { shown: FALLBACK_SURFACE, dataError: errorMessage(e) };
     }
-    const shown = surface === 'catmull-clark' ? 'phong' : surface;
-    this.#ports.upload(model, shown, null);
-    return { shown, dataError: null };
   }
 
   #fail(title: string, e: unknown): void {

@@ -15,7 +15,6 @@ import { ArrivedTables, CcTableCache, type CcTables } from './cc-tables.ts';
 import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
-import { isAccSurface } from '../gpu/tess/passes.ts';
 import { loadModelFromFile, loadModelFromUrl, type LoadedModel } from './models.ts';
 import { formatParams, type DemoParams } from './params.ts';
 import { HEAT_DEFAULT_RANGE } from '../gpu/acc/heat.ts';
@@ -24,7 +23,7 @@ import { ErrorViews } from './error-views.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 import type { DisplacementSettings, HeightEntry } from './displacement.ts';
 import { findEdge, uvCoverage, uvSeams } from '../mesh/index.ts';
-import { isAcc, SURFACE_NAMES } from './surfaces.ts';
+import { isAcc, isExact, preparedAhead, SURFACE_NAMES } from './surfaces.ts';
 import { CompareView } from './compare-view.ts';
 import { InstancedDrawer } from './instanced-drawer.ts';
 import { fetchBuiltinModel, readHeightMap, userHeightEntry } from './model-loading.ts';
@@ -317,10 +316,7 @@ export abstract class DemoScene extends DemoBase {
   /** Patch colours are on and there are patches to colour. */
   get patchColours(): boolean {
     // The instanced tessellator colours its patches by domain (quad, triangle) on any surface.
-    return (
-      this.params.patches &&
-      (this.shownSurface === 'catmull-clark' || isAccSurface(this.shownSurface as TessSurface) || this.instancedActive)
-    );
+    return this.params.patches && (isExact(this.shownSurface) || isAcc(this.shownSurface) || this.instancedActive);
   }
 
   /** Hand the renderer the values of `pass` (null: none), unless they are bound already. */
@@ -433,7 +429,7 @@ export abstract class DemoScene extends DemoBase {
     if (!renderer || !this.#flat) return;
     this.#flat.setCage(model.cage);
     const height = this.#heights.get(model.cage)?.height ?? null;
-    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, surface === 'catmull-clark' ? data?.data : undefined, height);
+    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, preparedAhead(surface) ? data?.data : undefined, height);
     this.closed = isClosed(model.cage, model.topology);
     renderer.setMesh(this.#geometryFor(surface)?.output ?? null, this.closed);
     // The mesh bound may be another one now: the error views bind their values again.
@@ -441,7 +437,7 @@ export abstract class DemoScene extends DemoBase {
     renderer.setHeat(null);
     this.compare.dirty = true;
     const accKinds = surface !== 'cage' ? (this.tess[surface]?.accPatchKinds ?? null) : null;
-    renderer.setPatchKinds(surface === 'catmull-clark' && data ? data.data.triKind : accKinds);
+    renderer.setPatchKinds(preparedAhead(surface) && data ? data.data.triKind : accKinds);
     if (this.#bounds) renderer.setBounds(this.#bounds);
     this.syncDrawer(model, surface);
     this.uploadCageOverlay(model);

@@ -10,7 +10,7 @@ import { destroyMesh, uploadCageMesh } from '../gpu/render/cage-mesh.ts';
 import { prepareMesh, Tessellator } from '../gpu/tess/tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
-import { isAccSurface, type Surface } from '../gpu/tess/passes.ts';
+import { isAccSurface, type SurfaceId as Surface } from '../gpu/surface/registry.ts';
 import { accPatchKinds, prepareAccSurface, type AccSurface } from '../gpu/acc/surface.ts';
 import type { AccPatches } from '../gpu/acc/patches.ts';
 import { prepareDisplacement, type DisplacementSettings } from '../gpu/tess/displacement-map.ts';

@@ -27,6 +27,8 @@ import { prepareDisplacement, type DisplacementData, type DisplacementSettings }
 import type { CageHeightMap } from './geometry.ts';
 import type { Tessellator } from '../gpu/tess/tessellator.ts';
 import type { InstancedSurface } from './params.ts';
+import { surfaceScheme } from '../gpu/surface/registry.ts';
+import { isAcc, isExact } from './surfaces.ts';
 
 /** The Catmull-Clark preparation refused the cage (a message fit to show). An AccError, so that
  * the page's fallback for a cage an ACC scheme refuses (Phong, with the reason) takes it too. */
@@ -98,7 +100,7 @@ export class InstancedView {
     this.tess = new InstancedTessellator(device, {
       colorFormat: shading.colorFormat,
       sampleCount: shading.sampleCount,
-      surface: surface === 'phong' ? 'evalSurface' : surface === 'catmull-clark' ? 'catmull-clark' : 'acc',
+      surface: surfaceScheme(surface).instancedKind,
       displacement: displaced,
     });
     this.tess.useRenderer(shading);
@@ -151,10 +153,9 @@ export class InstancedView {
     let disp: DisplacementData | undefined;
     if (this.displaced && height) disp = prepareDisplacement(cage, prepared, height.map, height.wrap);
     const mesh = prepareInstanced(cage, prepared);
-    const isAcc = this.surface !== 'phong' && this.surface !== 'catmull-clark';
-    const acc = isAcc ? new AccPatches(this.#device, cage, this.surface as Exclude<InstancedSurface, 'phong' | 'catmull-clark'>) : null;
+    const acc = isAcc(this.surface) ? new AccPatches(this.#device, cage, this.surface) : null;
     let cc: { data: CatmullClarkData; tess: Tessellator } | null = null;
-    if (this.surface === 'catmull-clark') {
+    if (isExact(this.surface)) {
       // Topology only, as the page's own cache prepares it (src/app/cc-tables.ts): tens of ms.
       let data: CatmullClarkData;
       try {

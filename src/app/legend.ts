@@ -7,7 +7,7 @@ import { PATCH_COLOURS } from '../gpu/render/renderer.ts';
 import { HEAT_RAMP, type HeatView } from '../gpu/acc/heat.ts';
 import type { DemoParams } from './params.ts';
 import { degrees, percentOfDiagonal, type ErrorStats } from './stats.ts';
-import { isAcc, SURFACE_NAMES } from './surfaces.ts';
+import { isAcc, isExact, SURFACE_NAMES } from './surfaces.ts';
 
 function hex(c: readonly number[]): string {
   return `#${c
@@ -69,7 +69,7 @@ export function heatLegend(view: HeatView, range: number, stats: ErrorStats[]): 
 export function compareLabel(surface: string, side: 'left' | 'right', stats: ErrorStats[], view: DemoParams['errorView']): string {
   const name = SURFACE_NAMES[surface as DemoParams['surface']] ?? surface;
   const e = stats.find((x) => x.side === side);
-  if (!isAcc(surface)) return surface === 'catmull-clark' ? `${name} · exact` : name;
+  if (!isAcc(surface)) return isExact(surface) ? `${name} · exact` : name;
   if (!e?.totals) return `${name} · ${e?.unavailable ? 'no error view' : 'measuring…'}`;
   const t = e.totals;
   return view === 'normal'

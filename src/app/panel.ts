@@ -17,7 +17,7 @@ import {
   type CompareSurface,
   type DemoParams,
 } from './params.ts';
-import { isAcc, SURFACE_NAMES } from './surfaces.ts';
+import { isAcc, isExact, SURFACE_NAMES } from './surfaces.ts';
 import { openFile } from './file-input.ts';
 import { showToast } from './ui.ts';
 import type { PickerDisplay } from './demo-scene.ts';
@@ -109,7 +109,7 @@ export const PANEL: readonly Folder[] = [
         param: 'surface',
         change: (demo) => void demo.controller.setSurface(demo.params.surface),
       },
-      { label: 'flat baseline', kind: 'toggle', param: 'flat', change: rebuild, shown: (p) => p.surface === 'catmull-clark' },
+      { label: 'flat baseline', kind: 'toggle', param: 'flat', change: rebuild, shown: (p) => isExact(p.surface) },
       { label: 'factors', kind: 'choice', options: { adaptive: 'adaptive', fixed: 'fixed' }, param: 'mode', change: rebuild },
       {
         label: 'LOD scale',

@@ -10,6 +10,10 @@ export type UpAxis = 'y' | 'z';
 export type Surface = 'catmull-clark' | 'phong' | 'cage' | 'bezier-acc' | 'gregory-acc' | 'pm-acc';
 /** The three approximations of the Catmull-Clark limit (ACC) the compute tessellator also draws. */
 export const ACC_SURFACES = ['bezier-acc', 'gregory-acc', 'pm-acc'] as const;
+/** Every value of `surface`. */
+export const SURFACES: readonly Surface[] = ['catmull-clark', 'phong', 'cage', ...ACC_SURFACES];
+/** Other spellings a shared URL may carry. */
+const SURFACE_ALIASES: Record<string, Surface> = { cc: 'catmull-clark', catmullclark: 'catmull-clark', tessellated: 'phong' };
 /** Who tessellates: the compute tessellator (built once, the stored mesh drawn in every pass) or
  * the instanced power-of-two tessellator (src/gpu/instanced/instanced.ts: re-evaluates in every pass). */
 export type TessellatorKind = 'compute' | 'instanced';
@@ -155,10 +159,8 @@ export function parseParams(search: string): DemoParams {
   const mode = q.get('mode')?.trim().toLowerCase();
   if (mode === 'adaptive' || mode === 'fixed') p.mode = mode;
   const surface = q.get('surface')?.trim().toLowerCase();
-  if (surface === 'catmull-clark' || surface === 'cc' || surface === 'catmullclark') p.surface = 'catmull-clark';
-  else if (surface === 'phong' || surface === 'tessellated') p.surface = 'phong';
-  else if (surface === 'cage') p.surface = 'cage';
-  else if ((ACC_SURFACES as readonly string[]).includes(surface ?? '')) p.surface = surface as Surface;
+  const named = surface ? (SURFACE_ALIASES[surface] ?? surface) : '';
+  if ((SURFACES as readonly string[]).includes(named)) p.surface = named as Surface;
   p.patches = bool(q.get('patches')) ?? p.patches;
   p.flat = bool(q.get('flat')) ?? p.flat;
   p.lod = num(q.get('lod'), LOD_RANGE.min, LOD_RANGE.max) ?? p.lod;

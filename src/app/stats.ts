@@ -7,6 +7,7 @@ import type { MeshCounts } from './counts.ts';
 import type { GpuMemoryCounts } from '../gpu/device/tracked-device.ts';
 import type { InstancedCounts } from './instanced-view.ts';
 import type { HeatTotals } from '../gpu/acc/heat.ts';
+import { isExact } from './surfaces.ts';
 
 /** One ACC surface's error against the exact Catmull-Clark limit over its output vertices (the
  * GPU error pass: src/gpu/acc/heat.ts), or why there is none. */
@@ -154,7 +155,7 @@ export function renderStats(s: StatsInput): string {
     let text = `<b>${SURFACE_NAMES[sf.shown]}</b>`;
     if (sf.building) text += ' <span class="muted">preparing subdivision data…</span>';
     if (sf.fallback) text += ` <span class="warn">${SURFACE_NAMES[sf.asked ?? 'catmull-clark']} unavailable: ${esc(sf.fallback)}</span>`;
-    if (sf.shown === 'catmull-clark' && sf.kinds) {
+    if (isExact(sf.shown) && sf.kinds) {
       const [reg, irr, tri, crease] = sf.kinds;
       text += ` <span class="muted">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;
       if (sf.tablesMs !== undefined) text += ` · prepared in ${sf.tablesMs < 10 ? sf.tablesMs.toFixed(1) : Math.round(sf.tablesMs)} ms`;
@@ -245,7 +246,7 @@ export function renderStats(s: StatsInput): string {
     const all = s.instanced && !s.instanced.split ? [] : Object.entries(s.tessTimes);
     const subdiv = all.filter(([k]) => SUBDIVISION_STAGES.has(k));
     const tess = all.filter(([k]) => !SUBDIVISION_STAGES.has(k));
-    if (all.length && s.surface?.shown === 'catmull-clark') {
+    if (all.length && isExact(s.surface?.shown)) {
       const total = subdiv.reduce((a, [, v]) => a + v, 0);
       rows.push(row('subdivision ms', subdiv.length ? `<b>${ms(total)}</b> <span class="muted">patch build</span>` : '–', 'stats-subdiv'));
     }

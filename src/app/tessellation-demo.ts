@@ -21,7 +21,7 @@ import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState } from './ui.ts';
-import { isAcc, SURFACE_NAMES } from './surfaces.ts';
+import { isAcc, isExact, SURFACE_NAMES } from './surfaces.ts';
 import { accPatchLegend, ccPatchLegend, compareLabel, heatLegend, instancedPatchLegend } from './legend.ts';
 import { DemoScene } from './demo-scene.ts';
 import { BuildStaleness } from './build-staleness.ts';
@@ -168,7 +168,7 @@ export class TessellationDemo extends DemoScene {
     const inst = this.instancedActive && !this.splitActive ? this.instanced.view : null;
     const shown = this.shownSurface;
     const accKinds = shown !== 'cage' ? this.tess[shown]?.accPatchKinds : null;
-    if (inst) legend.innerHTML = instancedPatchLegend(inst.patchColourCounts(), inst.surface !== 'phong');
+    if (inst) legend.innerHTML = instancedPatchLegend(inst.patchColourCounts(), isAcc(inst.surface) || isExact(inst.surface));
     else if (accKinds) legend.innerHTML = accPatchLegend(shown, accKinds);
     else legend.innerHTML = ccPatchLegend(this.cc?.data.triKind ?? new Uint8Array());
   }
@@ -293,7 +293,7 @@ export class TessellationDemo extends DemoScene {
       this.bindHeat(renderer, cmpHeat);
       renderer.render(encoder, target, view, {
         ...options,
-        patchColours: options.patchColours && compare.surface === 'catmull-clark',
+        patchColours: options.patchColours && isExact(compare.surface),
         heat: cmpHeat ? heatView : null,
         region: { x0: 0.5, x1: 1, first: false, slot: 1 },
       });

@@ -22,6 +22,7 @@ import { buildCatmullClark, type CatmullClarkData } from '../cc/build.ts';
 import { ACC_SURFACE_WGSL } from '../acc/patches.ts';
 import { prepareAccSurface, type AccSurface } from '../acc/surface.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
+import type { InstancedSurfaceKind } from '../instanced/displace-vertex.ts';
 
 export type SurfaceId = 'phong' | 'catmull-clark' | AccScheme;
 
@@ -51,6 +52,9 @@ export interface SurfaceScheme {
   readonly splitsCreases: boolean;
   /** Its evaluator reads the tessellator's work arena (the patch build's output). */
   readonly readsWork: boolean;
+  /** How the instanced tessellator's vertex stage evaluates it: its own cage buffer (evalSurface),
+   * AccPatches' control points, or the buffers of a compute tessellator on the exact limit. */
+  readonly instancedKind: InstancedSurfaceKind;
   /** Whether the data has what this surface's evaluator reads. */
   hasData(data: SurfaceData): boolean;
   /** The tables or patches for a prepared cage. Throws, with the reason, on a cage the surface
@@ -67,6 +71,7 @@ const phong: SurfaceScheme = {
   exactLimit: false,
   splitsCreases: false,
   readsWork: false,
+  instancedKind: 'evalSurface',
   hasData: () => true,
   prepare: () => ({}),
 };
@@ -79,6 +84,7 @@ const catmullClark: SurfaceScheme = {
   exactLimit: true,
   splitsCreases: true,
   readsWork: true,
+  instancedKind: 'catmull-clark',
   hasData: (data) => data.cc !== undefined,
   prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),
 };
@@ -94,6 +100,7 @@ function accScheme(scheme: AccScheme): SurfaceScheme {
     exactLimit: false,
     splitsCreases: false,
     readsWork: false,
+    instancedKind: 'acc',
     hasData: (data) => data.acc?.patches.scheme === scheme,
     prepare: (device, cage, mesh) => ({ acc: prepareAccSurface(device, cage, mesh, scheme) }),
   };
