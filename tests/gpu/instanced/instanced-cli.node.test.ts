@@ -1,6 +1,7 @@
 /**
- * `npm run tessellate -- --tessellator instanced --surface catmull-clark` end to end (a real
- * process, Dawn in Node): the welded OBJ is closed across mixed adaptive levels, and every vertex
+ * `npm run tessellate -- --tessellator instanced --surface catmull-clark` end to end (its main in
+ * this process, tests/support/tessellate-cli.ts; tests/gpu/tess/tessellate-cli.node.test.ts checks
+ * the process itself; Dawn in Node): the welded OBJ is closed across mixed adaptive levels, and every vertex
  * lies on the exact limit at its --params point as the CPU reference (`subdiv --points`) puts it;
  * with --displacement (brick box, every box edge a UV seam) the welded OBJ is closed with a weld
  * gap of exactly 0 (the seam rule: src/gpu/instanced/displace-vertex.ts) and every vertex lies on the f64
@@ -10,14 +11,15 @@ import { describe, it, expect } from 'vitest';
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';
 import { DEFAULT_OPTIONS, loadCage } from '../../../src/mesh/index.ts';
 import { DisplacedSurface, Surface } from '../../../src/subdiv/index.ts';
+import { runCli } from '../../support/tessellate-cli.ts';
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 
 const dir = mkdtempSync(join(tmpdir(), 'tessellab-instanced-cli-'));
-const run = (...args: string[]) =>
-  spawnSync(process.execPath, ['scripts/vite-run.mjs', 'scripts/tessellate-cli.ts', ...args], { encoding: 'utf8', timeout: 120_000 });
+// In this process (tests/support/tessellate-cli.ts says why); spawnCli where the claim is the process's.
+const run = runCli;
 
 function objOf(path: string): { v: number[][]; f: number[][] } {
   const lines = readFileSync(path, 'utf8').split('\n');
@@ -35,11 +37,11 @@ function objOf(path: string): { v: number[][]; f: number[][] } {
 }
 
 describe('npm run tessellate -- --tessellator instanced --surface catmull-clark', () => {
-  it('adaptive levels on creature: closed welded OBJ, every vertex on the exact limit at its --params point', () => {
+  it('adaptive levels on creature: closed welded OBJ, every vertex on the exact limit at its --params point', async () => {
     const out = join(dir, 'creature-cc.obj');
     const params = join(dir, 'creature-cc.txt');
     const model = 'public/models/creature.obj';
-    const r = run(
+    const r = await run(
       model,
       '--tessellator',
       'instanced',
@@ -124,10 +126,10 @@ describe('npm run tessellate -- --tessellator instanced --displacement', () => {
         .filter((l) => l.startsWith('{'))[0],
     );
 
-  it('catmull-clark, brick box, level 4: closed, weld gap exactly 0, every vertex on the f64 displaced limit at its --params', () => {
+  it('catmull-clark, brick box, level 4: closed, weld gap exactly 0, every vertex on the f64 displaced limit at its --params', async () => {
     const out = join(dir, 'brick-cc.obj');
     const params = join(dir, 'brick-cc.json');
-    const r = run(
+    const r = await run(
       model,
       '--tessellator',
       'instanced',
@@ -187,9 +189,9 @@ describe('npm run tessellate -- --tessellator instanced --displacement', () => {
     expect(moved).toBeGreaterThan(v.length / 4);
   });
 
-  it('phong, brick box, adaptive: closed, weld gap exactly 0', () => {
+  it('phong, brick box, adaptive: closed, weld gap exactly 0', async () => {
     const out = join(dir, 'brick-phong.obj');
-    const r = run(
+    const r = await run(
       model,
       '--tessellator',
       'instanced',

@@ -1,4 +1,5 @@
-/** The headless CLI end to end: a real process, Dawn in Node (SwiftShader here). */
+/** The headless CLI end to end: its main in this process, and a real process where the claim is the
+ * process's (exit status, stdout); Dawn in Node (SwiftShader here). */
 import { describe, it, expect } from 'vitest';
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
@@ -7,16 +8,17 @@ import { join } from 'node:path';
 import { loadCage, DEFAULT_OPTIONS } from '../../../src/mesh/index.ts';
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';
 import { DisplacedSurface, Surface } from '../../../src/subdiv/index.ts';
+import { runCli, spawnCli } from '../../support/tessellate-cli.ts';
 
 const dir = mkdtempSync(join(tmpdir(), 'tessellab-cli-'));
-const run = (...args: string[]) =>
-  spawnSync(process.execPath, ['scripts/vite-run.mjs', 'scripts/tessellate-cli.ts', ...args], { encoding: 'utf8', timeout: 120_000 });
+// In this process (tests/support/tessellate-cli.ts says why); spawnCli where the claim is the process's.
+const run = runCli;
 
 describe('npm run tessellate', () => {
-  it('writes a watertight OBJ and one parameter per vertex', () => {
+  it('writes a watertight OBJ and one parameter per vertex', async () => {
     const out = join(dir, 'torus.obj');
     const params = join(dir, 'torus.txt');
-    const r = run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', out, '--params', params);
+    const r = await run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', out, '--params', params);
     expect(r.status, r.stderr).toBe(0);
     const obj = readFileSync(out, 'utf8').split('\n');
     const v = obj.filter((l) => l.startsWith('v ')).length;
@@ -48,10 +50,10 @@ describe('npm run tessellate', () => {
     }
   });
 
-  it('puts every vertex on the exact Catmull-Clark limit: --params read back by `subdiv --points`', () => {
+  it('puts every vertex on the exact Catmull-Clark limit: --params read back by `subdiv --points`', async () => {
     const out = join(dir, 'creature.obj');
     const params = join(dir, 'creature.txt');
-    const r = run('public/models/creature.obj', '--adaptive', '--lod', '2', '--out', out, '--params', params);
+    const r = await run('public/models/creature.obj', '--adaptive', '--lod', '2', '--out', out, '--params', params);
     expect(r.status, r.stderr).toBe(0);
     const gpu = readFileSync(out, 'utf8')
       .split('\n')
@@ -76,10 +78,11 @@ describe('npm run tessellate', () => {
     expect(worst).toBeLessThan(1e-5);
   });
 
-  it("--stats prints one JSON line whose counts are the cage's and the written OBJ's", () => {
+  it("--stats prints one JSON line whose counts are the cage's and the written OBJ's", async () => {
     const model = 'public/models/creased-box.obj';
     const out = join(dir, 'stats.obj');
-    const r = run(model, '--fixed', '4', '--stats', '--out', out);
+    // A real process: the claim is what reaches its stdout (one JSON line) and its exit status.
+    const r = spawnCli(model, '--fixed', '4', '--stats', '--out', out);
     expect(r.status, r.stderr).toBe(0);
     const lines = r.stdout
       .trim()
@@ -127,11 +130,22 @@ describe('npm run tessellate', () => {
     return { open, directed: directed.size };
   };
 
-  it('--tessellator instanced --level 4: the compute tessellator’s points at --fixed 4 (Phong), welded and closed', () => {
+  it('--tessellator instanced --level 4: the compute tessellator’s points at --fixed 4 (Phong), welded and closed', async () => {
     const inst = join(dir, 'torus-inst.obj');
     const comp = join(dir, 'torus-comp.obj');
     const params = join(dir, 'torus-inst.txt');
-    let r = run('public/models/torus.obj', '--tessellator', 'instanced', '--level', '4', '--out', inst, '--params', params, '--stats');
+    let r = await run(
+      'public/models/torus.obj',
+      '--tessellator',
+      'instanced',
+      '--level',
+      '4',
+      '--out',
+      inst,
+      '--params',
+      params,
+      '--stats',
+    );
     expect(r.status, r.stderr).toBe(0);
     const stats = JSON.parse(
       r.stdout
@@ -139,7 +153,7 @@ describe('npm run tessellate', () => {
         .split('\n')
         .filter((l) => l.startsWith('{'))[0],
     );
-    r = run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', comp);
+    r = await run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', comp);
     expect(r.status, r.stderr).toBe(0);
     const a = objOf(inst),
       b = objOf(comp);
@@ -164,10 +178,10 @@ describe('npm run tessellate', () => {
     expect(readFileSync(params, 'utf8').trim().split('\n').length).toBe(a.v.length);
   });
 
-  it('--tessellator instanced --adaptive: mixed levels, the weld closes every shared edge (no T-junction, no hole)', () => {
+  it('--tessellator instanced --adaptive: mixed levels, the weld closes every shared edge (no T-junction, no hole)', async () => {
     const out = join(dir, 'creature-inst.obj');
     const params = join(dir, 'creature-inst.json');
-    const r = run(
+    const r = await run(
       'public/models/creature.obj',
       '--tessellator',
       'instanced',
@@ -203,9 +217,9 @@ describe('npm run tessellate', () => {
     expect(p.vertexCount).toBe(v.length);
   });
 
-  it('--tessellator instanced --surface bezier-acc: the ACC surface, welded closed across mixed levels; an n-gon cage refused', () => {
+  it('--tessellator instanced --surface bezier-acc: the ACC surface, welded closed across mixed levels; an n-gon cage refused', async () => {
     const out = join(dir, 'creature-acc.obj');
-    const r = run(
+    const r = await run(
       'public/models/creature.obj',
       '--tessellator',
       'instanced',
@@ -231,23 +245,23 @@ describe('npm run tessellate', () => {
     console.log(`instanced bezier-acc creature: ${f.length} triangles, weld gap ${stats.weldGap} of the size`);
     expect(stats.weldGap).toBeLessThan(1e-6);
     expect(closedEverywhere(f).open).toBe(0);
-    const bad = run('public/models/icosphere.obj', '--tessellator', 'instanced', '--surface', 'pm-acc', '--level', '2', '--stats');
+    const bad = await run('public/models/icosphere.obj', '--tessellator', 'instanced', '--surface', 'pm-acc', '--level', '2', '--stats');
     expect(bad.status).toBe(2);
     expect(bad.stderr).toMatch(/5 corners/);
   });
 
-  it('--surface gregory-acc on the compute tessellator: a closed OBJ; an n-gon cage refused with exit code 2', () => {
+  it('--surface gregory-acc on the compute tessellator: a closed OBJ; an n-gon cage refused with exit code 2', async () => {
     const out = join(dir, 'creature-gregory.obj');
-    const r = run('public/models/creature.obj', '--fixed', '3', '--surface', 'gregory-acc', '--out', out);
+    const r = await run('public/models/creature.obj', '--fixed', '3', '--surface', 'gregory-acc', '--out', out);
     expect(r.status, r.stderr).toBe(0);
     expect(closedEverywhere(objOf(out).f).open).toBe(0);
-    const gear = run('public/models/gear.obj', '--fixed', '3', '--surface', 'pm-acc', '--out', join(dir, 'x.obj'));
+    const gear = await run('public/models/gear.obj', '--fixed', '3', '--surface', 'pm-acc', '--out', join(dir, 'x.obj'));
     expect(gear.status).toBe(2);
     expect(gear.stderr).toMatch(/corners/);
   });
 
-  it('--demo-view --limit-px: the demo’s first view (adaptive, flat baseline) within a pixel of the exact limit', () => {
-    const r = run('public/models/creature.obj', '--adaptive', '--flat-baseline', '--demo-view', '--limit-px', '--stats');
+  it('--demo-view --limit-px: the demo’s first view (adaptive, flat baseline) within a pixel of the exact limit', async () => {
+    const r = await run('public/models/creature.obj', '--adaptive', '--flat-baseline', '--demo-view', '--limit-px', '--stats');
     expect(r.status, r.stderr).toBe(0);
     const s = JSON.parse(r.stdout.trim().split('\n').pop()!);
     expect(s.limitPx.vertices).toBeGreaterThan(500);
@@ -257,7 +271,7 @@ describe('npm run tessellate', () => {
     expect(s.displayedPx.max).toBeGreaterThan(0);
   });
 
-  it('rejects bad input with a message and exit code 2', () => {
+  it('rejects bad input with a message and exit code 2', async () => {
     const bad = join(dir, 'bad.obj');
     writeFileSync(bad, 'v 0 0 0\nv 1 0 0\nf 1 2 7\n');
     for (const args of [
@@ -277,18 +291,36 @@ describe('npm run tessellate', () => {
       ['public/models/torus.obj', '--fixed', '2', '--surface', 'phong', '--limit-px', '--stats'],
       ['public/models/torus.obj', '--adaptive', '--demo-view', '--eye', '1,2,3', '--stats'],
     ]) {
-      const r = run(...args);
+      const r = await run(...args);
       expect(r.status, args.join(' ')).toBe(2);
       expect(r.stderr).toMatch(/tessellate: /);
     }
+    // main's 2 is the process's exit status (scripts/vite-run.mjs), shown once by a real process.
+    const p = spawnCli('public/models/torus.obj', '--fixed', '0', '--out', join(dir, 'x.obj'));
+    expect(p.status).toBe(2);
+    expect(p.stderr).toMatch(/tessellate: --fixed/);
   });
 
-  it('--displacement map.png --scale S: every vertex on the f64 displaced limit at its --params; bad maps and cages without uvs refused', () => {
+  it('--displacement map.png --scale S: every vertex on the f64 displaced limit at its --params; bad maps and cages without uvs refused', async () => {
     const model = 'public/models/brick-box.obj';
     const png = 'public/models/brick-box-height.png';
     const out = join(dir, 'displaced.obj');
     const params = join(dir, 'displaced.json');
-    const r = run(model, '--fixed', '4', '--displacement', png, '--scale', '0.06', '--wrap', 'clamp', '--out', out, '--params', params);
+    const r = await run(
+      model,
+      '--fixed',
+      '4',
+      '--displacement',
+      png,
+      '--scale',
+      '0.06',
+      '--wrap',
+      'clamp',
+      '--out',
+      out,
+      '--params',
+      params,
+    );
     expect(r.status, r.stderr).toBe(0);
     const v = objOf(out).v;
     const p = JSON.parse(readFileSync(params, 'utf8')).params as number[][];
@@ -326,13 +358,13 @@ describe('npm run tessellate', () => {
 
     const bad = join(dir, 'bad.png');
     writeFileSync(bad, 'not a png at all');
-    const b = run(model, '--fixed', '2', '--displacement', bad, '--scale', '1', '--stats');
+    const b = await run(model, '--fixed', '2', '--displacement', bad, '--scale', '1', '--stats');
     expect(b.status).toBe(2);
     expect(b.stderr).toMatch(/not a PNG/);
-    const n = run('public/models/creature.obj', '--fixed', '2', '--displacement', png, '--scale', '1', '--stats');
+    const n = await run('public/models/creature.obj', '--fixed', '2', '--displacement', png, '--scale', '1', '--stats');
     expect(n.status).toBe(2);
     expect(n.stderr).toMatch(/texture coordinate|UVs/);
-    const u = run(model, '--fixed', '2', '--displacement', png, '--stats');
+    const u = await run(model, '--fixed', '2', '--displacement', png, '--stats');
     expect(u.status).toBe(2);
     expect(u.stderr).toMatch(/needs --scale/);
   });

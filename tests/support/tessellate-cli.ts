@@ -1,0 +1,49 @@
+/**
+ * `npm run tessellate` for the CLI tests (tests/gpu/tess/tessellate-cli.node.test.ts,
+ * tests/gpu/instanced/instanced-cli.node.test.ts), two ways:
+ * - `runCli`: scripts/tessellate-cli.ts `main(argv)` called in this process, its console output
+ *   captured. The exit code is main's return value, which scripts/vite-run.mjs hands to
+ *   process.exit unchanged, and the output is the same console.log / console.error lines. A
+ *   spawned process costs Node's start, a Vite server that transforms every module again and a
+ *   fresh Dawn; on SwiftShader on a two-core machine that was most of each case's time.
+ * - `spawnCli`: the real process, as `npm run tessellate` starts it, for the cases whose claim is
+ *   about the process itself (its exit status and what reaches its stdout).
+ */
+import { spawnSync } from 'node:child_process';
+import { vi } from 'vitest';
+import { main } from '../../scripts/tessellate-cli.ts';
+
+export interface CliResult {
+  status: number | null;
+  stdout: string;
+  stderr: string;
+}
+
+/** One console call as Node prints it for the strings and numbers the CLI logs. */
+const line = (args: unknown[]) => `${args.map((a) => (typeof a === 'string' ? a : String(a))).join(' ')}\n`;
+
+export async function runCli(...args: string[]): Promise<CliResult> {
+  let stdout = '';
+  let stderr = '';
+  const log = vi.spyOn(console, 'log').mockImplementation((...a: unknown[]) => {
+    stdout += line(a);
+  });
+  const error = vi.spyOn(console, 'error').mockImplementation((...a: unknown[]) => {
+    stderr += line(a);
+  });
+  try {
+    const status = await main(args);
+    return { status, stdout, stderr };
+  } finally {
+    log.mockRestore();
+    error.mockRestore();
+  }
+}
+
+export function spawnCli(...args: string[]): CliResult {
+  const r = spawnSync(process.execPath, ['scripts/vite-run.mjs', 'scripts/tessellate-cli.ts', ...args], {
+    encoding: 'utf8',
+    timeout: 120_000,
+  });
+  return { status: r.status, stdout: r.stdout, stderr: r.stderr };
+}
