@@ -64,7 +64,7 @@ import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surfac
 import { displacementLender } from '../src/gpu/instanced/displace-vertex.ts';
 import { prepareDisplacement } from '../src/gpu/tess/displacement-map.ts';
 import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
-import { isAccSurface, type Surface } from '../src/gpu/tess/passes.ts';
+import { isAccSurface, type SurfaceId as Surface } from '../src/gpu/surface/registry.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc/surface.ts';
 import { demoView, displayedDistancePx, limitDistancePx } from './limit-distance.ts';
 

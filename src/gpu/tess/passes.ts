@@ -27,7 +27,6 @@ import { usedBindings } from '../contract/define.ts';
 /** The tessellator's surfaces (src/gpu/surface/registry.ts): Phong tessellation, the exact
  * Catmull-Clark limit, or one of the three approximations of it. */
 export type Surface = SurfaceId;
-export { isAccSurface } from '../surface/registry.ts';
 
 export type PassName =
   | 'bulge'
