@@ -5,6 +5,11 @@
  */
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
 
+/** How the vertex stage evaluates the surface: its own cage buffer through evalSurface (Phong),
+ * AccPatches' control points, or the buffers a compute tessellator on the exact Catmull-Clark
+ * limit lends it (src/gpu/surface/registry.ts instancedKind says which for each surface). */
+export type InstancedSurfaceKind = 'evalSurface' | 'acc' | 'catmull-clark';
+
 export interface InstancedOptions {
   /** WGSL defining `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` (default: Phong,
    * wgsl/surface/phong.wgsl), evaluated through wgsl/instanced/surface-tri.wgsl. */
@@ -18,7 +23,7 @@ export interface InstancedOptions {
    * (src/gpu/instanced/surface-cc.ts: ccSurfaceTessellator makes one), bound in group 3; encodeLevels runs
    * its patch build first.
    */
-  surface?: 'evalSurface' | 'acc' | 'catmull-clark';
+  surface?: InstancedSurfaceKind;
   /**
    * Displace every vertex the vertex function evaluates by a height map (src/gpu/instanced/displace-vertex.ts):
    * setMesh then needs a lending compute Tessellator holding the displacement arenas (on

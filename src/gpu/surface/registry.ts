@@ -22,7 +22,7 @@ import { buildCatmullClark, type CatmullClarkData } from '../cc/build.ts';
 import { ACC_SURFACE_WGSL } from '../acc/patches.ts';
 import { prepareAccSurface, type AccSurface } from '../acc/surface.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
-import type { InstancedSurfaceKind } from '../instanced/displace-vertex.ts';
+import type { InstancedSurfaceKind } from '../instanced/instanced-options.ts';
 
 export type SurfaceId = 'phong' | 'catmull-clark' | AccScheme;
 
