@@ -12,7 +12,8 @@
  *   tess.ts        the compute tessellator's: its buffers as arenas (TESS_STATIC, TESS_CAGE,
  *                  TESS_WORK), its uniforms (TESS_PARAMS), its bind group (TESS_GROUP), the scan's
  *                  uniforms (SCAN_PARAMS), the packed words its shaders read, its constants
- *   cc.ts          the Catmull-Clark patch build's bind group and level range
+ *   cc.ts          the Catmull-Clark patch build's bind group and level range, and the sections
+ *                  of its words (CC_STATIC, whose offsets are Params' cc* fields)
  *   render.ts      the renderer's uniforms (SCENE_UNIFORMS), bind group layouts and which pipeline
  *                  uses which (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS), the patch colours
  *   tessellated-mesh.ts  the tessellator's output, as everything that draws or reads it sees it

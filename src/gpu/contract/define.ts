@@ -235,16 +235,17 @@ export interface ArenaLayout<K extends string> {
   words: number;
 }
 
-export type OffsetField<K extends string> = `off${Capitalize<K>}`;
+export type OffsetField<K extends string, P extends string = 'off'> = `${P}${Capitalize<K>}`;
 
-export interface Arena<K extends string, S> {
+export interface Arena<K extends string, S, P extends string = 'off'> {
   readonly names: readonly K[];
-  /** The uniform fields that carry the offsets (`offEdgeF: u32` for `edgeF`): spread them into the
-   * Params struct's defineStruct. */
-  readonly offsetFields: readonly (readonly [OffsetField<K>, 'u32'])[];
+  /** The uniform fields that carry the offsets (`offEdgeF: u32` for `edgeF`; the prefix is the
+   * arena's, `off` unless named): spread them into the Params struct's defineStruct. */
+  readonly offsetFields: readonly (readonly [OffsetField<K, P>, 'u32'])[];
   layout(sizes: S): ArenaLayout<K>;
-  /** The offset fields' values for PARAMS.write. */
-  offsets(layout: ArenaLayout<K>): Record<OffsetField<K>, number>;
+  /** The offset fields' values for PARAMS.write, each plus `base` (where the arena starts in a
+   * larger buffer, 0 by default). */
+  offsets(layout: ArenaLayout<K>, base?: number): Record<OffsetField<K, P>, number>;
   /** WGSL `fn name_at(i: u32) -> u32 { return buffer[params.offName + i]; }` for each array. */
   wgslAccessors(buffer: string, params: string): string;
 }
@@ -252,12 +253,16 @@ export interface Arena<K extends string, S> {
 /**
  * Several u32 arrays carved one after another out of one storage buffer (the tessellator's
  * scratch `work`), each sized from `S` (e.g. the edge and triangle counts). Adding an array is one
- * entry here; its offset reaches the shaders through `offsetFields` in the uniform struct.
+ * entry here; its offset reaches the shaders through `offsetFields` in the uniform struct, whose
+ * names are `prefix` and the array's name (`off` by default: `offEdgeF` for `edgeF`).
  */
-export function defineArena<K extends string, S>(arrays: readonly (readonly [K, (sizes: S) => number])[]): Arena<K, S> {
+export function defineArena<K extends string, S, P extends string = 'off'>(
+  arrays: readonly (readonly [K, (sizes: S) => number])[],
+  prefix: P = 'off' as P,
+): Arena<K, S, P> {
   const names = arrays.map(([k]) => k);
   if (new Set(names).size !== names.length) throw new Error('an arena array is named twice');
-  const field = (k: K) => `off${k[0].toUpperCase()}${k.slice(1)}` as OffsetField<K>;
+  const field = (k: K) => `${prefix}${k[0].toUpperCase()}${k.slice(1)}` as OffsetField<K, P>;
   return {
     names,
     offsetFields: names.map((k) => [field(k), 'u32'] as const),
@@ -274,8 +279,8 @@ export function defineArena<K extends string, S>(arrays: readonly (readonly [K, 
       }
       return { offset, length, words: at };
     },
-    offsets(layout) {
-      return Object.fromEntries(names.map((k) => [field(k), layout.offset[k]])) as Record<OffsetField<K>, number>;
+    offsets(layout, base = 0) {
+      return Object.fromEntries(names.map((k) => [field(k), base + layout.offset[k]])) as Record<OffsetField<K, P>, number>;
     },
     wgslAccessors(buffer, params) {
       return names

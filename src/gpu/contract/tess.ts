@@ -10,6 +10,7 @@
 import { ONE } from '../../pattern/fixed.ts';
 import { TABLE_HEADER_FIELDS } from '../../pattern/tables.ts';
 import { STRIP_DP_VERTICES } from '../../pattern/clamped.ts';
+import { CC_STATIC } from './cc.ts';
 import { SCAN_ITEMS, SCAN_WORKGROUP_SIZE } from './constants.ts';
 import { defineArena, defineBindGroup, defineBits } from './define.ts';
 import { defineStruct } from './layout.ts';
@@ -316,19 +317,10 @@ export const TESS_PARAMS = defineStruct('Params', [
   // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
   ['offFactorPos', 'u32'],
   ['offFactorNormal', 'u32'],
-  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables and their sizes.
+  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables (CC_STATIC: ccTri,
+  // ccPoly, …) and their sizes.
   ['ccCageVerts', 'u32', 'Points p below it are the cage vertices (cageBuf 3p), the rest refined points (offCtrl).'],
-  ['ccTri', 'u32'],
-  ['ccPoly', 'u32'],
-  ['ccRegions', 'u32'],
-  ['ccPatchIdx', 'u32'],
-  ['ccFans', 'u32'],
-  ['ccSectors', 'u32'],
-  ['ccThreads', 'u32'],
-  ['ccCos', 'u32'],
-  ['ccRules', 'u32'],
-  ['ccInputs', 'u32'],
-  ['ccVertexFan', 'u32'],
+  ...CC_STATIC.offsetFields,
   ['nFans', 'u32'],
   ['ccSliceGroups', 'u32'],
   ['ccMaxDepth', 'u32'],

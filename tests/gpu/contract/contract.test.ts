@@ -37,7 +37,7 @@ import {
   TESS_WORK,
   type TessSizes,
 } from '../../../src/gpu/contract/tess.ts';
-import { CC_BUILD_GROUP } from '../../../src/gpu/contract/cc.ts';
+import { CC_BUILD_GROUP, CC_STATIC, type CcSection } from '../../../src/gpu/contract/cc.ts';
 import {
   RENDER_BIND_GROUPS,
   RENDER_PIPELINE_GROUPS,
@@ -614,6 +614,48 @@ describe("the tessellator's contract", () => {
             expect(view.getUint32(at[field].offset, true)).toBe(value);
           }
         }
+      }),
+      { numRuns: 50 },
+    );
+  });
+
+  it('the Catmull-Clark words lay their sections one after another, and their offsets plus cc reach Params at ccTri, ccPoly, …', () => {
+    const parsed = parseStruct(TESS_PARAMS.wgsl);
+    const at = Object.fromEntries(parsed.fields.map((f) => [f.name, f]));
+    // The fields the Catmull-Clark shaders read, in the order the Params struct has always held them.
+    const fields = [
+      'ccTri',
+      'ccPoly',
+      'ccRegions',
+      'ccPatchIdx',
+      'ccFans',
+      'ccSectors',
+      'ccThreads',
+      'ccCos',
+      'ccRules',
+      'ccInputs',
+      'ccVertexFan',
+    ];
+    expect(CC_STATIC.offsetFields.map(([f]) => f)).toEqual(fields);
+    const first = at.ccTri.offset;
+    fields.forEach((f, i) => expect(at[f].offset, f).toBe(first + 4 * i));
+    const sizes = fc.record(
+      Object.fromEntries(CC_STATIC.names.map((k) => [k, fc.nat(100_000)])) as Record<CcSection, fc.Arbitrary<number>>,
+    );
+    fc.assert(
+      fc.property(sizes, fc.nat(1_000_000), (s, base) => {
+        const l = CC_STATIC.layout(s);
+        let words = 0;
+        for (const k of CC_STATIC.names) {
+          expect(l.offset[k]).toBe(words);
+          expect(l.length[k]).toBe(s[k]);
+          words += s[k];
+        }
+        expect(l.words).toBe(words);
+        const view = new DataView(new ArrayBuffer(TESS_PARAMS.size));
+        const offsets = CC_STATIC.offsets(l, base);
+        TESS_PARAMS.write(view, offsets);
+        CC_STATIC.names.forEach((k, i) => expect(view.getUint32(at[fields[i]].offset, true)).toBe(base + l.offset[k]));
       }),
       { numRuns: 50 },
     );
