@@ -198,6 +198,12 @@ export const DISP_TRI_WORD = defineBits('DispTriWord', { corners: [0, 15], centr
 export const ACC_TRI_WORD = defineBits('AccTriWord', { corners: [0, 6], face: [6, 26] });
 
 /**
+ * ACC_TRI_WORD's `corners` field, bit by bit: the patch parameter (u_i, v_i) of corner i, each 0
+ * or 1. Read by wgsl/acc/surface-tess.wgsl, wgsl/acc/heat.wgsl and src/gpu/acc/error.ts.
+ */
+export const ACC_TRI_CORNERS = defineBits('AccTriCorners', { u0: [0, 1], v0: [1, 1], u1: [2, 1], v1: [3, 1], u2: [4, 1], v2: [5, 1] });
+
+/**
  * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each; the
  * Phong surface's α of each triangle's three edges (prepare.ts triPhongAlpha, which follows the
  * normals); with the Catmull-Clark surface, its refined points (point p ≥ ccCageVerts at
