@@ -58,6 +58,8 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
   const entries = Object.entries(fields) as [K, BitRange][];
   let used = 0;
   for (const [field, [at, bits]] of entries) {
+    // A field is a parameter of the WGSL packer: a keyword or reserved word there fails only on a GPU.
+    if (WGSL_RESERVED.has(field)) throw new Error(`${name}.${field}: a WGSL keyword or reserved word cannot name a field`);
     if (!Number.isInteger(at) || !Number.isInteger(bits) || bits < 1 || at < 0 || at + bits > 32) {
       throw new Error(`${name}.${field}: bits [${at}, ${at + bits}) do not fit a u32`);
     }
@@ -109,6 +111,16 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
     },
   };
 }
+
+/** WGSL's keywords and the reserved words a field is likely to be named (WGSL spec, "Keyword
+ * summary" and "Reserved words"; the full reserved list is longer). */
+const WGSL_RESERVED = new Set([
+  ...['alias', 'break', 'case', 'const', 'const_assert', 'continue', 'continuing', 'default', 'diagnostic', 'discard', 'else'],
+  ...['enable', 'false', 'fn', 'for', 'if', 'let', 'loop', 'override', 'requires', 'return', 'struct', 'switch', 'true', 'var', 'while'],
+  ...['type', 'typedef', 'typename', 'template', 'this', 'self', 'static', 'unsigned', 'signed', 'union', 'enum', 'class', 'do', 'goto'],
+  ...['new', 'null', 'nil', 'module', 'import', 'export', 'extern', 'private', 'public', 'protected', 'auto', 'mut', 'ref', 'in', 'of'],
+  ...['sizeof', 'from', 'get', 'set', 'inline', 'interface', 'layout', 'match', 'mod', 'move', 'sample', 'shared', 'uniform', 'where'],
+]);
 
 /** WGSL for bits [at, at + bits) of the u32 `w`. */
 function wgslField(w: string, at: number, bits: number): string {

@@ -273,6 +273,11 @@ describe('packed words', () => {
     });
   }
 
+  it('defineBits refuses a field named by a WGSL keyword or reserved word (the packer takes it as a parameter)', () => {
+    expect(() => defineBits('SectorWord', { type: [0, 2], k: [2, 14] })).toThrow(/WGSL keyword or reserved word/);
+    expect(() => defineBits('W', { let: [0, 1] })).toThrow(/SectorWord|W\.let/);
+  });
+
   it('defineBits refuses overlapping fields and fields past bit 31', () => {
     expect(() => defineBits('Bad', { a: [0, 3], b: [2, 2] })).toThrow(/overlaps/);
     expect(() => defineBits('Bad', { a: [30, 3] })).toThrow(/do not fit/);
