@@ -137,7 +137,7 @@ export class InstancedView {
       const tri = (m.patches[8 * p + 1] & 1) === 1;
       const t = m.patches[8 * p];
       if (tri) n[2]++;
-      else if (cc) n[CC_TRI_WORD.get(cc.words[cc.offTri + 3 * t + 1], 'depth') === 0 ? 0 : 1]++;
+      else if (cc) n[CC_TRI_WORD.get(cc.words[cc.layout.offset.tri + 3 * t + 1], 'depth') === 0 ? 0 : 1]++;
       else if (!kinds || kinds[2 * m.patches[8 * p + 6]] === 0) n[0]++;
       else n[1]++;
     }

@@ -7,26 +7,9 @@
 // cancellations in the tangent masks (Σ cos·e) happen on small numbers, and the valence constants
 // (cos tables, λ_n, s_n) come from an f64 table rounded once (WGSL's cos can be 2^-11 off).
 
-struct AccBuildParams {
-  nPatches: u32,
-  offCorners: u32,   // 8 u32 per patch: (vertex, ring rotation) × 4
-  offRingOffs: u32,  // nVerts + 1
-  offRingData: u32,  // per vertex: e_0..e_{n−1}, d_0..d_{n−1}
-  offValOffs: u32,   // per valence n: start of its constants in the table
-  offValData: u32,   // f32 bits: c, s, λ, s_n, α[n], β[n], cos(2πk/n)[n]
-  offSectors: u32,   // 4 per patch: the corner's sector, type | k << 2 | a << 16
-  offSecOffs: u32,   // per (k, corner?) at 2k + corner: start of its constants in secData
-  offSecData: u32,   // f32 bits: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask[2k + 2]
-  offOrder: u32,     // nPatches: thread i builds patch order[i] (sorted by kind: uniform workgroups)
-  pad0: u32,
-  pad1: u32,
-}
-
-@group(0) @binding(0) var<uniform> bp: AccBuildParams;
-@group(0) @binding(1) var<storage, read> accStatic: array<u32>;
-@group(0) @binding(2) var<storage, read> cagePos: array<f32>; // xyz per cage vertex (the tessellator's cage buffer starts so)
-@group(0) @binding(3) var<storage, read> accPatchesB: array<u32>; // (kind, first point) per patch
-@group(0) @binding(4) var<storage, read_write> accPointsB: array<vec4<f32>>;
+// Starts with the generated AccBuildParams (`bp`: the patch count and the offsets of accStatic's
+// sections, ACC_STATIC), the constants, the bindings (ACC_BUILD_GROUP) and the sector word's
+// getters (ACC_SECTOR_WORD): src/gpu/contract/acc.ts, assembled by contract.ts accBuildPrelude.
 
 const TRI_FACE: u32 = 0xffffffffu;
 const KIND_REGULAR: u32 = 0u;
@@ -81,9 +64,9 @@ fn secF(i: u32) -> f32 { return bitcast<f32>(accStatic[bp.offSecData + i]); }
 fn sectorCorner(vert: u32, rot: u32, mid: bool, sec: u32) -> Corner {
   let o0 = accStatic[bp.offRingOffs + vert];
   let n = (accStatic[bp.offRingOffs + vert + 1u] - o0) / 2u;
-  let typ = sec & 3u;
-  let kk = (sec >> 2u) & 0x3fffu;
-  let a = sec >> 16u;
+  let typ = accSectorWord_kind(sec);
+  let kk = accSectorWord_k(sec);
+  let a = accSectorWord_a(sec);
   let r = Ring(o0, n, a, cageAt(vert), mid);
   let base = accStatic[bp.offSecOffs + 2u * kk + select(0u, 1u, typ == SECTOR_CORNER)];
   let np = secF(base + 2u);
@@ -147,7 +130,7 @@ fn sectorCorner(vert: u32, rot: u32, mid: bool, sec: u32) -> Corner {
 }
 
 fn cornerInfo(vert: u32, rot: u32, mid: bool, sec: u32) -> Corner {
-  let typ = sec & 3u;
+  let typ = accSectorWord_kind(sec);
   if (typ == SECTOR_CREASE || typ == SECTOR_CORNER) { return sectorCorner(vert, rot, mid, sec); }
   let o0 = accStatic[bp.offRingOffs + vert];
   let n = (accStatic[bp.offRingOffs + vert + 1u] - o0) / 2u;

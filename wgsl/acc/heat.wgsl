@@ -6,16 +6,14 @@
 //
 // Prepended: tessPrelude(TESS_INPUTS) (the reference Catmull-Clark tessellator's params, staticBuf,
 // cageBuf, work), wgsl/tess/common.wgsl, the exact surface (evalSurface), the ACC bindings and
-// evaluator (evalAccPatch) and the generated HeatPass struct and constants (src/gpu/acc/heat.ts).
+// evaluator (evalAccPatch), the generated HeatPass struct and constants (src/gpu/acc/heat.ts) and
+// this pass's bindings (HEAT_GROUP, src/gpu/contract/acc.ts: srcTri, bary, aux, heatPass,
+// outCounts, dispatchArgs).
 //
 // aux (HEAT_AUX in src/gpu/acc/heat.ts, offsets in `heatPass`): the header (vertex count, workgroups, the
 // totals), the ACC_TRI_WORD of each cage triangle, per-workgroup partials and the per-vertex
 // values the lit pass reads (2 f32 each, as u32 bits).
 
-@group(0) @binding(4) var<storage, read> srcTri: array<u32>;
-@group(0) @binding(5) var<storage, read> bary: array<u32>;
-@group(0) @binding(6) var<storage, read_write> aux: array<u32>;
-@group(0) @binding(7) var<uniform> heatPass: HeatPass;
 
 var<workgroup> wgMax: array<vec2<f32>, WORKGROUP_SIZE>;
 var<workgroup> wgSum: array<vec2<f32>, WORKGROUP_SIZE>;
@@ -41,8 +39,8 @@ fn vertexError(i: u32) -> vec2<f32> {
   let exact = evalSurface(t, vec3<u32>(ONE - w1 - w2, w1, w2));
   let c = accTriWord_corners(m);
   let w = vec3<f32>(f32(ONE - w1 - w2), f32(w1), f32(w2)) / f32(ONE);
-  let uc = vec3<f32>(f32(c & 1u), f32((c >> 2u) & 1u), f32((c >> 4u) & 1u));
-  let vc = vec3<f32>(f32((c >> 1u) & 1u), f32((c >> 3u) & 1u), f32((c >> 5u) & 1u));
+  let uc = vec3<f32>(f32(accTriCorners_u0(c)), f32(accTriCorners_u1(c)), f32(accTriCorners_u2(c)));
+  let vc = vec3<f32>(f32(accTriCorners_v0(c)), f32(accTriCorners_v1(c)), f32(accTriCorners_v2(c)));
   let a = evalAccPatch(accPatch, dot(w, uc), dot(w, vc));
   let d = length(a.pos - exact.pos) * heatPass.invDiag;
   // atan2(|n × m|, n · m): accurate near 0 (acos is not, in f32); 0 where either normal is 0.
@@ -125,8 +123,6 @@ fn heatTotals(@builtin(local_invocation_index) lid: u32) {
 // One thread, before the two passes above: the vertex count of the output's accepted build (its
 // counts word 0, clamped to the capacity the values have room for), the workgroups that cover it,
 // and heatErrors' indirect dispatch (GRID_X wide, as grid2d).
-@group(0) @binding(8) var<storage, read> outCounts: array<u32>;
-@group(0) @binding(9) var<storage, read_write> dispatchArgs: array<u32>;
 
 @compute @workgroup_size(1)
 fn heatArgs() {

@@ -14,8 +14,8 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let w = vec3<f32>(wFixed) / 65536.0;
   let m = staticBuf[params.offAccTri + t];
   let c = accTriWord_corners(m);
-  let uc = vec3<f32>(f32(c & 1u), f32((c >> 2u) & 1u), f32((c >> 4u) & 1u));
-  let vc = vec3<f32>(f32((c >> 1u) & 1u), f32((c >> 3u) & 1u), f32((c >> 5u) & 1u));
+  let uc = vec3<f32>(f32(accTriCorners_u0(c)), f32(accTriCorners_u1(c)), f32(accTriCorners_u2(c)));
+  let vc = vec3<f32>(f32(accTriCorners_v0(c)), f32(accTriCorners_v1(c)), f32(accTriCorners_v2(c)));
   let a = evalAccPatch(accTriWord_face(m), dot(w, uc), dot(w, vc));
   // (u, v) is linear in w: ∂(u, v)/∂w_i = (u_i − u_0, v_i − v_0).
   let du = (uc.y - uc.x) * a.du + (vc.y - vc.x) * a.dv;

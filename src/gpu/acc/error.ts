@@ -29,7 +29,7 @@ import { surfaceScheme } from '../surface/registry.ts';
 const KERNEL = /* wgsl */ `
 @group(0) @binding(4) var<storage, read> errIn: array<u32>;          // (t, w1, w2) per point
 @group(0) @binding(5) var<storage, read_write> errOut: array<f32>;   // (distance, degrees) per point
-@group(0) @binding(6) var<storage, read> accTriMap: array<u32>;      // per cage triangle: face << 6 | (u_i, v_i) bits
+@group(0) @binding(6) var<storage, read> accTriMap: array<u32>;      // per cage triangle: ACC_TRI_WORD
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn accErrors(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
@@ -40,9 +40,10 @@ fn accErrors(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
   let exact = evalSurface(t, vec3<u32>(ONE - w1 - w2, w1, w2));
   let m = accTriMap[t];
   let w = vec3<f32>(f32(ONE - w1 - w2), f32(w1), f32(w2)) / 65536.0;
-  let uc = vec3<f32>(f32(m & 1u), f32((m >> 2u) & 1u), f32((m >> 4u) & 1u));
-  let vc = vec3<f32>(f32((m >> 1u) & 1u), f32((m >> 3u) & 1u), f32((m >> 5u) & 1u));
-  let a = evalAccPatch(m >> 6u, dot(w, uc), dot(w, vc));
+  let c = accTriWord_corners(m);
+  let uc = vec3<f32>(f32(accTriCorners_u0(c)), f32(accTriCorners_u1(c)), f32(accTriCorners_u2(c)));
+  let vc = vec3<f32>(f32(accTriCorners_v0(c)), f32(accTriCorners_v1(c)), f32(accTriCorners_v2(c)));
+  let a = evalAccPatch(accTriWord_face(m), dot(w, uc), dot(w, vc));
   errOut[2u * i] = length(a.pos - exact.pos);
   // atan2(|n × m|, n · m): accurate near 0 (acos is not in f32).
   errOut[2u * i + 1u] = degrees(atan2(length(cross(a.normal, exact.normal)), dot(a.normal, exact.normal)));

@@ -23,9 +23,10 @@ import { KIND_REGULAR } from '../../subdiv/acc.ts';
 import { ACC_SURFACE_WGSL, type AccPatches, accBindingsWgsl } from './patches.ts';
 import { accTriangleWords } from './surface.ts';
 import { CC_SURFACE_WGSL } from '../cc/shaders.ts';
-import { defineArena, STAGE, wgslConstants, wgslF32 } from '../contract/define.ts';
+import { defineArena, STAGE, usedBindings, wgslConstants, wgslF32 } from '../contract/define.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
-import { TESS_INPUTS } from '../contract/tess.ts';
+import { TESS_GROUP, TESS_INPUTS } from '../contract/tess.ts';
+import { HEAT_BINDINGS, HEAT_GROUP } from '../contract/acc.ts';
 import { tessPrelude } from '../contract/contract.ts';
 import { defineStruct } from '../contract/layout.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
@@ -125,24 +126,45 @@ export function cageDiagonal(positions: ArrayLike<number>): number {
   return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
 }
 
+/** The error pass's WGSL: the reference's inputs and exact surface, the ACC evaluator (group 1), its
+ * uniforms and constants, its bindings (HEAT_GROUP), then wgsl/acc/heat.wgsl. */
+export function heatComputeCode(): string {
+  return [
+    tessPrelude(TESS_INPUTS),
+    commonWgsl,
+    CC_SURFACE_WGSL,
+    accBindingsWgsl(1, 0, 1),
+    ACC_SURFACE_WGSL,
+    HEAT_PASS.wgsl,
+    wgslConstants({ ...HEADER, PARTIAL_WORDS, KIND_REGULAR }),
+    HEAT_GROUP.wgsl(),
+    heatWgsl,
+  ].join('\n');
+}
+
 const modules = new WeakMap<GPUDevice, Record<'args' | 'errors' | 'totals', GPUComputePipeline>>();
 
 function pipelinesFor(device: GPUDevice): Record<'args' | 'errors' | 'totals', GPUComputePipeline> {
   let p = modules.get(device);
   if (!p) {
-    const code = [
-      tessPrelude(TESS_INPUTS),
-      commonWgsl,
-      CC_SURFACE_WGSL,
-      accBindingsWgsl(1, 0, 1),
-      ACC_SURFACE_WGSL,
-      HEAT_PASS.wgsl,
-      wgslConstants({ ...HEADER, PARTIAL_WORDS, KIND_REGULAR }),
-      heatWgsl,
-    ].join('\n');
+    const code = heatComputeCode();
     const module = device.createShaderModule({ label: 'acc heat', code });
-    const make = (entryPoint: string) =>
-      device.createComputePipeline({ label: `acc heat ${entryPoint}`, layout: 'auto', compute: { module, entryPoint } });
+    // Group 0: the reference's inputs and this pass's bindings that the entry point uses; group 1
+    // (heatErrors only): the ACC patches, read-only.
+    const accGroup = device.createBindGroupLayout({
+      label: 'acc heat patches',
+      entries: [0, 1].map((binding) => ({ binding, visibility: STAGE.COMPUTE, buffer: { type: 'read-only-storage' as const } })),
+    });
+    const make = (entryPoint: string) => {
+      const entries = [
+        ...TESS_GROUP.layoutEntries(usedBindings(code, entryPoint, TESS_INPUTS)),
+        ...HEAT_GROUP.layoutEntries(usedBindings(code, entryPoint, HEAT_BINDINGS)),
+      ];
+      const group0 = device.createBindGroupLayout({ label: `acc heat ${entryPoint}`, entries });
+      const bindGroupLayouts = entryPoint === 'heatErrors' ? [group0, accGroup] : [group0];
+      const layout = device.createPipelineLayout({ label: `acc heat ${entryPoint}`, bindGroupLayouts });
+      return device.createComputePipeline({ label: `acc heat ${entryPoint}`, layout, compute: { module, entryPoint } });
+    };
     p = { args: make('heatArgs'), errors: make('heatErrors'), totals: make('heatTotals') };
     modules.set(device, p);
   }
@@ -231,10 +253,10 @@ export class AccHeatPass {
     pass.setBindGroup(
       0,
       group(p.args, 'acc heat args', [
-        [6, this.aux],
-        [7, this.#uniforms],
-        [8, out.counts],
-        [9, this.#args],
+        [HEAT_GROUP.binding.aux, this.aux],
+        [HEAT_GROUP.binding.heatPass, this.#uniforms],
+        [HEAT_GROUP.binding.outCounts, out.counts],
+        [HEAT_GROUP.binding.dispatchArgs, this.#args],
       ]),
     );
     pass.dispatchWorkgroups(1);
@@ -245,14 +267,14 @@ export class AccHeatPass {
     errors.setBindGroup(
       0,
       group(p.errors, 'acc heat errors', [
-        [0, reference.paramsBuffer],
-        [1, reference.staticBuffer],
-        [2, reference.cageBuffer],
-        [3, reference.workBuffer],
-        [4, out.srcTri],
-        [5, out.bary],
-        [6, this.aux],
-        [7, this.#uniforms],
+        [TESS_GROUP.binding.params, reference.paramsBuffer],
+        [TESS_GROUP.binding.staticBuf, reference.staticBuffer],
+        [TESS_GROUP.binding.cageBuf, reference.cageBuffer],
+        [TESS_GROUP.binding.work, reference.workBuffer],
+        [HEAT_GROUP.binding.srcTri, out.srcTri],
+        [HEAT_GROUP.binding.bary, out.bary],
+        [HEAT_GROUP.binding.aux, this.aux],
+        [HEAT_GROUP.binding.heatPass, this.#uniforms],
       ]),
     );
     errors.setBindGroup(
@@ -264,8 +286,8 @@ export class AccHeatPass {
     errors.setBindGroup(
       0,
       group(p.totals, 'acc heat totals', [
-        [6, this.aux],
-        [7, this.#uniforms],
+        [HEAT_GROUP.binding.aux, this.aux],
+        [HEAT_GROUP.binding.heatPass, this.#uniforms],
       ]),
     );
     errors.dispatchWorkgroups(1);

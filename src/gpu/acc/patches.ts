@@ -8,7 +8,7 @@
  *
  *   accPatches (storage, 2 u32 per patch = cage face)   kind, first control point     [build: read; surface: read]
  *   accPoints  (storage, vec4<f32> per control point)   xyz, w unused                 [build: write; surface: read]
- *   accStatic  (storage, u32)                           sections at the offsets of accParams:
+ *   accStatic  (storage, u32)                           the sections of ACC_STATIC (src/gpu/contract/acc.ts), at the offsets of accParams:
  *     corners   8 per patch: (cage vertex, rotation in its ring) × 4
  *     ringOffs  nVerts + 1;  ringData: per vertex e_0..e_{n−1}, d_0..d_{n−1} (d = TRI_FACE for triangles)
  *     valOffs   per valence n ≤ max valence: start of its constants in valData
@@ -17,7 +17,7 @@
  *     secOffs   per crease/corner sector size k: start of its constants in secData (2k + corner?)
  *     secData   f32 bits, per sector kind: cos θ, sin θ, n', ca[0..k], cb[0..k], crease mask
  *     order     nPatches: the patch each build thread takes (patches sorted by kind)
- *   accParams  (uniform, 12 u32)                        nPatches and the section offsets
+ *   accParams  (uniform, ACC_BUILD_PARAMS)              nPatches and the section offsets
  *
  * encode(encoder, cageBuffer): the cage buffer holds xyz f32 per cage vertex from offset 0 (the
  * tessellator's cage buffer starts so); one thread per patch. Nothing else has to re-run when the
@@ -37,6 +37,8 @@ import {
 } from '../../subdiv/acc.ts';
 import { readBuffer } from '../device/readback.ts';
 import { constantsWgsl, groupsFor } from '../contract/constants.ts';
+import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_STATIC, type AccSection } from '../contract/acc.ts';
+import { accBuildPrelude } from '../contract/contract.ts';
 import { faceParam } from '../tess/face-params.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
@@ -105,32 +107,30 @@ export class AccPatches {
     const st = sectorTable(T.maxSector);
     // Threads take the patches grouped by kind, so a workgroup runs one construction (no divergence).
     const order = Uint32Array.from([...Array(T.nPatches).keys()].sort((a, b) => T.patches[2 * a] - T.patches[2 * b] || a - b));
-    const sections = [
-      T.corners,
-      T.ringOffs,
-      T.ringData,
-      vt.offsets,
-      new Uint32Array(vt.values.buffer),
-      T.sectors,
-      st.offsets,
-      new Uint32Array(st.values.buffer),
+    const sections: Record<AccSection, Uint32Array> = {
+      corners: T.corners,
+      ringOffs: T.ringOffs,
+      ringData: T.ringData,
+      valOffs: vt.offsets,
+      valData: new Uint32Array(vt.values.buffer),
+      sectors: T.sectors,
+      secOffs: st.offsets,
+      secData: new Uint32Array(st.values.buffer),
       order,
-    ];
-    const offs: number[] = [];
-    let total = 0;
-    for (const s of sections) {
-      offs.push(total);
-      total += s.length;
-    }
-    const words = new Uint32Array(Math.max(1, total));
-    sections.forEach((s, i) => words.set(s, offs[i]));
+    };
+    const layout = ACC_STATIC.layout(
+      Object.fromEntries(ACC_STATIC.names.map((k) => [k, sections[k].length])) as Record<AccSection, number>,
+    );
+    const words = new Uint32Array(Math.max(1, layout.words));
+    for (const k of ACC_STATIC.names) words.set(sections[k], layout.offset[k]);
     const storage = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST | GPUBufferUsage.COPY_SRC;
     this.staticBuffer = device.createBuffer({ label: `acc ${scheme} build topology`, size: words.byteLength, usage: storage });
     device.queue.writeBuffer(this.staticBuffer, 0, words);
     this.patchBuffer = device.createBuffer({ label: `acc ${scheme} patches`, size: Math.max(8, T.patches.byteLength), usage: storage });
     device.queue.writeBuffer(this.patchBuffer, 0, T.patches);
     this.pointBuffer = device.createBuffer({ label: `acc ${scheme} control points`, size: Math.max(16, 16 * T.nPoints), usage: storage });
-    const params = new Uint32Array([T.nPatches, ...offs, 0, 0]);
+    const params = new Uint8Array(ACC_BUILD_PARAMS.size);
+    ACC_BUILD_PARAMS.write(new DataView(params.buffer), { nPatches: T.nPatches, ...ACC_STATIC.offsets(layout) });
     this.paramsBuffer = device.createBuffer({
       label: `acc ${scheme} build params`,
       size: params.byteLength,
@@ -139,8 +139,10 @@ export class AccPatches {
     device.queue.writeBuffer(this.paramsBuffer, 0, params);
     let pipe = buildPipelines.get(device);
     if (!pipe) {
-      const module = device.createShaderModule({ label: 'acc build', code: [constantsWgsl, buildWgsl].join('\n') });
-      pipe = device.createComputePipeline({ label: 'acc build', layout: 'auto', compute: { module, entryPoint: 'buildPatches' } });
+      const module = device.createShaderModule({ label: 'acc build', code: [accBuildPrelude(), buildWgsl].join('\n') });
+      const groupLayout = device.createBindGroupLayout({ label: 'acc build', entries: ACC_BUILD_GROUP.layoutEntries() });
+      const layout = device.createPipelineLayout({ label: 'acc build', bindGroupLayouts: [groupLayout] });
+      pipe = device.createComputePipeline({ label: 'acc build', layout, compute: { module, entryPoint: 'buildPatches' } });
       buildPipelines.set(device, pipe);
     }
     this.pipeline = pipe;
@@ -159,11 +161,11 @@ export class AccPatches {
         label: `acc ${this.scheme} build`,
         layout: this.pipeline.getBindGroupLayout(0),
         entries: [
-          { binding: 0, resource: { buffer: this.paramsBuffer } },
-          { binding: 1, resource: { buffer: this.staticBuffer } },
-          { binding: 2, resource: { buffer: cageBuffer } },
-          { binding: 3, resource: { buffer: this.patchBuffer } },
-          { binding: 4, resource: { buffer: this.pointBuffer } },
+          { binding: ACC_BUILD_GROUP.binding.bp, resource: { buffer: this.paramsBuffer } },
+          { binding: ACC_BUILD_GROUP.binding.accStatic, resource: { buffer: this.staticBuffer } },
+          { binding: ACC_BUILD_GROUP.binding.cagePos, resource: { buffer: cageBuffer } },
+          { binding: ACC_BUILD_GROUP.binding.accPatchesB, resource: { buffer: this.patchBuffer } },
+          { binding: ACC_BUILD_GROUP.binding.accPointsB, resource: { buffer: this.pointBuffer } },
         ],
       });
       this.groupCage = cageBuffer;

@@ -85,7 +85,8 @@
  *     takes the normal of its own (src/gpu/tess/prepare.ts splitCreases outputs a vertex once per
  *     sector). As the CPU reference (src/subdiv/limit.ts vertexLimit for that face).
  *
- * Static words (u32, appended to the tessellator's static buffer; offsets below are relative):
+ * Static words (u32, appended to the tessellator's static buffer; offsets below are relative), the
+ * sections of CC_STATIC (src/gpu/contract/cc.ts), in this order:
  *   tri      3 per prepared triangle: first region of the face, CC_TRI_WORD (n, fan k, centred:
  *            corners (centre, k, k + 1) else (0, k, k + 1), depth counted inside the quad or
  *            inside the sub-face), first corner in `poly`
@@ -111,7 +112,7 @@
  *            vertex: parent rule << 2 | child rule << 4 | edges << 8 | faces << 20
  *   inputs   point indices read by the rules, each rule's followed by its parameters (edge:
  *            sharpness f32 if flagged; vertex with a non-smooth rule: ia | ib << 16, W f32)
- *   vfan     per prepared vertex (the cage's, then the face centres of prepare.ts),
+ *   vertexFan per prepared vertex (the cage's, then the face centres of prepare.ts),
  *            CC_VERTEX_LIMIT_WORD: its fan (limit position and normal for the factor rule), or
  *            (crease bit) the word offset of its crease record in patchIdx, or ~0
  *
@@ -130,6 +131,8 @@ import {
 } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
+import { CC_STATIC, type CcSection } from '../contract/cc.ts';
+import type { ArenaLayout } from '../contract/define.ts';
 import { CC_FAN_WORD, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
 import { levelStack } from './levels.ts';
 import { fanTable, packFans, packThreads, vertexLimits } from './fans.ts';
@@ -142,17 +145,8 @@ export interface CatmullClarkOptions {
 
 export interface CatmullClarkData {
   words: Uint32Array;
-  offTri: number;
-  offPoly: number;
-  offRegions: number;
-  offPatchIdx: number;
-  offFans: number;
-  offSectors: number;
-  offThreads: number;
-  offCos: number;
-  offRules: number;
-  offInputs: number;
-  offVertexFan: number;
+  /** Where each section lies in `words` (CC_STATIC). */
+  layout: ArenaLayout<CcSection>;
   /** Points of the levels ≥ 1, fan slices and limits (the cage's vertices come first in the point space). */
   pointCount: number;
   /** Global point index ranges for the level dispatches: per level [faceFirst, faceCount, veFirst, veCount]. */
@@ -221,41 +215,27 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const { fans } = ft;
   const { regionWords, patchIdx, faceRegion, faceDepth, patchCount, singleCreaseCount, sectorRegionCount } = regions;
 
-  const parts: Uint32Array[] = [
-    triRegion,
-    new Uint32Array(Float32Array.from(poly).buffer),
-    regionWords.view,
-    patchIdx.view,
-    fanWords.view,
-    sectorWords.view,
-    threadWords.view,
-    cosWords.view,
-    rules.view,
-    inputs.view,
+  const sections: Record<CcSection, Uint32Array> = {
+    tri: triRegion,
+    poly: new Uint32Array(Float32Array.from(poly).buffer),
+    regions: regionWords.view,
+    patchIdx: patchIdx.view,
+    fans: fanWords.view,
+    sectors: sectorWords.view,
+    threads: threadWords.view,
+    cos: cosWords.view,
+    rules: rules.view,
+    inputs: inputs.view,
     vertexFan,
-  ];
-  const offs: number[] = [];
-  let total = 0;
-  for (const p of parts) {
-    offs.push(total);
-    total += p.length;
-  }
+  };
+  const layout = CC_STATIC.layout(Object.fromEntries(CC_STATIC.names.map((k) => [k, sections[k].length])) as Record<CcSection, number>);
+  const total = layout.words;
   const words = new Uint32Array(total);
-  parts.forEach((p, i) => words.set(p, offs[i]));
+  for (const k of CC_STATIC.names) words.set(sections[k], layout.offset[k]);
   const pointCount = nextPoint - nV0;
   return {
     words,
-    offTri: offs[0],
-    offPoly: offs[1],
-    offRegions: offs[2],
-    offPatchIdx: offs[3],
-    offFans: offs[4],
-    offSectors: offs[5],
-    offThreads: offs[6],
-    offCos: offs[7],
-    offRules: offs[8],
-    offInputs: offs[9],
-    offVertexFan: offs[10],
+    layout,
     pointCount,
     levelRanges,
     fanCount: fans.length,

@@ -12,7 +12,10 @@
  *   tess.ts        the compute tessellator's: its buffers as arenas (TESS_STATIC, TESS_CAGE,
  *                  TESS_WORK), its uniforms (TESS_PARAMS), its bind group (TESS_GROUP), the scan's
  *                  uniforms (SCAN_PARAMS), the packed words its shaders read, its constants
- *   cc.ts          the Catmull-Clark patch build's bind group and level range
+ *   cc.ts          the Catmull-Clark patch build's bind group and level range, and the sections
+ *                  of its words (CC_STATIC, whose offsets are Params' cc* fields)
+ *   acc.ts         the ACC patch build's: its static words as an arena (ACC_STATIC), its uniforms
+ *                  (ACC_BUILD_PARAMS), its bind group (ACC_BUILD_GROUP), its sector word
  *   render.ts      the renderer's uniforms (SCENE_UNIFORMS), bind group layouts and which pipeline
  *                  uses which (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS), the patch colours
  *   tessellated-mesh.ts  the tessellator's output, as everything that draws or reads it sees it
@@ -25,11 +28,13 @@
  * tests/gpu/contract/contract.test.ts parses the generated WGSL back and checks it against the TypeScript
  * views; tests/gpu/contract/contract.gpu.test.ts runs it through a real WGSL compiler.
  */
+import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_SECTOR_WORD } from './acc.ts';
 import { CC_BUILD_GROUP, CC_NONE, CC_RANGE } from './cc.ts';
 import { constantsWgsl } from './constants.ts';
 import { wgslConstants, wgslF32 } from './define.ts';
 import { GROUND_EXTENT, PATCH_COLOURS, SCENE_UNIFORMS } from './render.ts';
 import {
+  ACC_TRI_CORNERS,
   ACC_TRI_WORD,
   BARY_WORD,
   DISP_TRI_WORD,
@@ -50,6 +55,11 @@ export function ccBuildPrelude(): string {
   return [TESS_PARAMS.wgsl, constantsWgsl, wgslConstants({ CC_NONE }), CC_RANGE.wgsl, CC_BUILD_GROUP.wgsl()].join('\n');
 }
 
+/** What wgsl/acc/build.wgsl starts with: its uniforms, the constants, its bindings, the sector word. */
+export function accBuildPrelude(): string {
+  return [ACC_BUILD_PARAMS.wgsl, constantsWgsl, ACC_BUILD_GROUP.wgsl(), ACC_SECTOR_WORD.wgsl].join('\n');
+}
+
 /** What every tessellator shader starts with: Params, the constants, the bindings `names` (all by
  * default), the packed words' getters and the table header's. */
 export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): string {
@@ -62,6 +72,7 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     BARY_WORD.wgsl,
     OWNER_WORD.wgsl,
     ACC_TRI_WORD.wgsl,
+    ACC_TRI_CORNERS.wgsl,
     DISP_TRI_WORD.wgsl,
     tableHeaderWgsl('staticBuf', 'params'),
   ].join('\n');

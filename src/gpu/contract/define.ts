@@ -58,6 +58,8 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
   const entries = Object.entries(fields) as [K, BitRange][];
   let used = 0;
   for (const [field, [at, bits]] of entries) {
+    // A field is a parameter of the WGSL packer: a keyword or reserved word there fails only on a GPU.
+    if (WGSL_RESERVED.has(field)) throw new Error(`${name}.${field}: a WGSL keyword or reserved word cannot name a field`);
     if (!Number.isInteger(at) || !Number.isInteger(bits) || bits < 1 || at < 0 || at + bits > 32) {
       throw new Error(`${name}.${field}: bits [${at}, ${at + bits}) do not fit a u32`);
     }
@@ -109,6 +111,16 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
     },
   };
 }
+
+/** WGSL's keywords and the reserved words a field is likely to be named (WGSL spec, "Keyword
+ * summary" and "Reserved words"; the full reserved list is longer). */
+const WGSL_RESERVED = new Set([
+  ...['alias', 'break', 'case', 'const', 'const_assert', 'continue', 'continuing', 'default', 'diagnostic', 'discard', 'else'],
+  ...['enable', 'false', 'fn', 'for', 'if', 'let', 'loop', 'override', 'requires', 'return', 'struct', 'switch', 'true', 'var', 'while'],
+  ...['type', 'typedef', 'typename', 'template', 'this', 'self', 'static', 'unsigned', 'signed', 'union', 'enum', 'class', 'do', 'goto'],
+  ...['new', 'null', 'nil', 'module', 'import', 'export', 'extern', 'private', 'public', 'protected', 'auto', 'mut', 'ref', 'in', 'of'],
+  ...['sizeof', 'from', 'get', 'set', 'inline', 'interface', 'layout', 'match', 'mod', 'move', 'sample', 'shared', 'uniform', 'where'],
+]);
 
 /** WGSL for bits [at, at + bits) of the u32 `w`. */
 function wgslField(w: string, at: number, bits: number): string {
@@ -235,16 +247,17 @@ export interface ArenaLayout<K extends string> {
   words: number;
 }
 
-export type OffsetField<K extends string> = `off${Capitalize<K>}`;
+export type OffsetField<K extends string, P extends string = 'off'> = `${P}${Capitalize<K>}`;
 
-export interface Arena<K extends string, S> {
+export interface Arena<K extends string, S, P extends string = 'off'> {
   readonly names: readonly K[];
-  /** The uniform fields that carry the offsets (`offEdgeF: u32` for `edgeF`): spread them into the
-   * Params struct's defineStruct. */
-  readonly offsetFields: readonly (readonly [OffsetField<K>, 'u32'])[];
+  /** The uniform fields that carry the offsets (`offEdgeF: u32` for `edgeF`; the prefix is the
+   * arena's, `off` unless named): spread them into the Params struct's defineStruct. */
+  readonly offsetFields: readonly (readonly [OffsetField<K, P>, 'u32'])[];
   layout(sizes: S): ArenaLayout<K>;
-  /** The offset fields' values for PARAMS.write. */
-  offsets(layout: ArenaLayout<K>): Record<OffsetField<K>, number>;
+  /** The offset fields' values for PARAMS.write, each plus `base` (where the arena starts in a
+   * larger buffer, 0 by default). */
+  offsets(layout: ArenaLayout<K>, base?: number): Record<OffsetField<K, P>, number>;
   /** WGSL `fn name_at(i: u32) -> u32 { return buffer[params.offName + i]; }` for each array. */
   wgslAccessors(buffer: string, params: string): string;
 }
@@ -252,12 +265,16 @@ export interface Arena<K extends string, S> {
 /**
  * Several u32 arrays carved one after another out of one storage buffer (the tessellator's
  * scratch `work`), each sized from `S` (e.g. the edge and triangle counts). Adding an array is one
- * entry here; its offset reaches the shaders through `offsetFields` in the uniform struct.
+ * entry here; its offset reaches the shaders through `offsetFields` in the uniform struct, whose
+ * names are `prefix` and the array's name (`off` by default: `offEdgeF` for `edgeF`).
  */
-export function defineArena<K extends string, S>(arrays: readonly (readonly [K, (sizes: S) => number])[]): Arena<K, S> {
+export function defineArena<K extends string, S, P extends string = 'off'>(
+  arrays: readonly (readonly [K, (sizes: S) => number])[],
+  prefix: P = 'off' as P,
+): Arena<K, S, P> {
   const names = arrays.map(([k]) => k);
   if (new Set(names).size !== names.length) throw new Error('an arena array is named twice');
-  const field = (k: K) => `off${k[0].toUpperCase()}${k.slice(1)}` as OffsetField<K>;
+  const field = (k: K) => `${prefix}${k[0].toUpperCase()}${k.slice(1)}` as OffsetField<K, P>;
   return {
     names,
     offsetFields: names.map((k) => [field(k), 'u32'] as const),
@@ -274,8 +291,8 @@ export function defineArena<K extends string, S>(arrays: readonly (readonly [K, 
       }
       return { offset, length, words: at };
     },
-    offsets(layout) {
-      return Object.fromEntries(names.map((k) => [field(k), layout.offset[k]])) as Record<OffsetField<K>, number>;
+    offsets(layout, base = 0) {
+      return Object.fromEntries(names.map((k) => [field(k), base + layout.offset[k]])) as Record<OffsetField<K, P>, number>;
     },
     wgslAccessors(buffer, params) {
       return names

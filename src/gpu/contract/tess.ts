@@ -10,6 +10,7 @@
 import { ONE } from '../../pattern/fixed.ts';
 import { TABLE_HEADER_FIELDS } from '../../pattern/tables.ts';
 import { STRIP_DP_VERTICES } from '../../pattern/clamped.ts';
+import { CC_STATIC } from './cc.ts';
 import { SCAN_ITEMS, SCAN_WORKGROUP_SIZE } from './constants.ts';
 import { defineArena, defineBindGroup, defineBits } from './define.ts';
 import { defineStruct } from './layout.ts';
@@ -197,6 +198,12 @@ export const DISP_TRI_WORD = defineBits('DispTriWord', { corners: [0, 15], centr
 export const ACC_TRI_WORD = defineBits('AccTriWord', { corners: [0, 6], face: [6, 26] });
 
 /**
+ * ACC_TRI_WORD's `corners` field, bit by bit: the patch parameter (u_i, v_i) of corner i, each 0
+ * or 1. Read by wgsl/acc/surface-tess.wgsl, wgsl/acc/heat.wgsl and src/gpu/acc/error.ts.
+ */
+export const ACC_TRI_CORNERS = defineBits('AccTriCorners', { u0: [0, 1], v0: [1, 1], u1: [2, 1], v1: [3, 1], u2: [4, 1], v2: [5, 1] });
+
+/**
  * cageBuf (f32, rewritten when the cage moves): positions and vertex normals, 3 floats each; the
  * Phong surface's α of each triangle's three edges (prepare.ts triPhongAlpha, which follows the
  * normals); with the Catmull-Clark surface, its refined points (point p ≥ ccCageVerts at
@@ -316,19 +323,10 @@ export const TESS_PARAMS = defineStruct('Params', [
   // What the factor rule reads (cageBuf offsets): the cage, or the limit surface at its vertices.
   ['offFactorPos', 'u32'],
   ['offFactorNormal', 'u32'],
-  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables and their sizes.
+  // Catmull-Clark (src/gpu/cc/build.ts): staticBuf word offsets of its tables (CC_STATIC: ccTri,
+  // ccPoly, …) and their sizes.
   ['ccCageVerts', 'u32', 'Points p below it are the cage vertices (cageBuf 3p), the rest refined points (offCtrl).'],
-  ['ccTri', 'u32'],
-  ['ccPoly', 'u32'],
-  ['ccRegions', 'u32'],
-  ['ccPatchIdx', 'u32'],
-  ['ccFans', 'u32'],
-  ['ccSectors', 'u32'],
-  ['ccThreads', 'u32'],
-  ['ccCos', 'u32'],
-  ['ccRules', 'u32'],
-  ['ccInputs', 'u32'],
-  ['ccVertexFan', 'u32'],
+  ...CC_STATIC.offsetFields,
   ['nFans', 'u32'],
   ['ccSliceGroups', 'u32'],
   ['ccMaxDepth', 'u32'],

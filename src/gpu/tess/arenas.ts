@@ -9,6 +9,7 @@ import type { CatmullClarkData } from '../cc/build.ts';
 import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData } from './displacement-map.ts';
 import type { ArenaLayout } from '../contract/define.ts';
+import { CC_NO_WORDS, CC_STATIC } from '../contract/cc.ts';
 import { TESS_CAGE, type TESS_PARAMS, TESS_STATIC, TESS_WORK, type TessSizes } from '../contract/tess.ts';
 import type { PreparedMesh } from './prepare.ts';
 
@@ -124,17 +125,7 @@ export function meshParams(
     offFactorPos: cc ? cageLayout.offset.limitPositions : cageLayout.offset.positions,
     offFactorNormal: cc ? cageLayout.offset.limitNormals : cageLayout.offset.normals,
     ccCageVerts: cc?.cageVertexCount ?? 0,
-    ccTri: ccBase + (cc?.offTri ?? 0),
-    ccPoly: ccBase + (cc?.offPoly ?? 0),
-    ccRegions: ccBase + (cc?.offRegions ?? 0),
-    ccPatchIdx: ccBase + (cc?.offPatchIdx ?? 0),
-    ccFans: ccBase + (cc?.offFans ?? 0),
-    ccSectors: ccBase + (cc?.offSectors ?? 0),
-    ccThreads: ccBase + (cc?.offThreads ?? 0),
-    ccCos: ccBase + (cc?.offCos ?? 0),
-    ccRules: ccBase + (cc?.offRules ?? 0),
-    ccInputs: ccBase + (cc?.offInputs ?? 0),
-    ccVertexFan: ccBase + (cc?.offVertexFan ?? 0),
+    ...CC_STATIC.offsets(cc?.layout ?? CC_STATIC.layout(CC_NO_WORDS), ccBase),
     nFans: cc?.fanCount ?? 0,
     ccSliceGroups: cc?.sliceWorkgroups ?? 0,
     ccMaxDepth: cc?.maxDepth ?? 0,

@@ -19,7 +19,7 @@ import { cube, ringCrease } from '../../support/subdiv-fixtures.ts';
 const f32 = (w: number) => new Float32Array(Uint32Array.of(w).buffer)[0];
 
 function patchWords(cc: CatmullClarkData, w1: number, n: number): number[] {
-  return Array.from(cc.words.subarray(cc.offPatchIdx + w1, cc.offPatchIdx + w1 + n));
+  return Array.from(cc.words.subarray(cc.layout.offset.patchIdx + w1, cc.layout.offset.patchIdx + w1 + n));
 }
 
 function check(cage: Cage) {
@@ -94,7 +94,7 @@ describe('single-crease patches', () => {
     const nV = cage.positions.length / 3;
     let n = 0;
     for (let v = 0; v < nV; v++) {
-      const word = cc.words[cc.offVertexFan + v];
+      const word = cc.words[cc.layout.offset.vertexFan + v];
       const { crease, index } = CC_VERTEX_LIMIT_WORD.unpack(word);
       if (!crease) continue;
       n++;

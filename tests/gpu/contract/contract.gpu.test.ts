@@ -7,8 +7,9 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { wgslPrefix, type BitWord } from '../../../src/gpu/contract/define.ts';
 import { constantsWgsl, SHARED_CONSTANTS } from '../../../src/gpu/contract/constants.ts';
-import { BARY_WORD, OWNER_WORD, PATTERN_FRAME_WORD, SCAN_GROUP } from '../../../src/gpu/contract/tess.ts';
+import { ACC_TRI_CORNERS, ACC_TRI_WORD, BARY_WORD, OWNER_WORD, PATTERN_FRAME_WORD, SCAN_GROUP } from '../../../src/gpu/contract/tess.ts';
 import { SCENE_UNIFORMS } from '../../../src/gpu/contract/render.ts';
+import { ACC_SECTOR_WORD } from '../../../src/gpu/contract/acc.ts';
 import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { getDevice, releaseDevice } from '../../support/gpu-device.ts';
 
@@ -95,7 +96,7 @@ ${copies.join('\n')}
     expect(Array.from(got)).toEqual(fields.flatMap((f) => values[f]));
   });
 
-  const words = [PATTERN_FRAME_WORD, BARY_WORD, OWNER_WORD] as BitWord<string>[];
+  const words = [PATTERN_FRAME_WORD, BARY_WORD, OWNER_WORD, ACC_SECTOR_WORD, ACC_TRI_WORD, ACC_TRI_CORNERS] as BitWord<string>[];
   for (const word of words) {
     it(`${word.name}: the WGSL getters read what TypeScript packed, and the WGSL packer packs what TypeScript does`, async () => {
       const names = Object.keys(word.fields);

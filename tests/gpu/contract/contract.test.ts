@@ -19,6 +19,8 @@ import {
 } from '../../../src/gpu/contract/define.ts';
 import { constantsWgsl, GRID_X, SCAN_WORKGROUP_SIZE, SHARED_CONSTANTS, WORKGROUP_SIZE } from '../../../src/gpu/contract/constants.ts';
 import {
+  ACC_TRI_CORNERS,
+  ACC_TRI_WORD,
   BARY_CORNER1,
   BARY_CORNER2,
   BARY_WORD,
@@ -37,7 +39,17 @@ import {
   TESS_WORK,
   type TessSizes,
 } from '../../../src/gpu/contract/tess.ts';
-import { CC_BUILD_GROUP } from '../../../src/gpu/contract/cc.ts';
+import {
+  ACC_BUILD_GROUP,
+  ACC_BUILD_PARAMS,
+  ACC_SECTOR_WORD,
+  ACC_STATIC,
+  type AccSection,
+  HEAT_BINDINGS,
+  HEAT_GROUP,
+} from '../../../src/gpu/contract/acc.ts';
+import { heatComputeCode } from '../../../src/gpu/acc/heat.ts';
+import { CC_BUILD_GROUP, CC_STATIC, type CcSection } from '../../../src/gpu/contract/cc.ts';
 import {
   RENDER_BIND_GROUPS,
   RENDER_PIPELINE_GROUPS,
@@ -45,7 +57,7 @@ import {
   GROUND_EXTENT,
   PATCH_COLOURS,
 } from '../../../src/gpu/contract/render.ts';
-import { sceneWgsl, scanPrelude, tessPrelude } from '../../../src/gpu/contract/contract.ts';
+import { accBuildPrelude, sceneWgsl, scanPrelude, tessPrelude } from '../../../src/gpu/contract/contract.ts';
 import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../../../src/pattern/tables.ts';
 import { defineStruct } from '../../../src/gpu/contract/layout.ts';
@@ -194,7 +206,14 @@ function runWgslPacker(word: BitWord<string>, values: Record<string, number>): n
   return w;
 }
 
-const WORDS: BitWord<string>[] = [PATTERN_FRAME_WORD, BARY_WORD, OWNER_WORD] as BitWord<string>[];
+const WORDS: BitWord<string>[] = [
+  PATTERN_FRAME_WORD,
+  BARY_WORD,
+  OWNER_WORD,
+  ACC_SECTOR_WORD,
+  ACC_TRI_WORD,
+  ACC_TRI_CORNERS,
+] as BitWord<string>[];
 
 describe('packed words', () => {
   for (const word of WORDS) {
@@ -253,6 +272,11 @@ describe('packed words', () => {
       });
     });
   }
+
+  it('defineBits refuses a field named by a WGSL keyword or reserved word (the packer takes it as a parameter)', () => {
+    expect(() => defineBits('SectorWord', { type: [0, 2], k: [2, 14] })).toThrow(/WGSL keyword or reserved word/);
+    expect(() => defineBits('W', { let: [0, 1] })).toThrow(/SectorWord|W\.let/);
+  });
 
   it('defineBits refuses overlapping fields and fields past bit 31', () => {
     expect(() => defineBits('Bad', { a: [0, 3], b: [2, 2] })).toThrow(/overlaps/);
@@ -619,6 +643,48 @@ describe("the tessellator's contract", () => {
     );
   });
 
+  it('the Catmull-Clark words lay their sections one after another, and their offsets plus cc reach Params at ccTri, ccPoly, …', () => {
+    const parsed = parseStruct(TESS_PARAMS.wgsl);
+    const at = Object.fromEntries(parsed.fields.map((f) => [f.name, f]));
+    // The fields the Catmull-Clark shaders read, in the order the Params struct has always held them.
+    const fields = [
+      'ccTri',
+      'ccPoly',
+      'ccRegions',
+      'ccPatchIdx',
+      'ccFans',
+      'ccSectors',
+      'ccThreads',
+      'ccCos',
+      'ccRules',
+      'ccInputs',
+      'ccVertexFan',
+    ];
+    expect(CC_STATIC.offsetFields.map(([f]) => f)).toEqual(fields);
+    const first = at.ccTri.offset;
+    fields.forEach((f, i) => expect(at[f].offset, f).toBe(first + 4 * i));
+    const sizes = fc.record(
+      Object.fromEntries(CC_STATIC.names.map((k) => [k, fc.nat(100_000)])) as Record<CcSection, fc.Arbitrary<number>>,
+    );
+    fc.assert(
+      fc.property(sizes, fc.nat(1_000_000), (s, base) => {
+        const l = CC_STATIC.layout(s);
+        let words = 0;
+        for (const k of CC_STATIC.names) {
+          expect(l.offset[k]).toBe(words);
+          expect(l.length[k]).toBe(s[k]);
+          words += s[k];
+        }
+        expect(l.words).toBe(words);
+        const view = new DataView(new ArrayBuffer(TESS_PARAMS.size));
+        const offsets = CC_STATIC.offsets(l, base);
+        TESS_PARAMS.write(view, offsets);
+        CC_STATIC.names.forEach((k, i) => expect(view.getUint32(at[fields[i]].offset, true)).toBe(base + l.offset[k]));
+      }),
+      { numRuns: 50 },
+    );
+  });
+
   it("every Params field a shader reads exists (the tessellator's files and the Catmull-Clark ones)", () => {
     const fields = new Set(Object.keys(TESS_PARAMS.offset));
     for (const f of [...TESS_WGSL_FILES, 'surface/phong', 'cc/surface', 'cc/build']) {
@@ -693,5 +759,115 @@ describe("the tessellator's contract", () => {
 
   it('the three scan steps each use the whole scan group (they share one bind group)', () => {
     for (const entry of Object.values(SCAN_ENTRIES)) expect(usedBindings(scanCode, entry, ['scan', 'work'])).toEqual(['scan', 'work']);
+  });
+});
+
+describe("the ACC build's contract", () => {
+  const read = (f: string) => readFileSync(new URL(`../../../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+
+  it('AccBuildParams parses back to the offsets and size TypeScript writes at: nPatches, then an offset per section', () => {
+    const parsed = parseStruct(ACC_BUILD_PARAMS.wgsl);
+    expect(parsed.name).toBe('AccBuildParams');
+    expect(parsed.size).toBe(ACC_BUILD_PARAMS.size);
+    // The hand-typed struct it replaced: 10 u32 and two pads, 48 bytes.
+    expect(ACC_BUILD_PARAMS.size).toBe(48);
+    expect(parsed.fields.map((f) => f.name)).toEqual(['nPatches', ...ACC_STATIC.offsetFields.map(([f]) => f)]);
+    for (const f of parsed.fields) {
+      expect(f.type, f.name).toBe('u32');
+      expect(ACC_BUILD_PARAMS.offset[f.name as keyof typeof ACC_BUILD_PARAMS.offset], f.name).toBe(f.offset);
+    }
+    // The fields the shader reads, where the hand-typed struct had them (word i).
+    const hand = [
+      'nPatches',
+      'offCorners',
+      'offRingOffs',
+      'offRingData',
+      'offValOffs',
+      'offValData',
+      'offSectors',
+      'offSecOffs',
+      'offSecData',
+      'offOrder',
+    ];
+    hand.forEach((f, i) => expect(ACC_BUILD_PARAMS.offset[f as keyof typeof ACC_BUILD_PARAMS.offset], f).toBe(4 * i));
+    const fields = new Set(Object.keys(ACC_BUILD_PARAMS.offset));
+    for (const m of read('acc/build').matchAll(/\bbp\.(\w+)/g)) expect(fields.has(m[1]), `bp.${m[1]}`).toBe(true);
+  });
+
+  it('ACC_STATIC lays its sections one after another, and its offsets reach AccBuildParams', () => {
+    const parsed = parseStruct(ACC_BUILD_PARAMS.wgsl);
+    const at = Object.fromEntries(parsed.fields.map((f) => [f.name, f]));
+    const sizes = fc.record(
+      Object.fromEntries(ACC_STATIC.names.map((k) => [k, fc.nat(100_000)])) as Record<AccSection, fc.Arbitrary<number>>,
+    );
+    fc.assert(
+      fc.property(sizes, fc.nat(100_000), (s, nPatches) => {
+        const l = ACC_STATIC.layout(s);
+        let words = 0;
+        for (const k of ACC_STATIC.names) {
+          expect(l.offset[k]).toBe(words);
+          words += s[k];
+        }
+        expect(l.words).toBe(words);
+        const view = new DataView(new ArrayBuffer(ACC_BUILD_PARAMS.size));
+        ACC_BUILD_PARAMS.write(view, { nPatches, ...ACC_STATIC.offsets(l) });
+        // The words the old positional write gave: nPatches, the offsets in section order, two zero pads.
+        const expected = [nPatches, ...ACC_STATIC.names.map((k) => l.offset[k]), 0, 0];
+        expect(Array.from(new Uint32Array(view.buffer))).toEqual(expected);
+        expect(view.getUint32(at.offSectors.offset, true)).toBe(l.offset.sectors);
+      }),
+      { numRuns: 50 },
+    );
+  });
+
+  it('the prelude declares each binding of the group once, as the layout entries say, and the shader none by hand', () => {
+    const prelude = accBuildPrelude();
+    const kinds = ACC_BUILD_GROUP.layoutEntries().map((e) => ({ group: 0, binding: e.binding, kind: layoutKind(e) }));
+    expect(declaredBindings(prelude)).toEqual(kinds);
+    expect([...prelude.matchAll(/var<[^>]*>\s+(\w+)\s*:/g)].map((m) => m[1])).toEqual(Object.keys(ACC_BUILD_GROUP.binding));
+    expect(prelude).toContain(ACC_SECTOR_WORD.wgsl);
+    const code = read('acc/build');
+    expect(code).not.toMatch(/@binding|struct AccBuildParams/);
+    // No packed word shifted by hand: the sector word through its getters.
+    expect(code).not.toMatch(/>> \d+u\)? & |& (255|63|15|3|0x3fff)u\b|\bsec >> /);
+    expect(code).toMatch(/accSectorWord_kind\(sec\)/);
+  });
+
+  it("ACC_TRI_WORD's corners are read bit by bit through AccTriCorners, which fills that field exactly, never shifted by hand", () => {
+    const [, width] = ACC_TRI_WORD.fields.corners;
+    const bits = Object.values(ACC_TRI_CORNERS.fields).reduce((n, [at, b]) => Math.max(n, at + b), 0);
+    expect(bits).toBe(width);
+    // Bit 2i: u_i, bit 2i + 1: v_i (src/gpu/acc/surface.ts accTriangleWords packs them so).
+    for (let i = 0; i < 3; i++) {
+      expect(ACC_TRI_CORNERS.fields[`u${i}` as 'u0']).toEqual([2 * i, 1]);
+      expect(ACC_TRI_CORNERS.fields[`v${i}` as 'v0']).toEqual([2 * i + 1, 1]);
+    }
+    expect(tessPrelude()).toContain(ACC_TRI_CORNERS.wgsl);
+    for (const f of ['acc/surface-tess', 'acc/heat']) {
+      const code = read(f);
+      expect(code, f).not.toMatch(/>> \d+u\)? & |\b[cm] & 1u\b|\bm >> 6u/);
+      expect(code, f).toMatch(/accTriCorners_u0\(c\)/);
+    }
+  });
+
+  it('the error pass declares its bindings from HEAT_GROUP, after the inputs it shares with the tessellator, each entry point using what heat.ts binds', () => {
+    const code = heatComputeCode();
+    const kinds = (entries: GPUBindGroupLayoutEntry[]) => entries.map((e) => ({ group: 0, binding: e.binding, kind: layoutKind(e) }));
+    const group0 = declaredBindings(code).filter((d) => d.group === 0);
+    expect(group0).toEqual(kinds([...TESS_GROUP.layoutEntries([...TESS_INPUTS]), ...HEAT_GROUP.layoutEntries()]));
+    expect(
+      declaredBindings(code)
+        .filter((d) => d.group === 1)
+        .map((d) => [d.binding, d.kind]),
+    ).toEqual([
+      [0, 'buffer:read-only-storage'],
+      [1, 'buffer:read-only-storage'],
+    ]);
+    // What src/gpu/acc/heat.ts encode() binds for each entry point: its explicit layouts must hold exactly these.
+    const used = (entry: string) => [...usedBindings(code, entry, TESS_INPUTS), ...usedBindings(code, entry, HEAT_BINDINGS)];
+    expect(used('heatArgs')).toEqual(['aux', 'heatPass', 'outCounts', 'dispatchArgs']);
+    expect(used('heatErrors')).toEqual(['params', 'staticBuf', 'cageBuf', 'work', 'srcTri', 'bary', 'aux', 'heatPass']);
+    expect(used('heatTotals')).toEqual(['aux', 'heatPass']);
+    expect(read('acc/heat')).not.toMatch(/@binding/);
   });
 });
