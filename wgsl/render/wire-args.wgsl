@@ -3,6 +3,7 @@
 
 // drawArgs and wireArgs (group 0): src/gpu/contract/render.ts WIRE_ARGS_GROUP, prepended.
 
+// One thread on purpose: a single indirect record to derive, no work to spread.
 @compute @workgroup_size(1)
 fn wireArgsMain() {
   // drawIndirect layout: vertexCount, instanceCount, firstVertex, firstInstance.
