@@ -65,6 +65,7 @@
  * Vertex order (in the frame): row 0, row 1, …, row nl (= C), then B, then O_1..O_{nr−1}.
  */
 import { ONE } from './fixed.ts';
+import { MAX_FACTOR } from './max-factor.ts';
 import { HABLE_OPTIONS, cachedSlots, presentSlots, slotPosition, stableFactorFixed, type Slot } from './hable-line.ts';
 import type { TriPattern } from './types.ts';
 
@@ -462,7 +463,7 @@ export function clampedLines(
   frame: PatternFrame,
   opts: ClampedOptions = {},
 ): { bottom: FramedLine; left: FramedLine; right: FramedLine } {
-  const maxFactor = opts.maxFactor ?? 64;
+  const maxFactor = opts.maxFactor ?? MAX_FACTOR;
   const slots = cachedSlots(maxFactor, HABLE_OPTIONS);
   const edge = (i: number, flip: boolean) => {
     const F = stableFactorFixed(factors[i], maxFactor);

@@ -3,6 +3,7 @@
  * without spawning processes. scripts/pattern-cli.ts is the thin Node wrapper.
  */
 import { toUnit } from './fixed.ts';
+import { MAX_FACTOR } from './max-factor.ts';
 import { line } from './line.ts';
 import { clampedTriangle, type Reverse } from './clamped.ts';
 import { d3d11Triangle } from './d3d11.ts';
@@ -132,7 +133,7 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
     const { command, mode, flags } = parseArgs(argv);
     const json = flags.has('--json');
     const fixed = flags.has('--fixed');
-    const maxFactor = flags.has('--max-factor') ? num(flags.get('--max-factor') as string, '--max-factor') : 64;
+    const maxFactor = flags.has('--max-factor') ? num(flags.get('--max-factor') as string, '--max-factor') : MAX_FACTOR;
     try {
       checkMaxFactor(maxFactor);
     } catch (e) {

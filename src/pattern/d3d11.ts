@@ -50,6 +50,7 @@
  * - The forced fractional_odd picture frame (inside ≤ 1 with some edge > 1) puts the first
  *   ring exactly on the three corners: duplicate positions and zero-area transition triangles.
  */
+import { MAX_FACTOR } from './max-factor.ts';
 import { ONE, factorToFixed } from './fixed';
 import type { D3D11Partitioning, LinePattern, TriPattern } from './types';
 
@@ -58,7 +59,6 @@ type Parity = 'even' | 'odd';
 const HALF = ONE >> 1; // 0x8000
 const ONE_THIRD = Math.floor(ONE / 3); // 0x5555
 const TWO_THIRDS = Math.floor((2 * ONE) / 3); // 0xaaaa
-const MAX_FACTOR = 64;
 
 /** Fixed-point reciprocals 1/n for n = 1…64, as round(2^16 / n) (no ties occur). */
 const RECIPROCAL: readonly number[] = Array.from({ length: MAX_FACTOR + 1 }, (_, n) => (n === 0 ? 0 : Math.round(ONE / n)));

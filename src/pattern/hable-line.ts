@@ -39,6 +39,7 @@
  * factor (so the speed is constant inside a window; see the continuity constant in the tests).
  */
 import { ONE, factorToFixed } from './fixed.ts';
+import { MAX_FACTOR } from './max-factor.ts';
 import type { LinePattern } from './types.ts';
 
 export interface StableLineOptions {
@@ -175,11 +176,11 @@ export function stableLineFixed(slots: Slot[], F: number): LinePattern {
   return { x, moving };
 }
 
-export function stableLine(factor: number, opt: StableLineOptions, maxFactor = 64): LinePattern {
+export function stableLine(factor: number, opt: StableLineOptions, maxFactor = MAX_FACTOR): LinePattern {
   return stableLineFixed(cachedSlots(maxFactor, opt), stableFactorFixed(factor, maxFactor));
 }
 
 /** Hable's final line pattern. */
-export function hableLine(factor: number, maxFactor = 64): LinePattern {
+export function hableLine(factor: number, maxFactor = MAX_FACTOR): LinePattern {
   return stableLine(factor, HABLE_OPTIONS, maxFactor);
 }

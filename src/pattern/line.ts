@@ -16,6 +16,7 @@
  * and cull exactly as the reference does.
  */
 import { ONE } from './fixed.ts';
+import { MAX_FACTOR } from './max-factor.ts';
 import { d3d11Line } from './d3d11.ts';
 import { HABLE_OPTIONS, cachedSlots, stableFactorFixed, stableLineFixed, type StableLineOptions } from './hable-line.ts';
 import type { LineMode, LinePattern } from './types.ts';
@@ -69,7 +70,7 @@ export interface LineOptions {
 }
 
 export function line(mode: LineMode, factor: number, opts: LineOptions = {}): LinePattern {
-  const maxFactor = opts.maxFactor ?? 64;
+  const maxFactor = opts.maxFactor ?? MAX_FACTOR;
   switch (mode) {
     case 'pow2-snap':
       return pow2Snap(factor, maxFactor);

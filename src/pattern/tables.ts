@@ -32,6 +32,7 @@
  *   States: state k holds for stateStart[k] ≤ F < stateStart[k+1] (binary search on F).
  */
 import { ONE } from './fixed.ts';
+import { MAX_FACTOR } from './max-factor.ts';
 import { ALWAYS, HABLE_OPTIONS, buildSlots, checkMaxFactor, NO_DEATH, slotPosition, stableFactorFixed, type Slot } from './hable-line.ts';
 import { assembleClamped, chooseFrame, fromFrame, type FramedLine, type Reverse, FORWARD } from './clamped.ts';
 import type { LinePattern, TriPattern } from './types.ts';
@@ -73,7 +74,7 @@ function enumerateStates(slots: Slot[], maxFactor: number): { start: number[]; p
   return { start, present };
 }
 
-export function bakeTables(maxFactor = 64): Uint32Array {
+export function bakeTables(maxFactor = MAX_FACTOR): Uint32Array {
   checkMaxFactor(maxFactor);
   const slots = buildSlots(maxFactor, HABLE_OPTIONS);
   const { start, present } = enumerateStates(slots, maxFactor);

@@ -150,7 +150,7 @@ fn bucketPatches(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocatio
 }
 
 // One thread per bucket: its drawIndexedIndirect record.
-@compute @workgroup_size(16)
+@compute @workgroup_size(RECORD_THREADS)
 fn records(@builtin(local_invocation_index) b: u32) {
   if (b >= 2u * LEVELS) { return; }
   let domain = b / LEVELS;

@@ -2,7 +2,7 @@
 // has no -srgb view (WebGPU compatibility mode allows no format reinterpretation), encoding to
 // sRGB here as the -srgb view would (src/gpu/render/srgb-blit.ts).
 
-@group(0) @binding(0) var source: texture_2d<f32>;
+// source (group 0): src/gpu/contract/render.ts BLIT_GROUP, prepended.
 
 @vertex
 fn blitVertex(@builtin(vertex_index) i: u32) -> @builtin(position) vec4f {

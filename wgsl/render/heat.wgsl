@@ -5,8 +5,7 @@
 // vertices are the ramp's own. Shaded half-Lambert without shadows, as the NVIDIA sample does in
 // its error modes: the colour must stay readable against the legend on every side of the model.
 
-@group(2) @binding(0) var<storage, read> heatValues: array<f32>;
-@group(2) @binding(1) var<uniform> heat: HeatUniforms;
+// heatValues and heat (group 2): src/gpu/contract/render.ts HEAT_RENDER_GROUP, prepended.
 
 struct HeatOut {
   @builtin(position) clip: vec4f,

@@ -1,10 +1,7 @@
 // The tessellated mesh, lit and shadowed (prepended: wgsl/render/common.wgsl, wgsl/render/shading.wgsl).
 
-// Patch colours: each vertex's source triangle (the tessellator's srcTri output, read by vertex
-// index: an indexed draw's vertex_index is the index value) and that triangle's patch kind + 1
-// (0: none; src/gpu/render/renderer.ts setPatchKinds).
-@group(2) @binding(0) var<storage, read> srcTri: array<u32>;
-@group(2) @binding(1) var<storage, read> patchKind: array<u32>;
+// Patch colours: srcTri and patchKind (group 2), each vertex's source triangle and that
+// triangle's patch kind + 1: src/gpu/contract/render.ts PATCH_KIND_GROUP, prepended.
 
 struct VertexOut {
   @builtin(position) clip: vec4f,

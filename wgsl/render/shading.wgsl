@@ -1,7 +1,6 @@
 // Lighting shared by the lit mesh and the ground (the renderer prepends wgsl/render/common.wgsl).
 
-@group(1) @binding(0) var shadowMap: texture_depth_2d;
-@group(1) @binding(1) var shadowSampler: sampler_comparison;
+// shadowMap and shadowSampler (group 1): src/gpu/contract/render.ts SHADING_GROUP, prepended.
 
 const SUN = vec3f(1.0, 0.94, 0.86) * 2.2;
 

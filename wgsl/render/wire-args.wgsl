@@ -1,9 +1,9 @@
 // The wireframe's indirect draw: six line vertices per triangle of whatever the tessellator
 // last built. One thread; it runs on the GPU because only the GPU knows the index count.
 
-@group(0) @binding(0) var<storage, read> drawArgs: array<u32, 5>;
-@group(0) @binding(1) var<storage, read_write> wireArgs: array<u32, 4>;
+// drawArgs and wireArgs (group 0): src/gpu/contract/render.ts WIRE_ARGS_GROUP, prepended.
 
+// One thread on purpose: a single indirect record to derive, no work to spread.
 @compute @workgroup_size(1)
 fn wireArgsMain() {
   // drawIndirect layout: vertexCount, instanceCount, firstVertex, firstInstance.

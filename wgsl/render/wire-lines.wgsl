@@ -2,8 +2,7 @@
 // the index and position buffers (no expanded line buffer to allocate), drawn as a line-list
 // with drawIndirect (prepended: wgsl/render/common.wgsl).
 
-@group(1) @binding(0) var<storage, read> indices: array<u32>;
-@group(1) @binding(1) var<storage, read> positions: array<f32>;
+// indices and positions (group 1): src/gpu/contract/render.ts WIRE_LINES_GROUP, prepended.
 
 struct VertexOut {
   @builtin(position) clip: vec4f,

@@ -11,6 +11,7 @@ fn dispatchArgs(threads: u32) -> vec3<u32> {
   return vec3<u32>(min(groups, GRID_X), (groups + GRID_X - 1u) / GRID_X, 1u);
 }
 
+// One thread on purpose: one decision per budget attempt over a few totals, no work to spread.
 @compute @workgroup_size(1)
 fn main() {
   let b = params.offBudget;

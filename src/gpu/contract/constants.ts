@@ -5,6 +5,9 @@
  */
 import { wgslConstants } from './define.ts';
 
+/** The largest tess factor (src/pattern/max-factor.ts: the pattern layer imports nothing from gpu). */
+export { MAX_FACTOR } from '../../pattern/max-factor.ts';
+
 /** Threads per workgroup of the tessellator's one-thread-per-item passes. */
 export const WORKGROUP_SIZE = 64;
 /** Threads per workgroup of the prefix-sum passes (wgsl/tess/scan.wgsl): 128, the most WebGPU's

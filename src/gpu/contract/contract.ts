@@ -32,7 +32,7 @@ import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_SECTOR_WORD } from './acc.ts';
 import { CC_BUILD_GROUP, CC_NONE, CC_RANGE } from './cc.ts';
 import { constantsWgsl } from './constants.ts';
 import { wgslConstants, wgslF32 } from './define.ts';
-import { GROUND_EXTENT, PATCH_COLOURS, SCENE_UNIFORMS } from './render.ts';
+import { GROUND_EXTENT, PATCH_COLOURS, SCENE_GROUP, SCENE_UNIFORMS } from './render.ts';
 import {
   ACC_TRI_CORNERS,
   ACC_TRI_WORD,
@@ -85,7 +85,7 @@ export const scanPrelude = [SCAN_PARAMS.wgsl, constantsWgsl, SCAN_GROUP.wgsl()].
  * group 0 everywhere) and the constants the TypeScript shares with the render shaders. */
 export const sceneWgsl = [
   SCENE_UNIFORMS.wgsl,
-  '@group(0) @binding(0) var<uniform> scene: SceneUniforms;',
+  SCENE_GROUP.wgsl(),
   `const GROUND_EXTENT: f32 = ${wgslF32(GROUND_EXTENT)};`,
   `const PATCH_SRGB = array<vec3f, ${PATCH_COLOURS.length}>(${PATCH_COLOURS.map((p) => `vec3f(${p.srgb.map(wgslF32).join(', ')})`).join(', ')});`,
   '',

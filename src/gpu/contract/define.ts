@@ -144,15 +144,25 @@ function extract(word: number, at: number, bits: number): number {
 // ---------------------------------------------------------------------------------------------
 // Storage arrays: bindings, and arrays carved out of one buffer
 
-/** One binding of a bind group: how the WGSL declares it. */
-export interface BindingSpec {
+/** One binding of a bind group: how the WGSL declares it. A buffer has a `space`; a texture or a
+ * sampler has its layout entry's `texture` or `sampler` member instead (and its WGSL `type`, e.g.
+ * `texture_depth_2d` or `sampler_comparison`). */
+export type BindingSpec = {
   binding: number;
-  /** 'uniform', or a storage buffer's access mode. */
-  space: 'uniform' | 'read' | 'read_write';
-  /** The WGSL type: a struct name for a uniform, `array<u32>` and the like for storage. */
+  /** The WGSL type: a struct name for a uniform, `array<u32>` and the like for storage, a texture
+   * or sampler type. */
   type: string;
   doc?: string;
-}
+  /** The stages that see it (STAGE bits), where they differ from the group's. */
+  visibility?: number;
+} & (
+  | {
+      /** 'uniform', or a storage buffer's access mode. */
+      space: 'uniform' | 'read' | 'read_write';
+    }
+  | { texture: GPUTextureBindingLayout }
+  | { sampler: GPUSamplerBindingLayout }
+);
 
 export interface BindGroupSpec<K extends string> {
   readonly group: number;
@@ -168,7 +178,8 @@ export interface BindGroupSpec<K extends string> {
  * `{ params: { binding: 0, space: 'uniform', type: 'Params' }, work: { binding: 3, space:
  * 'read_write', type: 'array<u32>' }, … }`: the declarations are generated (never typed in a
  * .wgsl file), and a pass's explicit layout is `layoutEntries(usedBindings(code, entry, names))`,
- * so a shared helper that starts reading one more buffer changes the layout with it.
+ * so a shared helper that starts reading one more buffer changes the layout with it. `visibility`
+ * is every entry's unless the entry names its own.
  */
 export function defineBindGroup<K extends string>(
   group: number,
@@ -188,17 +199,18 @@ export function defineBindGroup<K extends string>(
     wgsl: (names) =>
       pick(names)
         .map(([k, e]) => {
-          const space = e.space === 'uniform' ? 'uniform' : `storage, ${e.space}`;
-          return `${e.doc ? `// ${e.doc}\n` : ''}@group(${group}) @binding(${e.binding}) var<${space}> ${k}: ${e.type};`;
+          const space = 'space' in e ? `<${e.space === 'uniform' ? 'uniform' : `storage, ${e.space}`}>` : '';
+          return `${e.doc ? `// ${e.doc}\n` : ''}@group(${group}) @binding(${e.binding}) var${space} ${k}: ${e.type};`;
         })
         .join('\n')
         .concat('\n'),
     layoutEntries: (names) =>
-      pick(names).map(([, e]) => ({
-        binding: e.binding,
-        visibility,
-        buffer: { type: e.space === 'uniform' ? 'uniform' : e.space === 'read' ? 'read-only-storage' : 'storage' },
-      })),
+      pick(names).map(([, e]): GPUBindGroupLayoutEntry => {
+        const common = { binding: e.binding, visibility: e.visibility ?? visibility };
+        if ('texture' in e) return { ...common, texture: { ...e.texture } };
+        if ('sampler' in e) return { ...common, sampler: { ...e.sampler } };
+        return { ...common, buffer: { type: e.space === 'uniform' ? 'uniform' : e.space === 'read' ? 'read-only-storage' : 'storage' } };
+      }),
   };
 }
 

@@ -4,7 +4,7 @@
  * descriptors the renderer creates (RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS), the ground's
  * extent and the patch colours. What its shaders start with is assembled in contract.ts (sceneWgsl).
  */
-import { STAGE } from './define.ts';
+import { STAGE, defineBindGroup } from './define.ts';
 import { defineStruct } from './layout.ts';
 
 /**
@@ -21,27 +21,86 @@ export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
   ['viewport', 'vec4<f32>', 'x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.'],
 ] as const);
 
-/** The renderer's bind group layouts, entry for entry. The WGSL declares each at its group index
- * in the pipelines of RENDER_PIPELINE_GROUPS (tests/gpu/contract/contract.test.ts compares them). */
+/** The per-frame uniforms (SCENE_UNIFORMS), group 0 of every render pipeline but wireArgs. */
+export const SCENE_GROUP = defineBindGroup(
+  0,
+  { scene: { binding: 0, space: 'uniform', type: 'SceneUniforms' } },
+  STAGE.VERTEX | STAGE.FRAGMENT,
+);
+
+/** The shadow map and its comparison sampler (wgsl/render/shading.wgsl), group 1 of the lit,
+ * heat and ground pipelines. */
+export const SHADING_GROUP = defineBindGroup(
+  1,
+  {
+    shadowMap: { binding: 0, type: 'texture_depth_2d', texture: { sampleType: 'depth' } },
+    shadowSampler: { binding: 1, type: 'sampler_comparison', sampler: { type: 'comparison' } },
+  },
+  STAGE.FRAGMENT,
+);
+
+/** The patch colours (wgsl/render/lit.wgsl), group 2 of the lit pipelines: each vertex's source
+ * triangle (the tessellator's srcTri output, read by vertex index: an indexed draw's vertex_index
+ * is the index value) and that triangle's patch kind + 1 (0: none; Renderer.setPatchKinds). */
+export const PATCH_KIND_GROUP = defineBindGroup(
+  2,
+  {
+    srcTri: { binding: 0, space: 'read', type: 'array<u32>' },
+    patchKind: { binding: 1, space: 'read', type: 'array<u32>' },
+  },
+  STAGE.VERTEX,
+);
+
+/** The wireframe's index and position buffers (wgsl/render/wire-lines.wgsl), group 1 of the
+ * wireframe pipeline: the same layout as PATCH_KIND_GROUP (vertexStorage), other names. */
+export const WIRE_LINES_GROUP = defineBindGroup(
+  1,
+  {
+    indices: { binding: 0, space: 'read', type: 'array<u32>' },
+    positions: { binding: 1, space: 'read', type: 'array<f32>' },
+  },
+  STAGE.VERTEX,
+);
+
+/** The wireframe's indirect args pass (wgsl/render/wire-args.wgsl): the mesh's drawIndexedIndirect
+ * args in, the wireframe's drawIndirect args out. */
+export const WIRE_ARGS_GROUP = defineBindGroup(0, {
+  drawArgs: { binding: 0, space: 'read', type: 'array<u32, 5>' },
+  wireArgs: { binding: 1, space: 'read_write', type: 'array<u32, 4>' },
+});
+
+/** The heat map (wgsl/render/heat.wgsl), group 2 of the heat pipelines in place of the patch
+ * colours': the values, 2 f32 per vertex, by vertex index, and HeatUniforms (src/gpu/acc/heat.ts). */
+export const HEAT_RENDER_GROUP = defineBindGroup(
+  2,
+  {
+    heatValues: { binding: 0, space: 'read', type: 'array<f32>', visibility: STAGE.VERTEX },
+    heat: { binding: 1, space: 'uniform', type: 'HeatUniforms' },
+  },
+  STAGE.VERTEX | STAGE.FRAGMENT,
+);
+
+/** The sRGB blit's picture (wgsl/render/blit-srgb.wgsl, src/gpu/render/srgb-blit.ts), read with
+ * textureLoad: unfilterable-float, as the 'auto' layout it replaced inferred. */
+export const BLIT_GROUP = defineBindGroup(
+  0,
+  { source: { binding: 0, type: 'texture_2d<f32>', texture: { sampleType: 'unfilterable-float' } } },
+  STAGE.FRAGMENT,
+);
+
+/** The renderer's bind group layouts, entry for entry, from the declarations above. The WGSL
+ * declares each at its group index in the pipelines of RENDER_PIPELINE_GROUPS
+ * (tests/gpu/contract/contract.test.ts compares them). */
 export const RENDER_BIND_GROUPS = {
   /** The per-frame uniforms (SCENE_UNIFORMS). */
-  scene: [{ binding: 0, visibility: STAGE.VERTEX | STAGE.FRAGMENT, buffer: { type: 'uniform' } }],
+  scene: SCENE_GROUP.layoutEntries(),
   /** The shadow map and its comparison sampler. */
-  shading: [
-    { binding: 0, visibility: STAGE.FRAGMENT, texture: { sampleType: 'depth' } },
-    { binding: 1, visibility: STAGE.FRAGMENT, sampler: { type: 'comparison' } },
-  ],
-  /** Two arrays read by vertex index: the wireframe's indices and positions, or the patch
-   * colours' source triangles and kinds. */
-  vertexStorage: [
-    { binding: 0, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
-    { binding: 1, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
-  ],
+  shading: SHADING_GROUP.layoutEntries(),
+  /** Two arrays read by vertex index: the wireframe's indices and positions (WIRE_LINES_GROUP),
+   * or the patch colours' source triangles and kinds (PATCH_KIND_GROUP): one layout. */
+  vertexStorage: PATCH_KIND_GROUP.layoutEntries(),
   /** The mesh's drawIndexedIndirect args in, the wireframe's drawIndirect args out. */
-  wireArgs: [
-    { binding: 0, visibility: STAGE.COMPUTE, buffer: { type: 'read-only-storage' } },
-    { binding: 1, visibility: STAGE.COMPUTE, buffer: { type: 'storage' } },
-  ],
+  wireArgs: WIRE_ARGS_GROUP.layoutEntries(),
 } as const satisfies Record<string, readonly GPUBindGroupLayoutEntry[]>;
 
 export type RenderBindGroup = keyof typeof RENDER_BIND_GROUPS;

@@ -84,6 +84,9 @@ export const INST_FRAME = defineStruct('InstFrame', [
 export const BUCKETS = 2 * POW2_LEVEL_COUNT;
 /** Bytes between two buckets' uniforms (minUniformBufferOffsetAlignment is at most 256). */
 export const BUCKET_STRIDE = 256;
+/** Threads of the records pass (wgsl/instanced/levels.wgsl `records`, one per bucket): the power
+ * of two at or above BUCKETS (16 for 14); the threads past BUCKETS return at once. */
+export const RECORD_THREADS = 2 ** Math.ceil(Math.log2(BUCKETS));
 export const PATCH_WORDS = 8;
 
 /** Bytes of drawArgs: 14 indexed records (5 words), then 14 wireframe records (4 words). */

@@ -17,7 +17,8 @@ import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSur
 import type { Tessellator } from '../tess/tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
-import { constantsWgsl, grid2d } from '../contract/constants.ts';
+import { constantsWgsl, grid2d, WORKGROUP_SIZE } from '../contract/constants.ts';
+import { wgslConstants } from '../contract/define.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { readBuffer } from '../device/readback.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
@@ -29,6 +30,7 @@ import {
   INST_OWNER_WORD,
   INST_FRAME,
   BUCKETS,
+  RECORD_THREADS,
   BUCKET_STRIDE,
   DRAW_ARGS_BYTES,
   type WorkLayout,
@@ -117,7 +119,17 @@ export class InstancedLevels {
     const kind = this.acc ? 'acc' : this.cc ? 'catmull-clark' : 'evalSurface';
     const vertexSurface = this.displaced ? instancedDisplaceWgsl(kind) : plainVertexWgsl;
     const code = (...parts: string[]) =>
-      [constantsWgsl, INST_OWNER_WORD.wgsl, INST_PARAMS.wgsl, INST_BUCKET.wgsl, commonWgsl, ...parts, surface, vertexSurface].join('\n');
+      [
+        constantsWgsl,
+        wgslConstants({ RECORD_THREADS }),
+        INST_OWNER_WORD.wgsl,
+        INST_PARAMS.wgsl,
+        INST_BUCKET.wgsl,
+        commonWgsl,
+        ...parts,
+        surface,
+        vertexSurface,
+      ].join('\n');
     this.code = code;
     const levels = device.createShaderModule({ label: 'instanced levels', code: code(factorRuleWgsl, levelsWgsl) });
     const pipeline = (entryPoint: string) =>
@@ -438,10 +450,11 @@ export class InstancedLevels {
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
-    if (lp.mode === 'dynamic') run('edgeView', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeView'));
-    else if (lp.mode === 'factor-rule') run('edgeFactorRule', Math.ceil(m.m.edgeCount / 64), this.levelGroupFor('edgeFactorRule'));
-    else run('patchEdges', Math.ceil(nP / 64), this.levelGroupFor('patchEdges'));
-    run('bucketPatches', Math.ceil(nP / 64), this.levelGroupFor('bucketPatches'));
+    if (lp.mode === 'dynamic') run('edgeView', Math.ceil(m.m.edgeCount / WORKGROUP_SIZE), this.levelGroupFor('edgeView'));
+    else if (lp.mode === 'factor-rule')
+      run('edgeFactorRule', Math.ceil(m.m.edgeCount / WORKGROUP_SIZE), this.levelGroupFor('edgeFactorRule'));
+    else run('patchEdges', Math.ceil(nP / WORKGROUP_SIZE), this.levelGroupFor('patchEdges'));
+    run('bucketPatches', Math.ceil(nP / WORKGROUP_SIZE), this.levelGroupFor('bucketPatches'));
     run('records', 1, this.levelGroupFor('records'));
     cp.end();
   }

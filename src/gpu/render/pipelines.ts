@@ -14,21 +14,34 @@ import wireArgsWGSL from '../../../wgsl/render/wire-args.wgsl?raw';
 import wireLinesWGSL from '../../../wgsl/render/wire-lines.wgsl?raw';
 import wireCageWGSL from '../../../wgsl/render/wire-cage.wgsl?raw';
 import heatWGSL from '../../../wgsl/render/heat.wgsl?raw';
-import { HEAT_BIND_GROUP, heatRenderWgsl } from '../acc/heat.ts';
+import { heatRenderWgsl } from '../acc/heat.ts';
 import { CAGE_LINE_STRIDE } from './cage-mesh.ts';
-import { RENDER_BIND_GROUPS, RENDER_PIPELINE_GROUPS, type RenderBindGroup, type RenderPipelineName } from '../contract/render.ts';
+import {
+  HEAT_RENDER_GROUP,
+  PATCH_KIND_GROUP,
+  RENDER_BIND_GROUPS,
+  RENDER_PIPELINE_GROUPS,
+  SHADING_GROUP,
+  WIRE_ARGS_GROUP,
+  WIRE_LINES_GROUP,
+  type RenderBindGroup,
+  type RenderPipelineName,
+} from '../contract/render.ts';
 import { sceneWgsl } from '../contract/contract.ts';
 
 /** The WGSL sources of each pipeline's shader module, in order (the two cage pipelines share one). */
 export const RENDER_SHADERS: Record<RenderPipelineName, readonly string[]> = {
   shadow: [sceneWgsl, commonWGSL, shadowWGSL],
-  lit: [sceneWgsl, commonWGSL, shadingWGSL, litWGSL],
-  ground: [sceneWgsl, commonWGSL, shadingWGSL, groundWGSL],
+  lit: [sceneWgsl, commonWGSL, SHADING_GROUP.wgsl(), shadingWGSL, PATCH_KIND_GROUP.wgsl(), litWGSL],
+  ground: [sceneWgsl, commonWGSL, SHADING_GROUP.wgsl(), shadingWGSL, groundWGSL],
   backdrop: [sceneWgsl, commonWGSL, backdropWGSL],
-  wireframe: [sceneWgsl, commonWGSL, wireLinesWGSL],
+  wireframe: [sceneWgsl, commonWGSL, WIRE_LINES_GROUP.wgsl(), wireLinesWGSL],
   cage: [sceneWgsl, commonWGSL, wireCageWGSL],
-  wireArgs: [wireArgsWGSL],
+  wireArgs: [WIRE_ARGS_GROUP.wgsl(), wireArgsWGSL],
 };
+
+/** The heat pipelines' shader module's sources (src/gpu/acc/heat.ts). */
+export const HEAT_SHADER: readonly string[] = [sceneWgsl, commonWGSL, heatRenderWgsl, HEAT_RENDER_GROUP.wgsl(), heatWGSL];
 
 export const DEPTH_FORMAT: GPUTextureFormat = 'depth32float';
 /** An open surface's back faces are drawn this far behind its front faces (depthBias, in the
@@ -116,7 +129,7 @@ export function createRenderPipelines(
   const wireArgsModule = module('wireArgs');
 
   const heatGroupLayout = vertexStorage
-    ? device.createBindGroupLayout({ label: 'heat bind group layout', entries: [...HEAT_BIND_GROUP] })
+    ? device.createBindGroupLayout({ label: 'heat bind group layout', entries: HEAT_RENDER_GROUP.layoutEntries() })
     : null;
   // The lit pipeline's groups with the heat group in place of the patch colours' (group 2).
   const heatLayout = heatGroupLayout
@@ -127,7 +140,7 @@ export function createRenderPipelines(
     : null;
   const heatModule = device.createShaderModule({
     label: 'heat shader',
-    code: [sceneWgsl, commonWGSL, heatRenderWgsl, heatWGSL].join('\n'),
+    code: HEAT_SHADER.join('\n'),
   });
 
   const multisample = { count: sampleCount };

@@ -6,21 +6,27 @@
  * (wgsl/render/blit-srgb.wgsl). In core WebGPU the page draws through an -srgb view and needs none of this.
  */
 import blitWgsl from '../../../wgsl/render/blit-srgb.wgsl?raw';
+import { BLIT_GROUP } from '../contract/render.ts';
+
+/** The blit's shader module's sources: its binding (BLIT_GROUP), then wgsl/render/blit-srgb.wgsl. */
+export const BLIT_SHADER: readonly string[] = [BLIT_GROUP.wgsl(), blitWgsl];
 
 export const SRGB_TARGET_FORMAT: GPUTextureFormat = 'rgba8unorm-srgb';
 
 export class SrgbBlit {
   readonly #device: GPUDevice;
   readonly #pipeline: GPURenderPipeline;
+  readonly #groupLayout: GPUBindGroupLayout;
   #target: GPUTexture | null = null;
   #group: GPUBindGroup | null = null;
 
   constructor(device: GPUDevice, canvasFormat: GPUTextureFormat) {
     this.#device = device;
-    const module = device.createShaderModule({ label: 'srgb blit shader', code: blitWgsl });
+    const module = device.createShaderModule({ label: 'srgb blit shader', code: BLIT_SHADER.join('\n') });
+    this.#groupLayout = device.createBindGroupLayout({ label: 'srgb blit bind group layout', entries: BLIT_GROUP.layoutEntries() });
     this.#pipeline = device.createRenderPipeline({
       label: 'srgb blit pipeline',
-      layout: 'auto',
+      layout: device.createPipelineLayout({ label: 'srgb blit pipeline layout', bindGroupLayouts: [this.#groupLayout] }),
       vertex: { module, entryPoint: 'blitVertex' },
       fragment: { module, entryPoint: 'blitFragment', targets: [{ format: canvasFormat }] },
       primitive: { topology: 'triangle-list' },
@@ -39,8 +45,8 @@ export class SrgbBlit {
       });
       this.#group = this.#device.createBindGroup({
         label: 'srgb blit bind group',
-        layout: this.#pipeline.getBindGroupLayout(0),
-        entries: [{ binding: 0, resource: this.#target.createView({ label: 'srgb picture view' }) }],
+        layout: this.#groupLayout,
+        entries: [{ binding: BLIT_GROUP.binding.source, resource: this.#target.createView({ label: 'srgb picture view' }) }],
       });
     }
     return this.#target;

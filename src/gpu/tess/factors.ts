@@ -60,6 +60,7 @@
  * triangle beside them is on screen.
  */
 import { ONE } from '../../pattern/fixed.ts';
+import { MAX_FACTOR } from '../contract/constants.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
 
 export const PHONG_ALPHA = 0.75;
@@ -91,7 +92,7 @@ export interface FactorRule {
 }
 
 /** The adaptive rule a tessellator applies for its FactorParams (camera, viewport, LOD scale). */
-export function adaptiveRuleOf(p: FactorParams, maxFactor = 64): FactorRule {
+export function adaptiveRuleOf(p: FactorParams, maxFactor = MAX_FACTOR): FactorRule {
   return {
     mode: 'adaptive',
     fixedFactor: 1,

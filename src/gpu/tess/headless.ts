@@ -12,6 +12,7 @@ import { faceParam, type FaceParam } from './face-params.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
 import { decodeBary, NO_OWNER } from '../contract/tess.ts';
 import { bakeTables } from '../../pattern/tables.ts';
+import { MAX_FACTOR } from '../contract/constants.ts';
 import { releaseSurfaceData, surfaceScheme, type SurfaceData, type SurfaceId } from '../surface/registry.ts';
 import type { Cage } from '../../mesh/types.ts';
 
@@ -79,7 +80,7 @@ export async function tessellateOnce(
   const own = !tess;
   const t =
     tess ??
-    Tessellator.create(device, bakeTables(64), {
+    Tessellator.create(device, bakeTables(MAX_FACTOR), {
       vertexCapacity: o.vertexCapacity,
       triangleCapacity: o.triangleCapacity,
       surface,

@@ -4,7 +4,7 @@
  * layout.ts), and must give the offsets, sizes and bit fields the TypeScript views use. The
  * renderer's shaders must declare exactly the bindings its pipeline layouts are built from.
  */
-import { readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
@@ -51,9 +51,16 @@ import {
 import { heatComputeCode } from '../../../src/gpu/acc/heat.ts';
 import { CC_BUILD_GROUP, CC_STATIC, type CcSection } from '../../../src/gpu/contract/cc.ts';
 import {
+  BLIT_GROUP,
+  HEAT_RENDER_GROUP,
+  PATCH_KIND_GROUP,
   RENDER_BIND_GROUPS,
   RENDER_PIPELINE_GROUPS,
+  SCENE_GROUP,
   SCENE_UNIFORMS,
+  SHADING_GROUP,
+  WIRE_ARGS_GROUP,
+  WIRE_LINES_GROUP,
   GROUND_EXTENT,
   PATCH_COLOURS,
 } from '../../../src/gpu/contract/render.ts';
@@ -62,7 +69,9 @@ import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../.
 import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../../../src/pattern/tables.ts';
 import { defineStruct } from '../../../src/gpu/contract/layout.ts';
 import { packPatternFrame } from '../../../src/gpu/tess/prepare.ts';
-import { RENDER_SHADERS } from '../../../src/gpu/render/pipelines.ts';
+import { HEAT_SHADER, RENDER_SHADERS } from '../../../src/gpu/render/pipelines.ts';
+import { BLIT_SHADER } from '../../../src/gpu/render/srgb-blit.ts';
+import { HEAT_BIND_GROUP } from '../../../src/gpu/acc/heat.ts';
 import { chooseFrame } from '../../../src/pattern/clamped.ts';
 
 // ---- WGSL's uniform layout rules (WGSL spec, "Memory layout"), for the types the contract uses.
@@ -392,6 +401,7 @@ function declaredBindings(code: string): Declared[] {
     else if (type === 'texture_depth_2d') kind = 'texture:depth';
     else if (type === 'sampler_comparison') kind = 'sampler:comparison';
     else if (type === 'sampler') kind = 'sampler:filtering';
+    else if (type === 'texture_2d<f32>') kind = 'texture:f32';
     else kind = `unknown:${space}:${type}`;
     out.push({ group: Number(m[1]), binding: Number(m[2]), kind });
   }
@@ -400,7 +410,10 @@ function declaredBindings(code: string): Declared[] {
 
 function layoutKind(e: GPUBindGroupLayoutEntry): string {
   if (e.buffer) return `buffer:${e.buffer.type ?? 'uniform'}`;
-  if (e.texture) return `texture:${e.texture.sampleType ?? 'float'}`;
+  if (e.texture) {
+    const t = e.texture.sampleType ?? 'float';
+    return `texture:${t === 'float' || t === 'unfilterable-float' ? 'f32' : t}`;
+  }
   if (e.sampler) return `sampler:${e.sampler.type ?? 'filtering'}`;
   return 'other';
 }
@@ -437,6 +450,91 @@ describe("the renderer's bindings", () => {
         expect(code, name).toMatch(/\bscene\.\w+/);
       }
     }
+  });
+});
+
+/** Every `.wgsl` file of these folders of wgsl/, by its path under wgsl/. */
+function wgslFiles(...dirs: string[]): string[] {
+  return dirs.flatMap((d) =>
+    readdirSync(new URL(`../../../wgsl/${d}/`, import.meta.url))
+      .filter((f) => f.endsWith('.wgsl'))
+      .map((f) => `${d}/${f}`),
+  );
+}
+
+/** The bindings `spec`'s layout entries give, as declaredBindings reads them. */
+function specBindings(spec: { group: number; layoutEntries(): GPUBindGroupLayoutEntry[] }): Declared[] {
+  return spec.layoutEntries().map((e) => ({ group: spec.group, binding: e.binding, kind: layoutKind(e) }));
+}
+
+describe("the renderer's, wireframe's and blit's bindings come from the contract", () => {
+  it('no render WGSL file declares a binding by hand', () => {
+    const files = wgslFiles('render');
+    expect(files.length).toBeGreaterThan(5);
+    for (const f of files) {
+      const code = readFileSync(new URL(`../../../wgsl/${f}`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
+      expect(code, f).not.toMatch(/@binding|@group/);
+    }
+  });
+
+  it('the layouts are the ones written out by hand before (behaviour unchanged)', () => {
+    const V = STAGE.VERTEX;
+    const F = STAGE.FRAGMENT;
+    const C = STAGE.COMPUTE;
+    expect(RENDER_BIND_GROUPS).toEqual({
+      scene: [{ binding: 0, visibility: V | F, buffer: { type: 'uniform' } }],
+      shading: [
+        { binding: 0, visibility: F, texture: { sampleType: 'depth' } },
+        { binding: 1, visibility: F, sampler: { type: 'comparison' } },
+      ],
+      vertexStorage: [
+        { binding: 0, visibility: V, buffer: { type: 'read-only-storage' } },
+        { binding: 1, visibility: V, buffer: { type: 'read-only-storage' } },
+      ],
+      wireArgs: [
+        { binding: 0, visibility: C, buffer: { type: 'read-only-storage' } },
+        { binding: 1, visibility: C, buffer: { type: 'storage' } },
+      ],
+    });
+    expect(HEAT_RENDER_GROUP.layoutEntries()).toEqual([
+      { binding: 0, visibility: V, buffer: { type: 'read-only-storage' } },
+      { binding: 1, visibility: V | F, buffer: { type: 'uniform' } },
+    ]);
+    // src/gpu/acc/heat.ts still spells the same layout out (no longer used by the renderer).
+    expect(HEAT_RENDER_GROUP.layoutEntries()).toEqual(HEAT_BIND_GROUP);
+    expect(BLIT_GROUP.layoutEntries()).toEqual([{ binding: 0, visibility: F, texture: { sampleType: 'unfilterable-float' } }]);
+  });
+
+  it('the wireframe and the patch colours share one layout (vertexStorage) under other names', () => {
+    expect(WIRE_LINES_GROUP.layoutEntries()).toEqual(PATCH_KIND_GROUP.layoutEntries());
+    expect(RENDER_PIPELINE_GROUPS.wireframe.indexOf('vertexStorage')).toBe(WIRE_LINES_GROUP.group);
+    expect(RENDER_PIPELINE_GROUPS.lit.indexOf('vertexStorage')).toBe(PATCH_KIND_GROUP.group);
+    expect(RENDER_PIPELINE_GROUPS.lit.indexOf('shading')).toBe(SHADING_GROUP.group);
+    expect(RENDER_PIPELINE_GROUPS.ground.indexOf('shading')).toBe(SHADING_GROUP.group);
+    expect(RENDER_PIPELINE_GROUPS.wireArgs.indexOf('wireArgs')).toBe(WIRE_ARGS_GROUP.group);
+    expect(RENDER_PIPELINE_GROUPS.shadow.indexOf('scene')).toBe(SCENE_GROUP.group);
+  });
+
+  it('the heat and blit shaders declare exactly the bindings of their layouts', () => {
+    const heatExpected = [...specBindings(SCENE_GROUP), ...specBindings(HEAT_RENDER_GROUP)];
+    expect(declaredBindings(HEAT_SHADER.join('\n'))).toEqual(heatExpected);
+    expect(declaredBindings(BLIT_SHADER.join('\n'))).toEqual(specBindings(BLIT_GROUP));
+  });
+
+  it('a texture or sampler entry is declared without an address space, with its own visibility', () => {
+    const g = defineBindGroup(
+      3,
+      {
+        t: { binding: 0, type: 'texture_depth_2d', texture: { sampleType: 'depth' } },
+        s: { binding: 1, type: 'sampler_comparison', sampler: { type: 'comparison' }, visibility: STAGE.VERTEX },
+      },
+      STAGE.FRAGMENT,
+    );
+    expect(g.wgsl()).toBe('@group(3) @binding(0) var t: texture_depth_2d;\n@group(3) @binding(1) var s: sampler_comparison;\n');
+    expect(g.layoutEntries()).toEqual([
+      { binding: 0, visibility: STAGE.FRAGMENT, texture: { sampleType: 'depth' } },
+      { binding: 1, visibility: STAGE.VERTEX, sampler: { type: 'comparison' } },
+    ]);
   });
 });
 
