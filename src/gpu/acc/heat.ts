@@ -63,13 +63,6 @@ export const heatRenderWgsl = [
   '',
 ].join('\n');
 
-/** The heat bind group of the lit pass (group 2 of its heat pipelines): the values, 2 f32 per
- * vertex, by vertex index, and HEAT_UNIFORMS. */
-export const HEAT_BIND_GROUP: readonly GPUBindGroupLayoutEntry[] = [
-  { binding: 0, visibility: STAGE.VERTEX, buffer: { type: 'read-only-storage' } },
-  { binding: 1, visibility: STAGE.VERTEX | STAGE.FRAGMENT, buffer: { type: 'uniform' } },
-];
-
 /** Words of aux's header: the vertex count, the workgroups, then the totals (max distance, Σ d²,
  * max angle, Σ angle², the vertices counted). */
 const HEADER = { HEADER_COUNT: 0, HEADER_GROUPS: 1, HEADER_TOTALS: 2 } as const;

@@ -47,7 +47,7 @@ import { bakeTables } from '../../pattern/tables.ts';
 import type { DisplacementData, DisplacementSettings } from '../tess/displacement-map.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
-export type InstancedSurfaceKind = 'evalSurface' | 'acc' | 'catmull-clark';
+import type { InstancedSurfaceKind } from './instanced-options.ts';
 
 /** The first group-3 binding of the lender's Params, static and cage on each surface. */
 export function lenderFirstBinding(surface: InstancedSurfaceKind): number {

@@ -71,7 +71,6 @@ import { defineStruct } from '../../../src/gpu/contract/layout.ts';
 import { packPatternFrame } from '../../../src/gpu/tess/prepare.ts';
 import { HEAT_SHADER, RENDER_SHADERS } from '../../../src/gpu/render/pipelines.ts';
 import { BLIT_SHADER } from '../../../src/gpu/render/srgb-blit.ts';
-import { HEAT_BIND_GROUP } from '../../../src/gpu/acc/heat.ts';
 import { chooseFrame } from '../../../src/pattern/clamped.ts';
 
 // ---- WGSL's uniform layout rules (WGSL spec, "Memory layout"), for the types the contract uses.
@@ -501,7 +500,6 @@ describe("the renderer's, wireframe's and blit's bindings come from the contract
       { binding: 1, visibility: V | F, buffer: { type: 'uniform' } },
     ]);
     // src/gpu/acc/heat.ts still spells the same layout out (no longer used by the renderer).
-    expect(HEAT_RENDER_GROUP.layoutEntries()).toEqual(HEAT_BIND_GROUP);
     expect(BLIT_GROUP.layoutEntries()).toEqual([{ binding: 0, visibility: F, texture: { sampleType: 'unfilterable-float' } }]);
   });
 
