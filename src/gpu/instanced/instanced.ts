@@ -1,7 +1,7 @@
 /**
- * Instanced power-of-two tessellation (NVIDIA's 2009 "Instanced Tessellation" sample; notes
- * acc-and-instanced.md §6): one precomputed pattern per level 1, 2, 4, … 64 and domain
- * (src/pattern/pow2.ts), patches bucketed by level on the GPU, one indirect instanced draw per
+ * Instanced power-of-two tessellation (NVIDIA's 2009 "Instanced Tessellation" sample, with the
+ * T-junction snap of Dyken, Reimers and Seland 2009): one precomputed pattern per level 1, 2, 4,
+ * … 64 and domain (src/pattern/pow2.ts), patches bucketed by level on the GPU, one indirect instanced draw per
  * bucket, the surface evaluated in the vertex shader, T-junctions removed by the snap of boundary
  * vertices to each edge's level. Unlike the compute tessellator (tessellator.ts), which builds
  * the mesh once and draws the stored buffers in every pass, this re-evaluates the surface in
