@@ -7,7 +7,7 @@ import type { MeshCounts } from './counts.ts';
 import type { GpuMemoryCounts } from '../gpu/device/tracked-device.ts';
 import type { InstancedCounts } from './instanced-view.ts';
 import type { HeatTotals } from '../gpu/acc/heat.ts';
-import { isExact } from './surfaces.ts';
+import { isExact, SURFACE_NAMES } from './surfaces.ts';
 
 /** One ACC surface's error against the exact Catmull-Clark limit over its output vertices (the
  * GPU error pass: src/gpu/acc/heat.ts), or why there is none. */
@@ -104,15 +104,6 @@ function mib(bytes: number): string {
 function ms(x: number): string {
   return x < 0.01 ? '<0.01' : x.toFixed(2);
 }
-
-const SURFACE_NAMES = {
-  'catmull-clark': 'Catmull-Clark',
-  phong: 'Phong',
-  cage: 'flat cage',
-  'bezier-acc': 'Bezier ACC',
-  'gregory-acc': 'Gregory ACC',
-  'pm-acc': 'Pm ACC',
-} as const;
 
 /** Timing stages of the Catmull-Clark patch build; every other stage is tessellation. */
 const SUBDIVISION_STAGES = new Set(['subdivision']);
