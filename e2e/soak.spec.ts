@@ -71,9 +71,22 @@ async function moveCamera(page: Page, n: number, seed: number): Promise<void> {
   }
 }
 
+type LossHooks = { tessellab: { loseDevice(): void; demo: { gpu: { device: object } } }; lostDevice?: object };
+
 async function loseDevice(page: Page, title: string): Promise<void> {
-  await page.evaluate(() => (window as unknown as { tessellab: { loseDevice(): void } }).tessellab.loseDevice());
-  await expect(page.locator('body')).not.toHaveAttribute('data-state', 'ready');
+  await page.evaluate(() => {
+    const w = window as unknown as LossHooks;
+    w.lostDevice = w.tessellab.demo.gpu.device;
+    w.tessellab.loseDevice();
+  });
+  // The page is recovered when it holds a new device. Not by watching data-state leave 'ready':
+  // the 'lost' state lasts only as long as the recovery, which can end between two polls (this
+  // check passed only on retry in CI).
+  await expect
+    .poll(() =>
+      page.evaluate(() => (window as unknown as LossHooks).tessellab.demo.gpu.device !== (window as unknown as LossHooks).lostDevice),
+    )
+    .toBe(true);
   await ready(page);
   await shownModel(page, title);
 }
