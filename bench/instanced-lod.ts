@@ -36,7 +36,7 @@ export async function main(argv: string[]): Promise<number> {
   const only = option(argv, '--models')?.split(',');
   const { device } = await createNodeDevice([]);
   const compute = Tessellator.create(device, bakeTables(64), { surface, flatBaseline: false });
-  const instanced = new InstancedTessellator(device, { surface: surface === 'catmull-clark' ? 'catmull-clark' : 'evalSurface' });
+  const instanced = new InstancedTessellator(device, { surface: surface === 'catmull-clark' ? 'lent-limit' : 'evalSurface' });
   console.log(`surface ${surface}, LOD scale ${lod}, the CLI's camera (1080 px high)`);
   console.log(
     '| model | compute adaptive tris | instanced dynamic (sample rule): drawn / welded | ratio | instanced factor rule: drawn / welded | ratio |',

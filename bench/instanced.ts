@@ -162,7 +162,7 @@ export async function main(argv: string[]): Promise<number> {
     .sort()
     .filter((m) => !only || only.includes(m));
   const compute = Tessellator.create(device, bakeTables(64), { surface, flatBaseline: false });
-  const instanced = new InstancedTessellator(device, { surface: cc ? 'catmull-clark' : 'evalSurface' });
+  const instanced = new InstancedTessellator(device, { surface: cc ? 'lent-limit' : 'evalSurface' });
   const header =
     '| model | cage faces | patches | tessellator | tris drawn | build ms | lit pass ms | shadow pass ms | lit + 4 shadows ms | lit + 4 shadows per 1M tris | memory held |';
   const rule = '|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|';

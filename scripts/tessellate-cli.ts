@@ -410,7 +410,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   const dispData = d ? prepareDisplacement(cage, mesh, d.map, d.wrap) : undefined;
   const settings = d ? { scale: d.scale, midLevel: d.midLevel, enabled: true } : undefined;
   const tess = new InstancedTessellator(device, {
-    surface: acc ? 'acc' : cc ? 'catmull-clark' : 'evalSurface',
+    surface: acc ? 'acc' : cc ? 'lent-limit' : 'evalSurface',
     displacement: d !== undefined,
   });
   const ccSource = cc ? ccSurfaceTessellator(device, mesh, cc, dispData, settings) : undefined;

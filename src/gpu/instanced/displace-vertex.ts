@@ -7,8 +7,8 @@
  * 1. Data: nothing is packed twice. A LENDING compute Tessellator holds the displacement arenas
  *    (src/gpu/tess/displacement-map.ts: TESS_STATIC heightTexels, dispTri, TESS_CAGE cornerUvs, Params
  *    dispOn, dispScale, …) exactly as the compute tessellator uses them, plus the owners of every
- *    edge and vertex (TESS_STATIC triEdges, edgeOwner, vertexOwner). On the 'catmull-clark'
- *    surface the lender is the borrowed Catmull-Clark tessellator itself
+ *    edge and vertex (TESS_STATIC triEdges, edgeOwner, vertexOwner). On the exact limit
+ *    ('lent-limit') the lender is the borrowed Catmull-Clark tessellator itself
  *    (src/gpu/instanced/surface-cc.ts ccSurfaceTessellator(device, prepared, cc, displacement)); on Phong and ACC a
  *    minimal Phong tessellator (displacementLender: the smallest tables and output). Group 3 then
  *    holds: Phong, the lender's Params (uniform), static and cage (bindings 0–2); ACC, its patches
@@ -58,7 +58,7 @@ export function lenderFirstBinding(surface: InstancedSurfaceKind): number {
 export function instancedDisplaceWgsl(surface: InstancedSurfaceKind): string {
   const parts: string[] = [];
   // The Catmull-Clark surface module already has the Params struct and binds the lender.
-  if (surface !== 'catmull-clark') {
+  if (surface !== 'lent-limit') {
     const first = lenderFirstBinding(surface);
     parts.push(
       TESS_PARAMS.wgsl,

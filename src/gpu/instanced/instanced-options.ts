@@ -8,7 +8,7 @@ import type { FactorParams } from '../contract/tessellated-mesh.ts';
 /** How the vertex stage evaluates the surface: its own cage buffer through evalSurface (Phong),
  * AccPatches' control points, or the buffers a compute tessellator on the exact Catmull-Clark
  * limit lends it (src/gpu/surface/registry.ts instancedKind says which for each surface). */
-export type InstancedSurfaceKind = 'evalSurface' | 'acc' | 'catmull-clark';
+export type InstancedSurfaceKind = 'evalSurface' | 'acc' | 'lent-limit';
 
 export interface InstancedOptions {
   /** WGSL defining `fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint` (default: Phong,
@@ -18,7 +18,7 @@ export interface InstancedOptions {
    * 'acc': the ACC surfaces (Bezier, Gregory or Pm ACC, by the AccPatches handed to setMesh:
    * src/gpu/acc/patches.ts builds them from the cage, wgsl/acc/surface.wgsl evaluates them through
    * wgsl/instanced/surface-acc.wgsl), their two buffers bound in a fourth bind group (group 3) in
-   * every pass. 'catmull-clark': the exact limit surface, evaluated by the compute tessellator's
+   * every pass. 'lent-limit': the exact Catmull-Clark limit surface, evaluated by the compute tessellator's
    * wgsl/cc/surface.wgsl over the buffers of a Catmull-Clark Tessellator handed to setMesh
    * (src/gpu/instanced/surface-cc.ts: ccSurfaceTessellator makes one), bound in group 3; encodeLevels runs
    * its patch build first.

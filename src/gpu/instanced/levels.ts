@@ -96,7 +96,7 @@ export class InstancedLevels {
     this.depthFormat = opts.depthFormat ?? 'depth32float';
     this.sampleCount = opts.sampleCount ?? 1;
     this.acc = opts.surface === 'acc';
-    this.cc = opts.surface === 'catmull-clark';
+    this.cc = opts.surface === 'lent-limit';
     this.displaced = opts.displacement === true;
     // Storage buffers per stage: group 0's three (topology + patterns, cage, work) and the
     // surface's (ACC: 2; Catmull-Clark: the lending tessellator's static, cage and work) in the
@@ -116,7 +116,7 @@ export class InstancedLevels {
       : this.cc
         ? instancedCCSurfaceWgsl()
         : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
-    const kind = this.acc ? 'acc' : this.cc ? 'catmull-clark' : 'evalSurface';
+    const kind = this.acc ? 'acc' : this.cc ? 'lent-limit' : 'evalSurface';
     const vertexSurface = this.displaced ? instancedDisplaceWgsl(kind) : plainVertexWgsl;
     const code = (...parts: string[]) =>
       [

@@ -84,7 +84,7 @@ const catmullClark: SurfaceScheme = {
   exactLimit: true,
   splitsCreases: true,
   readsWork: true,
-  instancedKind: 'catmull-clark',
+  instancedKind: 'lent-limit',
   hasData: (data) => data.cc !== undefined,
   prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),
 };

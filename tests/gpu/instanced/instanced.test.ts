@@ -135,15 +135,15 @@ describe('instanced tessellator: storage buffers per stage', () => {
       /needs 3 storage buffers in the vertex stage and 4 in compute; this device allows 2 and 8/,
     );
     expect(() => new InstancedTessellator(device(4, 8), { surface: 'acc' })).toThrow(/needs 5 .* and 6 in compute/);
-    expect(() => new InstancedTessellator(device(5, 8), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 7 in compute/);
-    expect(() => new InstancedTessellator(device(undefined, 6), { surface: 'catmull-clark' })).toThrow(/needs 6 .* and 7 in compute/);
+    expect(() => new InstancedTessellator(device(5, 8), { surface: 'lent-limit' })).toThrow(/needs 6 .* and 7 in compute/);
+    expect(() => new InstancedTessellator(device(undefined, 6), { surface: 'lent-limit' })).toThrow(/needs 6 .* and 7 in compute/);
     // Displacement: the lender's static and cage arenas (on Catmull-Clark the surface's lender, already bound).
     expect(() => new InstancedTessellator(device(4, 8), { displacement: true })).toThrow(/needs 5 .* and 6 in compute/);
     expect(() => new InstancedTessellator(device(6, 8), { surface: 'acc', displacement: true })).toThrow(/needs 7 .* and 8 in compute/);
     expect(() => new InstancedTessellator(device(undefined, 7), { surface: 'acc', displacement: true })).toThrow(
       /needs 7 .* and 8 in compute/,
     );
-    expect(() => new InstancedTessellator(device(5, 8), { surface: 'catmull-clark', displacement: true })).toThrow(
+    expect(() => new InstancedTessellator(device(5, 8), { surface: 'lent-limit', displacement: true })).toThrow(
       /needs 6 .* and 7 in compute/,
     );
   });

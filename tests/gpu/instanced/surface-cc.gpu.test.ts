@@ -48,7 +48,7 @@ afterAll(() => {
 });
 
 async function instanced(): Promise<InstancedTessellator> {
-  tess ??= new InstancedTessellator(await getDevice(), { surface: 'catmull-clark' });
+  tess ??= new InstancedTessellator(await getDevice(), { surface: 'lent-limit' });
   return tess;
 }
 
