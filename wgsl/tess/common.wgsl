@@ -77,9 +77,10 @@ fn linePoint(s: u32, F: u32, k: u32) -> u32 {
 }
 
 // Point i of a line in the pattern frame: flipped frames read the line backwards as ONE − x.
+// (One call of linePoint, not one per branch: a compiler that inlines every call builds it once.)
 fn framedPoint(s: u32, F: u32, n: u32, flip: bool, i: u32) -> u32 {
-  if (flip) { return ONE - linePoint(s, F, n - i); }
-  return linePoint(s, F, i);
+  let x = linePoint(s, F, select(i, n - i, flip));
+  return select(x, ONE - x, flip);
 }
 
 // ---- mesh topology ---------------------------------------------------------------------

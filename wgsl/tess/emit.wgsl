@@ -52,33 +52,56 @@ fn edgeVertex(t: u32, edge: u32, flip: bool, framedIdx: u32, n: u32) -> u32 {
   return params.nSlots + work[params.offEdgeBase + edge] + k - 1u + select(0u, n - 1u, twinSide);
 }
 
-fn gridVertex(T: Tri, row: u32, col: u32) -> u32 {
-  let c = min(col, rowKept(T.first, row));
-  if (row == 0u) { return edgeVertex(T.t, triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, c, T.L.bottom.n); }
-  if (row == T.L.left.n) { return cornerSlot(T.t, T.L.f.c); }
-  if (c == 0u) { return edgeVertex(T.t, triEdge(T.t, T.L.f.left), T.L.f.flipLeft, row, T.L.left.n); }
-  return T.vertexBase + rowCum(T.first, row) - T.k0 + c - 1u;
-}
-
-// Inner chain point a of the gap strip: the bottom's points u_{nb−1} back to u_{k_0}, then the
-// row ends E_1..E_nl (= C).
-fn innerVertex(T: Tri, a: u32) -> u32 {
-  let tail = T.L.bottom.n - 1u - T.k0;
-  if (a <= tail) { return edgeVertex(T.t, triEdge(T.t, T.L.f.bottom), T.L.f.flipBottom, T.L.bottom.n - 1u - a, T.L.bottom.n); }
-  let j = a - tail;
-  return gridVertex(T, j, rowKept(T.first, j));
-}
-
-fn outerVertex(T: Tri, b: u32) -> u32 {
-  if (b == 0u) { return cornerSlot(T.t, T.L.f.b); }
-  if (b == T.L.right.n) { return cornerSlot(T.t, T.L.f.c); }
-  return edgeVertex(T.t, triEdge(T.t, T.L.f.right), T.L.f.flipRight, b, T.L.right.n);
-}
-
-// Point p of the strip polygon (wgsl/tess/pattern.wgsl stripPoint) as an output vertex.
-fn stripVertex(T: Tri, nI: u32, nO: u32, p: u32) -> u32 {
-  if (p <= nI) { return innerVertex(T, p); }
-  return outerVertex(T, nO - (p - nI));
+// The output vertex of one corner of a pattern triangle, named either as a grid point (row, col)
+// or as a strip point p of the gap strip (0..nI: the inner side, from the bottom edge's tail up
+// the clamp line to C; then the outer side, the right edge from C back to B at p = nI + nO).
+// The cases reduce in order, strip → grid → one of the three edge lines, so that each lookup
+// is written once: a shader compiler that inlines every call (SwiftShader's, which CI and the
+// headless runs use) then builds it once, not once per corner of each of the pass's four
+// triangle forms (the per-form calls made this pass 1.4 s of a page's pipeline build).
+//   grid (row, col), col clamped to the row's kept columns: row 0 is the bottom edge's line,
+//     row nl the apex C, column 0 the left edge's line, anything else an interior vertex;
+//   strip p ≤ tail: the bottom edge's point bottom.n − 1 − p (the tail right of the grid);
+//   strip tail < p ≤ nI: the end of grid row p − tail;
+//   strip p > nI: the right edge's point b = nO − (p − nI) (b = 0 is the corner B).
+fn patternVertex(T: Tri, nI: u32, nO: u32, isStrip: bool, x: u32, y: u32) -> u32 {
+  var line = 0u; // which edge line the point is on, when it is on one: 0 bottom, 1 left, 2 right
+  var k = 0u; // its index on that line, in the line's framed direction
+  var row = x;
+  var col = y;
+  var onGrid = !isStrip;
+  if (isStrip) {
+    let tail = T.L.bottom.n - 1u - T.k0;
+    if (x > nI) {
+      let b = nO - (x - nI);
+      if (b == 0u) { return cornerSlot(T.t, T.L.f.b); }
+      line = 2u;
+      k = b;
+    } else if (x <= tail) {
+      k = T.L.bottom.n - 1u - x;
+    } else {
+      row = x - tail;
+      col = rowKept(T.first, row);
+      onGrid = true;
+    }
+  }
+  if (onGrid) {
+    let c = min(col, rowKept(T.first, row));
+    if (row == 0u) {
+      k = c;
+    } else if (row == T.L.left.n) {
+      return cornerSlot(T.t, T.L.f.c);
+    } else if (c == 0u) {
+      line = 1u;
+      k = row;
+    } else {
+      return T.vertexBase + rowCum(T.first, row) - T.k0 + c - 1u;
+    }
+  }
+  let side = select(select(T.L.f.right, T.L.f.left, line == 1u), T.L.f.bottom, line == 0u);
+  let flip = select(select(T.L.f.flipRight, T.L.f.flipLeft, line == 1u), T.L.f.flipBottom, line == 0u);
+  let n = select(select(T.L.right.n, T.L.left.n, line == 1u), T.L.bottom.n, line == 0u);
+  return edgeVertex(T.t, triEdge(T.t, side), flip, k, n);
 }
 
 fn writeTriangle(index: u32, mirrored: bool, a: u32, b: u32, c: u32) {
@@ -98,10 +121,15 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
   let first = work[params.offTriRowBase + t];
   let T = Tri(t, L, first, rowKept(first, 0u), params.nSlots + edgeTotal() + work[params.offTriVertBase + t]);
   let nl = L.left.n;
-  let mirrored = L.f.mirrored;
   let grid = 2u * rowCum(first, nl) - T.k0; // grid triangles: 2·S_nl + k_nl − k_0, k_nl = 0
+  let tail = L.bottom.n - 1u - T.k0;
+  let nI = tail + nl;
+  let nO = L.right.n;
+  // The triangle's three corners as patternVertex names them (x, y), then one lookup each.
+  var isStrip = true;
+  var xs = vec3<u32>(0u);
+  var ys = vec3<u32>(0u);
   if (local < grid) {
-    // The row strip: the last j in [0, nl − 1] with 2·S_j + k_j − k_0 ≤ local.
     var lo = 0u;
     var hi = nl - 1u;
     for (var guard = 0u; guard < 12u && lo < hi; guard++) {
@@ -110,8 +138,6 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
     }
     let j = lo;
     let inStrip = local - (2u * rowCum(first, j) + rowKept(first, j) - T.k0);
-    // clamped.ts emits, for column i, a lower triangle while i < k_j and an upper one while
-    // i < k_{j+1}: pairs first, then the longer row's remainder.
     let k0 = rowKept(first, j);
     let k1 = rowKept(first, j + 1u);
     let both = min(k0, k1);
@@ -121,34 +147,33 @@ fn triangles(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_in
       i = both + (inStrip - 2u * both);
       lower = k0 > k1;
     }
+    isStrip = false;
     if (lower) {
-      writeTriangle(r, mirrored, gridVertex(T, j, i), gridVertex(T, j, i + 1u), gridVertex(T, j + 1u, i + 1u));
+      xs = vec3<u32>(j, j, j + 1u);
+      ys = vec3<u32>(i, i + 1u, i + 1u);
     } else {
-      writeTriangle(r, mirrored, gridVertex(T, j, i), gridVertex(T, j + 1u, i + 1u), gridVertex(T, j + 1u, i));
+      xs = vec3<u32>(j, j + 1u, j + 1u);
+      ys = vec3<u32>(i, i + 1u, i);
     }
-    return;
-  }
-  let g = local - grid;
-  let mergeBase = params.offGapMoves + t * gapMoveWords();
-  let tail = L.bottom.n - 1u - T.k0;
-  let nI = tail + nl;
-  let nO = L.right.n;
-  if (nI + nO + 1u <= STRIP_DP_VERTICES) {
-    // A small strip: triangle g of its exact triangulation, (i, j, m) in 16 bits (wgsl/tess/plan.wgsl).
-    let rec = (work[mergeBase + (g >> 1u)] >> (16u * (g & 1u))) & 0xffffu;
-    writeTriangle(r, mirrored, stripVertex(T, nI, nO, rec & 15u), stripVertex(T, nI, nO, (rec >> 4u) & 15u), stripVertex(T, nI, nO, (rec >> 8u) & 15u));
-    return;
-  }
-  // A large strip: move g of the gap matching, as the plan pass stored it (one bit a move, 1 =
-  // inner); the moves before it say where the front edge I_a–O_b is.
-  var a = 0u;
-  for (var m = 0u; m < (g >> 5u); m++) { a += countOneBits(work[mergeBase + m]); }
-  let word = work[mergeBase + (g >> 5u)];
-  a += countOneBits(word & ((1u << (g & 31u)) - 1u)); // g & 31 < 32, so the shift is defined
-  let b = g - a;
-  if (((word >> (g & 31u)) & 1u) == 1u) {
-    writeTriangle(r, mirrored, innerVertex(T, a), outerVertex(T, b), innerVertex(T, a + 1u));
   } else {
-    writeTriangle(r, mirrored, innerVertex(T, a), outerVertex(T, b), outerVertex(T, b + 1u));
+    let g = local - grid;
+    let mergeBase = params.offGapMoves + t * gapMoveWords();
+    if (nI + nO + 1u <= STRIP_DP_VERTICES) {
+      let rec = (work[mergeBase + (g >> 1u)] >> (16u * (g & 1u))) & 0xffffu;
+      xs = vec3<u32>(rec & 15u, (rec >> 4u) & 15u, (rec >> 8u) & 15u);
+    } else {
+      var a = 0u;
+      for (var m = 0u; m < (g >> 5u); m++) { a += countOneBits(work[mergeBase + m]); }
+      let word = work[mergeBase + (g >> 5u)];
+      a += countOneBits(word & ((1u << (g & 31u)) - 1u)); // g & 31 < 32, so the shift is defined
+      let b = g - a;
+      // inner move: (inner a, outer b, inner a+1); outer move: (inner a, outer b, outer b+1);
+      // outer point b is strip point nI + nO − b
+      let innerMove = ((word >> (g & 31u)) & 1u) == 1u;
+      xs = vec3<u32>(a, nI + nO - b, select(nI + nO - b - 1u, a + 1u, innerMove));
+    }
   }
+  var v = vec3<u32>(0u);
+  for (var c = 0u; c < 3u; c++) { v[c] = patternVertex(T, nI, nO, isStrip, xs[c], ys[c]); }
+  writeTriangle(r, L.f.mirrored, v.x, v.y, v.z);
 }

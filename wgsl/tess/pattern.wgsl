@@ -118,7 +118,12 @@ fn obtuseAt(p: vec2<i32>, q: vec2<i32>, r: vec2<i32>) -> u32 {
 }
 
 fn capLevel(p: vec2<i32>, q: vec2<i32>, r: vec2<i32>) -> u32 {
-  return max(obtuseAt(p, q, r), max(obtuseAt(q, r, p), obtuseAt(r, p, q)));
+  // max(obtuseAt(p, q, r), obtuseAt(q, r, p), obtuseAt(r, p, q)) as a loop: one copy of
+  // obtuseAt for a compiler that inlines every call (see gapStep).
+  var pts = array<vec2<i32>, 3>(p, q, r);
+  var level = 0u;
+  for (var i = 0u; i < 3u; i++) { level = max(level, obtuseAt(pts[i], pts[(i + 1u) % 3u], pts[(i + 2u) % 3u])); }
+  return level;
 }
 
 // Squared distance of the halved difference: ≤ 2^31, exact in u32 (clamped.ts halfDist2).
@@ -179,23 +184,36 @@ struct GapStep { inner: bool, nextLi: u32, nextLo: u32 }
 // clamped.ts gapStepInner on the window: advance the inner chain from front edge I_a–O_b? The
 // least cap level of the allowed moves at (a + 1, b) and (a, b + 1) is clamped.ts bestLevel.
 // li, lo: the cap levels of this step's inner and outer move if the last step computed them.
+// The six candidate triangles' corners in the window [i0, i1, i2, o0, o1, o2], three 3-bit
+// indices each, in the order t3, t4, t5, t6 (the triangles after an inner or an outer move), li, lo
+// (the two triangles of this move): (i1 o0 i2), (i1 o0 o1), (i0 o1 i1), (i0 o1 o2), (i0 o0 i1), (i0 o0 o1).
+const GAP_CANDIDATES = array<u32, 6>(1u | (3u << 3u) | (2u << 6u), 1u | (3u << 3u) | (4u << 6u), 0u | (4u << 3u) | (1u << 6u),
+                                     0u | (4u << 3u) | (5u << 6u), 0u | (3u << 3u) | (1u << 6u), 0u | (3u << 3u) | (4u << 6u));
+
 fn gapStep(G: Gap, a: u32, b: u32, w: GapWindow, knownLi: u32, knownLo: u32) -> GapStep {
   let okInner = gapMoveOk(G, a, b, true);
   let okOuter = gapMoveOk(G, a, b, false);
   if (!okInner) { return GapStep(false, NO_LEVEL, NO_LEVEL); }
   if (!okOuter) { return GapStep(true, NO_LEVEL, NO_LEVEL); }
-  let li = select(knownLi, capLevel(w.i0, w.o0, w.i1), knownLi == NO_LEVEL);
-  let lo = select(knownLo, capLevel(w.i0, w.o0, w.o1), knownLo == NO_LEVEL);
-  // After the inner move, from (a + 1, b): its moves (I_{a+1}, O_b, I_{a+2}), (I_{a+1}, O_b, O_{b+1}).
-  var t3 = NO_LEVEL;
-  var t4 = NO_LEVEL;
-  if (gapMoveOk(G, a + 1u, b, true)) { t3 = capLevel(w.i1, w.o0, w.i2); }
-  if (gapMoveOk(G, a + 1u, b, false)) { t4 = capLevel(w.i1, w.o0, w.o1); }
-  // After the outer move, from (a, b + 1): (I_a, O_{b+1}, I_{a+1}), (I_a, O_{b+1}, O_{b+2}).
-  var t5 = NO_LEVEL;
-  var t6 = NO_LEVEL;
-  if (gapMoveOk(G, a, b + 1u, true)) { t5 = capLevel(w.i0, w.o1, w.i1); }
-  if (gapMoveOk(G, a, b + 1u, false)) { t6 = capLevel(w.i0, w.o1, w.o2); }
+  // The levels of the candidates that are needed (NO_LEVEL for the others), from one capLevel
+  // in a loop rather than six calls: a shader compiler that inlines every call (SwiftShader's,
+  // which CI and the headless runs use) built 18 copies of obtuseAt into the plan pass.
+  var want = array<bool, 6>(gapMoveOk(G, a + 1u, b, true), gapMoveOk(G, a + 1u, b, false), gapMoveOk(G, a, b + 1u, true),
+                            gapMoveOk(G, a, b + 1u, false), knownLi == NO_LEVEL, knownLo == NO_LEVEL);
+  var pts = array<vec2<i32>, 6>(w.i0, w.i1, w.i2, w.o0, w.o1, w.o2);
+  var level = array<u32, 6>(NO_LEVEL, NO_LEVEL, NO_LEVEL, NO_LEVEL, knownLi, knownLo);
+  for (var k = 0u; k < 6u; k++) {
+    if (want[k]) {
+      let c = GAP_CANDIDATES[k];
+      level[k] = capLevel(pts[c & 7u], pts[(c >> 3u) & 7u], pts[(c >> 6u) & 7u]);
+    }
+  }
+  let li = level[4];
+  let lo = level[5];
+  let t3 = level[0];
+  let t4 = level[1];
+  let t5 = level[2];
+  let t6 = level[3];
   let bi = min(t3, t4);
   let bo = min(t5, t6);
   let si = max(li, select(bi, 0u, bi == NO_LEVEL));

@@ -18,28 +18,34 @@
 fn corners(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let v = flatIndex(wid, lid);
   if (v >= params.nSlots || !emitEnabled()) { return; }
+  // One call of writeSplitVertex for every case (its header says why): the position's side and
+  // the normal's side, the same but at an extra sector.
+  var tPos: u32;
+  var wPos = vec3<u32>(0u);
+  var tN: u32;
+  var wN = vec3<u32>(0u);
   if (v >= params.nVerts) {
     // An extra sector: the normal through its own triangle, the position through the vertex's owner.
     let sector = staticBuf[params.offSlotOwner + v - params.nVerts];
     let ts = ownerWord_tri(sector);
     let cv = triVert(ts, ownerWord_corner(sector));
     let owner = staticBuf[params.offVertexOwner + cv];
-    var wPos = vec3<u32>(0u);
+    tPos = ownerWord_tri(owner);
     wPos[ownerWord_corner(owner)] = ONE;
-    var wN = vec3<u32>(0u);
+    tN = ts;
     wN[ownerWord_corner(sector)] = ONE;
-    writeSplitVertex(v, ownerWord_tri(owner), wPos, ts, wN);
-    return;
+  } else {
+    let owner = staticBuf[params.offVertexOwner + v];
+    if (owner == NO_OWNER) {
+      writeUnusedVertex(v, v); // not used by any face with a surface
+      return;
+    }
+    tPos = ownerWord_tri(owner);
+    wPos[ownerWord_corner(owner)] = ONE;
+    tN = tPos;
+    wN = wPos;
   }
-  let owner = staticBuf[params.offVertexOwner + v];
-  if (owner == NO_OWNER) {
-    writeUnusedVertex(v, v); // not used by any face with a surface
-    return;
-  }
-  let t = ownerWord_tri(owner);
-  var w = vec3<u32>(0u);
-  w[ownerWord_corner(owner)] = ONE;
-  writeVertex(v, t, w);
+  writeSplitVertex(v, tPos, wPos, tN, wN);
 }
 
 @compute @workgroup_size(WORKGROUP_SIZE)
@@ -55,12 +61,15 @@ fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index)
   let owner = staticBuf[params.offEdgeOwner + e];
   let t = ownerWord_tri(owner);
   let w = edgeWeights(e, owner, x);
+  // The normal's side: the owner's, or on an edge's second copy its twin's (one call site).
+  var tN = t;
+  var wN = w;
   if (twinSide) {
     let twin = staticBuf[params.offEdgeTwin + e];
-    writeSplitVertex(params.nSlots + q, t, w, ownerWord_tri(twin), edgeWeights(e, twin, x));
-  } else {
-    writeVertex(params.nSlots + q, t, w);
+    tN = ownerWord_tri(twin);
+    wN = edgeWeights(e, twin, x);
   }
+  writeSplitVertex(params.nSlots + q, t, w, tN, wN);
 }
 
 // The weights of edge e's point x (a line coordinate along the edge's canonical direction) in
