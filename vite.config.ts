@@ -17,7 +17,7 @@ function pages(): Record<string, string> {
 }
 
 export default defineConfig({
-  base: './/',
+  base: './',
   build: {
     target: 'es2022',
     rollupOptions: { input: pages() },

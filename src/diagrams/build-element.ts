@@ -12,7 +12,7 @@ import { resolve } from 'node:path';
 import { build } from 'vite';
 
 const root = resolve(import.meta.dirname, '../..');
-process.env.VITE_TESS_DIAGRAMS_BASE = './/';
+process.env.VITE_TESS_DIAGRAMS_BASE = './';
 
 await build({
   configFile: false,

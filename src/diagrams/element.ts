@@ -19,10 +19,10 @@ const ALL_KEYS = Array.from(new Set([...knownKeys('line'), ...knownKeys('triangl
 /** Where the pages live, seen from this module (dev server: /src/diagrams/; build: assets/). */
 function defaultBase(): string {
   try {
-    const rel = import.meta.env?.DEV ? '../../diagrams/' : (import.meta.env?.VITE_TESS_DIAGRAMS_BASE ?? './/');
+    const rel = import.meta.env?.DEV ? '../../diagrams/' : (import.meta.env?.VITE_TESS_DIAGRAMS_BASE ?? '../diagrams/');
     return new URL(rel, import.meta.url).href;
   } catch {
-    return './/';
+    return './';
   }
 }
 
