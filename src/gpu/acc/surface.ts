@@ -7,7 +7,7 @@
 import type { Cage } from '../../mesh/types.ts';
 import { KIND_REGULAR, type AccOptions, type AccScheme } from '../../subdiv/acc.ts';
 import { AccPatches, accFaceParam } from './patches.ts';
-import { ACC_TRI_WORD } from '../contract/tess.ts';
+import { ACC_TRI_CORNERS, ACC_TRI_WORD } from '../contract/tess.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
 export interface AccSurface {
@@ -26,15 +26,16 @@ export function prepareAccSurface(device: GPUDevice, cage: Cage, mesh: PreparedM
 export function accTriangleWords(mesh: PreparedMesh, cage: Cage): Uint32Array {
   const out = new Uint32Array(mesh.triangleCount);
   for (let t = 0; t < mesh.triangleCount; t++) {
-    let corners = 0,
-      face = 0;
+    let face = 0;
+    const uv: number[] = [];
     for (let i = 0; i < 3; i++) {
       const w: [number, number, number] = [0, 0, 0];
       w[i] = 1;
       const [f, u, v] = accFaceParam(mesh, cage, t, w);
       face = f;
-      corners |= (u << (2 * i)) | (v << (2 * i + 1));
+      uv.push(u, v);
     }
+    const corners = ACC_TRI_CORNERS.pack({ u0: uv[0], v0: uv[1], u1: uv[2], v1: uv[3], u2: uv[4], v2: uv[5] });
     out[t] = ACC_TRI_WORD.pack({ corners, face });
   }
   return out;
