@@ -12,7 +12,9 @@ const port = Number(process.env.E2E_PORT ?? 4173);
 export default defineConfig({
   testDir: './e2e',
   fullyParallel: false,
-  workers: 1,
+  // Two workers: a page's time is mostly its pipelines compiling on SwiftShader, one CPU thread
+  // per page, so two pages at once use both cores of a CI machine (the suite took 25 min with one).
+  workers: 2,
   retries: process.env.CI ? 1 : 0,
   timeout: 60_000,
   forbidOnly: !!process.env.CI,
