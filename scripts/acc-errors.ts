@@ -230,7 +230,7 @@ export async function main(argv: string[]): Promise<number> {
       console.log(
         `| ${name}${warn} | ${scheme} | ${pct(e.maxP)} | ${pct(e.rmsP)} | ${e.maxN.toFixed(3)}° | ${e.rmsN.toFixed(3)}° | ${ppp} | ${kindText} | ${c.maxGap.toExponential(1)} | ${c.maxJumpDeg.toFixed(4)}° | ${e.samples}${e.nan ? ` (${e.nan} NaN)` : ''} | ${accCell} | ${ccCell} |`,
       );
-      if (scheme === 'pm-acc') console.error(`${name}: exact reference ${(exactMs / 1000).toFixed(1)} s`);
+      if (scheme === ACC_SCHEMES.at(-1)) console.error(`${name}: exact reference ${(exactMs / 1000).toFixed(1)} s`);
     }
   }
   if (gpu) {

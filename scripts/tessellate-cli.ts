@@ -63,8 +63,8 @@ import { AccPatches } from '../src/gpu/acc/patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { displacementLender } from '../src/gpu/instanced/displace-vertex.ts';
 import { prepareDisplacement } from '../src/gpu/tess/displacement-map.ts';
-import { ACC_SCHEMES, AccError, type AccScheme } from '../src/subdiv/acc.ts';
-import { isAccSurface, type SurfaceId as Surface } from '../src/gpu/surface/registry.ts';
+import { AccError } from '../src/subdiv/acc.ts';
+import { isAccSurface, isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc/surface.ts';
 import { demoView, displayedDistancePx, limitDistancePx } from './limit-distance.ts';
 
@@ -194,13 +194,8 @@ function parse(argv: string[]) {
   const instanced = tessellator === 'instanced';
   if (instanced) {
     if (o.mode === 'fixed') throw new UsageError('--tessellator instanced takes --level L (a power of two), not --fixed');
-    if (
-      surface !== undefined &&
-      surface !== 'phong' &&
-      surface !== 'catmull-clark' &&
-      !(ACC_SCHEMES as readonly string[]).includes(surface)
-    )
-      throw new UsageError(`--tessellator instanced: --surface phong, catmull-clark, ${ACC_SCHEMES.join(', ')} (got ${surface})`);
+    if (surface !== undefined && !isSurfaceId(surface))
+      throw new UsageError(`--tessellator instanced: --surface ${SURFACE_IDS.join(', ')} (got ${surface})`);
     if (o.flatBaseline) throw new UsageError('--flat-baseline applies to the compute tessellator only');
   } else if (level !== undefined)
     throw new UsageError('--level applies to --tessellator instanced (the compute tessellator takes --fixed F)');
@@ -208,16 +203,15 @@ function parse(argv: string[]) {
     throw new UsageError(instanced ? 'give exactly one of --level L or --adaptive' : 'give exactly one of --fixed F or --adaptive');
   if (!out && !stats) throw new UsageError('--out (or --stats) is required');
   surface ??= instanced ? 'phong' : 'catmull-clark';
-  const isAcc = (ACC_SCHEMES as readonly string[]).includes(surface);
-  const acc = instanced && isAcc ? (surface as AccScheme) : undefined;
-  if (surface !== 'phong' && surface !== 'catmull-clark' && !isAcc)
-    throw new UsageError(`unknown surface '${surface}' (catmull-clark, phong, ${ACC_SCHEMES.join(', ')})`);
+  if (!isSurfaceId(surface)) throw new UsageError(`unknown surface '${surface}' (${SURFACE_IDS.join(', ')})`);
+  const scheme = surfaceScheme(surface);
+  const acc = instanced && isAccSurface(surface) ? surface : undefined;
   // The instanced tessellator takes its ACC scheme as `acc`; the compute tessellator as its surface.
-  o.surface = acc ? 'phong' : (surface as Surface);
+  o.surface = acc ? 'phong' : surface;
   if ((demoView || limitPx) && instanced) throw new UsageError('--demo-view and --limit-px apply to the compute tessellator');
-  if (limitPx && surface !== 'catmull-clark') throw new UsageError('--limit-px measures against the exact Catmull-Clark surface only');
+  if (limitPx && !scheme.exactLimit) throw new UsageError('--limit-px measures against the exact Catmull-Clark surface only');
   if (demoView && (o.eye || o.target)) throw new UsageError('--demo-view is a camera: not with --eye or --target');
-  if (o.flatBaseline && surface !== 'catmull-clark') throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
+  if (o.flatBaseline && !scheme.flatBaseline) throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
   if ((o.mode === 'fixed' || level !== undefined) && (o.lodScale || o.eye || o.target))
     throw new UsageError('--lod, --eye and --target apply to --adaptive only');
   if (displacement === undefined && (scale !== undefined || argv.includes('--mid') || argv.includes('--wrap')))
@@ -237,7 +231,7 @@ function parse(argv: string[]) {
     demoView,
     limitPx,
     disp,
-    instancedCC: instanced && surface === 'catmull-clark',
+    instancedCC: instanced && scheme.instancedKind === 'lent-limit',
   };
 }
 
@@ -293,7 +287,7 @@ export async function main(argv: string[]): Promise<number> {
   }
   const mesh = prepareMesh(cage);
   const started = performance.now();
-  const cc = args.o.surface === 'catmull-clark' ? prepareCatmullClark(cage, mesh) : undefined;
+  const cc = args.o.surface && surfaceScheme(args.o.surface).patchBuild === 'refinement' ? prepareCatmullClark(cage, mesh) : undefined;
   let acc: AccSurface | undefined;
   try {
     acc = args.o.surface && isAccSurface(args.o.surface) ? prepareAccSurface(device, cage, mesh, args.o.surface) : undefined;

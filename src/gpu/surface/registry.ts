@@ -52,6 +52,9 @@ export interface SurfaceScheme {
   readonly splitsCreases: boolean;
   /** Its evaluator reads the tessellator's work arena (the patch build's output). */
   readonly readsWork: boolean;
+  /** Its evaluator blends from the flat triangle of the corners' limit points where the tess
+   * factors are low, when TessellatorOptions.flatBaseline asks (the other surfaces ignore it). */
+  readonly flatBaseline: boolean;
   /** How the instanced tessellator's vertex stage evaluates it: its own cage buffer (evalSurface),
    * AccPatches' control points, or the buffers of a compute tessellator on the exact limit. */
   readonly instancedKind: InstancedSurfaceKind;
@@ -71,6 +74,7 @@ const phong: SurfaceScheme = {
   exactLimit: false,
   splitsCreases: false,
   readsWork: false,
+  flatBaseline: false,
   instancedKind: 'evalSurface',
   hasData: () => true,
   prepare: () => ({}),
@@ -84,6 +88,7 @@ const catmullClark: SurfaceScheme = {
   exactLimit: true,
   splitsCreases: true,
   readsWork: true,
+  flatBaseline: true,
   instancedKind: 'lent-limit',
   hasData: (data) => data.cc !== undefined,
   prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),
@@ -100,6 +105,7 @@ function accScheme(scheme: AccScheme): SurfaceScheme {
     exactLimit: false,
     splitsCreases: false,
     readsWork: false,
+    flatBaseline: false,
     instancedKind: 'acc',
     hasData: (data) => data.acc?.patches.scheme === scheme,
     prepare: (device, cage, mesh) => ({ acc: prepareAccSurface(device, cage, mesh, scheme) }),

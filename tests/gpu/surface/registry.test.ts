@@ -30,9 +30,14 @@ const NAME_BRANCH =
   /(===|!==)\s*'(catmull-clark|phong|bezier-acc|gregory-acc|pm-acc)'|'(catmull-clark|phong|bezier-acc|gregory-acc|pm-acc)'\s*(===|!==)|case '(catmull-clark|phong|bezier-acc|gregory-acc|pm-acc)'/g;
 
 /** Files that still compare a surface's name, and how many times: none. Each count may only fall;
- * a file not listed may not start. The CPU yardsticks in src/subdiv are the schemes themselves (the
+ * a file not listed may not start (src/, scripts/ and bench/ are read). The CPU yardsticks in src/subdiv are the schemes themselves (the
  * ACC module choosing among its own three variants), not a consumer of them, and are left out. */
-const NOT_YET: Record<string, number> = {};
+const NOT_YET: Record<string, number> = {
+  // The benchmarks' own surface lists (their tables' columns), not yet asked of the registry.
+  'bench/bench.ts': 4,
+  'bench/instanced-lod.ts': 4,
+  'bench/instanced.ts': 3,
+};
 
 describe('the surface registry', () => {
   it('declares every surface once, with a name and an evaluator of evalSurface', () => {
@@ -82,7 +87,7 @@ describe('the surface registry', () => {
 
 describe('no module outside the registry branches on a surface name', () => {
   const found: Record<string, number> = {};
-  for (const f of sources(join(ROOT, 'src'))) {
+  for (const f of ['src', 'scripts', 'bench'].flatMap((d) => sources(join(ROOT, d)))) {
     const rel = relative(ROOT, f);
     if (rel === 'src/gpu/surface/registry.ts' || rel.startsWith('src/subdiv/')) continue;
     // Comments may name surfaces; only code counts.
