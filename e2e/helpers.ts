@@ -11,9 +11,12 @@ export function collectErrors(page: Page): string[] {
   return errors;
 }
 
-/** The page has drawn its first complete frame of the current model. */
+/** The page has drawn its first complete frame of the current model. A correctness check, not a
+ * speed one: on SwiftShader a page's first frame waits for its pipelines to compile on one CPU
+ * thread, and with two test workers on two cores (playwright.config.ts) a view that compiles the
+ * exact evaluator twice (the error views) took over 45 s at the start of a run. */
 export async function ready(page: Page): Promise<void> {
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 45_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 90_000 });
 }
 
 /** Drop a file on the page the way a user's drag and drop does. */
