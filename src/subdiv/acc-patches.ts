@@ -17,6 +17,7 @@ import {
   KIND_PM_TRI_LS,
   KIND_REGULAR,
   SECTOR_CONE,
+  unpackSector,
   SECTOR_CORNER,
   SECTOR_CREASE,
   TRI_FACE,
@@ -82,7 +83,7 @@ export interface CornerInfo {
  * diagonal D is the midpoint of its other two vertices (Pm, nvmesh) instead of its centroid.
  */
 export function cornerInfo(T: AccTopology, P: ArrayLike<number>, vert: number, rot: number, midpointRule: boolean, sector = 0): CornerInfo {
-  const type = sector & 3;
+  const type = unpackSector(sector).kind;
   if (type === SECTOR_CREASE || type === SECTOR_CORNER) return sectorCornerInfo(T, P, vert, rot, midpointRule, sector);
   const o = T.ringOffs[vert],
     n = (T.ringOffs[vert + 1] - o) / 2;
@@ -175,9 +176,7 @@ function sectorCornerInfo(
 ): CornerInfo {
   const o = T.ringOffs[vert],
     n = (T.ringOffs[vert + 1] - o) / 2;
-  const type = sector & 3,
-    k = (sector >>> 2) & 0x3fff,
-    a = sector >>> 16;
+  const { kind: type, k, a } = unpackSector(sector);
   const K = sectorConstants(type, k);
   const pt = (i: number): V3 => [P[3 * i], P[3 * i + 1], P[3 * i + 2]];
   const v = pt(vert);

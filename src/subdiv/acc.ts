@@ -86,7 +86,7 @@
  *               opposite v (quad) or TRI_FACE (triangle; its D_i follows the scheme's rule).
  *               n = the number of edges: a boundary vertex has one edge more than faces, and its
  *               last d is NO_FACE (the ring starts at its leading boundary edge).
- *     sectors   1 u32 per patch corner (4 per patch): type | k << 2 | a << 16, type SECTOR_SMOOTH
+ *     sectors   1 u32 per patch corner (4 per patch): packSector(type, k, a), type SECTOR_SMOOTH
  *               (the whole cyclic ring), SECTOR_CREASE or SECTOR_CORNER: the corner's sector is ring
  *               edges a .. a+k (mod n) and ring faces a .. a+k−1; see "Boundaries and creases".
  *     Ring convention (OpenSubdiv's): face i contains the directed edges v→e_i and
@@ -135,6 +135,32 @@ export const SECTOR_CREASE = 1;
 export const SECTOR_CORNER = 2;
 /** An infinitely sharp vertex with fewer than 2 sharp edges (a cone point): the smooth ring, p = v. */
 export const SECTOR_CONE = 3;
+
+/** A patch corner's sector word (`sectors`), its fields as [lowest bit, width]: the kind
+ * (SECTOR_*), the sector's size k in faces and its first ring edge a. The one layout of the word:
+ * packSector and unpackSector read it here, and the GPU's declaration of the same word
+ * (src/gpu/contract/acc.ts ACC_SECTOR_WORD) is made from it. */
+export const SECTOR_WORD_FIELDS = { kind: [0, 2], k: [2, 14], a: [16, 16] } as const;
+
+type SectorField = keyof typeof SECTOR_WORD_FIELDS;
+
+/** The sector word of (kind, k, a); throws if a value does not fit its field. */
+export function packSector(kind: number, k: number, a: number): number {
+  const values: Record<SectorField, number> = { kind, k, a };
+  let word = 0;
+  for (const [f, [at, bits]] of Object.entries(SECTOR_WORD_FIELDS) as [SectorField, readonly [number, number]][]) {
+    if (!Number.isInteger(values[f]) || values[f] < 0 || values[f] >= 2 ** bits)
+      throw new AccError(`a sector's ${f} = ${values[f]} does not fit its ${bits} bits`);
+    word += values[f] * 2 ** at;
+  }
+  return word;
+}
+
+/** The fields of a sector word (packSector's inverse). */
+export function unpackSector(word: number): Record<SectorField, number> {
+  const field = ([at, bits]: readonly [number, number]) => Math.floor(word / 2 ** at) % 2 ** bits;
+  return { kind: field(SECTOR_WORD_FIELDS.kind), k: field(SECTOR_WORD_FIELDS.k), a: field(SECTOR_WORD_FIELDS.a) };
+}
 
 export class AccError extends Error {
   constructor(message: string) {
@@ -275,7 +301,7 @@ export interface AccTopology {
   corners: Uint32Array;
   ringOffs: Uint32Array;
   ringData: Uint32Array;
-  /** 4 per patch: the corner's sector, type | k << 2 | a << 16 (SECTOR_*). */
+  /** 4 per patch: the corner's sector, packSector(type, k, a) (SECTOR_*). */
   sectors: Uint32Array;
   /** Largest crease / corner sector (faces). */
   maxSector: number;
@@ -401,7 +427,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
       const quadFace = (i: number) => ringData[o + n + (i % n)] !== TRI_FACE;
       const type = vType[v];
       if (type === SECTOR_SMOOTH || type === SECTOR_CONE) {
-        sectors[4 * f + c] = type;
+        sectors[4 * f + c] = packSector(type, 0, 0);
         let ok = type === SECTOR_SMOOTH && n === 4 && !edgeSharp[v].some((x) => x);
         for (let i = 0; ok && i < n; i++) if (!quadFace(i)) ok = false;
         if (!ok) regular = false;
@@ -412,7 +438,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
       while (!edgeSharp[v][a]) a = (a + n - 1) % n;
       let k = 1;
       while (!edgeSharp[v][(a + k) % n]) k++;
-      sectors[4 * f + c] = type | (k << 2) | (a << 16);
+      sectors[4 * f + c] = packSector(type, k, a);
       maxSector = Math.max(maxSector, k);
       let ok = type === SECTOR_CREASE ? k === 2 : k === 1;
       for (let i = 0; ok && i < k; i++) if (!quadFace(a + i)) ok = false;

@@ -7,6 +7,7 @@
  */
 import { defineArena, defineBindGroup, defineBits } from './define.ts';
 import { defineStruct } from './layout.ts';
+import { SECTOR_WORD_FIELDS } from '../../subdiv/acc.ts';
 
 /** The sections of the ACC build's static words (src/subdiv/acc.ts has their layouts). */
 export type AccSection = 'corners' | 'ringOffs' | 'ringData' | 'valOffs' | 'valData' | 'sectors' | 'secOffs' | 'secData' | 'order';
@@ -45,10 +46,10 @@ export const ACC_BUILD_GROUP = defineBindGroup(0, {
 });
 
 /**
- * A patch corner's sector (ACC_STATIC `sectors`, src/subdiv/acc.ts packs it): its kind (SECTOR_*
+ * A patch corner's sector (ACC_STATIC `sectors`; its fields are src/subdiv/acc.ts SECTOR_WORD_FIELDS, which packs it): its kind (SECTOR_*
  * of src/subdiv/acc.ts: smooth, crease, corner, cone), its size k and the a of its constants.
  */
-export const ACC_SECTOR_WORD = defineBits('AccSectorWord', { kind: [0, 2], k: [2, 14], a: [16, 16] });
+export const ACC_SECTOR_WORD = defineBits('AccSectorWord', SECTOR_WORD_FIELDS);
 
 /**
  * The ACC error pass's own bindings (wgsl/acc/heat.wgsl, src/gpu/acc/heat.ts), in group 0 after the
