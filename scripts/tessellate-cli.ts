@@ -235,7 +235,15 @@ function parse(argv: string[]) {
   };
 }
 
-export async function main(argv: string[]): Promise<number> {
+/** A device lent by the caller, with its adapter's name: main runs on it and leaves it alive. The
+ * CLI tests run many cases in one process on one lent device, so each pipeline compiles once
+ * (tests/support/tessellate-cli.ts). */
+export interface LentDevice {
+  device: GPUDevice;
+  adapterName: string;
+}
+
+export async function main(argv: string[], lent?: LentDevice): Promise<number> {
   let args: ReturnType<typeof parse>;
   let cage: ReturnType<typeof loadCage>['cage'];
   try {
@@ -267,7 +275,7 @@ export async function main(argv: string[]): Promise<number> {
   let adapterName: string;
   try {
     // --stats reads GPU timestamps: unquantised, as the benchmark reads them.
-    ({ device, adapterName } = await createNodeDevice(args.stats ? ['disable-dawn-features=timestamp_quantization'] : []));
+    ({ device, adapterName } = lent ?? (await createNodeDevice(args.stats ? ['disable-dawn-features=timestamp_quantization'] : [])));
   } catch (e) {
     // No GPU: run again on SwiftShader, if it is installed.
     if (!process.env.VK_ICD_FILENAMES && existsSync(SWIFTSHADER_ICD)) {
@@ -280,9 +288,12 @@ export async function main(argv: string[]): Promise<number> {
     console.error(`tessellate: ${(e as Error).message}`);
     return 1;
   }
+  const release = () => {
+    if (!lent) device.destroy();
+  };
   if (args.instanced) {
     const code = await runInstanced(device, adapterName, cage, args);
-    device.destroy();
+    release();
     return code;
   }
   const mesh = prepareMesh(cage);
@@ -294,7 +305,7 @@ export async function main(argv: string[]): Promise<number> {
   } catch (e) {
     if (!(e instanceof AccError)) throw e;
     console.error(`tessellate: ${args.model}: ${e.message}`);
-    device.destroy();
+    release();
     return 2;
   }
   const cpuPrepMs = performance.now() - started;
@@ -349,7 +360,7 @@ export async function main(argv: string[]): Promise<number> {
   console.error(
     `tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
-  device.destroy();
+  release();
   return 0;
 }
 
