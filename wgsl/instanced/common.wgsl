@@ -30,15 +30,12 @@
 // InstancedOptions.surfaceWgsl). A quad patch's (u,v) maps to its two cage triangles exactly as
 // src/gpu/tess/face-params.ts inverts it, so those surfaces see the same face parameter.
 
-@group(0) @binding(0) var<uniform> params: InstParams;
-@group(0) @binding(1) var<storage, read> staticBuf: array<u32>;
-@group(0) @binding(2) var<storage, read> cageBuf: array<f32>;
+// The bindings (params, staticBuf, cageBuf, and the rest of group 0 per module) are declared in
+// src/gpu/instanced/buffer-layouts.ts (INST_DRAW_MESH_GROUP, INST_LEVELS_GROUP) and generated.
 
 const ONE: u32 = 65536u;
-const PHONG_ALPHA: f32 = 0.75;
-const PATCH_WORDS: u32 = 8u;
-const LEVELS: u32 = 7u; // 1, 2, 4, … 64
-const MAX_LEVEL: u32 = 64u;
+// PHONG_ALPHA, PATCH_WORDS, LEVELS (the pattern levels 1, 2, 4, …) and MAX_LEVEL (the largest)
+// are generated from their TypeScript values (src/gpu/instanced/levels.ts).
 
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32>, du: vec3<f32>, dv: vec3<f32> } // as wgsl/tess/common.wgsl
 // What the factor rule reads at a cage vertex (wgsl/instanced/levels.wgsl edgeFactorRule; each

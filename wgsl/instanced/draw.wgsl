@@ -11,8 +11,7 @@
 //     baseVertex, firstIndex, vertexCount, triangleCount (of the level's pattern),
 //     outVertexBase, outTriangleBase, instances (the headless pass only)
 
-@group(0) @binding(3) var<storage, read> work: array<u32>;
-@group(1) @binding(0) var<uniform> bucket: InstBucket;
+// Bindings (generated: src/gpu/instanced/buffer-layouts.ts INST_DRAW_MESH_GROUP, INST_BUCKET_GROUP).
 
 // Snapped pattern coordinates of vertex (i, j) of patch p at level P (src/pattern/pow2.ts
 // snapVertex): only a vertex on exactly one edge moves, along that edge, to the edge's level,

@@ -4,8 +4,7 @@
 //
 //   frame (uniform, group 2): INST_FRAME: viewProj, lightViewProj, toLight, eye
 
-struct InstFrame { viewProj: mat4x4<f32>, lightViewProj: mat4x4<f32>, toLight: vec4<f32>, eye: vec4<f32> }
-@group(2) @binding(0) var<uniform> frame: InstFrame;
+// The struct and its binding are generated (src/gpu/instanced/buffer-layouts.ts INST_FRAME, INST_FRAME_GROUP).
 
 struct VertexOut {
   @builtin(position) clip: vec4<f32>,

@@ -9,7 +9,7 @@
 //     and its triangles index it: vertices are shared within a patch, not across patch
 //     boundaries (both sides of an edge write their own copy, which is what the crack check compares).
 
-@group(2) @binding(1) var<storage, read_write> outWords: array<u32>;
+// Its binding is generated (src/gpu/instanced/buffer-layouts.ts INST_HEADLESS_GROUP).
 
 // One thread per (instance, pattern vertex) and per (instance, pattern triangle) of one bucket.
 @compute @workgroup_size(WORKGROUP_SIZE)

@@ -24,8 +24,7 @@
 // computed once per edge and the patch's level is the maximum over its edges.
 // Either way both patches of an edge read the same stored value.
 
-@group(0) @binding(3) var<storage, read_write> work: array<atomic<u32>>;
-@group(0) @binding(4) var<storage, read_write> drawArgs: array<u32>;
+// Bindings (generated: src/gpu/instanced/buffer-layouts.ts INST_LEVELS_GROUP).
 
 
 fn flatIndex(wid: vec3<u32>, lid: u32) -> u32 { return (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid; }

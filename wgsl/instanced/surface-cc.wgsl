@@ -16,10 +16,7 @@
 // Storage buffers per stage: this tessellator's 3 (group 0) + these 3 = 6 in the vertex stage,
 // 8 in the headless compute pass (its two outputs): core WebGPU's minimum of 8 per stage.
 
-@group(3) @binding(0) var<uniform> ccParams: Params;
-@group(3) @binding(1) var<storage, read> ccStatic: array<u32>;
-@group(3) @binding(2) var<storage, read> ccCage: array<f32>;
-@group(3) @binding(3) var<storage, read> ccWork: array<u32>;
+// Group 3's bindings (ccParams, ccStatic, ccCage, ccWork) are generated: src/gpu/instanced/buffer-layouts.ts INST_SURFACE_GROUP.
 
 // wgsl/tess/common.wgsl's accessors over the borrowed buffers (the same expressions).
 fn ccTriVert(t: u32, i: u32) -> u32 { return ccStatic[ccParams.offTriVerts + 3u * t + i]; }

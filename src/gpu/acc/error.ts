@@ -25,11 +25,11 @@ import type { PreparedMesh } from '../tess/prepare.ts';
 import { readBuffer } from '../device/readback.ts';
 import type { Tessellator } from '../tess/tessellator.ts';
 import { surfaceScheme } from '../surface/registry.ts';
+import { tessInputEntries } from '../tess/sample-surface.ts';
+import { ACC_ERROR_GROUP, accSurfaceGroup } from '../contract/acc.ts';
 
+// Its own bindings: ACC_ERROR_GROUP (errIn, errOut, accTriMap), beside the tessellator's inputs.
 const KERNEL = /* wgsl */ `
-@group(0) @binding(4) var<storage, read> errIn: array<u32>;          // (t, w1, w2) per point
-@group(0) @binding(5) var<storage, read_write> errOut: array<f32>;   // (distance, degrees) per point
-@group(0) @binding(6) var<storage, read> accTriMap: array<u32>;      // per cage triangle: ACC_TRI_WORD
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn accErrors(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
@@ -77,7 +77,15 @@ export class AccErrorView {
     device.queue.writeBuffer(this.triMap, 0, map);
     let pipe = pipelines.get(device);
     if (!pipe) {
-      const code = [tessPrelude(TESS_INPUTS), commonWgsl, ccSurfaceWgsl, accBindingsWgsl(1, 0, 1), ACC_SURFACE_WGSL, KERNEL].join('\n');
+      const code = [
+        tessPrelude(TESS_INPUTS),
+        commonWgsl,
+        ccSurfaceWgsl,
+        accBindingsWgsl(1, 0),
+        ACC_ERROR_GROUP.wgsl(),
+        ACC_SURFACE_WGSL,
+        KERNEL,
+      ].join('\n');
       const module = device.createShaderModule({ label: 'acc errors', code });
       pipe = device.createComputePipeline({ label: 'acc errors', layout: 'auto', compute: { module, entryPoint: 'accErrors' } });
       pipelines.set(device, pipe);
@@ -92,19 +100,16 @@ export class AccErrorView {
       label: 'acc errors',
       layout: this.pipeline.getBindGroupLayout(0),
       entries: [
-        { binding: 0, resource: { buffer: tess.paramsBuffer } },
-        { binding: 1, resource: { buffer: tess.staticBuffer } },
-        { binding: 2, resource: { buffer: tess.cageBuffer } },
-        { binding: 3, resource: { buffer: tess.workBuffer } },
-        { binding: 4, resource: { buffer: input } },
-        { binding: 5, resource: { buffer: output } },
-        { binding: 6, resource: { buffer: this.triMap } },
+        ...tessInputEntries(tess, TESS_INPUTS),
+        { binding: ACC_ERROR_GROUP.binding.errIn, resource: { buffer: input } },
+        { binding: ACC_ERROR_GROUP.binding.errOut, resource: { buffer: output } },
+        { binding: ACC_ERROR_GROUP.binding.accTriMap, resource: { buffer: this.triMap } },
       ],
     });
     const g1 = this.device.createBindGroup({
       label: 'acc errors (patches)',
       layout: this.pipeline.getBindGroupLayout(1),
-      entries: this.acc.surfaceEntries(0, 1),
+      entries: this.acc.surfaceEntries(accSurfaceGroup(1, 0)),
     });
     const pass = encoder.beginComputePass({ label: 'acc errors' });
     pass.setPipeline(this.pipeline);

@@ -26,7 +26,7 @@ import { CC_SURFACE_WGSL } from '../cc/shaders.ts';
 import { defineArena, STAGE, usedBindings, wgslConstants, wgslF32 } from '../contract/define.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
 import { TESS_GROUP, TESS_INPUTS } from '../contract/tess.ts';
-import { HEAT_BINDINGS, HEAT_GROUP } from '../contract/acc.ts';
+import { accSurfaceGroup, HEAT_BINDINGS, HEAT_GROUP } from '../contract/acc.ts';
 import { tessPrelude } from '../contract/contract.ts';
 import { defineStruct } from '../contract/layout.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
@@ -126,7 +126,7 @@ export function heatComputeCode(): string {
     tessPrelude(TESS_INPUTS),
     commonWgsl,
     CC_SURFACE_WGSL,
-    accBindingsWgsl(1, 0, 1),
+    accBindingsWgsl(1, 0),
     ACC_SURFACE_WGSL,
     HEAT_PASS.wgsl,
     wgslConstants({ ...HEADER, PARTIAL_WORDS, KIND_REGULAR }),
@@ -272,7 +272,11 @@ export class AccHeatPass {
     );
     errors.setBindGroup(
       1,
-      device.createBindGroup({ label: 'acc heat patches', layout: p.errors.getBindGroupLayout(1), entries: this.acc.surfaceEntries(0, 1) }),
+      device.createBindGroup({
+        label: 'acc heat patches',
+        layout: p.errors.getBindGroupLayout(1),
+        entries: this.acc.surfaceEntries(accSurfaceGroup(1, 0)),
+      }),
     );
     errors.dispatchWorkgroupsIndirect(this.#args, 0);
     errors.setPipeline(p.totals);

@@ -37,21 +37,23 @@ import {
 } from '../../subdiv/acc.ts';
 import { readBuffer } from '../device/readback.ts';
 import { constantsWgsl, groupsFor } from '../contract/constants.ts';
-import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_STATIC, type AccSection } from '../contract/acc.ts';
+import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_SAMPLE_GROUP, ACC_STATIC, accSurfaceGroup, type AccSection } from '../contract/acc.ts';
 import { accBuildPrelude } from '../contract/contract.ts';
 import { faceParam } from '../tess/face-params.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
-/** Declarations of the two buffers wgsl/acc/surface.wgsl reads, at the includer's group and bindings,
+/** Declarations of the two buffers wgsl/acc/surface.wgsl reads, at the includer's group from binding `first` (contract/acc.ts accSurfaceGroup),
  * and the two accessors it reads them through (the compute tessellator defines the accessors over
  * its own buffers instead: wgsl/acc/surface-tess.wgsl). */
-export function accBindingsWgsl(group: number, patchesBinding: number, pointsBinding: number): string {
-  return `@group(${group}) @binding(${patchesBinding}) var<storage, read> accPatches: array<u32>;
-@group(${group}) @binding(${pointsBinding}) var<storage, read> accPoints: array<vec4<f32>>;
-fn accPatchWord(i: u32) -> u32 { return accPatches[i]; }
+export function accBindingsWgsl(group: number, first: number): string {
+  return accSurfaceGroup(group, first).wgsl() + ACC_ACCESSORS_WGSL;
+}
+
+/** The two accessors wgsl/acc/surface.wgsl reads its buffers through, over `accPatches` and
+ * `accPoints` however they are bound. */
+export const ACC_ACCESSORS_WGSL = `fn accPatchWord(i: u32) -> u32 { return accPatches[i]; }
 fn accPt(i: u32) -> vec3<f32> { return accPoints[i].xyz; }
 `;
-}
 
 /** The evaluator's WGSL (append after accBindingsWgsl). */
 export const ACC_SURFACE_WGSL: string = surfaceWgsl;
@@ -178,10 +180,11 @@ export class AccPatches {
   }
 
   /** Bind group entries of the evaluator's two buffers, at the given binding numbers. */
-  surfaceEntries(patchesBinding: number, pointsBinding: number): GPUBindGroupEntry[] {
+  /** Its two buffers as `group` binds them (accSurfaceGroup, or a group with the same names). */
+  surfaceEntries(group: { binding: Readonly<Record<'accPatches' | 'accPoints', number>> }): GPUBindGroupEntry[] {
     return [
-      { binding: patchesBinding, resource: { buffer: this.patchBuffer } },
-      { binding: pointsBinding, resource: { buffer: this.pointBuffer } },
+      { binding: group.binding.accPatches, resource: { buffer: this.patchBuffer } },
+      { binding: group.binding.accPoints, resource: { buffer: this.pointBuffer } },
     ];
   }
 
@@ -194,7 +197,7 @@ export class AccPatches {
       n = points.length;
     let pipe = samplePipelines.get(device);
     if (!pipe) {
-      const code = constantsWgsl + accBindingsWgsl(0, 0, 1) + ACC_SURFACE_WGSL + SAMPLE_KERNEL;
+      const code = constantsWgsl + accBindingsWgsl(0, 0) + ACC_SAMPLE_GROUP.wgsl() + ACC_SURFACE_WGSL + SAMPLE_KERNEL;
       const module = device.createShaderModule({ label: 'acc samples', code });
       pipe = device.createComputePipeline({ label: 'acc samples', layout: 'auto', compute: { module, entryPoint: 'main' } });
       samplePipelines.set(device, pipe);
@@ -221,7 +224,11 @@ export class AccPatches {
     const group = device.createBindGroup({
       label: 'acc samples',
       layout: pipe.getBindGroupLayout(0),
-      entries: [...this.surfaceEntries(0, 1), { binding: 2, resource: { buffer: input } }, { binding: 3, resource: { buffer: output } }],
+      entries: [
+        ...this.surfaceEntries(accSurfaceGroup(0, 0)),
+        { binding: ACC_SAMPLE_GROUP.binding.sampleIn, resource: { buffer: input } },
+        { binding: ACC_SAMPLE_GROUP.binding.sampleOut, resource: { buffer: output } },
+      ],
     });
     const enc = device.createCommandEncoder({ label: 'acc samples' });
     const pass = enc.beginComputePass({ label: 'acc samples' });
@@ -258,9 +265,8 @@ export class AccPatches {
   }
 }
 
+// Its bindings: accBindingsWgsl(0, 0) and ACC_SAMPLE_GROUP (sampleIn, sampleOut).
 const SAMPLE_KERNEL = /* wgsl */ `
-@group(0) @binding(2) var<storage, read> sampleIn: array<u32>;          // (patch, u bits, v bits)
-@group(0) @binding(3) var<storage, read_write> sampleOut: array<f32>;   // (pos, normal)
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;

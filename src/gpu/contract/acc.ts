@@ -67,3 +67,30 @@ export const HEAT_GROUP = defineBindGroup(0, {
 });
 export type HeatBinding = keyof typeof HEAT_GROUP.binding;
 export const HEAT_BINDINGS = Object.keys(HEAT_GROUP.binding) as HeatBinding[];
+
+/**
+ * The two buffers wgsl/acc/surface.wgsl reads (AccPatches' patch words and control points), at an
+ * includer's group, from binding `first`: the ACC error views (group 1), the sample kernel (group
+ * 0). The instanced tessellator declares them in its surface group (src/gpu/instanced/buffer-layouts.ts).
+ */
+export function accSurfaceGroup(group: number, first: number) {
+  return defineBindGroup(group, {
+    accPatches: { binding: first, space: 'read', type: 'array<u32>' },
+    accPoints: { binding: first + 1, space: 'read', type: 'array<vec4<f32>>' },
+  });
+}
+
+/** Group 0 of AccPatches.sample's kernel (src/gpu/acc/patches.ts): the patches (accSurfaceGroup(0, 0)),
+ * then its (patch, u bits, v bits) points in and (position, normal) out. */
+export const ACC_SAMPLE_GROUP = defineBindGroup(0, {
+  sampleIn: { binding: 2, space: 'read', type: 'array<u32>', doc: '(patch, u bits, v bits) per point' },
+  sampleOut: { binding: 3, space: 'read_write', type: 'array<f32>', doc: '(position, normal) per point' },
+});
+
+/** Group 0 of the ACC error kernel (src/gpu/acc/error.ts), after the compute tessellator's inputs
+ * (TESS_INPUTS, bindings 0–3): its points in, the errors out and the triangles' ACC words. */
+export const ACC_ERROR_GROUP = defineBindGroup(0, {
+  errIn: { binding: 4, space: 'read', type: 'array<u32>', doc: '(t, w1, w2) per point' },
+  errOut: { binding: 5, space: 'read_write', type: 'array<f32>', doc: '(distance, degrees) per point' },
+  accTriMap: { binding: 6, space: 'read', type: 'array<u32>', doc: 'per cage triangle: ACC_TRI_WORD' },
+});

@@ -83,10 +83,15 @@ export const scanPrelude = [SCAN_PARAMS.wgsl, constantsWgsl, SCAN_GROUP.wgsl()].
 
 /** What every render shader starts with: the per-frame uniforms (the struct and its binding,
  * group 0 everywhere) and the constants the TypeScript shares with the render shaders. */
-export const sceneWgsl = [
-  SCENE_UNIFORMS.wgsl,
-  SCENE_GROUP.wgsl(),
-  `const GROUND_EXTENT: f32 = ${wgslF32(GROUND_EXTENT)};`,
-  `const PATCH_SRGB = array<vec3f, ${PATCH_COLOURS.length}>(${PATCH_COLOURS.map((p) => `vec3f(${p.srgb.map(wgslF32).join(', ')})`).join(', ')});`,
-  '',
-].join('\n');
+export const sceneWgsl = scenePrelude(SCENE_GROUP);
+
+/** sceneWgsl with the scene uniform bound where `sceneGroup` says (SCENE_GROUP.moved). */
+export function scenePrelude(sceneGroup: typeof SCENE_GROUP): string {
+  return [
+    SCENE_UNIFORMS.wgsl,
+    sceneGroup.wgsl(),
+    `const GROUND_EXTENT: f32 = ${wgslF32(GROUND_EXTENT)};`,
+    `const PATCH_SRGB = array<vec3f, ${PATCH_COLOURS.length}>(${PATCH_COLOURS.map((p) => `vec3f(${p.srgb.map(wgslF32).join(', ')})`).join(', ')});`,
+    '',
+  ].join('\n');
+}

@@ -159,6 +159,10 @@ export type BindingSpec = {
   | {
       /** 'uniform', or a storage buffer's access mode. */
       space: 'uniform' | 'read' | 'read_write';
+      /** Bound with a dynamic offset (one buffer of several records, each bind picks one). */
+      hasDynamicOffset?: boolean;
+      /** The bytes every bind must cover (a dynamic offset's record size). */
+      minBindingSize?: number;
     }
   | { texture: GPUTextureBindingLayout }
   | { sampler: GPUSamplerBindingLayout }
@@ -171,6 +175,10 @@ export interface BindGroupSpec<K extends string> {
   wgsl(names?: readonly K[]): string;
   /** The layout entries of `names` (all when omitted), in binding order. */
   layoutEntries(names?: readonly K[]): GPUBindGroupLayoutEntry[];
+  /** The same declarations in another group, the lowest binding at `firstBinding` and the others
+   * as far from it as here: for a module that includes another's shader code beside bindings of its
+   * own (the instanced tessellator draws with the renderer's lit shading in its groups 2 and 3). */
+  moved(group: number, firstBinding: number): BindGroupSpec<K>;
 }
 
 /**
@@ -196,6 +204,15 @@ export function defineBindGroup<K extends string>(
   return {
     group,
     binding,
+    moved: (to, firstBinding) =>
+      defineBindGroup(
+        to,
+        Object.fromEntries(all.map(([k, e]) => [k, { ...e, binding: firstBinding + e.binding - all[0][1].binding }])) as Record<
+          K,
+          BindingSpec
+        >,
+        visibility,
+      ),
     wgsl: (names) =>
       pick(names)
         .map(([k, e]) => {
@@ -209,7 +226,15 @@ export function defineBindGroup<K extends string>(
         const common = { binding: e.binding, visibility: e.visibility ?? visibility };
         if ('texture' in e) return { ...common, texture: { ...e.texture } };
         if ('sampler' in e) return { ...common, sampler: { ...e.sampler } };
-        return { ...common, buffer: { type: e.space === 'uniform' ? 'uniform' : e.space === 'read' ? 'read-only-storage' : 'storage' } };
+        const type = e.space === 'uniform' ? 'uniform' : e.space === 'read' ? 'read-only-storage' : 'storage';
+        return {
+          ...common,
+          buffer: {
+            type,
+            ...(e.hasDynamicOffset ? { hasDynamicOffset: true } : {}),
+            ...(e.minBindingSize !== undefined ? { minBindingSize: e.minBindingSize } : {}),
+          },
+        };
       }),
   };
 }

@@ -383,6 +383,13 @@ export const TESS_BINDINGS = Object.keys(TESS_GROUP.binding) as TessBinding[];
 /** What any evaluation over the mesh reads (no outputs): e.g. src/gpu/cc/sample.ts. */
 export const TESS_INPUTS: readonly TessBinding[] = ['params', 'staticBuf', 'cageBuf', 'work'];
 
+/** Group 0 of the surface sampler's kernel (src/gpu/tess/sample-surface.ts), after TESS_INPUTS:
+ * its points in and its (position, normal) results out. */
+export const TESS_SAMPLE_GROUP = defineBindGroup(0, {
+  samples: { binding: 4, space: 'read', type: 'array<u32>', doc: '(t, w1, w2) per point' },
+  results: { binding: 5, space: 'read_write', type: 'array<f32>', doc: '(position, normal) per point' },
+});
+
 /** The prefix sums' uniforms (wgsl/tess/scan.wgsl reads them as `scan`): word offsets in `work`. */
 export const SCAN_PARAMS = defineStruct('ScanParams', [
   ['inOff', 'u32', 'The n values summed.'],

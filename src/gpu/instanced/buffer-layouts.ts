@@ -1,12 +1,12 @@
 /**
  * The instanced tessellator's buffer layouts shared with its WGSL (wgsl/instanced/common.wgsl,
  * levels.wgsl, draw.wgsl): the cage buffer's arena (INST_CAGE), the uniform structs (INST_PARAMS,
- * INST_BUCKET, INST_FRAME), the packed
- * edge-owner word, the bucket count and stride, the patch record's size, the draw records' bytes
- * and the work buffer's layout.
+ * INST_BUCKET, INST_FRAME), the static and work buffers' arenas (INST_STATIC, INST_WORK), the
+ * packed edge-owner word, the bucket count and stride, the patch record's size and the draw
+ * records' bytes.
  */
 import { defineStruct } from '../contract/layout.ts';
-import { defineArena, defineBits } from '../contract/define.ts';
+import { defineArena, defineBindGroup, defineBits, STAGE } from '../contract/define.ts';
 import { POW2_LEVEL_COUNT } from '../../pattern/pow2.ts';
 
 /**
@@ -19,6 +19,39 @@ export const INST_CAGE = defineArena<'positions' | 'normals' | 'phongAlpha', { v
   ['positions', (s) => 3 * s.vertices],
   ['normals', (s) => 3 * s.vertices],
   ['phongAlpha', (s) => 3 * s.triangles],
+]);
+
+/**
+ * staticBuf (u32, uploaded once per mesh; wgsl/instanced/common.wgsl): the prepared triangles'
+ * vertices (3 per triangle), the patch records (PATCH_WORDS each), each mesh edge's owner
+ * (INST_OWNER_WORD), then the power-of-two patterns of every level and domain: their (i, j) points
+ * and index lists as src/pattern/pow2.ts lays them out, and each bucket's pattern entry (base
+ * vertex, first index, index count, vertex count).
+ */
+export const INST_STATIC = defineArena<
+  'triVerts' | 'patches' | 'edgeOwner' | 'patternIJ' | 'patternIdx' | 'entries',
+  { triangles: number; patches: number; edges: number; patternIJWords: number; patternIndices: number }
+>([
+  ['triVerts', (s) => 3 * s.triangles],
+  ['patches', (s) => PATCH_WORDS * s.patches],
+  ['edgeOwner', (s) => s.edges],
+  ['patternIJ', (s) => s.patternIJWords],
+  ['patternIdx', (s) => s.patternIndices],
+  ['entries', () => 4 * BUCKETS],
+]);
+
+/**
+ * work (u32, written by the level passes every frame; wgsl/instanced/levels.wgsl): each patch's
+ * wanted level (per-patch mode), each edge's level code, each patch's level, the patch count of
+ * each bucket, then each bucket's list of patches (quads: POW2_LEVEL_COUNT lists of up to every
+ * quad, then the triangles' the same way).
+ */
+export const INST_WORK = defineArena<'wanted' | 'edgeCode' | 'patchLevel' | 'counts' | 'lists', { patches: number; edges: number }>([
+  ['wanted', (s) => s.patches],
+  ['edgeCode', (s) => s.edges],
+  ['patchLevel', (s) => s.patches],
+  ['counts', () => BUCKETS],
+  ['lists', (s) => POW2_LEVEL_COUNT * s.patches],
 ]);
 
 export const INST_PARAMS = defineStruct('InstParams', [
@@ -39,19 +72,10 @@ export const INST_PARAMS = defineStruct('InstParams', [
   // Factor-rule mode: radians per pixel (fovY / viewport height), as the compute tessellator's Params.
   ['pixelAngle', 'f32'],
   // staticBuf word offsets (wgsl/instanced/common.wgsl), then cageBuf's float offsets (INST_CAGE).
-  ['offTriVerts', 'u32'],
-  ['offPatches', 'u32'],
-  ['offEdgeOwner', 'u32'],
-  ['offPatternIJ', 'u32'],
-  ['offPatternIdx', 'u32'],
-  ['offEntries', 'u32'],
+  ...INST_STATIC.offsetFields,
   ...INST_CAGE.offsetFields,
-  // work word offsets (wgsl/instanced/levels.wgsl).
-  ['offWanted', 'u32'],
-  ['offEdgeCode', 'u32'],
-  ['offPatchLevel', 'u32'],
-  ['offCounts', 'u32'],
-  ['offLists', 'u32'],
+  // work word offsets (INST_WORK, wgsl/instanced/levels.wgsl).
+  ...INST_WORK.offsetFields,
   // 1: the renderer-pass lit draw shades facets (wgsl/render/instanced.wgsl; setFlatShading).
   ['flatShading', 'u32'],
 ] as const);
@@ -80,6 +104,74 @@ export const INST_FRAME = defineStruct('InstFrame', [
   ['eye', 'vec4<f32>'],
 ] as const);
 
+// ---- bind groups ----------------------------------------------------------------------------
+// Every binding of the instanced tessellator's modules, declared here once: the WGSL declarations
+// are generated from these (levels.ts and instanced.ts put them in front of the .wgsl files, which
+// hold none), and so are the layouts. Group 0 the mesh, 1 the bucket, 2 the pass's own (frame
+// uniform or headless output), 3 the surface's.
+
+const VC = STAGE.VERTEX | STAGE.COMPUTE;
+const MESH_BUFFERS = {
+  params: { binding: 0, space: 'uniform', type: 'InstParams' },
+  staticBuf: { binding: 1, space: 'read', type: 'array<u32>', doc: 'INST_STATIC: topology, patches, edge owners, patterns' },
+  cageBuf: { binding: 2, space: 'read', type: 'array<f32>', doc: 'INST_CAGE: positions, normals, Phong α' },
+} as const;
+
+/** Group 0 of the draws and the headless pass: the mesh, with the work buffer read-only. */
+export const INST_DRAW_MESH_GROUP = defineBindGroup(
+  0,
+  { ...MESH_BUFFERS, work: { binding: 3, space: 'read', type: 'array<u32>', doc: 'INST_WORK (the level passes wrote it)' } },
+  VC,
+);
+
+/** Group 0 of the level passes: the same buffers, the work buffer as atomics, and the draw records. */
+export const INST_LEVELS_GROUP = defineBindGroup(0, {
+  ...MESH_BUFFERS,
+  work: { binding: 3, space: 'read_write', type: 'array<atomic<u32>>', doc: 'INST_WORK' },
+  drawArgs: { binding: 4, space: 'read_write', type: 'array<u32>', doc: 'the indirect draw records (DRAW_ARGS_BYTES)' },
+});
+
+/** Group 1: the bucket being drawn, one INST_BUCKET slot per bucket, picked by a dynamic offset. */
+export const INST_BUCKET_GROUP = defineBindGroup(
+  1,
+  { bucket: { binding: 0, space: 'uniform', type: 'InstBucket', hasDynamicOffset: true, minBindingSize: INST_BUCKET.size } },
+  VC,
+);
+
+/** Group 2 of the instanced tessellator's own lit and shadow draws (wgsl/instanced/frame.wgsl). */
+export const INST_FRAME_GROUP = defineBindGroup(
+  2,
+  { frame: { binding: 0, space: 'uniform', type: 'InstFrame' } },
+  STAGE.VERTEX | STAGE.FRAGMENT,
+);
+
+/** Group 2 of the headless pass (wgsl/instanced/headless.wgsl): ONE output buffer, so that an ACC
+ * surface's two and a displacement lender's three fit the per-stage storage limit. */
+export const INST_HEADLESS_GROUP = defineBindGroup(2, {
+  outWords: { binding: 1, space: 'read_write', type: 'array<u32>', doc: 'vertices (8 words), their patches, then triangles' },
+});
+
+/**
+ * Group 3: the surface's buffers, every one at its own binding, so that a configuration binds the
+ * names it reads and nothing is renumbered. The exact surface borrows a compute tessellator's four
+ * (ccParams … ccWork: src/gpu/instanced/surface-cc.ts); a displacement lender lends three of the
+ * same (wgsl/tess/displace.wgsl reads them under those names: src/gpu/instanced/displace-vertex.ts),
+ * the Catmull-Clark source being its own lender; an ACC surface reads its patches and points.
+ */
+export const INST_SURFACE_GROUP = defineBindGroup(
+  3,
+  {
+    ccParams: { binding: 0, space: 'uniform', type: 'Params', doc: "the lending compute tessellator's Params" },
+    ccStatic: { binding: 1, space: 'read', type: 'array<u32>', doc: 'its TESS_STATIC arena' },
+    ccCage: { binding: 2, space: 'read', type: 'array<f32>', doc: 'its TESS_CAGE arena' },
+    ccWork: { binding: 3, space: 'read', type: 'array<u32>', doc: 'its TESS_WORK arena (the exact surface only)' },
+    accPatches: { binding: 4, space: 'read', type: 'array<u32>', doc: "AccPatches' patch words" },
+    accPoints: { binding: 5, space: 'read', type: 'array<vec4<f32>>', doc: "AccPatches' control points" },
+  },
+  VC,
+);
+export type InstSurfaceBinding = keyof typeof INST_SURFACE_GROUP.binding;
+
 /** Buckets: domain (0 quad, 1 triangle) · 7 + log2 level. */
 export const BUCKETS = 2 * POW2_LEVEL_COUNT;
 /** Bytes between two buckets' uniforms (minUniformBufferOffsetAlignment is at most 256). */
@@ -92,13 +184,3 @@ export const PATCH_WORDS = 8;
 /** Bytes of drawArgs: 14 indexed records (5 words), then 14 wireframe records (4 words). */
 export const DRAW_ARGS_BYTES = 20 * BUCKETS + 16 * BUCKETS;
 export const WIRE_ARGS_OFFSET = 20 * BUCKETS;
-
-/** Word offsets of the work buffer's parts (wgsl/instanced/levels.wgsl), set per mesh by setMesh. */
-export interface WorkLayout {
-  wanted: number;
-  edgeCode: number;
-  patchLevel: number;
-  counts: number;
-  lists: number;
-  words: number;
-}

@@ -36,7 +36,6 @@
  *    the compute tessellator writes there (its weld uses the same owner and weights).
  *    ownerPoint below is the CPU twin (for checks).
  */
-import bindingsWgsl from '../../../wgsl/instanced/displace-bindings.wgsl?raw';
 import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
 import vertexWgsl from '../../../wgsl/instanced/displace.wgsl?raw';
 import accTriWgsl from '../../../wgsl/instanced/displace-acc.wgsl?raw';
@@ -49,22 +48,14 @@ import type { PreparedMesh } from '../tess/prepare.ts';
 
 import type { InstancedSurfaceKind } from './instanced-options.ts';
 
-/** The first group-3 binding of the lender's Params, static and cage on each surface. */
-export function lenderFirstBinding(surface: InstancedSurfaceKind): number {
-  return surface === 'acc' ? 2 : 0;
-}
-
 /** What an InstancedTessellator with displacement appends to its modules on `surface`. */
 export function instancedDisplaceWgsl(surface: InstancedSurfaceKind): string {
   const parts: string[] = [];
-  // The Catmull-Clark surface module already has the Params struct and binds the lender.
-  if (surface !== 'lent-limit') {
-    const first = lenderFirstBinding(surface);
-    parts.push(
-      TESS_PARAMS.wgsl,
-      bindingsWgsl.replace(/@binding\((\d)\)/g, (_, b) => `@binding(${first + Number(b)})`),
-    );
-  }
+  // The lender's Params struct (the Catmull-Clark surface module already has it). Its buffers are
+  // bound in the surface group as ccParams, ccStatic and ccCage (src/gpu/instanced/buffer-layouts.ts
+  // INST_SURFACE_GROUP), the names the exact surface's borrowed buffers have, so one rename list
+  // (surface-cc.ts RENAMES) serves both.
+  if (surface !== 'lent-limit') parts.push(TESS_PARAMS.wgsl);
   parts.push(
     OWNER_WORD.wgsl,
     DISP_TRI_WORD.wgsl,
@@ -73,22 +64,6 @@ export function instancedDisplaceWgsl(surface: InstancedSurfaceKind): string {
   );
   if (surface === 'acc') parts.push(accTriWgsl);
   return parts.join('\n');
-}
-
-/** Group-3 layout entries of the lender's Params, static and cage. */
-export function lenderLayoutEntries(surface: InstancedSurfaceKind, visibility: number): GPUBindGroupLayoutEntry[] {
-  const first = lenderFirstBinding(surface);
-  const ro = { type: 'read-only-storage' } as const;
-  return [
-    { binding: first, visibility, buffer: { type: 'uniform' } },
-    { binding: first + 1, visibility, buffer: ro },
-    { binding: first + 2, visibility, buffer: ro },
-  ];
-}
-
-export function lenderEntries(surface: InstancedSurfaceKind, tess: Tessellator): GPUBindGroupEntry[] {
-  const first = lenderFirstBinding(surface);
-  return [tess.paramsBuffer, tess.staticBuffer, tess.cageBuffer].map((buffer, k) => ({ binding: first + k, resource: { buffer } }));
 }
 
 /** Throws unless `tess` can lend displacement arenas for `prepared`'s triangles. */

@@ -49,25 +49,38 @@ import headlessWgsl from '../../../wgsl/instanced/headless.wgsl?raw';
 import renderInstancedWgsl from '../../../wgsl/render/instanced.wgsl?raw';
 import type { AccPatches } from '../acc/patches.ts';
 import type { Tessellator } from '../tess/tessellator.ts';
-import { meshFaceStates, RENDER_SHADERS } from '../render/pipelines.ts';
+import { litShader, meshFaceStates } from '../render/pipelines.ts';
+import { PATCH_KIND_GROUP, SCENE_GROUP, SHADING_GROUP } from '../contract/render.ts';
 import type { ShadingResources, SurfaceDrawer } from '../render/renderer.ts';
 import { grid2d, WORKGROUP_SIZE } from '../contract/constants.ts';
 import { readBuffer } from '../device/readback.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 import type { Cage } from '../../mesh/types.ts';
-import { INST_BUCKET, INST_FRAME, BUCKETS, BUCKET_STRIDE, WIRE_ARGS_OFFSET } from './buffer-layouts.ts';
+import {
+  INST_BUCKET,
+  INST_BUCKET_GROUP,
+  INST_DRAW_MESH_GROUP,
+  INST_FRAME,
+  INST_FRAME_GROUP,
+  INST_HEADLESS_GROUP,
+  BUCKETS,
+  BUCKET_STRIDE,
+  WIRE_ARGS_OFFSET,
+} from './buffer-layouts.ts';
 import { InstancedLevels } from './levels.ts';
 import type { LevelParams } from './instanced-options.ts';
 import { prepareInstanced, type InstancedMesh } from './prepare-patches.ts';
 import type { HeadlessInstanced } from './headless-output.ts';
 
-/** Move `@group(g) @binding(b)` declarations, one pass over the text: "g,b" → [g', b']. */
-function rebind(code: string, moves: Record<string, [number, number]>): string {
-  return code.replace(/@group\((\d+)\) @binding\((\d+)\)/g, (all, g, b) => {
-    const to = moves[`${g},${b}`];
-    return to ? `@group(${to[0]}) @binding(${to[1]})` : all;
-  });
-}
+/** The vertex function's module text (wgsl/instanced/draw.wgsl) with its groups 0 and 1. */
+const DRAW_WGSL = [INST_DRAW_MESH_GROUP.wgsl(), INST_BUCKET_GROUP.wgsl(), drawWgsl].join('\n');
+
+/** The renderer's lit shading, its groups moved clear of this tessellator's: scene (0, 0) to
+ * (2, 0), shadow map and sampler (1, 0–1) to (2, 1–2), and its patch colours' buffers (2, 0–1, read
+ * by its own litVertex only) to (3, 10–11), past the surface group's bindings. */
+const RENDERER_SCENE = SCENE_GROUP.moved(2, 0);
+const RENDERER_SHADING = SHADING_GROUP.moved(2, RENDERER_SCENE.binding.scene + 1);
+const RENDERER_LIT = litShader({ scene: RENDERER_SCENE, shading: RENDERER_SHADING, patchKind: PATCH_KIND_GROUP.moved(3, 10) });
 
 export class InstancedTessellator extends InstancedLevels implements SurfaceDrawer {
   private headlessPipelineMade?: GPUComputePipeline;
@@ -119,7 +132,10 @@ export class InstancedTessellator extends InstancedLevels implements SurfaceDraw
         bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, this.layouts.out]),
       }),
       compute: {
-        module: this.device.createShaderModule({ label: 'instanced headless', code: this.code(drawWgsl, headlessWgsl) }),
+        module: this.device.createShaderModule({
+          label: 'instanced headless',
+          code: this.code(DRAW_WGSL, INST_HEADLESS_GROUP.wgsl(), headlessWgsl),
+        }),
         entryPoint: 'headless',
       },
     });
@@ -127,7 +143,10 @@ export class InstancedTessellator extends InstancedLevels implements SurfaceDraw
   }
 
   private drawFrameModule(): GPUShaderModule {
-    this.frameModule ??= this.device.createShaderModule({ label: 'instanced draw', code: this.code(drawWgsl, frameWgsl) });
+    this.frameModule ??= this.device.createShaderModule({
+      label: 'instanced draw',
+      code: this.code(DRAW_WGSL, INST_FRAME.wgsl, INST_FRAME_GROUP.wgsl(), frameWgsl),
+    });
     return this.frameModule;
   }
 
@@ -178,41 +197,31 @@ export class InstancedTessellator extends InstancedLevels implements SurfaceDraw
    */
   useRenderer(res: ShadingResources): void {
     const device = this.device;
-    const F = GPUShaderStage.FRAGMENT,
-      VF = GPUShaderStage.VERTEX | F;
-    const sceneBgl = device.createBindGroupLayout({
-      label: 'instanced renderer scene',
-      entries: [{ binding: 0, visibility: VF, buffer: { type: 'uniform' } }],
-    });
+    const sceneBgl = device.createBindGroupLayout({ label: 'instanced renderer scene', entries: RENDERER_SCENE.layoutEntries() });
     const litBgl = device.createBindGroupLayout({
       label: 'instanced renderer scene + shading',
-      entries: [
-        { binding: 0, visibility: VF, buffer: { type: 'uniform' } },
-        { binding: 1, visibility: F, texture: { sampleType: 'depth' } },
-        { binding: 2, visibility: F, sampler: { type: 'comparison' } },
-      ],
+      entries: [...RENDERER_SCENE.layoutEntries(), ...RENDERER_SHADING.layoutEntries()],
     });
-    // The renderer's lit shader: scene (0, 0), shadow map and sampler (1, 0–1), its patch colours'
-    // buffers (2, 0–1, read by its own litVertex only) moved clear of this tessellator's groups
-    // (to 3, 10–11: group 3 bindings 0–1 are an ACC surface's).
-    const lit = rebind(RENDER_SHADERS.lit.join('\n'), { '0,0': [2, 0], '1,0': [2, 1], '1,1': [2, 2], '2,0': [3, 10], '2,1': [3, 11] });
     const layout = (label: string, g: GPUBindGroupLayout) =>
       device.createPipelineLayout({ label, bindGroupLayouts: this.withSurface([this.layouts.mesh, this.layouts.bucket, g]) });
     this.inRenderer = {
       res,
-      module: device.createShaderModule({ label: 'instanced in the renderer', code: this.code(drawWgsl, lit, renderInstancedWgsl) }),
+      module: device.createShaderModule({
+        label: 'instanced in the renderer',
+        code: this.code(DRAW_WGSL, RENDERER_LIT.join('\n'), renderInstancedWgsl),
+      }),
       sceneGroup: device.createBindGroup({
         label: 'instanced renderer scene',
         layout: sceneBgl,
-        entries: [{ binding: 0, resource: { buffer: res.scene } }],
+        entries: [{ binding: RENDERER_SCENE.binding.scene, resource: { buffer: res.scene } }],
       }),
       litGroup: device.createBindGroup({
         label: 'instanced renderer scene + shading',
         layout: litBgl,
         entries: [
-          { binding: 0, resource: { buffer: res.scene } },
-          { binding: 1, resource: res.shadowMap },
-          { binding: 2, resource: res.shadowSampler },
+          { binding: RENDERER_SCENE.binding.scene, resource: { buffer: res.scene } },
+          { binding: RENDERER_SHADING.binding.shadowMap, resource: res.shadowMap },
+          { binding: RENDERER_SHADING.binding.shadowSampler, resource: res.shadowSampler },
         ],
       }),
       sceneLayout: layout('instanced renderer (scene)', sceneBgl),
@@ -350,7 +359,7 @@ export class InstancedTessellator extends InstancedLevels implements SurfaceDraw
     const outGroup = device.createBindGroup({
       label: 'instanced headless output',
       layout: this.layouts.out,
-      entries: [{ binding: 1, resource: { buffer: out } }],
+      entries: [{ binding: INST_HEADLESS_GROUP.binding.outWords, resource: { buffer: out } }],
     });
     // This run's bucket uniforms: the draw's, plus where each bucket's output goes.
     const bytes = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
@@ -362,7 +371,7 @@ export class InstancedTessellator extends InstancedLevels implements SurfaceDraw
     const group = device.createBindGroup({
       label: 'instanced headless bucket',
       layout: this.layouts.bucket,
-      entries: [{ binding: 0, resource: { buffer: uniform, size: INST_BUCKET.size } }],
+      entries: [{ binding: INST_BUCKET_GROUP.binding.bucket, resource: { buffer: uniform, size: INST_BUCKET.size } }],
     });
     const lists = this.listBases();
     this.patterns.entries.forEach((_, b) => {

@@ -12,17 +12,18 @@ import triSurfaceWgsl from '../../../wgsl/instanced/surface-tri.wgsl?raw';
 import accSurfaceWgsl from '../../../wgsl/instanced/surface-acc.wgsl?raw';
 import plainVertexWgsl from '../../../wgsl/instanced/vertex-plain.wgsl?raw';
 import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
-import { accBindingsWgsl, ACC_SURFACE_WGSL, type AccPatches } from '../acc/patches.ts';
-import { ccSurfaceEntries, ccSurfaceLayoutEntries, checkCCSource, instancedCCSurfaceWgsl } from './surface-cc.ts';
+import { ACC_ACCESSORS_WGSL, ACC_SURFACE_WGSL, type AccPatches } from '../acc/patches.ts';
+import { checkCCSource, instancedCCSurfaceWgsl } from './surface-cc.ts';
 import type { Tessellator } from '../tess/tessellator.ts';
-import { checkLender, instancedDisplaceWgsl, lenderEntries, lenderLayoutEntries, setLenderDisplacement } from './displace-vertex.ts';
+import { checkLender, instancedDisplaceWgsl, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
 import { constantsWgsl, grid2d, WORKGROUP_SIZE } from '../contract/constants.ts';
-import { wgslConstants } from '../contract/define.ts';
+import { usedBindings, wgslConstants, wgslF32 } from '../contract/define.ts';
+import { PHONG_ALPHA } from '../tess/factors.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { readBuffer } from '../device/readback.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
-import { packPatterns, POW2_LEVEL_COUNT } from '../../pattern/pow2.ts';
+import { packPatterns, POW2_LEVEL_COUNT, POW2_LEVELS } from '../../pattern/pow2.ts';
 import {
   INST_CAGE,
   INST_PARAMS,
@@ -33,10 +34,30 @@ import {
   RECORD_THREADS,
   BUCKET_STRIDE,
   DRAW_ARGS_BYTES,
-  type WorkLayout,
+  INST_BUCKET_GROUP,
+  INST_DRAW_MESH_GROUP,
+  INST_FRAME_GROUP,
+  INST_HEADLESS_GROUP,
+  INST_LEVELS_GROUP,
+  INST_STATIC,
+  INST_SURFACE_GROUP,
+  INST_WORK,
+  type InstSurfaceBinding,
+  PATCH_WORDS,
 } from './buffer-layouts.ts';
 import type { InstancedMesh } from './prepare-patches.ts';
 import { LEVEL_DEFAULTS, LEVEL_MODE, type InstancedOptions, type LevelParams } from './instanced-options.ts';
+
+type LevelPass = 'patchEdges' | 'edgeView' | 'edgeFactorRule' | 'bucketPatches' | 'records';
+
+/** A level pass's pipeline, its group 0 layout and bindings, and group 3's where it reads the surface. */
+interface LevelPipeline {
+  pipeline: GPUComputePipeline;
+  layout: GPUBindGroupLayout;
+  used: (keyof typeof INST_LEVELS_GROUP.binding)[];
+  surfaceLayout?: GPUBindGroupLayout;
+  usedSurface: InstSurfaceBinding[];
+}
 
 export class InstancedLevels {
   readonly patterns = packPatterns();
@@ -48,7 +69,11 @@ export class InstancedLevels {
   private readonly paramsBytes = new ArrayBuffer(INST_PARAMS.size);
   private readonly bucketUniform: GPUBuffer;
   protected readonly frame: GPUBuffer;
-  private readonly levelPipelines: Record<'patchEdges' | 'edgeView' | 'edgeFactorRule' | 'bucketPatches' | 'records', GPUComputePipeline>;
+  /** The level passes: each with the explicit layouts of what its entry point reads (usedBindings)
+   * in group 0 and, where it evaluates the surface, group 3. */
+  private readonly levelPipelines: Record<LevelPass, LevelPipeline>;
+  /** What group 3 binds for this surface (INST_SURFACE_GROUP's names): nothing on plain Phong. */
+  private readonly surfaceNames: InstSurfaceBinding[];
   protected readonly layouts: {
     mesh: GPUBindGroupLayout;
     bucket: GPUBindGroupLayout;
@@ -84,7 +109,7 @@ export class InstancedLevels {
     /** Float offsets of the cage buffer's arrays (INST_CAGE). */
     cageLayout: ArenaLayout<(typeof INST_CAGE.names)[number]>;
     work: GPUBuffer;
-    layout: WorkLayout;
+    layout: ArenaLayout<(typeof INST_WORK.names)[number]>;
     meshGroup: GPUBindGroup;
   };
 
@@ -111,8 +136,17 @@ export class InstancedLevels {
       throw new Error(
         `the instanced tessellator on this surface needs ${vertexStorage} storage buffers in the vertex stage and ${vertexStorage + 1} in compute; this device allows ${inVertex} and ${limits.maxStorageBuffersPerShaderStage}`,
       );
+    // Group 3 (INST_SURFACE_GROUP): the exact surface's borrowed buffers; an ACC surface's patches
+    // and points; a displacement lender's three (the exact surface's source lends its own).
+    this.surfaceNames = this.cc
+      ? ['ccParams', 'ccStatic', 'ccCage', 'ccWork']
+      : [
+          ...(this.acc ? (['accPatches', 'accPoints'] as const) : []),
+          ...(this.displaced ? (['ccParams', 'ccStatic', 'ccCage'] as const) : []),
+        ];
+    const surfaceDeclarations = this.surfaceNames.length ? INST_SURFACE_GROUP.wgsl(this.surfaceNames) : '';
     const surface = this.acc
-      ? [accBindingsWgsl(3, 0, 1), ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
+      ? [ACC_ACCESSORS_WGSL, ACC_SURFACE_WGSL, accSurfaceWgsl].join('\n')
       : this.cc
         ? instancedCCSurfaceWgsl()
         : [triSurfaceWgsl, opts.surfaceWgsl ?? phongSurfaceWgsl].join('\n');
@@ -121,19 +155,43 @@ export class InstancedLevels {
     const code = (...parts: string[]) =>
       [
         constantsWgsl,
-        wgslConstants({ RECORD_THREADS }),
+        wgslConstants({ RECORD_THREADS, PATCH_WORDS, LEVELS: POW2_LEVEL_COUNT, MAX_LEVEL: POW2_LEVELS[POW2_LEVEL_COUNT - 1] }),
+        `const PHONG_ALPHA: f32 = ${wgslF32(PHONG_ALPHA)};`,
         INST_OWNER_WORD.wgsl,
         INST_PARAMS.wgsl,
         INST_BUCKET.wgsl,
         commonWgsl,
+        surfaceDeclarations,
         ...parts,
         surface,
         vertexSurface,
       ].join('\n');
     this.code = code;
-    const levels = device.createShaderModule({ label: 'instanced levels', code: code(factorRuleWgsl, levelsWgsl) });
-    const pipeline = (entryPoint: string) =>
-      device.createComputePipeline({ label: `instanced ${entryPoint}`, layout: 'auto', compute: { module: levels, entryPoint } });
+    const levelsCode = code(INST_LEVELS_GROUP.wgsl(), factorRuleWgsl, levelsWgsl);
+    const levels = device.createShaderModule({ label: 'instanced levels', code: levelsCode });
+    const levelNames = Object.keys(INST_LEVELS_GROUP.binding) as (keyof typeof INST_LEVELS_GROUP.binding)[];
+    const noBindings = device.createBindGroupLayout({ label: 'instanced (no bindings)', entries: [] });
+    const pipeline = (entryPoint: LevelPass): LevelPipeline => {
+      const used = usedBindings(levelsCode, entryPoint, levelNames);
+      const usedSurface = usedBindings(levelsCode, entryPoint, this.surfaceNames);
+      const label = `instanced ${entryPoint}`;
+      const layout = device.createBindGroupLayout({ label, entries: INST_LEVELS_GROUP.layoutEntries(used) });
+      const surfaceLayout = usedSurface.length
+        ? device.createBindGroupLayout({ label: `${label} surface`, entries: INST_SURFACE_GROUP.layoutEntries(usedSurface) })
+        : undefined;
+      const groups = surfaceLayout ? [layout, noBindings, noBindings, surfaceLayout] : [layout];
+      return {
+        pipeline: device.createComputePipeline({
+          label,
+          layout: device.createPipelineLayout({ label, bindGroupLayouts: groups }),
+          compute: { module: levels, entryPoint },
+        }),
+        layout,
+        used,
+        surfaceLayout,
+        usedSurface,
+      };
+    };
     this.levelPipelines = {
       patchEdges: pipeline('patchEdges'),
       edgeView: pipeline('edgeView'),
@@ -142,45 +200,16 @@ export class InstancedLevels {
       records: pipeline('records'),
     };
 
-    // Explicit layouts: one bucket bind group with a dynamic offset, shared by the lit, shadow and
-    // headless pipelines.
-    const VC = GPUShaderStage.VERTEX | GPUShaderStage.COMPUTE;
-    const ro = { type: 'read-only-storage' } as const;
+    // Explicit layouts, from the bind group declarations: one bucket bind group with a dynamic
+    // offset, shared by the lit, shadow and headless pipelines.
     this.layouts = {
-      mesh: device.createBindGroupLayout({
-        label: 'instanced mesh',
-        entries: [
-          { binding: 0, visibility: VC, buffer: { type: 'uniform' } },
-          { binding: 1, visibility: VC, buffer: ro },
-          { binding: 2, visibility: VC, buffer: ro },
-          { binding: 3, visibility: VC, buffer: ro },
-        ],
-      }),
-      bucket: device.createBindGroupLayout({
-        label: 'instanced bucket',
-        entries: [{ binding: 0, visibility: VC, buffer: { type: 'uniform', hasDynamicOffset: true, minBindingSize: INST_BUCKET.size } }],
-      }),
-      frame: device.createBindGroupLayout({
-        label: 'instanced frame',
-        entries: [{ binding: 0, visibility: GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT, buffer: { type: 'uniform' } }],
-      }),
-      out: device.createBindGroupLayout({
-        label: 'instanced headless outputs',
-        entries: [{ binding: 1, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } }],
-      }),
+      mesh: device.createBindGroupLayout({ label: 'instanced mesh', entries: INST_DRAW_MESH_GROUP.layoutEntries() }),
+      bucket: device.createBindGroupLayout({ label: 'instanced bucket', entries: INST_BUCKET_GROUP.layoutEntries() }),
+      frame: device.createBindGroupLayout({ label: 'instanced frame', entries: INST_FRAME_GROUP.layoutEntries() }),
+      out: device.createBindGroupLayout({ label: 'instanced headless outputs', entries: INST_HEADLESS_GROUP.layoutEntries() }),
       surface: device.createBindGroupLayout({
         label: this.cc ? 'instanced Catmull-Clark surface' : this.acc ? 'instanced ACC surface' : 'instanced displacement lender',
-        entries: [
-          ...(this.cc
-            ? ccSurfaceLayoutEntries(VC)
-            : this.acc
-              ? [
-                  { binding: 0, visibility: VC, buffer: ro },
-                  { binding: 1, visibility: VC, buffer: ro },
-                ]
-              : []),
-          ...(this.displaced && !this.cc ? lenderLayoutEntries(kind, VC) : []),
-        ],
+        entries: INST_SURFACE_GROUP.layoutEntries(this.surfaceNames),
       }),
     };
     this.renderLayout = device.createPipelineLayout({
@@ -212,7 +241,7 @@ export class InstancedLevels {
     this.bucketGroup = device.createBindGroup({
       label: 'instanced bucket',
       layout: this.layouts.bucket,
-      entries: [{ binding: 0, resource: { buffer: this.bucketUniform, size: INST_BUCKET.size } }],
+      entries: [{ binding: INST_BUCKET_GROUP.binding.bucket, resource: { buffer: this.bucketUniform, size: INST_BUCKET.size } }],
     });
     this.frame = device.createBuffer({
       label: 'instanced frame',
@@ -222,7 +251,7 @@ export class InstancedLevels {
     this.frameGroup = device.createBindGroup({
       label: 'instanced frame',
       layout: this.layouts.frame,
-      entries: [{ binding: 0, resource: { buffer: this.frame } }],
+      entries: [{ binding: INST_FRAME_GROUP.binding.frame, resource: { buffer: this.frame } }],
     });
   }
 
@@ -238,11 +267,22 @@ export class InstancedLevels {
 
   /** Group 3's entries for the current mesh (ACC patches, or the lending tessellator's buffers;
    * with displacement on Phong and ACC, the lender's). */
-  private surfaceEntries(): GPUBindGroupEntry[] {
-    if (this.ccSource) return ccSurfaceEntries(this.ccSource);
-    const acc = this.accPatches ? this.accPatches.surfaceEntries(0, 1) : [];
-    const lender = this.dispSource ? lenderEntries(this.acc ? 'acc' : 'evalSurface', this.dispSource) : [];
-    return [...acc, ...lender];
+  private surfaceEntries(names: readonly InstSurfaceBinding[] = this.surfaceNames): GPUBindGroupEntry[] {
+    // The exact surface's source lends its own arenas; a lender lends three of the same names.
+    const lender = this.ccSource ?? this.dispSource;
+    const buffers: Partial<Record<InstSurfaceBinding, GPUBuffer>> = {
+      ccParams: lender?.paramsBuffer,
+      ccStatic: lender?.staticBuffer,
+      ccCage: lender?.cageBuffer,
+      ccWork: this.ccSource?.workBuffer,
+      accPatches: this.accPatches?.patchBuffer,
+      accPoints: this.accPatches?.pointBuffer,
+    };
+    return names.map((name) => {
+      const buffer = buffers[name];
+      if (!buffer) throw new Error(`instanced surface: nothing to bind as ${name}`);
+      return { binding: INST_SURFACE_GROUP.binding[name], resource: { buffer } };
+    });
   }
 
   get instancedMesh(): InstancedMesh | undefined {
@@ -283,15 +323,25 @@ export class InstancedLevels {
     const pr = m.prepared;
     const entries = new Uint32Array(4 * BUCKETS);
     this.patterns.entries.forEach((e, b) => entries.set([e.baseVertex, e.firstIndex, e.indexCount, e.vertexCount], 4 * b));
-    const parts = [pr.triVerts, m.patches, m.edgeOwner, this.patterns.ij, this.patterns.indices, entries];
-    const offsets: number[] = [];
-    let at = 0;
-    for (const p of parts) {
-      offsets.push(at);
-      at += p.length;
-    }
-    const words = new Uint32Array(at);
-    parts.forEach((p, i) => words.set(p, offsets[i]));
+    const staticLayout = INST_STATIC.layout({
+      triangles: pr.triangleCount,
+      patches: m.patchCount,
+      edges: m.edgeCount,
+      patternIJWords: this.patterns.ij.length,
+      patternIndices: this.patterns.indices.length,
+    });
+    const words = new Uint32Array(staticLayout.words);
+    const put = (k: (typeof INST_STATIC.names)[number], data: Uint32Array) => {
+      if (data.length !== staticLayout.length[k])
+        throw new Error(`instanced staticBuf ${k}: ${data.length} words for ${staticLayout.length[k]}`);
+      words.set(data, staticLayout.offset[k]);
+    };
+    put('triVerts', pr.triVerts);
+    put('patches', m.patches);
+    put('edgeOwner', m.edgeOwner);
+    put('patternIJ', this.patterns.ij);
+    put('patternIdx', this.patterns.indices);
+    put('entries', entries);
     const staticBuf = device.createBuffer({
       label: 'instanced topology + patterns',
       size: words.byteLength,
@@ -325,21 +375,7 @@ export class InstancedLevels {
         entries: this.surfaceEntries(),
       });
 
-    let w = 0;
-    const take = (n: number) => {
-      const at = w;
-      w += n;
-      return at;
-    };
-    const layout: WorkLayout = {
-      wanted: take(m.patchCount),
-      edgeCode: take(m.edgeCount),
-      patchLevel: take(m.patchCount),
-      counts: take(BUCKETS),
-      lists: take(POW2_LEVEL_COUNT * m.patchCount),
-      words: 0,
-    };
-    layout.words = w;
+    const layout = INST_WORK.layout({ patches: m.patchCount, edges: m.edgeCount });
     const work = device.createBuffer({
       label: 'instanced work',
       size: 4 * layout.words,
@@ -351,18 +387,9 @@ export class InstancedLevels {
       nQuads: m.quadCount,
       nTris: m.triCount,
       nEdges: m.edgeCount,
-      offTriVerts: offsets[0],
-      offPatches: offsets[1],
-      offEdgeOwner: offsets[2],
-      offPatternIJ: offsets[3],
-      offPatternIdx: offsets[4],
-      offEntries: offsets[5],
+      ...INST_STATIC.offsets(staticLayout),
       ...INST_CAGE.offsets(cageLayout),
-      offWanted: layout.wanted,
-      offEdgeCode: layout.edgeCode,
-      offPatchLevel: layout.patchLevel,
-      offCounts: layout.counts,
-      offLists: layout.lists,
+      ...INST_WORK.offsets(layout),
     });
 
     // Each bucket's uniform: where its list starts and its pattern.
@@ -370,7 +397,14 @@ export class InstancedLevels {
     const meshGroup = device.createBindGroup({
       label: 'instanced mesh',
       layout: this.layouts.mesh,
-      entries: [this.params, staticBuf, cageBuf, work].map((buffer, binding) => ({ binding, resource: { buffer } })),
+      entries: (
+        [
+          ['params', this.params],
+          ['staticBuf', staticBuf],
+          ['cageBuf', cageBuf],
+          ['work', work],
+        ] as const
+      ).map(([name, buffer]) => ({ binding: INST_DRAW_MESH_GROUP.binding[name], resource: { buffer } })),
     });
     this.mesh = { m, staticBuf, cageBuf, cageLayout, work, layout, meshGroup };
     const buckets = new ArrayBuffer(BUCKET_STRIDE * BUCKETS);
@@ -414,7 +448,7 @@ export class InstancedLevels {
   setWanted(levels: Uint32Array): void {
     const m = this.requireMesh();
     if (levels.length !== m.m.patchCount) throw new Error(`setWanted: ${levels.length} levels for ${m.m.patchCount} patches`);
-    this.device.queue.writeBuffer(m.work, 4 * m.layout.wanted, levels);
+    this.device.queue.writeBuffer(m.work, 4 * m.layout.offset.wanted, levels);
   }
 
   /** Record the level, bucket and record passes (one compute pass; `timestampWrites` times it).
@@ -436,17 +470,16 @@ export class InstancedLevels {
     });
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
     // Edge codes and bucket counts start at 0 (atomicMax / atomicAdd).
-    encoder.clearBuffer(m.work, 4 * m.layout.edgeCode, 4 * m.m.edgeCount);
-    encoder.clearBuffer(m.work, 4 * m.layout.counts, 4 * BUCKETS);
+    encoder.clearBuffer(m.work, 4 * m.layout.offset.edgeCode, 4 * m.m.edgeCount);
+    encoder.clearBuffer(m.work, 4 * m.layout.offset.counts, 4 * BUCKETS);
     const cp = encoder.beginComputePass({ label: 'instanced levels', timestampWrites });
-    const run = (name: keyof InstancedLevels['levelPipelines'], groups: number, group: GPUBindGroup) => {
-      cp.setPipeline(this.levelPipelines[name]);
+    const run = (name: LevelPass, groups: number, group: GPUBindGroup) => {
+      cp.setPipeline(this.levelPipelines[name].pipeline);
       cp.setBindGroup(0, group);
-      // The dynamic rule evaluates the surface: an ACC or Catmull-Clark surface's buffers (its
-      // auto layout's group 3).
-      if (name === 'edgeView' && (this.acc || this.cc)) cp.setBindGroup(3, this.edgeViewSurfaceGroup());
-      // The factor rule reads the limit at the cage vertices on Catmull-Clark (group 3).
-      if (name === 'edgeFactorRule' && this.cc) cp.setBindGroup(3, this.factorRuleSurfaceGroup());
+      // A pass that evaluates the surface (the dynamic rule; the factor rule on Catmull-Clark, at
+      // the cage vertices' limits) binds what it reads of group 3.
+      const surface = this.levelSurfaceGroupFor(name);
+      if (surface) cp.setBindGroup(3, surface);
       cp.dispatchWorkgroups(...grid2d(groups));
     };
     const nP = m.m.patchCount;
@@ -459,53 +492,42 @@ export class InstancedLevels {
     cp.end();
   }
 
-  private factorRuleSurface?: GPUBindGroup;
-  /** Group 3 of the factor rule on Catmull-Clark: its auto layout holds what it reads, the lending
-   * tessellator's Params and cage arena (the vertex limits). */
-  private factorRuleSurfaceGroup(): GPUBindGroup {
-    this.factorRuleSurface ??= this.device.createBindGroup({
-      label: 'instanced edgeFactorRule surface',
-      layout: this.levelPipelines.edgeFactorRule.getBindGroupLayout(3),
-      entries: this.surfaceEntries().filter((e) => e.binding === 0 || e.binding === 2),
-    });
-    return this.factorRuleSurface;
-  }
-
-  private edgeViewSurface?: GPUBindGroup;
-  private edgeViewSurfaceGroup(): GPUBindGroup {
-    this.edgeViewSurface ??= this.device.createBindGroup({
-      label: 'instanced edgeView surface',
-      layout: this.levelPipelines.edgeView.getBindGroupLayout(3),
-      // The level pass evaluates the undisplaced surface: on ACC its patches only.
-      entries: this.surfaceEntries().filter((e) => this.cc || e.binding < 2),
-    });
-    return this.edgeViewSurface;
-  }
-
-  // Auto layouts differ per entry point (each holds only the bindings it uses), so each level
-  // pass gets its own bind group, made once per mesh.
+  // Each level pass's groups, from its own layouts, made once per mesh (releaseMesh clears them).
   private levelGroups = new Map<string, GPUBindGroup>();
-  private levelGroupFor(name: keyof InstancedLevels['levelPipelines']): GPUBindGroup {
+  private levelGroupFor(name: LevelPass): GPUBindGroup {
     const m = this.requireMesh();
     let g = this.levelGroups.get(name);
     if (!g) {
-      const all: Record<number, GPUBuffer> = { 0: this.params, 1: m.staticBuf, 2: m.cageBuf, 3: m.work, 4: this.drawArgs };
-      const used: Record<string, number[]> = {
-        patchEdges: [0, 1, 3],
-        // The cage buffer is read by the Phong surface; an ACC or Catmull-Clark surface reads its
-        // own control points (group 3).
-        edgeView: this.acc || this.cc ? [0, 1, 3] : [0, 1, 2, 3],
-        // The cage's positions and normals, or on Catmull-Clark the lending tessellator's limits.
-        edgeFactorRule: this.cc ? [0, 1, 3] : [0, 1, 2, 3],
-        bucketPatches: [0, 1, 3],
-        records: [0, 1, 3, 4],
+      const buffers: Record<keyof typeof INST_LEVELS_GROUP.binding, GPUBuffer> = {
+        params: this.params,
+        staticBuf: m.staticBuf,
+        cageBuf: m.cageBuf,
+        work: m.work,
+        drawArgs: this.drawArgs,
       };
+      const p = this.levelPipelines[name];
       g = this.device.createBindGroup({
         label: `instanced ${name}`,
-        layout: this.levelPipelines[name].getBindGroupLayout(0),
-        entries: used[name].map((binding) => ({ binding, resource: { buffer: all[binding] } })),
+        layout: p.layout,
+        entries: p.used.map((b) => ({ binding: INST_LEVELS_GROUP.binding[b], resource: { buffer: buffers[b] } })),
       });
       this.levelGroups.set(name, g);
+    }
+    return g;
+  }
+
+  private levelSurfaceGroups = new Map<string, GPUBindGroup>();
+  private levelSurfaceGroupFor(name: LevelPass): GPUBindGroup | undefined {
+    const p = this.levelPipelines[name];
+    if (!p.surfaceLayout) return undefined;
+    let g = this.levelSurfaceGroups.get(name);
+    if (!g) {
+      g = this.device.createBindGroup({
+        label: `instanced ${name} surface`,
+        layout: p.surfaceLayout,
+        entries: this.surfaceEntries(p.usedSurface),
+      });
+      this.levelSurfaceGroups.set(name, g);
     }
     return g;
   }
@@ -522,12 +544,15 @@ export class InstancedLevels {
     const m = this.requireMesh();
     const records = new Uint32Array(await readBuffer(this.device, this.drawArgs, 20 * BUCKETS));
     const w = new Uint32Array(await readBuffer(this.device, m.work, 4 * m.layout.words));
-    const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => w[m.layout.counts + b]);
+    const counts = Uint32Array.from({ length: BUCKETS }, (_, b) => w[m.layout.offset.counts + b]);
     return {
       records,
       counts,
-      edgeLevels: Uint32Array.from(w.subarray(m.layout.edgeCode, m.layout.edgeCode + m.m.edgeCount), (c) => 1 << (POW2_LEVEL_COUNT - c)),
-      patchLevels: Uint32Array.from(w.subarray(m.layout.patchLevel, m.layout.patchLevel + m.m.patchCount), (lg) => 1 << lg),
+      edgeLevels: Uint32Array.from(
+        w.subarray(m.layout.offset.edgeCode, m.layout.offset.edgeCode + m.m.edgeCount),
+        (c) => 1 << (POW2_LEVEL_COUNT - c),
+      ),
+      patchLevels: Uint32Array.from(w.subarray(m.layout.offset.patchLevel, m.layout.offset.patchLevel + m.m.patchCount), (lg) => 1 << lg),
       lists: this.listBases().map((base, b) => w.slice(base, base + counts[b])),
     };
   }
@@ -550,7 +575,7 @@ export class InstancedLevels {
     const m = this.requireMesh();
     return Array.from({ length: BUCKETS }, (_, b) => {
       const lg = b % POW2_LEVEL_COUNT;
-      return m.layout.lists + (b >= POW2_LEVEL_COUNT ? POW2_LEVEL_COUNT * m.m.quadCount + lg * m.m.triCount : lg * m.m.quadCount);
+      return m.layout.offset.lists + (b >= POW2_LEVEL_COUNT ? POW2_LEVEL_COUNT * m.m.quadCount + lg * m.m.triCount : lg * m.m.quadCount);
     });
   }
 
@@ -563,8 +588,7 @@ export class InstancedLevels {
     if (!this.mesh) return;
     for (const b of [this.mesh.staticBuf, this.mesh.cageBuf, this.mesh.work]) b.destroy();
     this.levelGroups.clear();
-    this.edgeViewSurface = undefined;
-    this.factorRuleSurface = undefined;
+    this.levelSurfaceGroups.clear();
     this.surfaceGroup = undefined;
     this.accPatches = undefined;
     this.ccSource = undefined;

@@ -77,24 +77,6 @@ export function instancedCCSurfaceWgsl(): string {
   return [TESS_PARAMS.wgsl, ccGlueWgsl, ccEvaluatorWgsl()].join('\n');
 }
 
-/** Group 3 of the Catmull-Clark surface: the borrowed tessellator's Params, static, cage and work. */
-export function ccSurfaceLayoutEntries(visibility: number): GPUBindGroupLayoutEntry[] {
-  const ro = { type: 'read-only-storage' } as const;
-  return [
-    { binding: 0, visibility, buffer: { type: 'uniform' } },
-    { binding: 1, visibility, buffer: ro },
-    { binding: 2, visibility, buffer: ro },
-    { binding: 3, visibility, buffer: ro },
-  ];
-}
-
-export function ccSurfaceEntries(tess: Tessellator): GPUBindGroupEntry[] {
-  return [tess.paramsBuffer, tess.staticBuffer, tess.cageBuffer, tess.workBuffer].map((buffer, binding) => ({
-    binding,
-    resource: { buffer },
-  }));
-}
-
 /** Throws unless `tess` can lend its Catmull-Clark buffers for `prepared`'s triangles. */
 export function checkCCSource(tess: Tessellator, prepared: PreparedMesh): void {
   if (!surfaceScheme(tess.surface).exactLimit)

@@ -21,18 +21,31 @@ import {
   PATCH_KIND_GROUP,
   RENDER_BIND_GROUPS,
   RENDER_PIPELINE_GROUPS,
+  SCENE_GROUP,
   SHADING_GROUP,
   WIRE_ARGS_GROUP,
   WIRE_LINES_GROUP,
   type RenderBindGroup,
   type RenderPipelineName,
 } from '../contract/render.ts';
-import { sceneWgsl } from '../contract/contract.ts';
+import { scenePrelude, sceneWgsl } from '../contract/contract.ts';
+
+/** The lit shader's sources with its three groups where `at` puts them (SCENE_GROUP.moved and so
+ * on: the instanced tessellator's drawer includes it beside groups of its own). */
+export function litShader(
+  at: { scene: typeof SCENE_GROUP; shading: typeof SHADING_GROUP; patchKind: typeof PATCH_KIND_GROUP } = {
+    scene: SCENE_GROUP,
+    shading: SHADING_GROUP,
+    patchKind: PATCH_KIND_GROUP,
+  },
+): readonly string[] {
+  return [scenePrelude(at.scene), commonWGSL, at.shading.wgsl(), shadingWGSL, at.patchKind.wgsl(), litWGSL];
+}
 
 /** The WGSL sources of each pipeline's shader module, in order (the two cage pipelines share one). */
 export const RENDER_SHADERS: Record<RenderPipelineName, readonly string[]> = {
   shadow: [sceneWgsl, commonWGSL, shadowWGSL],
-  lit: [sceneWgsl, commonWGSL, SHADING_GROUP.wgsl(), shadingWGSL, PATCH_KIND_GROUP.wgsl(), litWGSL],
+  lit: litShader(),
   ground: [sceneWgsl, commonWGSL, SHADING_GROUP.wgsl(), shadingWGSL, groundWGSL],
   backdrop: [sceneWgsl, commonWGSL, backdropWGSL],
   wireframe: [sceneWgsl, commonWGSL, WIRE_LINES_GROUP.wgsl(), wireLinesWGSL],

@@ -6,14 +6,13 @@
  */
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
 import { surfaceScheme } from '../surface/registry.ts';
-import { TESS_INPUTS } from '../contract/tess.ts';
+import { TESS_GROUP, TESS_INPUTS, TESS_SAMPLE_GROUP, type TessBinding } from '../contract/tess.ts';
 import { tessPrelude } from '../contract/contract.ts';
 import type { Tessellator } from './tessellator.ts';
 import { readBuffer } from '../device/readback.ts';
 
+// Its own bindings: TESS_SAMPLE_GROUP (samples, results), beside the tessellator's inputs.
 const KERNEL = /* wgsl */ `
-@group(0) @binding(4) var<storage, read> samples: array<u32>;
-@group(0) @binding(5) var<storage, read_write> results: array<f32>;
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
   let i = gid.x;
@@ -33,6 +32,22 @@ fn main(@builtin(global_invocation_id) gid: vec3<u32>) {
 
 const pipelines = new WeakMap<GPUDevice, Map<string, GPUComputePipeline>>();
 
+/** Bind group entries of a tessellator's own buffers, at their TESS_GROUP bindings (for a check's
+ * kernel that reads them beside bindings of its own). */
+export function tessInputEntries(tess: Tessellator, names: readonly TessBinding[]): GPUBindGroupEntry[] {
+  const buffers: Partial<Record<TessBinding, GPUBuffer>> = {
+    params: tess.paramsBuffer,
+    staticBuf: tess.staticBuffer,
+    cageBuf: tess.cageBuffer,
+    work: tess.workBuffer,
+  };
+  return names.map((name) => {
+    const buffer = buffers[name];
+    if (!buffer) throw new Error(`tessInputEntries: ${name} is not one of the tessellator's inputs`);
+    return { binding: TESS_GROUP.binding[name], resource: { buffer } };
+  });
+}
+
 /** Samples: triangle t and fixed-point weights (w1, w2) of corners 1 and 2 (w0 = 65536 − w1 − w2). */
 export async function sampleSurface(
   tess: Tessellator,
@@ -46,7 +61,7 @@ export async function sampleSurface(
     const surface = surfaceScheme(tess.surface).tessWgsl;
     const module = device.createShaderModule({
       label: 'surface samples',
-      code: [tessPrelude(TESS_INPUTS), commonWgsl, surface, KERNEL].join('\n'),
+      code: [tessPrelude(TESS_INPUTS), TESS_SAMPLE_GROUP.wgsl(), commonWgsl, surface, KERNEL].join('\n'),
     });
     pipe = device.createComputePipeline({ label: 'surface samples', layout: 'auto', compute: { module, entryPoint: 'main' } });
     byKind.set(tess.surface, pipe);
@@ -64,12 +79,9 @@ export async function sampleSurface(
   const group = device.createBindGroup({
     layout: pipe.getBindGroupLayout(0),
     entries: [
-      { binding: 0, resource: { buffer: tess.paramsBuffer } },
-      { binding: 1, resource: { buffer: tess.staticBuffer } },
-      { binding: 2, resource: { buffer: tess.cageBuffer } },
-      ...(surfaceScheme(tess.surface).readsWork ? [{ binding: 3, resource: { buffer: tess.workBuffer } }] : []),
-      { binding: 4, resource: { buffer: input } },
-      { binding: 5, resource: { buffer: output } },
+      ...tessInputEntries(tess, surfaceScheme(tess.surface).readsWork ? TESS_INPUTS : TESS_INPUTS.filter((b) => b !== 'work')),
+      { binding: TESS_SAMPLE_GROUP.binding.samples, resource: { buffer: input } },
+      { binding: TESS_SAMPLE_GROUP.binding.results, resource: { buffer: output } },
     ],
   });
   const enc = device.createCommandEncoder({ label: 'surface samples' });

@@ -6,6 +6,7 @@
  * onto the lender's buffers (one rename list with the Catmull-Clark evaluator), the lender's
  * bindings where each surface has room for them.
  */
+import { INST_SURFACE_GROUP } from '../../../src/gpu/instanced/buffer-layouts.ts';
 import { describe, expect, it } from 'vitest';
 import { load } from '../../support/instanced-checks.ts';
 import { patchDomain, patchEdgeIds, patchCanonical } from '../../../src/gpu/instanced/prepare-patches.ts';
@@ -71,11 +72,14 @@ describe('instanced displacement: the module text', () => {
     expect(() => renameBorrowed('fn f() {}', ['params'])).toThrow(/no longer uses 'params'/);
   });
 
-  it("the lender's bindings: group 3, 0–2 on Phong, 2–4 on ACC (its patches hold 0–1), none added on Catmull-Clark (its lender is bound)", () => {
-    const bindings = (code: string) => [...code.matchAll(/@group\(3\) @binding\((\d+)\)/g)].map((x) => Number(x[1]));
-    expect(bindings(instancedDisplaceWgsl('evalSurface'))).toEqual([0, 1, 2]);
-    expect(bindings(instancedDisplaceWgsl('acc'))).toEqual([2, 3, 4]);
-    expect(bindings(instancedDisplaceWgsl('lent-limit'))).toEqual([]);
+  it("the lender's buffers: group 3 under the exact surface's borrowed names, each at its own binding (none renumbered, none declared by the displacement text)", () => {
+    for (const kind of ['evalSurface', 'acc', 'lent-limit'] as const) expect(instancedDisplaceWgsl(kind)).not.toMatch(/@binding/);
+    expect(INST_SURFACE_GROUP.group).toBe(3);
+    const b = INST_SURFACE_GROUP.binding;
+    expect(new Set(Object.values(b)).size).toBe(Object.keys(b).length);
+    // An ACC surface with a lender binds all five at once: its patches and points beside the lender's three.
+    const acc = INST_SURFACE_GROUP.wgsl(['accPatches', 'accPoints', 'ccParams', 'ccStatic', 'ccCage']);
+    expect([...acc.matchAll(/@group\(3\) @binding\((\d+)\)/g)].map((x) => Number(x[1]))).toEqual([0, 1, 2, 4, 5]);
     expect(instancedDisplaceWgsl('acc')).toMatch(/fn triSurface\(/);
   });
 });
