@@ -35,6 +35,7 @@
  *   instanced.ts          InstancedTessellator: the draws (its own lit and shadow passes, inside the
  *                         demo renderer's passes, headless in compute) and tessellateInstanced (CLI)
  *   levels.ts             InstancedLevels, its base: pipelines, the cage upload, the level passes
+ *   level-pipelines.ts    the level passes' pipelines on explicit layouts (usedBindings)
  *   instanced-options.ts  InstancedOptions, LevelParams (their defaults, mode codes), factorRuleLevels
  *   buffer-layouts.ts     uniform structs and packed layouts shared with wgsl/instanced/
  *   prepare-patches.ts    the CPU preparation: InstancedMesh, prepareInstanced, patch readers

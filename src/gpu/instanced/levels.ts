@@ -18,7 +18,8 @@ import type { Tessellator } from '../tess/tessellator.ts';
 import { checkLender, instancedDisplaceWgsl, setLenderDisplacement } from './displace-vertex.ts';
 import type { DisplacementSettings } from '../tess/displacement-map.ts';
 import { constantsWgsl, grid2d, WORKGROUP_SIZE } from '../contract/constants.ts';
-import { usedBindings, wgslConstants, wgslF32 } from '../contract/define.ts';
+import { wgslConstants, wgslF32 } from '../contract/define.ts';
+import { createLevelPipelines, type LevelPass, type LevelPipeline } from './level-pipelines.ts';
 import { PHONG_ALPHA } from '../tess/factors.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { readBuffer } from '../device/readback.ts';
@@ -47,17 +48,6 @@ import {
 } from './buffer-layouts.ts';
 import type { InstancedMesh } from './prepare-patches.ts';
 import { LEVEL_DEFAULTS, LEVEL_MODE, type InstancedOptions, type LevelParams } from './instanced-options.ts';
-
-type LevelPass = 'patchEdges' | 'edgeView' | 'edgeFactorRule' | 'bucketPatches' | 'records';
-
-/** A level pass's pipeline, its group 0 layout and bindings, and group 3's where it reads the surface. */
-interface LevelPipeline {
-  pipeline: GPUComputePipeline;
-  layout: GPUBindGroupLayout;
-  used: (keyof typeof INST_LEVELS_GROUP.binding)[];
-  surfaceLayout?: GPUBindGroupLayout;
-  usedSurface: InstSurfaceBinding[];
-}
 
 export class InstancedLevels {
   readonly patterns = packPatterns();
@@ -168,37 +158,7 @@ export class InstancedLevels {
       ].join('\n');
     this.code = code;
     const levelsCode = code(INST_LEVELS_GROUP.wgsl(), factorRuleWgsl, levelsWgsl);
-    const levels = device.createShaderModule({ label: 'instanced levels', code: levelsCode });
-    const levelNames = Object.keys(INST_LEVELS_GROUP.binding) as (keyof typeof INST_LEVELS_GROUP.binding)[];
-    const noBindings = device.createBindGroupLayout({ label: 'instanced (no bindings)', entries: [] });
-    const pipeline = (entryPoint: LevelPass): LevelPipeline => {
-      const used = usedBindings(levelsCode, entryPoint, levelNames);
-      const usedSurface = usedBindings(levelsCode, entryPoint, this.surfaceNames);
-      const label = `instanced ${entryPoint}`;
-      const layout = device.createBindGroupLayout({ label, entries: INST_LEVELS_GROUP.layoutEntries(used) });
-      const surfaceLayout = usedSurface.length
-        ? device.createBindGroupLayout({ label: `${label} surface`, entries: INST_SURFACE_GROUP.layoutEntries(usedSurface) })
-        : undefined;
-      const groups = surfaceLayout ? [layout, noBindings, noBindings, surfaceLayout] : [layout];
-      return {
-        pipeline: device.createComputePipeline({
-          label,
-          layout: device.createPipelineLayout({ label, bindGroupLayouts: groups }),
-          compute: { module: levels, entryPoint },
-        }),
-        layout,
-        used,
-        surfaceLayout,
-        usedSurface,
-      };
-    };
-    this.levelPipelines = {
-      patchEdges: pipeline('patchEdges'),
-      edgeView: pipeline('edgeView'),
-      edgeFactorRule: pipeline('edgeFactorRule'),
-      bucketPatches: pipeline('bucketPatches'),
-      records: pipeline('records'),
-    };
+    this.levelPipelines = createLevelPipelines(device, levelsCode, this.surfaceNames);
 
     // Explicit layouts, from the bind group declarations: one bucket bind group with a dynamic
     // offset, shared by the lit, shadow and headless pipelines.
