@@ -33,6 +33,10 @@ import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
 import { prepareAccSurface, type AccSurface as AccSurfaceData } from '../src/gpu/acc/surface.ts';
 import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
+import { isAccSurface, SURFACE_SCHEMES, surfaceScheme, type SurfaceId } from '../src/gpu/surface/registry.ts';
+
+/** The exact surface, every other column's yardstick (the registry's one exact limit). */
+const EXACT = SURFACE_SCHEMES.find((s) => s.exactLimit)!.id;
 
 const REPEATS = 5;
 
@@ -280,18 +284,18 @@ export async function main(argv: string[]): Promise<number> {
     const cage = loadCage(readFileSync(`public/models/${file}`, 'utf8')).cage;
     const mesh = prepareMesh(cage);
     const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
-    const entries: { name: string; tess: Tessellator; acc?: AccSurfaceData; samples: Record<string, number>[] }[] = [];
-    const refused = new Set<string>();
+    const entries: { name: SurfaceId; tess: Tessellator; acc?: AccSurfaceData; samples: Record<string, number>[] }[] = [];
+    const refused = new Set<SurfaceId>();
     let ccData: CatmullClarkData | undefined;
     try {
       ccData = prepareCatmullClark(cage, mesh);
     } catch {
-      refused.add('catmull-clark');
+      refused.add(EXACT);
     }
     for (const name of ['phong', 'catmull-clark', ...ACC_SCHEMES] as const) {
       if (refused.has(name)) continue;
       let acc: AccSurfaceData | undefined;
-      if (name !== 'phong' && name !== 'catmull-clark') {
+      if (isAccSurface(name)) {
         try {
           acc = prepareAccSurface(device, cage, mesh, name);
         } catch {
@@ -304,7 +308,7 @@ export async function main(argv: string[]): Promise<number> {
     for (let round = 0; round < rounds + 1; round++) {
       for (const e of entries) {
         // Each tessellator holds one mesh at a time: set it again (CPU-side packing; not timed).
-        e.tess.setMesh(mesh, e.name === 'catmull-clark' ? ccData : undefined, e.acc);
+        e.tess.setMesh(mesh, surfaceScheme(e.name).patchBuild === 'refinement' ? ccData : undefined, e.acc);
         const enc = device.createCommandEncoder({ label: 'bench surface rebuild' });
         e.tess.encode(enc, cam);
         device.queue.submit([enc.finish()]);
@@ -321,15 +325,15 @@ export async function main(argv: string[]): Promise<number> {
       ms[e.name] = { tess: stages.filter((k) => k !== 'subdivision').reduce((a, k) => a + med(k), 0), build };
       e.acc?.patches.destroy();
     }
-    const exact = ms['catmull-clark'];
-    const cell = (name: string) => {
+    const exact = ms[EXACT];
+    const cell = (name: SurfaceId) => {
       const m = ms[name];
       if (!m) return 'refused';
-      if (name === 'catmull-clark') return `${m.tess.toFixed(3)} + ${m.build.toFixed(3)} build`;
+      if (surfaceScheme(name).patchBuild === 'refinement') return `${m.tess.toFixed(3)} + ${m.build.toFixed(3)} build`;
       return `${m.tess.toFixed(3)}${exact ? ` (${(m.tess / exact.tess).toFixed(2)}×)` : ''}`;
     };
     const out = new Uint32Array(await readBuffer(device, entries[0].tess.output.counts, 16));
-    const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${out[1]} | ${['phong', 'catmull-clark', ...ACC_SCHEMES].map(cell).join(' | ')} |`;
+    const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${out[1]} | ${(['phong', 'catmull-clark', ...ACC_SCHEMES] as const).map(cell).join(' | ')} |`;
     console.log(row);
     surfaceRows.push(row);
   }

@@ -20,6 +20,7 @@ import { factorRuleLevels, type LevelParams } from '../src/gpu/instanced/instanc
 import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
 import { weldInstanced } from '../src/gpu/instanced/headless-output.ts';
 import { ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
+import { isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
 
 function option(argv: string[], name: string): string | undefined {
   const i = argv.indexOf(name);
@@ -29,14 +30,17 @@ function option(argv: string[], name: string): string | undefined {
 export async function main(argv: string[]): Promise<number> {
   const lod = Number(option(argv, '--lod') ?? 1);
   const surface = option(argv, '--surface') ?? 'phong';
-  if (surface !== 'phong' && surface !== 'catmull-clark') {
-    console.error(`instanced-lod: --surface phong or catmull-clark, got ${surface}`);
+  // The surfaces the instanced tessellator evaluates from a cage alone or from a lending compute
+  // tessellator (an ACC surface needs its patches built: not benchmarked here).
+  const benched = SURFACE_IDS.filter((id) => surfaceScheme(id).instancedKind !== 'acc');
+  if (!isSurfaceId(surface) || !benched.includes(surface)) {
+    console.error(`instanced-lod: --surface ${benched.join(' or ')}, got ${surface}`);
     return 2;
   }
   const only = option(argv, '--models')?.split(',');
   const { device } = await createNodeDevice([]);
   const compute = Tessellator.create(device, bakeTables(64), { surface, flatBaseline: false });
-  const instanced = new InstancedTessellator(device, { surface: surface === 'catmull-clark' ? 'lent-limit' : 'evalSurface' });
+  const instanced = new InstancedTessellator(device, { surface: surfaceScheme(surface).instancedKind });
   console.log(`surface ${surface}, LOD scale ${lod}, the CLI's camera (1080 px high)`);
   console.log(
     '| model | compute adaptive tris | instanced dynamic (sample rule): drawn / welded | ratio | instanced factor rule: drawn / welded | ratio |',
@@ -52,12 +56,12 @@ export async function main(argv: string[]): Promise<number> {
     const mesh = prepareMesh(cage);
     let cc: ReturnType<typeof buildCatmullClark> | undefined;
     try {
-      cc = surface === 'catmull-clark' ? buildCatmullClark(cage, mesh) : undefined;
+      cc = surfaceScheme(surface).patchBuild === 'refinement' ? buildCatmullClark(cage, mesh) : undefined;
     } catch (e) {
       console.log(`| ${name} | refused: ${(e as Error).message} |`);
       continue;
     }
-    const o = { mode: 'adaptive' as const, lodScale: lod, surface: surface as 'phong' | 'catmull-clark' };
+    const o = { mode: 'adaptive' as const, lodScale: lod, surface };
     const c = await tessellateOnce(device, cage, o, compute, { mesh, cc });
     const cam = headlessCamera(mesh, o);
     const im = prepareInstanced(cage, mesh);

@@ -46,6 +46,7 @@ import { BUCKETS } from '../src/gpu/instanced/buffer-layouts.ts';
 import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { buildCatmullClark } from '../src/gpu/cc/build.ts';
+import { isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
 import { adapterNote, isSwiftShader, timeRebuild } from './bench.ts';
@@ -138,12 +139,15 @@ export async function main(argv: string[]): Promise<number> {
     return 2;
   }
   const surface = option(argv, '--surface') ?? 'phong';
-  if (surface !== 'phong' && surface !== 'catmull-clark') {
-    console.error(`bench:instanced: --surface phong or catmull-clark, got ${surface}`);
+  // The surfaces the instanced tessellator evaluates from a cage alone or from a lending compute
+  // tessellator (an ACC surface needs its patches built: not benchmarked here).
+  const benched = SURFACE_IDS.filter((id) => surfaceScheme(id).instancedKind !== 'acc');
+  if (!isSurfaceId(surface) || !benched.includes(surface)) {
+    console.error(`bench:instanced: --surface ${benched.join(' or ')}, got ${surface}`);
     return 2;
   }
-  const SECTION = SECTIONS[surface];
-  const cc = surface === 'catmull-clark';
+  const SECTION = SECTIONS[surface as keyof typeof SECTIONS];
+  const cc = surfaceScheme(surface).instancedKind === 'lent-limit';
   const repeats = Number(option(argv, '--repeats') ?? 3);
   const rounds = Number(option(argv, '--rounds') ?? 3);
   const only = option(argv, '--models')
@@ -162,7 +166,7 @@ export async function main(argv: string[]): Promise<number> {
     .sort()
     .filter((m) => !only || only.includes(m));
   const compute = Tessellator.create(device, bakeTables(64), { surface, flatBaseline: false });
-  const instanced = new InstancedTessellator(device, { surface: cc ? 'lent-limit' : 'evalSurface' });
+  const instanced = new InstancedTessellator(device, { surface: surfaceScheme(surface).instancedKind });
   const header =
     '| model | cage faces | patches | tessellator | tris drawn | build ms | lit pass ms | shadow pass ms | lit + 4 shadows ms | lit + 4 shadows per 1M tris | memory held |';
   const rule = '|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|';
