@@ -117,7 +117,9 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       ia = ca;
       ib = cb;
     }
-    if (e1 - e0 >= 1 << 12 || h1 - h0 >= 1 << 12) throw new Error(`vertex of valence ${e1 - e0} is not supported`);
+    // The rule word's count and faces fields (CC_RULE_WORD) bound the valence this build takes.
+    const most = Math.min(2 ** CC_RULE_WORD.fields.count[1], 2 ** CC_RULE_WORD.fields.faces[1]) - 1;
+    if (e1 - e0 > most || h1 - h0 > most) throw new Error(`vertex of valence ${e1 - e0} is not supported (at most ${most})`);
     rules.push(CC_RULE_WORD.pack({ kind: RULE_VERTEX, parent: pr, child: cr, sharp: 0, count: e1 - e0, faces: h1 - h0 }));
     rules.push(first);
     // A sharp vertex (either rule not smooth) carries its crease pair and W after its inputs.
