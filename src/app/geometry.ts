@@ -9,6 +9,7 @@ import type { FactorParams, TessellatedMesh } from '../gpu/contract/tessellated-
 import { destroyMesh, uploadCageMesh } from '../gpu/render/cage-mesh.ts';
 import { prepareMesh, Tessellator } from '../gpu/tess/tessellator.ts';
 import { bakeTables } from '../pattern/tables.ts';
+import { MAX_FACTOR } from '../pattern/max-factor.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { isAccSurface, type SurfaceId as Surface } from '../gpu/surface/registry.ts';
 import { accPatchKinds, prepareAccSurface, type AccSurface } from '../gpu/acc/surface.ts';
@@ -74,12 +75,9 @@ export class CageGeometry implements GeometrySource {
   }
 }
 
-/** Largest tess factor of the baked pattern tables. */
-const MAX_FACTOR = 64;
-
 let bakedTables: Uint32Array | null = null;
 
-/** The pattern tables every tessellator of the page uses (baked once). */
+/** The pattern tables every tessellator of the page uses (baked once, up to the largest factor). */
 export function patternTables(): Uint32Array {
   bakedTables ??= bakeTables(MAX_FACTOR);
   return bakedTables;

@@ -3,6 +3,8 @@
  * or reproduced: `?model=torus&mode=fixed&factor=12&wire=1&cage=0&lod=1.5&up=z&t=0&surface=phong`.
  * Pure functions (no DOM) so the unit tests can hold them to their contract.
  */
+import { MAX_FACTOR } from '../pattern/max-factor.ts';
+import { POW2_LEVELS } from '../pattern/pow2.ts';
 
 export type Mode = 'adaptive' | 'fixed';
 export type UpAxis = 'y' | 'z';
@@ -52,7 +54,7 @@ export interface DemoParams {
   /** `tessellator=instanced`: the instanced power-of-two tessellator draws instead (Phong
    * surface; factors adaptive → its dynamic LOD scaled by `lod`, fixed → every patch at `level`). */
   tessellator: TessellatorKind;
-  /** The instanced tessellator's static level: a power of two in 1..64. */
+  /** The instanced tessellator's static level: one of LEVEL_CHOICES (powers of two). */
   level: number;
   /** Split view: the compute tessellator on the left half, the instanced one on the right, same
    * cage, camera and settings (whatever `tessellator` says). */
@@ -93,9 +95,10 @@ export type InstancedSurface = 'phong' | 'catmull-clark' | 'bezier-acc' | 'grego
 export const INSTANCED_SURFACES: readonly InstancedSurface[] = ['phong', 'catmull-clark', 'bezier-acc', 'gregory-acc', 'pm-acc'];
 
 export const LOD_RANGE = { min: 0.05, max: 8 } as const;
-export const FACTOR_RANGE = { min: 1, max: 64 } as const;
+export const FACTOR_RANGE = { min: 1, max: MAX_FACTOR } as const;
 export const CAPACITY_RANGE = { min: 0.01, max: 16 } as const;
-export const LEVEL_CHOICES = [1, 2, 4, 8, 16, 32, 64] as const;
+/** The instanced tessellator's levels: its patterns' (src/pattern/pow2.ts). */
+export const LEVEL_CHOICES = POW2_LEVELS;
 export const DSCALE_RANGE = { min: -4, max: 4 } as const;
 
 export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
@@ -173,7 +176,7 @@ export function parseParams(search: string): DemoParams {
   const tessellator = q.get('tessellator')?.trim().toLowerCase();
   if (tessellator === 'compute' || tessellator === 'instanced') p.tessellator = tessellator;
   // Any level in range, rounded down to a power of two (what the instanced patterns have).
-  const level = num(q.get('level'), 1, 64);
+  const level = num(q.get('level'), LEVEL_CHOICES[0], LEVEL_CHOICES[LEVEL_CHOICES.length - 1]);
   if (level !== null) p.level = 2 ** Math.floor(Math.log2(level));
   p.split = bool(q.get('split')) ?? p.split;
   const instSurface = q.get('instsurface')?.trim().toLowerCase();
