@@ -1,9 +1,10 @@
 /**
  * What the demo draws, on the current device: the model (the controller's: src/app/controller.ts)
  * placed in the world, its surface's tessellator and the flat cage, the comparison's right half,
- * the instanced tessellator, the error views, height maps and the cage overlay; and the load flow
- * that changes them (models by name, URL or file, and PNG height maps). Drawing its frames, the
- * stats and the legend are the demo's (src/app/tessellation-demo.ts).
+ * the instanced tessellator, the error views, height maps and the cage overlay; the mode that
+ * draws them (src/app/modes/; which one: pick-mode.ts); and the load flow that changes them
+ * (models by name, URL or file, and PNG height maps). Drawing its frames, the stats and the
+ * legend are the demo's (src/app/tessellation-demo.ts).
  */
 import { isClosed } from '../mesh/index.ts';
 import { boundsOf, transformBounds, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/render/camera.ts';
@@ -18,15 +19,18 @@ import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurfac
 import { loadModelFromFile, loadModelFromUrl, type LoadedModel } from './models.ts';
 import { formatParams, type DemoParams } from './params.ts';
 import { HEAT_DEFAULT_RANGE } from '../gpu/acc/heat.ts';
-import type { ErrorStats } from './stats.ts';
 import { ErrorViews } from './error-views.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
 import type { DisplacementSettings, HeightEntry } from './displacement.ts';
 import { findEdge, uvCoverage, uvSeams } from '../mesh/index.ts';
-import { isAcc, isExact, preparedAhead, SURFACE_NAMES } from './surfaces.ts';
+import { preparedAhead, SURFACE_NAMES } from './surfaces.ts';
 import { CompareView } from './compare-view.ts';
 import { InstancedDrawer } from './instanced-drawer.ts';
 import { fetchBuiltinModel, readHeightMap, userHeightEntry } from './model-loading.ts';
+import { makeMode } from './modes/make-mode.ts';
+import type { DemoMode, ModeHost } from './modes/mode.ts';
+import { ModeSwitch } from './modes/mode-switch.ts';
+import { pickMode } from './modes/pick-mode.ts';
 
 export type CameraParams = Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>;
 
@@ -97,10 +101,57 @@ export abstract class DemoScene extends DemoBase {
     this.#hold = { held: true, promise, release };
   }
 
+  /** The mode drawn (src/app/modes/), swapped when pickMode's answer changes. */
+  readonly #modes: ModeSwitch<DemoMode>;
+
   constructor(canvas: HTMLCanvasElement, params: DemoParams) {
     super(canvas, { frozenTime: params.t });
     this.params = params;
     this.controller = new DemoController(this.#ports(), params.surface);
+    const host = this.#modeHost();
+    this.#modes = new ModeSwitch((id) => makeMode(id, host));
+  }
+
+  /** The mode that draws what is asked for, as far as the shown model and the device allow. */
+  get mode(): DemoMode {
+    const caps = { model: this.model !== null, shown: this.shownSurface, vertexStorage: this.renderer?.vertexStorage ?? true };
+    return this.#modes.to(pickMode(this.params, caps));
+  }
+
+  /** What the modes draw with: the scene's objects as they are at each call. */
+  #modeHost(): ModeHost {
+    const scene = this;
+    return {
+      get params() {
+        return scene.params;
+      },
+      get shown() {
+        return scene.shownSurface;
+      },
+      get model() {
+        return scene.model;
+      },
+      get tessellator() {
+        const geometry = scene.geometry;
+        return geometry instanceof TessellatorGeometry ? geometry : null;
+      },
+      get cc() {
+        return scene.cc;
+      },
+      tables: this.tables,
+      instanced: this.instanced,
+      compare: this.compare,
+      get errors() {
+        return scene.errors;
+      },
+      get errorRange() {
+        return scene.errorRange;
+      },
+      get closed() {
+        return scene.closed;
+      },
+      compareGeometry: () => this.compareGeometry(),
+    };
   }
 
   /** The page's side of the controller. */
@@ -185,19 +236,6 @@ export abstract class DemoScene extends DemoBase {
     this.compare.deviceLost();
   }
 
-  /** The error views draw: asked for, and an ACC scheme is drawn by the compute tessellator. */
-  get errorViewActive(): boolean {
-    return (
-      this.params.errorView !== 'off' && isAcc(this.shownSurface) && this.model !== null && (!this.instancedActive || this.splitActive)
-    );
-  }
-
-  /** The comparison view: asked for, a surface is shown, and the instanced tessellator is off
-   * (its split view is the other use of the two halves). */
-  get compareActive(): boolean {
-    return this.params.compare !== null && this.shownSurface !== 'cage' && this.model !== null && !this.instancedActive;
-  }
-
   /** The colour bar's top, in the view's unit. */
   get errorRange(): number {
     const view = this.params.errorView === 'normal' ? 'normal' : 'geometry';
@@ -223,23 +261,6 @@ export abstract class DemoScene extends DemoBase {
     );
   }
 
-  /** The error view's rows of the stats: the main surface and the comparison's right half. */
-  protected errorStats(): ErrorStats[] {
-    const model = this.model,
-      errors = this.errors;
-    if (!model || !errors || (this.params.errorView === 'off' && !this.compareActive)) return [];
-    const unavailable = this.tables.refusal(model.cage);
-    const out: ErrorStats[] = [];
-    const compare = this.compareActive;
-    const main = this.geometry instanceof TessellatorGeometry ? this.geometry : null;
-    if (isAcc(this.shownSurface) && (this.errorViewActive || compare))
-      out.push({ surface: this.shownSurface, side: compare ? 'left' : undefined, totals: errors.totals(main), unavailable });
-    const cmp = compare ? this.params.compare : null;
-    if (cmp && isAcc(cmp) && this.compare.holds(model.cage))
-      out.push({ surface: cmp, side: 'right', totals: errors.totals(this.compare.tessellator), unavailable });
-    return out;
-  }
-
   /** The surface drawn now: the one asked for, but Phong where the model has no Catmull-Clark
    * tables (refused, or still being built). */
   get shownSurface(): Shown {
@@ -255,32 +276,18 @@ export abstract class DemoScene extends DemoBase {
     return surface === 'cage' ? this.#flat : (this.tess[surface] ?? null);
   }
 
-  /** The instanced tessellator draws, alone or in the split view (asked for, and a surface
-   * rather than the flat cage is shown). */
-  get instancedActive(): boolean {
-    return (
-      (this.params.tessellator === 'instanced' || this.params.split) &&
-      this.shownSurface !== 'cage' &&
-      this.model !== null &&
-      (this.renderer?.vertexStorage ?? true)
-    );
-  }
-
-  /** The split view: compute on the left half, instanced on the right, same cage and camera. */
-  get splitActive(): boolean {
-    return this.params.split && this.instancedActive;
-  }
-
   /** Hand the renderer the instanced tessellator (the model's patches uploaded) or take it back,
    * for `model` drawn as `surface` (at upload: before the controller commits them). */
   protected syncDrawer(model: LoadedModel | null, surface: Shown): void {
     const renderer = this.renderer;
     if (!renderer) return;
     renderer.setDrawer(null);
-    if ((this.params.tessellator !== 'instanced' && !this.params.split) || surface === 'cage' || !model) return;
-    // It evaluates in the vertex stage, from storage: not on a device without vertex-stage storage
-    // (compatibility mode; the clamp message says so once), where the compute tessellator draws.
-    if (!renderer.vertexStorage) return;
+    if (!model) return;
+    // The mode `model` and `surface` will be drawn in (src/app/modes/pick-mode.ts): not on the flat
+    // cage, nor on a device without vertex-stage storage (compatibility mode; the clamp message
+    // says so once), where the compute tessellator draws.
+    const mode = pickMode(this.params, { model: true, shown: surface, vertexStorage: renderer.vertexStorage });
+    if (mode !== 'instanced' && mode !== 'split') return;
     const height = this.#heights.get(model.cage)?.height ?? null;
     const settings = this.#displacementSettings(model);
     const view = this.instanced.sync(
@@ -292,14 +299,14 @@ export abstract class DemoScene extends DemoBase {
       settings,
       this.params.flatShade,
     );
-    // The split view hands it over per half, in onFrame.
-    if (!this.params.split) renderer.setDrawer(view.tess);
+    // The split view hands it over per half, in its frame (src/app/modes/split-mode.ts).
+    if (mode === 'instanced') renderer.setDrawer(view.tess);
   }
 
   /** Test hook: the GPU's bucket draw records of the latest level pass, and the CPU's count for
    * static mode (null in dynamic mode). */
   instancedRecords(): ReturnType<InstancedDrawer['records']> {
-    return this.instancedActive ? this.instanced.records() : Promise.resolve(null);
+    return this.mode.instanced ? this.instanced.records() : Promise.resolve(null);
   }
 
   /** The tessellator for `surface`, created on first use (the other one is freed). */
@@ -311,12 +318,6 @@ export abstract class DemoScene extends DemoBase {
       this.tess = { [surface]: tess };
     }
     return tess;
-  }
-
-  /** Patch colours are on and there are patches to colour. */
-  get patchColours(): boolean {
-    // The instanced tessellator colours its patches by domain (quad, triangle) on any surface.
-    return this.params.patches && (isExact(this.shownSurface) || isAcc(this.shownSurface) || this.instancedActive);
   }
 
   /** Hand the renderer the values of `pass` (null: none), unless they are bound already. */

@@ -5,15 +5,16 @@
  * change; every other frame draws the stored buffers again. The Catmull-Clark data (topology only)
  * is prepared on the CPU once per model (cc-tables.ts); the GPU builds the patches every frame.
  *
- * What is drawn and the load flow that changes it are the scene's (demo-scene.ts); this file draws
- * its frames (compute, instanced, split, comparison, error views), reads back the counts and
- * timings, and keeps the stats and the legend. The page's entry is main.ts, its panel panel.ts.
+ * What is drawn and the load flow that changes it are the scene's (demo-scene.ts), the passes of
+ * each mode (compute, instanced, split, comparison, error views) the mode's (modes/); this file
+ * sets up its frames and encodes their builds, reads back the counts and timings, and keeps the
+ * stats and the legend. The page's entry is main.ts, its panel panel.ts.
  */
 import { mat4 } from 'gl-matrix';
 import { cameraMatrices, transformPoint, type OrbitCamera } from '../gpu/render/camera.ts';
 import type { FactorParams } from '../gpu/contract/tessellated-mesh.ts';
 import { CountsReader, type MeshCounts } from './counts.ts';
-import { TessellatorGeometry } from './geometry.ts';
+import { TessellatorGeometry, type GeometrySource } from './geometry.ts';
 import type { LoadedModel } from './models.ts';
 import type { CompareSurface, DemoParams } from './params.ts';
 import { factorRuleLevels, type LevelParams } from '../gpu/instanced/instanced-options.ts';
@@ -21,10 +22,9 @@ import { OtherModeProbe } from './other-mode.ts';
 import { renderStats } from './stats.ts';
 import { TrailingThrottle } from './throttle.ts';
 import { setLoading, setPageState } from './ui.ts';
-import { isAcc, isExact, SURFACE_NAMES } from './surfaces.ts';
-import { accPatchLegend, ccPatchLegend, compareLabel, heatLegend, instancedPatchLegend } from './legend.ts';
 import { DemoScene } from './demo-scene.ts';
-import { BuildStaleness } from './build-staleness.ts';
+import { BuildStaleness, type FramePlan } from './build-staleness.ts';
+import type { Builds } from './modes/mode.ts';
 
 /** Turntable speed, radians per second. */
 const SPIN_SPEED = 0.35;
@@ -98,19 +98,6 @@ export class TessellationDemo extends DemoScene {
     this.updateStats(true);
   }
 
-  /** The comparison's labels over the two halves: each surface and its max / RMS error. */
-  #updateCompareLabels(): void {
-    this.compare.showLabels(this.compareActive && this.params.ui, () => {
-      const stats = this.errorStats();
-      const cmp = this.params.compare!;
-      const refused = this.compare.refusal(this.model?.cage, cmp) !== null;
-      return [
-        compareLabel(this.shownSurface, 'left', stats, this.params.errorView),
-        refused ? `${SURFACE_NAMES[cmp]} · unavailable for this cage` : compareLabel(cmp, 'right', stats, this.params.errorView),
-      ];
-    });
-  }
-
   /** The instanced tessellator's flat shading (the panel, the URL). */
   setInstancedFlat(flat: boolean): void {
     this.params.flatShade = flat;
@@ -153,24 +140,14 @@ export class TessellationDemo extends DemoScene {
     return factorRuleLevels(factors);
   }
 
-  /** The legend of the patch colours, with each kind's share of the cage's triangles. */
+  /** The legend, the mode's: the patch colours (each kind's share of the cage's triangles) or the
+   * error views' colour bar; hidden when it has none. */
   updateLegend(): void {
     const legend = document.getElementById('legend');
     if (!legend) return;
-    this.#updateCompareLabels();
-    if (this.params.errorView !== 'off' && (this.errorViewActive || (this.compareActive && isAcc(this.params.compare)))) {
-      legend.hidden = false;
-      legend.innerHTML = heatLegend(this.params.errorView, this.errorRange, this.errorStats());
-      return;
-    }
-    legend.hidden = !this.patchColours;
-    if (legend.hidden) return;
-    const inst = this.instancedActive && !this.splitActive ? this.instanced.view : null;
-    const shown = this.shownSurface;
-    const accKinds = shown !== 'cage' ? this.tess[shown]?.accPatchKinds : null;
-    if (inst) legend.innerHTML = instancedPatchLegend(inst.patchColourCounts(), isAcc(inst.surface) || isExact(inst.surface));
-    else if (accKinds) legend.innerHTML = accPatchLegend(shown, accKinds);
-    else legend.innerHTML = ccPatchLegend(this.cc?.data.triKind ?? new Uint8Array());
+    const html = this.mode.legend();
+    legend.hidden = html === null;
+    if (html !== null) legend.innerHTML = html;
   }
 
   protected override isAnimating(): boolean {
@@ -215,16 +192,35 @@ export class TessellationDemo extends DemoScene {
       fovY: cam.fovY,
     };
     this.#frameFactors = factors;
-    const instanced = this.instancedActive ? this.instanced.view : null;
-    const split = this.splitActive;
-    // The compute tessellator builds when it is drawn (alone, or the split view's left half).
-    const computeDrawn = !instanced || split;
+    // The mode's builds, then its passes (src/app/modes/).
+    const mode = this.mode;
+    const plan = this.#build(encoder, geometry, mode.builds(), factors);
+    mode.frame(encoder, {
+      renderer,
+      target,
+      geometry,
+      factors,
+      plan,
+      view: { viewProj, model: this.modelMatrix, eye: m.eye },
+      options: { wireframe: this.params.wire, cage: this.params.cage || this.params.seams, patchColours: mode.patchColours() },
+      heat: this.params.errorView === 'off' ? null : { view: this.params.errorView, range: this.errorRange },
+      measure: (enc, measured, compareRebuilt) => this.#measure(enc, measured, compareRebuilt, factors),
+      bindHeat: (pass) => this.bindHeat(renderer, pass),
+      countBuild: () => this.#rebuilds++,
+    });
+  }
+
+  /** What the frame builds (`builds`: the mode's), as the staleness rule says: the instanced
+   * tessellator's level pass (else the copy of its owed counts), the compute tessellator's build
+   * and the copy of its counts. */
+  #build(encoder: GPUCommandEncoder, geometry: GeometrySource, builds: Builds, factors: FactorParams): FramePlan {
+    const instanced = builds.instanced;
     const plan = this.#staleness.plan({
       spin: this.params.spin,
       dependsOnCamera: geometry.dependsOnCamera(this.params),
       adaptive: this.params.mode === 'adaptive',
       instanced: instanced !== null,
-      computeDrawn,
+      computeDrawn: builds.compute,
       hasOutput: !!geometry.output,
     });
     this.#rebuiltThisFrame = plan.build;
@@ -247,67 +243,29 @@ export class TessellationDemo extends DemoScene {
     // The counts of the latest build, copied once the reader is free: a copy skipped because a
     // read was still in flight would leave the stats' output row at "…" until the next rebuild
     // (and the demo draws on demand: there may be none).
-    if (computeDrawn && this.#countsOwed && geometry.output && this.#counts?.idle) {
+    if (builds.compute && this.#countsOwed && geometry.output && this.#counts?.idle) {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
     }
-    // The comparison's right half, rebuilt with the left one (and when it is new).
-    const compare = this.compareActive ? this.compareGeometry() : null;
-    let compareRebuilt = false;
-    if (compare?.output && (plan.stale || this.compare.dirty)) {
-      compare.flatBaseline = this.params.flat;
-      compare.encode(encoder, factors);
-      this.compare.dirty = false;
-      compareRebuilt = true;
-      this.#rebuilds++;
-    }
-    // The error passes, after the builds they measure (and the first time, for a new pass).
-    const errors = this.errors;
-    const main = computeDrawn && geometry instanceof TessellatorGeometry && isAcc(this.shownSurface) ? geometry : null;
-    const measured = [this.errorViewActive || compare ? main : null, compare && isAcc(compare.surface) ? compare : null];
-    errors?.retain(measured);
-    const tables = this.model && measured.some(Boolean) ? this.tables.get(this.model.cage) : null;
-    if (errors && this.model && tables && typeof tables !== 'string') {
-      measured.forEach((g, i) => {
-        if (g && errors.passFor(g, this.model!.cage, tables))
-          errors.encode(encoder, g, i ? compareRebuilt : this.#rebuiltThisFrame, factors);
-      });
-    }
-    const heatView = this.params.errorView === 'off' ? null : { view: this.params.errorView, range: this.errorRange };
-    const mainHeat = heatView && this.errorViewActive ? (errors?.ready(main) ?? null) : null;
-    this.bindHeat(renderer, mainHeat);
+    return plan;
+  }
 
-    const view = { viewProj, model: this.modelMatrix, eye: m.eye };
-    const options = {
-      wireframe: this.params.wire,
-      cage: this.params.cage || this.params.seams,
-      patchColours: this.patchColours,
-      heat: mainHeat ? heatView : null,
-    };
-    if (compare && geometry.output) {
-      // The same camera twice: the surface on the left half, the compared one on the right, each
-      // with its own shadow pass, timing slot and heat values.
-      renderer.render(encoder, target, view, { ...options, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
-      const cmpHeat = heatView && isAcc(compare.surface) ? (errors?.ready(compare) ?? null) : null;
-      renderer.setMesh(compare.output, this.closed);
-      this.bindHeat(renderer, cmpHeat);
-      renderer.render(encoder, target, view, {
-        ...options,
-        patchColours: options.patchColours && isExact(compare.surface),
-        heat: cmpHeat ? heatView : null,
-        region: { x0: 0.5, x1: 1, first: false, slot: 1 },
-      });
-      renderer.setMesh(geometry.output, this.closed);
-      this.bindHeat(renderer, mainHeat);
-    } else if (split && instanced) {
-      // The same camera twice: compute's stored mesh on the left half, the instanced
-      // tessellator on the right, each with its own shadow pass and timing slot.
-      renderer.setDrawer(null);
-      renderer.render(encoder, target, view, { ...options, region: { x0: 0, x1: 0.5, first: true, slot: 0 } });
-      renderer.setDrawer(instanced.tess);
-      renderer.render(encoder, target, view, { ...options, region: { x0: 0.5, x1: 1, first: false, slot: 1 } });
-      renderer.setDrawer(null);
-    } else renderer.render(encoder, target, view, options);
+  /** The error passes of `measured` (a mode's: the left or only surface, the comparison's right
+   * half), after the builds they measure (and the first time, for a new pass); the others go. */
+  #measure(
+    encoder: GPUCommandEncoder,
+    measured: readonly [TessellatorGeometry | null, TessellatorGeometry | null],
+    compareRebuilt: boolean,
+    factors: FactorParams,
+  ): void {
+    const errors = this.errors;
+    const model = this.model;
+    errors?.retain(measured);
+    const tables = model && measured.some(Boolean) ? this.tables.get(model.cage) : null;
+    if (!errors || !model || !tables || typeof tables === 'string') return;
+    measured.forEach((g, i) => {
+      if (g && errors.passFor(g, model.cage, tables)) errors.encode(encoder, g, i ? compareRebuilt : this.#rebuiltThisFrame, factors);
+    });
   }
 
   /**
@@ -324,7 +282,7 @@ export class TessellationDemo extends DemoScene {
     const frame = this.#frameFactors;
     const built = this.#builtFactors;
     if (!(geometry instanceof TessellatorGeometry) || !geometry.output || !reader || !frame || !built || !this.model) return;
-    if (this.instancedActive) return;
+    if (this.mode.instanced) return;
     const output = geometry.output;
     const other = this.params.mode === 'fixed' ? 'adaptive' : 'fixed';
     const setting = other === 'fixed' ? `factor ${this.params.factor}` : `LOD ${this.params.lod}`;
@@ -363,7 +321,7 @@ export class TessellationDemo extends DemoScene {
       this.updateStats();
       if (this.#countsOwed) this.requestFrame();
     });
-    if (this.instanced.view && this.instancedActive) {
+    if (this.instanced.view && this.mode.instanced) {
       const view = this.instanced.view;
       void quietly(view.read(), null).then((counts) => {
         if (counts) this.instanced.counts = counts;
@@ -419,6 +377,8 @@ export class TessellationDemo extends DemoScene {
   #renderStats(): void {
     const panel = document.getElementById('stats');
     if (!panel || !this.params.ui) return;
+    const mode = this.mode;
+    const { compare, instanced } = mode.stats();
     panel.innerHTML = renderStats({
       model: this.model,
       counts: this.#lastCounts,
@@ -445,23 +405,9 @@ export class TessellationDemo extends DemoScene {
       adapter: this.gpu.adapterName,
       memory: this.memory.counts,
       clamps: this.clamps,
-      errors: this.errorStats(),
-      compare: this.compareActive
-        ? {
-            surface: this.params.compare!,
-            refused: this.compare.refusal(this.model?.cage, this.params.compare),
-          }
-        : null,
-      instanced: this.instancedActive
-        ? {
-            split: this.splitActive,
-            surface: this.instanced.view?.surface ?? 'phong',
-            asked: this.params.instSurface,
-            fallback: this.instanced.refusal(this.model?.cage, this.params.instSurface),
-            counts: this.instanced.counts,
-            setting: this.params.mode === 'fixed' ? `static level ${this.params.level}` : `dynamic LOD ${this.params.lod}`,
-          }
-        : null,
+      errors: mode.errorStats(),
+      compare,
+      instanced,
     });
   }
 
