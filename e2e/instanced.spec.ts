@@ -119,6 +119,9 @@ test('split view: compute on the left, instanced on the right, same cage and cam
 test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the scheme refuses falls back to Phong and says why', async ({
   page,
 }) => {
+  // Two page loads, each compiling an ACC surface's pipelines on SwiftShader: 25-37 s alone, past
+  // the default 60 s once with two workers on two cores (a time budget, not a race).
+  test.setTimeout(150_000);
   const errors = collectErrors(page);
   await page.goto('/?model=torus&tessellator=instanced&instsurface=gregory-acc&mode=fixed&level=8&t=0');
   await ready(page);
