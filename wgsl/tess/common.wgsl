@@ -13,7 +13,7 @@
 //              and the budget state (BUDGET_* words at params.offBudget)
 // Each array's offset is the Params field `off` + its name.
 
-const PHONG_ALPHA: f32 = 0.75;
+// PHONG_ALPHA comes with the prelude (src/gpu/contract/constants.ts).
 
 // The plan and emit passes run once the budget accepted counts that fit.
 fn emitEnabled() -> bool {

@@ -28,9 +28,22 @@
  * tests/gpu/contract/contract.test.ts parses the generated WGSL back and checks it against the TypeScript
  * views; tests/gpu/contract/contract.gpu.test.ts runs it through a real WGSL compiler.
  */
+import {
+  KIND_BEZIER,
+  KIND_GREGORY_QUAD,
+  KIND_GREGORY_TRI,
+  KIND_PM_QUAD,
+  KIND_PM_TRI,
+  KIND_PM_TRI_LS,
+  KIND_REGULAR,
+  SECTOR_CONE,
+  SECTOR_CORNER,
+  SECTOR_CREASE,
+  TRI_FACE,
+} from '../../subdiv/acc.ts';
 import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_SECTOR_WORD } from './acc.ts';
 import { CC_BUILD_GROUP, CC_NONE, CC_RANGE } from './cc.ts';
-import { constantsWgsl } from './constants.ts';
+import { constantsWgsl, PHONG_ALPHA } from './constants.ts';
 import { wgslConstants, wgslF32 } from './define.ts';
 import { GROUND_EXTENT, PATCH_COLOURS, SCENE_GROUP, SCENE_UNIFORMS } from './render.ts';
 import {
@@ -57,7 +70,12 @@ export function ccBuildPrelude(): string {
 
 /** What wgsl/acc/build.wgsl starts with: its uniforms, the constants, its bindings, the sector word. */
 export function accBuildPrelude(): string {
-  return [ACC_BUILD_PARAMS.wgsl, constantsWgsl, ACC_BUILD_GROUP.wgsl(), ACC_SECTOR_WORD.wgsl].join('\n');
+  // The patch kinds, the sector kinds and the ring's triangle marker, as the CPU's ACC writes them.
+  const acc = { TRI_FACE, KIND_REGULAR, KIND_BEZIER, KIND_GREGORY_QUAD, KIND_GREGORY_TRI, KIND_PM_QUAD, KIND_PM_TRI, KIND_PM_TRI_LS };
+  const sectors = { SECTOR_CREASE, SECTOR_CORNER, SECTOR_CONE };
+  return [ACC_BUILD_PARAMS.wgsl, constantsWgsl, wgslConstants({ ...acc, ...sectors }), ACC_BUILD_GROUP.wgsl(), ACC_SECTOR_WORD.wgsl].join(
+    '\n',
+  );
 }
 
 /** What every tessellator shader starts with: Params, the constants, the bindings `names` (all by
@@ -67,6 +85,7 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     TESS_PARAMS.wgsl,
     constantsWgsl,
     wgslConstants(TESS_CONSTANTS),
+    `const PHONG_ALPHA: f32 = ${wgslF32(PHONG_ALPHA)};`,
     TESS_GROUP.wgsl(names),
     PATTERN_FRAME_WORD.wgsl,
     BARY_WORD.wgsl,

@@ -60,10 +60,10 @@
  * triangle beside them is on screen.
  */
 import { ONE } from '../../pattern/fixed.ts';
-import { MAX_FACTOR } from '../contract/constants.ts';
+import { MAX_FACTOR, PHONG_ALPHA } from '../contract/constants.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
 
-export const PHONG_ALPHA = 0.75;
+export { PHONG_ALPHA };
 
 export type Vec3 = readonly [number, number, number];
 
