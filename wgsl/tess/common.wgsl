@@ -9,8 +9,9 @@
 //              edgeOwner, vertexOwner; the Catmull-Clark tables
 //   cageBuf    TESS_CAGE: cage positions then vertex normals, 3 f32 each (rewritten when the
 //              cage moves); with the Catmull-Clark surface then its control points and limits
-//   work       TESS_WORK: per-edge and per-triangle counts, their prefix sums, the planned rows,
-//              and the budget state (BUDGET_* words at params.offBudget)
+//   work       TESS_WORK: per-edge and per-triangle counts at every budget candidate, the chosen
+//              one's prefix sums, the planned rows, and the budget state (BUDGET_* words at
+//              params.offBudget)
 // Each array's offset is the Params field `off` + its name.
 
 // PHONG_ALPHA comes with the prelude (src/gpu/contract/constants.ts).
@@ -94,10 +95,13 @@ fn edgeVert(e: u32, i: u32) -> u32 { return staticBuf[params.offEdgeVerts + 2u *
 fn cornerSlot(t: u32, i: u32) -> u32 { return staticBuf[params.offCornerSlot + 3u * t + i]; }
 fn edgeSplit(e: u32) -> bool { return staticBuf[params.offEdgeSplit + e] != 0u; }
 
-// Per-edge results of the factor pass.
-fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + e]; }
-fn edgeState(e: u32) -> u32 { return work[params.offEdgeState + e]; }
-fn edgeSegments(e: u32) -> u32 { return work[params.offEdgeSegs + e]; }
+// Per-edge results of the factor pass, in the lane of budget candidate edgeLane / nEdges
+// (contract/tess.ts TESS_WORK): only the count pass, which counts every candidate, moves it; the
+// scan's last pass copies the chosen candidate's lane to lane 0, which everything after it reads.
+var<private> edgeLane: u32 = 0u;
+fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + edgeLane + e]; }
+fn edgeState(e: u32) -> u32 { return work[params.offEdgeState + edgeLane + e]; }
+fn edgeSegments(e: u32) -> u32 { return work[params.offEdgeSegs + edgeLane + e]; }
 
 // A triangle's pattern frame (src/pattern/clamped.ts PatternFrame): which corners play A, B, C,
 // which edges play bottom, left, right and whether each runs against its edge; mirrored or not.

@@ -1,4 +1,4 @@
-// Pass 2 of each budget attempt, one thread per triangle: how many interior vertices and how
+// After the factors, one thread per triangle, at every budget candidate: how many interior vertices and how
 // many triangles its clamped-parallelogram pattern has (edge and corner vertices belong to
 // the edges and corners, and are counted there). Same construction as src/pattern/clamped.ts:
 //   rows j = 0..nl, row 0 keeps k_0 columns (wgsl/tess/pattern.wgsl rowZeroKept), row j ≥ 1 keeps
@@ -10,18 +10,24 @@
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let t = flatIndex(wid, lid);
-  if (t >= params.nTris || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
-  let L = triLines(t);
-  var interior = 0u;
-  var triangles = L.bottom.n - 1u; // k_0 + (nb − 1 − k_0)
-  for (var j = 1u; j < L.left.n; j++) {
-    let k = keptColumns(L.bottom, rowEnd(L, j));
-    interior += k;
-    triangles += 2u * k;
+  if (t >= params.nTris) { return; }
+  // At every budget candidate (the factor pass wrote each one's edges in its own lane), so that
+  // the budget can choose after one scan (contract/tess.ts BUDGET_SCALES).
+  for (var c = 0u; c < BUDGET_CANDIDATES; c++) {
+    edgeLane = c * params.nEdges;
+    let L = triLines(t);
+    var interior = 0u;
+    var triangles = L.bottom.n - 1u; // k_0 + (nb − 1 − k_0)
+    for (var j = 1u; j < L.left.n; j++) {
+      let k = keptColumns(L.bottom, rowEnd(L, j));
+      interior += k;
+      triangles += 2u * k;
+    }
+    // Σ_{j<nl}(k_j + k_{j+1}) = k_0 + 2·Σ_{0<j<nl} k_j + k_nl, with k_nl = 0.
+    triangles += L.left.n + L.right.n - 1u;
+    let at = c * params.nTris + t;
+    work[params.offTriVertCount + at] = interior;
+    work[params.offTriTriCount + at] = triangles;
+    work[params.offTriRowCount + at] = L.left.n + 1u; // rows 0..nl, for the plan
   }
-  // Σ_{j<nl}(k_j + k_{j+1}) = k_0 + 2·Σ_{0<j<nl} k_j + k_nl, with k_nl = 0.
-  triangles += L.left.n + L.right.n - 1u;
-  work[params.offTriVertCount + t] = interior;
-  work[params.offTriTriCount + t] = triangles;
-  work[params.offTriRowCount + t] = L.left.n + 1u; // rows 0..nl, for the plan
 }

@@ -1,5 +1,5 @@
-// Pass 1 of each budget attempt, one thread per mesh edge: the edge's tess factor (computed
-// once per edge, so its two triangles cannot disagree), its line state and segment count.
+// One thread per mesh edge: the edge's tess factor (computed once per edge, so its two triangles
+// cannot disagree), its line state and segment count, at every budget candidate.
 // Mirrors src/gpu/tess/factors.ts edgeFactor; the curvature measure is wgsl/tess/factor-rule.wgsl's, and the
 // bulge term of the edge's two triangles is wgsl/tess/factor-bulge.wgsl's (its pass has run).
 
@@ -54,19 +54,23 @@ fn adaptiveFactor(e: u32) -> f32 {
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let e = flatIndex(wid, lid);
-  if (e >= params.nEdges || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
-  let attempt = work[params.offBudget + BUDGET_ATTEMPT];
-  var f = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
-  if (attempt == 1u) { f = f * bitcast<f32>(work[params.offBudget + BUDGET_SCALE]); }
-  if (attempt >= 2u) { f = 1.0; }
-  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
-  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
-  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
-  let s = lineState(F);
-  work[params.offEdgeF + e] = F;
-  work[params.offEdgeState + e] = s;
-  let segments = statePointCount(s) - 1u;
-  work[params.offEdgeSegs + e] = segments;
-  // Its interior points, twice on an edge whose normals split (once per side).
-  work[params.offEdgeInterior + e] = (segments - 1u) * select(1u, 2u, edgeSplit(e));
+  if (e >= params.nEdges) { return; }
+  let f0 = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
+  // Lane c: the factor at budget candidate c (contract/tess.ts BUDGET_SCALES; its last, 0, is
+  // factor 1 everywhere), which the count pass counts and the budget chooses among.
+  for (var c = 0u; c < BUDGET_CANDIDATES; c++) {
+    var f = f0 * BUDGET_SCALES[c];
+    if (c == BUDGET_CANDIDATES - 1u) { f = 1.0; }
+    // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
+    f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
+    let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
+    let s = lineState(F);
+    let at = c * params.nEdges + e;
+    work[params.offEdgeF + at] = F;
+    work[params.offEdgeState + at] = s;
+    let segments = statePointCount(s) - 1u;
+    work[params.offEdgeSegs + at] = segments;
+    // Its interior points, twice on an edge whose normals split (once per side).
+    work[params.offEdgeInterior + at] = (segments - 1u) * select(1u, 2u, edgeSplit(e));
+  }
 }

@@ -10,8 +10,8 @@
  *   constants.ts   shared numbers (workgroup sizes, the dispatch grid's width), as TypeScript
  *                  values and as a WGSL `const` prelude (constantsWgsl)
  *   tess.ts        the compute tessellator's: its buffers as arenas (TESS_STATIC, TESS_CAGE,
- *                  TESS_WORK), its uniforms (TESS_PARAMS), its bind group (TESS_GROUP), the scan's
- *                  uniforms (SCAN_PARAMS), the packed words its shaders read, its constants
+ *                  TESS_WORK), its uniforms (TESS_PARAMS), its bind group (TESS_GROUP), the budget's
+ *                  candidate scales, the packed words its shaders read, its constants
  *   cc.ts          the Catmull-Clark patch build's bind group and level range, and the sections
  *                  of its words (CC_STATIC, whose offsets are Params' cc* fields)
  *   acc.ts         the ACC patch build's: its static words as an arena (ACC_STATIC), its uniforms
@@ -53,8 +53,7 @@ import {
   DISP_TRI_WORD,
   OWNER_WORD,
   PATTERN_FRAME_WORD,
-  SCAN_GROUP,
-  SCAN_PARAMS,
+  BUDGET_SCALES,
   TESS_BINDINGS,
   TESS_CONSTANTS,
   TESS_GROUP,
@@ -86,6 +85,7 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     constantsWgsl,
     wgslConstants(TESS_CONSTANTS),
     `const PHONG_ALPHA: f32 = ${wgslF32(PHONG_ALPHA)};`,
+    `const BUDGET_SCALES = array<f32, ${BUDGET_SCALES.length}>(${BUDGET_SCALES.map(wgslF32).join(', ')});`,
     TESS_GROUP.wgsl(names),
     PATTERN_FRAME_WORD.wgsl,
     BARY_WORD.wgsl,
@@ -96,9 +96,6 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     tableHeaderWgsl('staticBuf', 'params'),
   ].join('\n');
 }
-
-/** What wgsl/tess/scan.wgsl starts with. */
-export const scanPrelude = [SCAN_PARAMS.wgsl, constantsWgsl, SCAN_GROUP.wgsl()].join('\n');
 
 /** What every render shader starts with: the per-frame uniforms (the struct and its binding,
  * group 0 everywhere) and the constants the TypeScript shares with the render shaders. */

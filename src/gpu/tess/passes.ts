@@ -10,7 +10,6 @@ import factorsWgsl from '../../../wgsl/tess/factors.wgsl?raw';
 import factorRuleWgsl from '../../../wgsl/tess/factor-rule.wgsl?raw';
 import factorBulgeWgsl from '../../../wgsl/tess/factor-bulge.wgsl?raw';
 import countWgsl from '../../../wgsl/tess/count.wgsl?raw';
-import budgetWgsl from '../../../wgsl/tess/budget.wgsl?raw';
 import weldWgsl from '../../../wgsl/tess/weld.wgsl?raw';
 import patternWgsl from '../../../wgsl/tess/pattern.wgsl?raw';
 import planWgsl from '../../../wgsl/tess/plan.wgsl?raw';
@@ -20,8 +19,8 @@ import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
 import { CC_BUILD_WGSL as ccBuildWgsl } from '../cc/shaders.ts';
 import { type SurfaceId, surfaceScheme } from '../surface/registry.ts';
 import { CC_BUILD_BINDINGS, CC_BUILD_GROUP } from '../contract/cc.ts';
-import { scanPrelude, tessPrelude } from '../contract/contract.ts';
-import { TESS_BINDINGS, TESS_GROUP } from '../contract/tess.ts';
+import { tessPrelude } from '../contract/contract.ts';
+import { scanLanesWgsl, TESS_BINDINGS, TESS_GROUP } from '../contract/tess.ts';
 import { usedBindings } from '../contract/define.ts';
 
 /** The tessellator's surfaces (src/gpu/surface/registry.ts): Phong tessellation, the exact
@@ -32,7 +31,9 @@ export type PassName =
   | 'bulge'
   | 'factors'
   | 'count'
+  | 'scanReduce'
   | 'budget'
+  | 'scanDown'
   | 'corners'
   | 'edges'
   | 'plan'
@@ -64,7 +65,8 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     // The bulge term evaluates the surface inside each triangle; the edge term reads it.
     factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl),
     count: code(patternWgsl, countWgsl),
-    budget: code(budgetWgsl),
+    // The prefix sums and the budget between them (which lanes are what: TESS_SCANS).
+    scan: code(scanLanesWgsl(), scanWgsl),
     // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
     weld: code(surfaceWgsl, displaceWgsl, outputsWgsl, weldWgsl),
     plan: code(patternWgsl, planWgsl),
@@ -85,7 +87,9 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     pass('bulge', 'tess bulge', 'factors', 'bulge'),
     pass('factors', 'tess factors', 'factors'),
     pass('count', 'tess count', 'count'),
-    pass('budget', 'tess budget', 'budget'),
+    pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
+    pass('budget', 'tess budget', 'scan', 'budget'),
+    pass('scanDown', 'tess scan down', 'scan', 'scanDown'),
     pass('corners', 'tess weld corners', 'weld', 'corners'),
     pass('edges', 'tess weld edges', 'weld', 'edges'),
     pass('plan', 'tess plan', 'plan'),
@@ -114,7 +118,3 @@ export function passBindings(pass: PassSpec): { names: string[]; entries: GPUBin
   const names = usedBindings(pass.code, pass.entry, TESS_BINDINGS);
   return { names, entries: TESS_GROUP.layoutEntries(names) };
 }
-
-/** The three steps of one prefix sum (wgsl/tess/scan.wgsl), which share one bind group. */
-export const SCAN_ENTRIES = { blocks: 'scanBlocks', sums: 'scanSums', add: 'addSums' } as const;
-export const scanCode = [scanPrelude, scanWgsl].join('\n');
