@@ -85,8 +85,7 @@ fn scanLaneSums(lane: u32, lid: u32) -> u32 {
   return all;
 }
 
-// Indirect dispatch arguments of the emit passes (vertices, triangles) and of the weld's edge
-// points, folded into 2D.
+// The emit pass's indirect dispatch arguments, folded into 2D.
 fn dispatchArgs(threads: u32) -> vec3<u32> {
   let groups = (threads + WORKGROUP_SIZE - 1u) / WORKGROUP_SIZE;
   if (groups == 0u) { return vec3<u32>(0u, 1u, 1u); }
@@ -123,10 +122,9 @@ fn budget(@builtin(local_invocation_index) lid: u32) {
   let shown = select(0u, triangles, fits);
   drawArgs = array(3u * shown, 1u, 0u, 0u, 0u);
   counts = array(select(0u, vertices, fits), shown, bitcast<u32>(BUDGET_SCALES[c]), c);
-  let v = dispatchArgs(select(0u, totals[SCANS * c + 1u], fits));
-  let t = dispatchArgs(shown);
-  let e = dispatchArgs(select(0u, totals[SCANS * c], fits));
-  emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z, e.x, e.y, e.z);
+  // One emit thread per output vertex (the welded ones included) and per output triangle.
+  let a = dispatchArgs(select(0u, vertices + triangles, fits));
+  emitArgs = array(a.x, a.y, a.z);
 }
 
 @compute @workgroup_size(THREADS)

@@ -34,11 +34,8 @@ export type PassName =
   | 'scanReduce'
   | 'budget'
   | 'scanDown'
-  | 'corners'
-  | 'edges'
   | 'plan'
-  | 'emitVertices'
-  | 'emitTriangles'
+  | 'output'
   | 'ccPoints'
   | 'ccSlices'
   | 'ccLimits'
@@ -67,10 +64,10 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     count: code(patternWgsl, countWgsl),
     // The prefix sums and the budget between them (which lanes are what: TESS_SCANS).
     scan: code(scanLanesWgsl(), scanWgsl),
-    // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
-    weld: code(surfaceWgsl, displaceWgsl, outputsWgsl, weldWgsl),
     plan: code(patternWgsl, planWgsl),
-    emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
+    // The surface, then the displacement over it (surfaceAt), then what writes the vertices, where
+    // the welded ones lie, and the whole output.
+    emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, weldWgsl, emitWgsl),
     // The patch build's own prelude (contract/contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
     ccBuild: ccBuildWgsl,
   };
@@ -90,11 +87,8 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
     pass('budget', 'tess budget', 'scan', 'budget'),
     pass('scanDown', 'tess scan down', 'scan', 'scanDown'),
-    pass('corners', 'tess weld corners', 'weld', 'corners'),
-    pass('edges', 'tess weld edges', 'weld', 'edges'),
     pass('plan', 'tess plan', 'plan'),
-    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
-    pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
+    pass('output', 'tess emit', 'emit', 'output'),
   ];
   // The Catmull-Clark patch build is the tessellator's own (into its work arena); AccPatches
   // builds the ACC patches itself, and Phong reads the cage.

@@ -15,17 +15,17 @@
  *                the budget takes the first candidate that fits, then the
  *                chosen lanes scanned) and the indirect draw and dispatch
  *                arguments
- *   weld         corner and edge vertices, evaluated once each, one thread   wgsl/tess/weld.wgsl
- *                per vertex (the edge points' dispatch is indirect: budget);
- *                on Catmull-Clark, once per side of an infinitely sharp
- *                crease (prepare.ts splitCreases: same position, own normal)
- *   tessellate   plan: one thread per triangle writes its pattern's rows   wgsl/tess/plan.wgsl
- *                emit: one thread per interior vertex, one per triangle    wgsl/tess/emit.wgsl
- *                (indirect dispatches, like the weld's edge points)
+ *   plan         one thread per triangle writes its pattern's rows         wgsl/tess/plan.wgsl
+ *   emit         one indirect dispatch sized by the budget, one thread per  wgsl/tess/emit.wgsl
+ *                output element: the weld's corner and edge vertices        wgsl/tess/weld.wgsl
+ *                (evaluated once each, whoever uses them; on Catmull-Clark
+ *                once per side of an infinitely sharp crease: prepare.ts
+ *                splitCreases), the triangles' interior vertices, then the
+ *                triangles
  * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers
  * outside the scan, so every output element costs the same whatever the factors
- * (wgsl/tess/pattern.wgsl holds the pattern reading shared by count, plan and emit). Eleven
- * dispatches in all; no readback is ever needed.
+ * (wgsl/tess/pattern.wgsl holds the pattern reading shared by count, plan and emit). Eight
+ * dispatches in all (the scan's three); no readback is ever needed.
  * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
  *   subdivision  refined points level by level (rule per point), the slices round
  *                extraordinary vertices (workgroup memory), their limits, and the cage
@@ -48,16 +48,7 @@ import { type CageName, meshParams, type PackInput, packArenas, type WorkName } 
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { grid2d, groupsFor } from '../contract/constants.ts';
-import {
-  BUDGET_CANDIDATES,
-  EMIT_TRIANGLES_ARGS_OFFSET,
-  SCAN_BLOCK,
-  SCANS,
-  TESS_FIXED_WORDS,
-  TESS_PARAMS,
-  type TessBinding,
-  WELD_EDGES_ARGS_OFFSET,
-} from '../contract/tess.ts';
+import { BUDGET_CANDIDATES, SCAN_BLOCK, SCANS, TESS_FIXED_WORDS, TESS_PARAMS, type TessBinding } from '../contract/tess.ts';
 import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
@@ -71,8 +62,8 @@ export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPa
 export { grid2d } from '../contract/constants.ts';
 
 /** Compute passes one rebuild records (the patch build, the bulge term, factors, count + scan,
- * weld, plan, emit), each timed by a pair of timestamps. */
-const TIMED_PASSES = 7;
+ * plan, emit), each timed by a pair of timestamps. */
+const TIMED_PASSES = 6;
 
 export interface TessellatorOptions {
   vertexCapacity?: number;
@@ -414,16 +405,11 @@ export class Tessellator {
     encoder.clearBuffer(m.work, 4 * m.workLayout.offset.budget, 4 * m.workLayout.length.budget);
 
     const pass = (label: string, stage: string) => this.timer?.beginPass(encoder, label, stage) ?? encoder.beginComputePass({ label });
-    const { edgeCount: nE, triangleCount: nT, vertexCount: nV } = m.prepared;
+    const { edgeCount: nE, triangleCount: nT } = m.prepared;
     const run = (cp: GPUComputePassEncoder, name: PassName, groups: [number, number]) => {
       cp.setPipeline(this.pipelines[name]!.pipeline);
       cp.setBindGroup(0, m.groups[name]!);
       cp.dispatchWorkgroups(...groups);
-    };
-    const runIndirect = (cp: GPUComputePassEncoder, name: PassName, offset: number) => {
-      cp.setPipeline(this.pipelines[name]!.pipeline);
-      cp.setBindGroup(0, m.groups[name]!);
-      cp.dispatchWorkgroupsIndirect(this.emitArgs, offset);
     };
 
     if (m.cc) {
@@ -453,19 +439,20 @@ export class Tessellator {
       run(cp, 'scanDown', [blocks, SCANS]);
       cp.end();
     }
-    let cp = pass('tess weld', 'weld');
-    // The corners' output vertices: the vertices, then the extra sectors where normals split.
-    run(cp, 'corners', groupsFor(nV + this.extraSlots(m.prepared)));
-    runIndirect(cp, 'edges', WELD_EDGES_ARGS_OFFSET); // one thread per edge point: sized by the budget pass
-    cp.end();
-    cp = pass('tess plan', 'plan');
-    run(cp, 'plan', groupsFor(nT));
-    cp.end();
-    cp = pass('tess emit', 'tessellate');
-    // Sized by the budget pass: emitArgs holds the vertices' dispatch, then the triangles'.
-    runIndirect(cp, 'emitVertices', 0);
-    runIndirect(cp, 'emitTriangles', EMIT_TRIANGLES_ARGS_OFFSET);
-    cp.end();
+    {
+      const cp = pass('tess plan', 'plan');
+      run(cp, 'plan', groupsFor(nT));
+      cp.end();
+    }
+    {
+      // Every output vertex (the welded corners and edge points, then the triangles' interior
+      // vertices) and every output triangle: one indirect dispatch sized by the budget.
+      const cp = pass('tess emit', 'tessellate');
+      cp.setPipeline(this.pipelines.output!.pipeline);
+      cp.setBindGroup(0, m.groups.output!);
+      cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
+      cp.end();
+    }
 
     this.timer?.resolve(encoder);
   }

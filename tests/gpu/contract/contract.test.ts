@@ -822,12 +822,13 @@ describe("the tessellator's contract", () => {
     bulge: [0, 1, 2, 3],
     factors: [0, 1, 2, 3],
     count: [0, 1, 3],
+    // (the scan's steps and the budget became tessellator passes with the one-chain rebuild)
+    scanReduce: [0, 3],
     budget: [0, 3, 9, 10, 11],
-    corners: [0, 1, 2, 3, 4, 5, 6, 7],
-    edges: [0, 1, 2, 3, 4, 5, 6, 7],
+    scanDown: [0, 3],
     plan: [0, 1, 3],
-    emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
-    emitTriangles: [0, 1, 3, 8],
+    // (the weld's corners and edges and emit's vertices and triangles, in one pass since)
+    output: [0, 1, 2, 3, 4, 5, 6, 7, 8],
     ccPoints: [0, 1, 2, 3],
     ccSlices: [0, 1, 2],
     ccLimits: [0, 1, 2],
@@ -836,7 +837,7 @@ describe("the tessellator's contract", () => {
   for (const surface of ['phong', 'catmull-clark'] as const) {
     it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
       const passes = tessellatorPasses(surface);
-      expect(passes.length).toBe(surface === 'phong' ? 9 : 13);
+      expect(passes.length).toBe(surface === 'phong' ? 8 : 12);
       for (const pass of passes) {
         const { names, entries } = passBindings(pass);
         expect(
