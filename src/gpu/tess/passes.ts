@@ -38,8 +38,7 @@ export type PassName =
   | 'output'
   | 'ccPoints'
   | 'ccSlices'
-  | 'ccLimits'
-  | 'ccVertexLimits';
+  | 'ccLimits';
 
 /** One compute pass: its shader code, its entry point, and the bind group it draws its bindings
  * from (the tessellator's, or the patch build's). */
@@ -96,8 +95,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     passes.push(
       pass('ccPoints', 'cc level points', 'ccBuild', 'points'),
       pass('ccSlices', 'cc ev slices', 'ccBuild', 'slices'),
-      pass('ccLimits', 'cc fan limits', 'ccBuild', 'limits'),
-      pass('ccVertexLimits', 'cc vertex limits', 'ccBuild', 'vlimits'),
+      pass('ccLimits', 'cc fan and vertex limits', 'ccBuild', 'limits'),
     );
   }
   return passes;

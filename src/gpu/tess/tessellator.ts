@@ -256,9 +256,9 @@ export class Tessellator {
       emitArgs: this.emitArgs,
     };
     const uniforms: GPUBuffer[] = [];
-    const rangeBytes = (first: number, count: number) => {
+    const rangeBytes = (first: number, count: number, faceFirst: number) => {
       const bytes = new ArrayBuffer(CC_RANGE.size);
-      CC_RANGE.write(new DataView(bytes), { first, count });
+      CC_RANGE.write(new DataView(bytes), { first, count, faceFirst });
       return bytes;
     };
     const uniform = (label: string, bytes: ArrayBuffer | Uint32Array) => {
@@ -279,17 +279,12 @@ export class Tessellator {
     const groups: Partial<Record<PassName, GPUBindGroup>> = {};
     for (const name of Object.keys(this.pipelines) as PassName[]) if (name !== 'ccPoints') groups[name] = bindGroup(name);
 
-    // Catmull-Clark level dispatches: per level, its face points, then its edge and vertex
-    // points (which read the new face points); each with its range in a small uniform.
-    const ccRanges = (cc?.levelRanges ?? []).flatMap(([ff, fc, vf, vc]) =>
-      [
-        [ff, fc],
-        [vf, vc],
-      ].map(([first, count]) => ({
-        count,
-        group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, count)) }),
-      })),
-    );
+    // Catmull-Clark level dispatches: one per level over its edge and vertex points, then its
+    // face points (contiguous: src/gpu/cc/levels.ts), each level's range in a small uniform.
+    const ccRanges = (cc?.levelRanges ?? []).map(([faceFirst, faceCount, first, veCount]) => ({
+      count: veCount + faceCount,
+      group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, veCount + faceCount, faceFirst)) }),
+    }));
     return {
       prepared,
       staticBuf,
@@ -480,8 +475,8 @@ export class Tessellator {
       cp.dispatchWorkgroups(...groups);
     };
     if (cc.sliceWorkgroups) run('ccSlices', grid2d(cc.sliceWorkgroups));
-    if (cc.fanCount) run('ccLimits', groupsFor(cc.fanCount));
-    run('ccVertexLimits', groupsFor(m.prepared.vertexCount));
+    // The fans' limits, then every prepared vertex's (one dispatch: wgsl/cc/build.wgsl limits).
+    run('ccLimits', groupsFor(cc.fanCount + m.prepared.vertexCount));
   }
 
   /** Record only the Catmull-Clark patch build (control points and vertex limits from the

@@ -832,12 +832,11 @@ describe("the tessellator's contract", () => {
     ccPoints: [0, 1, 2, 3],
     ccSlices: [0, 1, 2],
     ccLimits: [0, 1, 2],
-    ccVertexLimits: [0, 1, 2],
   };
   for (const surface of ['phong', 'catmull-clark'] as const) {
     it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
       const passes = tessellatorPasses(surface);
-      expect(passes.length).toBe(surface === 'phong' ? 8 : 12);
+      expect(passes.length).toBe(surface === 'phong' ? 8 : 11);
       for (const pass of passes) {
         const { names, entries } = passBindings(pass);
         expect(
