@@ -95,13 +95,11 @@ fn edgeVert(e: u32, i: u32) -> u32 { return staticBuf[params.offEdgeVerts + 2u *
 fn cornerSlot(t: u32, i: u32) -> u32 { return staticBuf[params.offCornerSlot + 3u * t + i]; }
 fn edgeSplit(e: u32) -> bool { return staticBuf[params.offEdgeSplit + e] != 0u; }
 
-// Per-edge results of the factor pass, in the lane of budget candidate edgeLane / nEdges
-// (contract/tess.ts TESS_WORK): only the count pass, which counts every candidate, moves it; the
-// scan's last pass copies the chosen candidate's lane to lane 0, which everything after it reads.
-var<private> edgeLane: u32 = 0u;
-fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + edgeLane + e]; }
-fn edgeState(e: u32) -> u32 { return work[params.offEdgeState + edgeLane + e]; }
-fn edgeSegments(e: u32) -> u32 { return work[params.offEdgeSegs + edgeLane + e]; }
+// Per-edge results of the count pass at the budget's chosen candidate: lane 0 of the edge arrays
+// (contract/tess.ts TESS_WORK), where the scan's last pass copies the chosen lane.
+fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + e]; }
+fn edgeState(e: u32) -> u32 { return work[params.offEdgeState + e]; }
+fn edgeSegments(e: u32) -> u32 { return work[params.offEdgeSegs + e]; }
 
 // A triangle's pattern frame (src/pattern/clamped.ts PatternFrame): which corners play A, B, C,
 // which edges play bottom, left, right and whether each runs against its edge; mirrored or not.

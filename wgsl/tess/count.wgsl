@@ -1,4 +1,4 @@
-// After the factors, one thread per triangle, at every budget candidate: how many interior vertices and how
+// After the bulge, one thread per triangle, at every budget candidate: its edges' factors, and how many interior vertices and how
 // many triangles its clamped-parallelogram pattern has (edge and corner vertices belong to
 // the edges and corners, and are counted there). Same construction as src/pattern/clamped.ts:
 //   rows j = 0..nl, row 0 keeps k_0 columns (wgsl/tess/pattern.wgsl rowZeroKept), row j ≥ 1 keeps
@@ -11,10 +11,34 @@
 fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let t = flatIndex(wid, lid);
   if (t >= params.nTris) { return; }
-  // At every budget candidate (the factor pass wrote each one's edges in its own lane), so that
-  // the budget can choose after one scan (contract/tess.ts BUDGET_SCALES).
+  // The triangle's three edges' factors, computed here rather than in a pass of their own (one
+  // dispatch fewer): the edge's other triangle computes the same bits by the same code (one call
+  // site, in this loop), and the edge's owner stores them for the passes after the budget.
+  var edges: vec3<u32>;
+  var f0: vec3<f32>;
+  var owns: vec3<bool>;
+  for (var i = 0u; i < 3u; i++) {
+    let e = triEdge(t, i);
+    edges[i] = e;
+    f0[i] = edgeFactor(e);
+    owns[i] = ownerWord_tri(staticBuf[params.offEdgeOwner + e]) == t;
+  }
+  useLocalEdges = true;
+  // At every budget candidate, so that the budget can choose after one scan (contract/tess.ts
+  // BUDGET_SCALES): lane c of each array holds candidate c.
   for (var c = 0u; c < BUDGET_CANDIDATES; c++) {
-    edgeLane = c * params.nEdges;
+    for (var i = 0u; i < 3u; i++) {
+      let l = edgeAtCandidate(f0[i], c);
+      localEdgeLines[i] = l;
+      if (owns[i]) {
+        let at = c * params.nEdges + edges[i];
+        work[params.offEdgeF + at] = l.x;
+        work[params.offEdgeState + at] = l.y;
+        work[params.offEdgeSegs + at] = l.z;
+        // Its interior points, twice on an edge whose normals split (once per side).
+        work[params.offEdgeInterior + at] = (l.z - 1u) * select(1u, 2u, edgeSplit(edges[i]));
+      }
+    }
     let L = triLines(t);
     var interior = 0u;
     var triangles = L.bottom.n - 1u; // k_0 + (nb − 1 − k_0)

@@ -1,5 +1,6 @@
-// One thread per mesh edge: the edge's tess factor (computed once per edge, so its two triangles
-// cannot disagree), its line state and segment count, at every budget candidate.
+// An edge's tess factor, line state and segment count at a budget candidate, for the count pass
+// (wgsl/tess/count.wgsl), which computes each triangle's three edges: both triangles of an edge
+// run this same code on the same inputs, so they cannot disagree, and the edge's owner stores it.
 // Mirrors src/gpu/tess/factors.ts edgeFactor; the curvature measure is wgsl/tess/factor-rule.wgsl's, and the
 // bulge term of the edge's two triangles is wgsl/tess/factor-bulge.wgsl's (its pass has run).
 
@@ -51,26 +52,19 @@ fn adaptiveFactor(e: u32) -> f32 {
   return max(surface, detail);
 }
 
-@compute @workgroup_size(WORKGROUP_SIZE)
-fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let e = flatIndex(wid, lid);
-  if (e >= params.nEdges) { return; }
-  let f0 = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
-  // Lane c: the factor at budget candidate c (contract/tess.ts BUDGET_SCALES; its last, 0, is
-  // factor 1 everywhere), which the count pass counts and the budget chooses among.
-  for (var c = 0u; c < BUDGET_CANDIDATES; c++) {
-    var f = f0 * BUDGET_SCALES[c];
-    if (c == BUDGET_CANDIDATES - 1u) { f = 1.0; }
-    // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
-    f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
-    let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
-    let s = lineState(F);
-    let at = c * params.nEdges + e;
-    work[params.offEdgeF + at] = F;
-    work[params.offEdgeState + at] = s;
-    let segments = statePointCount(s) - 1u;
-    work[params.offEdgeSegs + at] = segments;
-    // Its interior points, twice on an edge whose normals split (once per side).
-    work[params.offEdgeInterior + at] = (segments - 1u) * select(1u, 2u, edgeSplit(e));
-  }
+// The edge's factor before the budget: the adaptive rule's, or the fixed one.
+fn edgeFactor(e: u32) -> f32 {
+  return select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
+}
+
+// An edge of factor f0 at budget candidate c (contract/tess.ts BUDGET_SCALES; its last, 0, is
+// factor 1 everywhere): its 16.16 factor, line state and segments.
+fn edgeAtCandidate(f0: f32, c: u32) -> vec3<u32> {
+  var f = f0 * BUDGET_SCALES[c];
+  if (c == BUDGET_CANDIDATES - 1u) { f = 1.0; }
+  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
+  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
+  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
+  let s = lineState(F);
+  return vec3<u32>(F, s, statePointCount(s) - 1u);
 }

@@ -29,13 +29,13 @@ export type Surface = SurfaceId;
 
 export type PassName =
   | 'bulge'
-  | 'factors'
   | 'count'
   | 'scanReduce'
   | 'budget'
   | 'scanDown'
   | 'plan'
-  | 'output'
+  | 'emitVertices'
+  | 'emitTriangles'
   | 'ccPoints'
   | 'ccSlices'
   | 'ccLimits';
@@ -58,9 +58,9 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
   const code = (...parts: string[]) => [tessPrelude(), commonWgsl, ...parts].join('\n');
   const surfaceWgsl = scheme.tessWgsl;
   const modules = {
-    // The bulge term evaluates the surface inside each triangle; the edge term reads it.
-    factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl),
-    count: code(patternWgsl, countWgsl),
+    // The bulge term evaluates the surface inside each triangle; the count pass computes each
+    // triangle's edge factors (the edge term reads the bulge) and counts its pattern.
+    factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl, patternWgsl, countWgsl),
     // The prefix sums and the budget between them (which lanes are what: TESS_SCANS).
     scan: code(scanLanesWgsl(), scanWgsl),
     plan: code(patternWgsl, planWgsl),
@@ -81,13 +81,13 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
   });
   const passes = [
     pass('bulge', 'tess bulge', 'factors', 'bulge'),
-    pass('factors', 'tess factors', 'factors'),
-    pass('count', 'tess count', 'count'),
+    pass('count', 'tess factors + count', 'factors'),
     pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
     pass('budget', 'tess budget', 'scan', 'budget'),
     pass('scanDown', 'tess scan down', 'scan', 'scanDown'),
     pass('plan', 'tess plan', 'plan'),
-    pass('output', 'tess emit', 'emit', 'output'),
+    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
+    pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
   ];
   // The Catmull-Clark patch build is the tessellator's own (into its work arena); AccPatches
   // builds the ACC patches itself, and Phong reads the cage.

@@ -3,33 +3,34 @@
  * into big flat buffers, welded, stored once and drawn by every pass. Takes a GPUDevice and
  * never touches the DOM, so the same code runs in the browser, in headless tests and in Node.
  *
- * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except the weld's edge
- * points and emit), the same chain whatever the camera and the budget:
+ * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except emit's), the
+ * same chain of eight dispatches whatever the camera and the budget:
  *   bulge        one thread per triangle: the factor its surface's bulge    wgsl/tess/factor-bulge.wgsl
  *                asks for (the surface at four points against the flat triangle)
- *   factors      one thread per edge: tess factor, line state, segments,   wgsl/tess/factors.wgsl
- *                at every budget candidate (contract/tess.ts BUDGET_SCALES)
- *   count        one thread per triangle: interior vertices and triangles,  wgsl/tess/count.wgsl
- *                at every candidate
- *   scan         the counts' prefix sums (every lane summed by block, then  wgsl/tess/scan.wgsl
- *                the budget takes the first candidate that fits, then the
- *                chosen lanes scanned) and the indirect draw and dispatch
- *                arguments
+ *   count        one thread per triangle: its three edges' tess factor,     wgsl/tess/count.wgsl
+ *                line state and segments (wgsl/tess/factors.wgsl; the
+ *                edge's owner stores them), its interior vertices and
+ *                triangles, at every budget candidate (contract/tess.ts
+ *                BUDGET_SCALES)
+ *   scan         three dispatches: every lane summed by block; the budget   wgsl/tess/scan.wgsl
+ *                takes the first candidate that fits and writes the draw
+ *                and dispatch arguments; the chosen lanes' prefix sums
  *   plan         one thread per triangle writes its pattern's rows         wgsl/tess/plan.wgsl
- *   emit         one indirect dispatch sized by the budget, one thread per  wgsl/tess/emit.wgsl
- *                output element: the weld's corner and edge vertices        wgsl/tess/weld.wgsl
- *                (evaluated once each, whoever uses them; on Catmull-Clark
+ *   emit         two indirect dispatches sized by the budget: one thread   wgsl/tess/emit.wgsl
+ *                per output vertex (the weld's corner and edge vertices,    wgsl/tess/weld.wgsl
+ *                evaluated once each whoever uses them, on Catmull-Clark
  *                once per side of an infinitely sharp crease: prepare.ts
- *                splitCreases), the triangles' interior vertices, then the
- *                triangles
+ *                splitCreases; then the triangles' interior vertices), then
+ *                one per output triangle
  * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers
  * outside the scan, so every output element costs the same whatever the factors
- * (wgsl/tess/pattern.wgsl holds the pattern reading shared by count, plan and emit). Eight
- * dispatches in all (the scan's three); no readback is ever needed.
+ * (wgsl/tess/pattern.wgsl holds the pattern reading shared by count, plan and emit); no readback
+ * is ever needed. tests/gpu/tess/tessellator.gpu.test.ts counts the dispatches.
  * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
- *   subdivision  refined points level by level (rule per point), the slices round
- *                extraordinary vertices (workgroup memory), their limits, and the cage
- *                vertices' limit positions and normals for the factor rule  wgsl/cc/build.wgsl
+ *   subdivision  refined points, one dispatch a level (rule per point), the slices round
+ *                extraordinary vertices (workgroup memory), then in one dispatch their
+ *                limits and the cage vertices' limit positions and normals for the factor
+ *                rule                                                       wgsl/cc/build.wgsl
  *
  * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the
  * budget's candidates, the constants, the packed words) is declared in contract/tess.ts; which code each pass
@@ -48,7 +49,15 @@ import { type CageName, meshParams, type PackInput, packArenas, type WorkName } 
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { grid2d, groupsFor } from '../contract/constants.ts';
-import { BUDGET_CANDIDATES, SCAN_BLOCK, SCANS, TESS_FIXED_WORDS, TESS_PARAMS, type TessBinding } from '../contract/tess.ts';
+import {
+  BUDGET_CANDIDATES,
+  EMIT_TRIANGLES_ARGS_OFFSET,
+  SCAN_BLOCK,
+  SCANS,
+  TESS_FIXED_WORDS,
+  TESS_PARAMS,
+  type TessBinding,
+} from '../contract/tess.ts';
 import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
@@ -61,9 +70,9 @@ export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPa
 
 export { grid2d } from '../contract/constants.ts';
 
-/** Compute passes one rebuild records (the patch build, the bulge term, factors, count + scan,
+/** Compute passes one rebuild records (the patch build, the bulge term, factors + count + scan,
  * plan, emit), each timed by a pair of timestamps. */
-const TIMED_PASSES = 6;
+const TIMED_PASSES = 5;
 
 export interface TessellatorOptions {
   vertexCapacity?: number;
@@ -419,14 +428,9 @@ export class Tessellator {
       cp.end();
     }
     {
-      const cp = pass('tess factors', 'factors');
-      run(cp, 'factors', groupsFor(nE));
-      cp.end();
-    }
-    {
-      // The counts at every budget candidate, their lanes summed by block, the budget's choice,
-      // and the chosen lanes' prefix sums (wgsl/tess/scan.wgsl).
-      const cp = pass('tess count + scan', 'count+budget');
+      // The edges' factors and the counts at every budget candidate, their lanes summed by
+      // block, the budget's choice, and the chosen lanes' prefix sums (wgsl/tess/scan.wgsl).
+      const cp = pass('tess factors + count + scan', 'count+budget');
       run(cp, 'count', groupsFor(nT));
       const blocks = Math.ceil(Math.max(nE, nT, 1) / SCAN_BLOCK);
       run(cp, 'scanReduce', [blocks, SCANS * BUDGET_CANDIDATES]);
@@ -443,9 +447,12 @@ export class Tessellator {
       // Every output vertex (the welded corners and edge points, then the triangles' interior
       // vertices) and every output triangle: one indirect dispatch sized by the budget.
       const cp = pass('tess emit', 'tessellate');
-      cp.setPipeline(this.pipelines.output!.pipeline);
-      cp.setBindGroup(0, m.groups.output!);
+      cp.setPipeline(this.pipelines.emitVertices!.pipeline);
+      cp.setBindGroup(0, m.groups.emitVertices!);
       cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
+      cp.setPipeline(this.pipelines.emitTriangles!.pipeline);
+      cp.setBindGroup(0, m.groups.emitTriangles!);
+      cp.dispatchWorkgroupsIndirect(this.emitArgs, EMIT_TRIANGLES_ARGS_OFFSET);
       cp.end();
     }
 

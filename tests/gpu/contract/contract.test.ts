@@ -820,15 +820,16 @@ describe("the tessellator's contract", () => {
   // (bulge came after it: params, static, cage, work, as the factors pass.)
   const HAND_TABLE: Record<string, number[]> = {
     bulge: [0, 1, 2, 3],
-    factors: [0, 1, 2, 3],
-    count: [0, 1, 3],
+    // (the factors pass: [0, 1, 2, 3], folded into count since)
+    count: [0, 1, 2, 3],
     // (the scan's steps and the budget became tessellator passes with the one-chain rebuild)
     scanReduce: [0, 3],
     budget: [0, 3, 9, 10, 11],
     scanDown: [0, 3],
     plan: [0, 1, 3],
-    // (the weld's corners and edges and emit's vertices and triangles, in one pass since)
-    output: [0, 1, 2, 3, 4, 5, 6, 7, 8],
+    // (the weld's corners and edges, in emit's vertices since)
+    emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
+    emitTriangles: [0, 1, 3, 8],
     ccPoints: [0, 1, 2, 3],
     ccSlices: [0, 1, 2],
     ccLimits: [0, 1, 2],
