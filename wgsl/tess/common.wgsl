@@ -58,6 +58,20 @@ fn lineState(F: u32) -> u32 {
   return lo;
 }
 
+// An edge of factor f0 (before the budget: wgsl/tess/factors.wgsl edgeFactor) at budget
+// candidate c (contract/tess.ts BUDGET_SCALES; its last, 0, is factor 1 everywhere): its 16.16
+// factor, line state and segments. The count pass counts with it at every candidate, and the
+// scan's last pass stores it at the chosen one, from the same f0 bits: the same values.
+fn edgeAtCandidate(f0: f32, c: u32) -> vec3<u32> {
+  var f = f0 * BUDGET_SCALES[c];
+  if (c == BUDGET_CANDIDATES - 1u) { f = 1.0; }
+  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
+  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
+  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
+  let s = lineState(F);
+  return vec3<u32>(F, s, statePointCount(s) - 1u);
+}
+
 // Points of a line in state s (segments = points − 1).
 fn statePointCount(s: u32) -> u32 { return staticBuf[tblStateIndexOff() + 2u * s + 1u]; }
 

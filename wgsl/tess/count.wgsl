@@ -13,7 +13,8 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
   if (t >= params.nTris) { return; }
   // The triangle's three edges' factors, computed here rather than in a pass of their own (one
   // dispatch fewer): the edge's other triangle computes the same bits by the same code (one call
-  // site, in this loop), and the edge's owner stores them for the passes after the budget.
+  // site, in this loop), and the edge's owner stores the factor for the scan's last pass, which
+  // stores the edge's line at the chosen candidate for the passes after the budget.
   var edges: vec3<u32>;
   var f0: vec3<f32>;
   var owns: vec3<bool>;
@@ -23,6 +24,9 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
     f0[i] = edgeFactor(e);
     owns[i] = ownerWord_tri(staticBuf[params.offEdgeOwner + e]) == t;
   }
+  for (var i = 0u; i < 3u; i++) {
+    if (owns[i]) { work[params.offEdgeFactor + edges[i]] = bitcast<u32>(f0[i]); }
+  }
   useLocalEdges = true;
   // At every budget candidate, so that the budget can choose after one scan (contract/tess.ts
   // BUDGET_SCALES): lane c of each array holds candidate c.
@@ -31,12 +35,8 @@ fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) 
       let l = edgeAtCandidate(f0[i], c);
       localEdgeLines[i] = l;
       if (owns[i]) {
-        let at = c * params.nEdges + edges[i];
-        work[params.offEdgeF + at] = l.x;
-        work[params.offEdgeState + at] = l.y;
-        work[params.offEdgeSegs + at] = l.z;
         // Its interior points, twice on an edge whose normals split (once per side).
-        work[params.offEdgeInterior + at] = (l.z - 1u) * select(1u, 2u, edgeSplit(edges[i]));
+        work[params.offEdgeInterior + c * params.nEdges + edges[i]] = (l.z - 1u) * select(1u, 2u, edgeSplit(edges[i]));
       }
     }
     let L = triLines(t);

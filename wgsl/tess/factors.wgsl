@@ -56,15 +56,3 @@ fn adaptiveFactor(e: u32) -> f32 {
 fn edgeFactor(e: u32) -> f32 {
   return select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
 }
-
-// An edge of factor f0 at budget candidate c (contract/tess.ts BUDGET_SCALES; its last, 0, is
-// factor 1 everywhere): its 16.16 factor, line state and segments.
-fn edgeAtCandidate(f0: f32, c: u32) -> vec3<u32> {
-  var f = f0 * BUDGET_SCALES[c];
-  if (c == BUDGET_CANDIDATES - 1u) { f = 1.0; }
-  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
-  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
-  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
-  let s = lineState(F);
-  return vec3<u32>(F, s, statePointCount(s) - 1u);
-}

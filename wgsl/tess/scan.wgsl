@@ -10,7 +10,7 @@
 //                buffers, and writes the draw and dispatch arguments from its totals
 //   scanDown     the chosen candidate's lanes only (workgroup y = lane kind): each block's own
 //                exclusive scan plus its block's offset, into the prefix-sum arrays; and the
-//                chosen edge factors, states and segments into lane 0 (common.wgsl edgeF)
+//                edges' factors, states and segments at the chosen candidate (common.wgsl)
 // Up to 65535 blocks of 4096 values a lane. Totals that do not fit in 32 bits (a large cage at
 // scale 1) saturate, so they read as "does not fit" rather than wrapping to a small number; the
 // chosen candidate's totals fit the output buffers, so its sums are exact.
@@ -151,11 +151,13 @@ fn scanDown(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
     if (i < n) {
       work[output + i] = run;
       run = addSaturating(run, work[input + i]);
-      // The chosen candidate's edges into lane 0, where the weld, plan and emit read them.
-      if (kind == 0u && c != 0u) {
-        work[params.offEdgeF + i] = work[params.offEdgeF + c * n + i];
-        work[params.offEdgeState + i] = work[params.offEdgeState + c * n + i];
-        work[params.offEdgeSegs + i] = work[params.offEdgeSegs + c * n + i];
+      // The edges' lines at the chosen candidate, where the weld, plan and emit read them
+      // (TESS_SCANS: lane kind 0 is the edges').
+      if (kind == 0u) {
+        let l = edgeAtCandidate(bitcast<f32>(work[params.offEdgeFactor + i]), c);
+        work[params.offEdgeF + i] = l.x;
+        work[params.offEdgeState + i] = l.y;
+        work[params.offEdgeSegs + i] = l.z;
       }
     }
   }

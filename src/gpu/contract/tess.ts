@@ -244,17 +244,19 @@ export const TESS_CAGE = defineArena<
 
 /**
  * work (u32 scratch, rewritten every rebuild): the factor each triangle's bulge asks for (an f32's
- * bits, wgsl/tess/factor-bulge.wgsl); per edge its factor, line state, segments and interior
- * points, and per triangle its interior vertices, triangles and rows, each at every budget
- * candidate (BUDGET_SCALES): lane c of an array over n elements is its words c·n … c·n + n − 1,
- * and once the budget has chosen, the scan's last pass copies the chosen lane of the edges'
- * factor, state and segments to lane 0, which is all that the weld, plan and emit read; the
- * exclusive prefix sums of the chosen candidate (n + 1 words: the total at n); the planned rows
+ * bits, wgsl/tess/factor-bulge.wgsl); per edge its factor before the budget (edgeFactor, f32
+ * bits), and at the chosen candidate its 16.16 factor, line state and segments (the scan's last
+ * pass writes them, wgsl/tess/common.wgsl edgeAtCandidate: what the weld, plan and emit read);
+ * per edge its interior points and per triangle its interior vertices, triangles and rows at
+ * every budget candidate (BUDGET_SCALES): lane c of an array over n elements is its words
+ * c·n … c·n + n − 1; the exclusive prefix sums of the chosen candidate (n + 1 words: the total
+ * at n); the planned rows
  * (two words per row, at most maxFactor + 1 rows a triangle), each triangle's gap-strip moves
  * (gapMoveWords words a triangle), the scan's block sums (one run of scanSumsWords per lane:
  * SCANS lanes per candidate), the budget state (BUDGET).
  */
 export const TESS_WORK = defineArena<
+  | 'edgeFactor'
   | 'edgeF'
   | 'edgeState'
   | 'edgeSegs'
@@ -273,9 +275,10 @@ export const TESS_WORK = defineArena<
   | 'budget',
   TessSizes
 >([
-  ['edgeF', (s) => BUDGET_CANDIDATES * s.edges],
-  ['edgeState', (s) => BUDGET_CANDIDATES * s.edges],
-  ['edgeSegs', (s) => BUDGET_CANDIDATES * s.edges],
+  ['edgeFactor', (s) => s.edges],
+  ['edgeF', (s) => s.edges],
+  ['edgeState', (s) => s.edges],
+  ['edgeSegs', (s) => s.edges],
   ['edgeInterior', (s) => BUDGET_CANDIDATES * s.edges],
   ['edgeBase', (s) => s.edges + 1],
   ['triBulge', (s) => s.triangles],
