@@ -825,7 +825,7 @@ describe("the tessellator's contract", () => {
     // (the scan's steps and the budget became tessellator passes with the one-chain rebuild)
     scanReduce: [0, 3],
     budget: [0, 3, 9, 10, 11],
-    scanDown: [0, 3],
+    scanDown: [0, 1, 3], // the tables: the edges' lines at the chosen candidate
     plan: [0, 1, 3],
     // (the weld's corners and edges, in emit's vertices since)
     emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],

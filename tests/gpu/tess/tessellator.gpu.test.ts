@@ -16,6 +16,7 @@ import type { Cage } from '../../../src/mesh/types.ts';
 import { countingEncoder } from '../../support/count-dispatches.ts';
 import { BUDGET_CANDIDATES, BUDGET_SCALES } from '../../../src/gpu/contract/tess.ts';
 import { budgetCandidate } from '../../../src/gpu/tess/factors.ts';
+import { MAX_FACTOR } from '../../../src/pattern/max-factor.ts';
 
 const tables = bakeTables(64);
 afterAll(() => releaseDevice());
@@ -124,6 +125,30 @@ describe('compute tessellator', () => {
       console.log(`Phong rebuild: ${counts.passes} compute passes, ${counts.direct} + ${counts.indirect} indirect dispatches`);
       expect(counts.indirect).toBe(2);
       expect(counts.direct + counts.indirect).toBe(PHONG_DISPATCHES);
+    }
+  });
+
+  it(`at the top factor (MAX_FACTOR, ${MAX_FACTOR}) and between 64 and it: matches the CPU and is watertight`, async () => {
+    // The talk's counts need 128 (suzanne: 968 triangles at 128²); the other tests bake to 64.
+    const device = await getDevice();
+    const top = Tessellator.create(device, bakeTables(MAX_FACTOR), { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20 });
+    try {
+      for (const f of [MAX_FACTOR, 100.5]) {
+        const mesh = prepareMesh(cube());
+        device.pushErrorScope('validation');
+        top.setMesh(mesh);
+        const enc = device.createCommandEncoder({ label: 'test rebuild at the top factor' });
+        top.encode(enc, camera(mesh, 4, f));
+        device.queue.submit([enc.finish()]);
+        const out = await readMesh(device, top.output);
+        const edgeF = new Uint32Array(await readBuffer(device, top.workBuffer, 4 * mesh.edgeCount, 4 * top.workLayout.edgeF));
+        expect((await device.popErrorScope())?.message).toBeUndefined();
+        expect(out.budgetCandidate).toBe(0);
+        if (f === MAX_FACTOR) expect(out.triangleCount).toBe(MAX_FACTOR * MAX_FACTOR * mesh.triangleCount);
+        expect(checkTessellation(mesh, edgeF, out, { closed: true }).problems).toEqual([]);
+      }
+    } finally {
+      top.destroy();
     }
   });
 
