@@ -1,5 +1,6 @@
 /**
  * `npm run bench [-- --quick] [--models a,b] [--out BENCHMARKS.md]`: the compute tessellator per project model,
+ * (`npm run bench -- --talk`: the talk's three tables at the talk's counts instead, bench/talk.ts)
  * at a fixed factor and adaptive, timed with GPU timestamps on whatever adapter Dawn finds
  * (SwiftShader here; a real GPU elsewhere). Prints a table and writes it to BENCHMARKS.md with
  * the machine it ran on.
@@ -31,6 +32,7 @@ import { bakeTables } from '../src/pattern/tables.ts';
 import { faceCount, loadCage, type Cage } from '../src/mesh/index.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
+import { talkTables } from './talk.ts';
 import { prepareAccSurface, type AccSurface as AccSurfaceData } from '../src/gpu/acc/surface.ts';
 import { ACC_SCHEMES } from '../src/subdiv/acc.ts';
 import { isAccSurface, SURFACE_SCHEMES, surfaceScheme, type SurfaceId } from '../src/gpu/surface/registry.ts';
@@ -139,7 +141,7 @@ export async function timeRebuild(
 }
 
 /** A kernel that only writes `bytes` bytes (u32 stores, fully coalesced): the write bound. */
-async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats: number): Promise<number> {
+export async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats: number): Promise<number> {
   const words = Math.max(64, Math.ceil(bytes / 4));
   const buffer = device.createBuffer({ label: 'bench write target', size: 4 * words, usage: GPUBufferUsage.STORAGE });
   const module = device.createShaderModule({
@@ -186,6 +188,7 @@ function fixedFactorForAdaptive(mesh: PreparedMesh, o: HeadlessOptions): number 
 }
 
 export async function main(argv: string[]): Promise<number> {
+  if (argv.includes('--talk')) return talkTables(argv); // bench/talk.ts: the talk's tables at its counts
   const quick = argv.includes('--quick');
   const outIdx = argv.indexOf('--out');
   const modelsIdx = argv.indexOf('--models');

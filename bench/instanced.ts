@@ -61,7 +61,7 @@ function median(xs: number[]): number {
 }
 
 /** The instanced tessellator's level pass, shadow pass and lit pass, each timed, `repeats` times after a warm-up. */
-async function timeInstanced(
+export async function timeInstanced(
   device: GPUDevice,
   it: InstancedTessellator,
   mesh: PreparedMesh,
