@@ -53,12 +53,16 @@ function normalize(n: [number, number, number]): { N: [number, number, number]; 
   return { N: [n[0] / l, n[1] / l, n[2] / l], ok: true };
 }
 
+/** Sub-face trees an n-gon's evaluator keeps (sampling visits them in order, points revisit a few). */
+const MAX_CACHED_ROOTS = 8;
+
 /** Evaluation tree for one cage face (caches refined neighbourhoods). */
 export class FaceEvaluator {
   readonly size: number;
   readonly hole: boolean;
   private readonly base: Level;
   private roots: (Node | undefined)[] = [];
+  private cachedRoots = 0;
   private baseRefined: Level | null = null;
 
   constructor(L: Level, face: number) {
@@ -70,6 +74,14 @@ export class FaceEvaluator {
   private root(k: number): Node {
     let r = this.roots[k];
     if (!r) {
+      // Every sub-face's tree holds the n-gon's whole fan round its centre (valence n) at each
+      // depth, so keeping all n of them costs memory ~ n² (3.7 GB for a 1,500-gon's samples):
+      // keep a few, as the Surface keeps a few faces' evaluators.
+      if (this.cachedRoots >= MAX_CACHED_ROOTS) {
+        this.roots = [];
+        this.cachedRoots = 0;
+      }
+      this.cachedRoots++;
       if (this.size === 4) r = makeNode(this.base);
       else {
         if (!this.baseRefined) this.baseRefined = refine(this.base);
