@@ -17,6 +17,7 @@ export function decodeText(bytes: Uint8Array): string {
 // C0 controls but tab and newline, DEL, C1 controls (U+009B is a one-character CSI on some
 // terminals), line and paragraph separators and the bidirectional overrides and isolates (which
 // reorder what a reader sees).
+// biome-ignore lint/suspicious/noControlCharactersInRegex: finding control characters is its purpose
 const CONTROL = /[\u0000-\u0008\u000b-\u001f\u007f-\u009f\u2028\u2029\u202a-\u202e\u2066-\u2069]/g;
 
 /**
