@@ -120,6 +120,7 @@
  * src/gpu/cc/levels.ts (1: levels and point rules), src/gpu/cc/fans.ts (2: fans, vertex limits,
  * their packing), src/gpu/cc/regions.ts and src/gpu/cc/single-crease.ts (3: regions, tri words).
  */
+import { LimitError } from '../../mesh/errors.ts';
 import {
   type Cage,
   type SubdivOptions,
@@ -184,7 +185,7 @@ function refuseWideVertices(topo: Topology): void {
   for (let v = 0; v < topo.nVerts; v++) {
     const faces = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
     if (faces + (topo.vertBoundary[v] ? 1 : 0) > WORKGROUP_SIZE)
-      throw new Error(
+      throw new LimitError(
         `Catmull-Clark: vertex ${v + 1} has ${faces} faces, more than the ${WORKGROUP_SIZE} threads of a slice workgroup (not supported)`,
       );
   }
@@ -198,7 +199,7 @@ function refuseWideVertices(topo: Topology): void {
  */
 export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: CatmullClarkOptions = {}): CatmullClarkData {
   const options: SubdivOptions = opts.subdiv ?? { ...DEFAULT_OPTIONS, ...cage.fileOptions };
-  if (options.creasing === 'chaikin') throw new Error('Chaikin creasing is not supported by the GPU path');
+  if (options.creasing === 'chaikin') throw new LimitError('Chaikin creasing is not supported by the GPU path');
   const topo = buildTopology(cage);
   const sharp = computeSharpness(cage, topo, options);
   const cls = classify(topo, sharp);
