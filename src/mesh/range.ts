@@ -31,13 +31,14 @@ export function coordinateIssues(cage: Cage): CageIssue[] {
         if (huge++ < SHOWN)
           issues.push({
             line: line(v),
-            message: `vertex ${v + 1}: coordinate ${x} is beyond ±${MAX_COORDINATE}, more than the GPU's 32-bit arithmetic holds: scale the model down`,
+            message: `vertex ${v + 1}: coordinate ${x} is beyond ±${MAX_COORDINATE.toExponential().replace('+', '')}, more than the GPU's 32-bit arithmetic holds: scale the model down`,
           });
         break;
       }
     }
   }
-  if (huge > SHOWN) issues.push({ line: 0, message: `... ${huge - SHOWN} more vertices beyond ±${MAX_COORDINATE}` });
+  if (huge > SHOWN)
+    issues.push({ line: 0, message: `... ${huge - SHOWN} more vertices beyond ±${MAX_COORDINATE.toExponential().replace('+', '')}` });
   if (huge) return issues;
   // Extent and distance from the origin over the vertices the faces use (unused ones are dropped).
   const lo = [Infinity, Infinity, Infinity];

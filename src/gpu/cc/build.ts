@@ -186,7 +186,7 @@ function refuseWideVertices(topo: Topology): void {
     const faces = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
     if (faces + (topo.vertBoundary[v] ? 1 : 0) > WORKGROUP_SIZE)
       throw new LimitError(
-        `Catmull-Clark: vertex ${v + 1} has ${faces} faces, more than the ${WORKGROUP_SIZE} threads of a slice workgroup (not supported)`,
+        `vertex ${v + 1} has ${faces} faces round it; the Catmull-Clark surface's GPU build takes at most ${WORKGROUP_SIZE - (topo.vertBoundary[v] ? 1 : 0)} (one workgroup's threads per vertex)`,
       );
   }
 }
