@@ -171,6 +171,8 @@ function run(argv: string[], io: SubdivIo): number {
       if (!(x.length === 3 || x.length === 4) || x.some((q) => !Number.isFinite(q)))
         throw new InputError(`${pointsFile}:${ln + 1}: expected "f u v" or "f k s t"`);
       const [f, k, s, tt] = x.length === 3 ? [x[0], 0, x[1], x[2]] : x;
+      if (!(Number.isInteger(f) && f >= 0 && f < S.faceCount))
+        throw new InputError(`${pointsFile}:${ln + 1}: face ${f} does not exist (the model has faces 0..${S.faceCount - 1})`);
       try {
         if (x.length === 3 && S.faceSize(f) !== 4) throw new RangeError(`face ${f} is not a quad: give "f k s t"`);
         if (!S.hasLimitSurface(f)) throw new RangeError(`face ${f} is a hole`);

@@ -71,6 +71,11 @@ export class FaceEvaluator {
     this.hole = !!L.hole[face];
   }
 
+  /** Sub-face trees held now (at most MAX_CACHED_ROOTS: an n-gon's memory stays linear in n). */
+  get cachedSubFaces(): number {
+    return this.cachedRoots;
+  }
+
   private root(k: number): Node {
     let r = this.roots[k];
     if (!r) {
