@@ -2,6 +2,7 @@
  * The pattern CLI as a pure function (argv → stdout, stderr, exit code), so it is tested
  * without spawning processes. scripts/pattern-cli.ts is the thin Node wrapper.
  */
+import { escapeControl } from '../mesh/text.ts';
 import { toUnit } from './fixed.ts';
 import { MAX_FACTOR } from './max-factor.ts';
 import { line } from './line.ts';
@@ -225,7 +226,8 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
     });
     return { stdout: out.length ? out.join('\n') + '\n' : '', stderr: '', code: 0 };
   } catch (e) {
-    if (e instanceof UsageError) return { stdout: '', stderr: `pattern: ${e.message}\n${USAGE}\n`, code: 2 };
+    // Messages quote the user's files and arguments: their control characters are escaped.
+    if (e instanceof UsageError) return { stdout: '', stderr: `pattern: ${escapeControl(e.message)}\n${USAGE}\n`, code: 2 };
     throw e;
   }
 }

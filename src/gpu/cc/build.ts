@@ -179,9 +179,18 @@ export interface CatmullClarkData {
 
 /**
  * A vertex's valence never changes under refinement, so one whose fan needs more threads than a
- * workgroup can never be a fan centre: say so now rather than "too many levels" later.
+ * workgroup can never be a fan centre: say so now rather than "too many levels" later. Faces too.
  */
 function refuseWideVertices(topo: Topology): void {
+  // A face's centre is a vertex of valence n after one step: an n-gon wider than a workgroup has
+  // a centre no fan can take, and its regions would refine to MAX_LEVEL and fail there, slowly.
+  for (let f = 0; f < topo.nFaces; f++) {
+    const n = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
+    if (n > WORKGROUP_SIZE)
+      throw new LimitError(
+        `face ${f + 1} has ${n} corners; the Catmull-Clark surface's GPU build takes faces of at most ${WORKGROUP_SIZE} (its centre becomes a vertex of valence ${n})`,
+      );
+  }
   for (let v = 0; v < topo.nVerts; v++) {
     const faces = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
     if (faces + (topo.vertBoundary[v] ? 1 : 0) > WORKGROUP_SIZE)

@@ -295,7 +295,7 @@ export function levelStack(topo: HalfEdges, sharp: Sharpness): LevelStack {
   };
   const level = (l: number): Level => {
     if (l > MAX_LEVEL)
-      throw new Error(
+      throw new LimitError(
         `Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (semi-sharp creases decay one level per unit of ` +
           `sharpness; this cage has sharpness up to ${+maxSemiSharp().toPrecision(3)}: not supported)`,
       );
