@@ -21,7 +21,7 @@ const SURFACE_ALIASES: Record<string, Surface> = { cc: 'catmull-clark', catmullc
 export type TessellatorKind = 'compute' | 'instanced';
 
 export interface DemoParams {
-  /** A model name from the project's list, or a URL of an OBJ file. */
+  /** A model name from the project's list, or the path of an OBJ on the page's own site (model-source.ts). */
   model: string | null;
   /** The model's up axis: the project's models are Z-up; many OBJ exporters write Y-up. */
   up: UpAxis;
