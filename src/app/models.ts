@@ -57,10 +57,18 @@ export async function loadModelFromUrl(url: string, title: string): Promise<Load
   if ((res.headers.get('content-type') ?? '').includes('text/html')) throw new Error(`could not fetch ${url}: not found`);
   // Decoded as the CLIs decode files (UTF-8, or UTF-16 by its byte-order mark).
   const text = decodeText(new Uint8Array(await res.arrayBuffer()));
-  return { ...loadCage(text), title };
+  return drawable({ ...loadCage(text), title });
 }
 
 export async function loadModelFromFile(file: File): Promise<LoadedModel> {
   const text = decodeText(new Uint8Array(await file.arrayBuffer()));
-  return { ...loadCage(text), title: file.name };
+  return drawable({ ...loadCage(text), title: file.name });
+}
+
+/** A model that loads but would draw nothing is refused with the reason, not shown as an empty
+ * view (the loader has already refused coordinates the GPU cannot hold, src/mesh/range.ts). */
+function drawable(m: LoadedModel): LoadedModel {
+  const holes = new Set(m.cage.holes);
+  if (holes.size >= m.topology.nFaces) throw new Error('every face of the model is a hole (t hole): there is nothing to draw');
+  return m;
 }

@@ -1,6 +1,7 @@
 // The page's ?model= policy and its notes for adjusted URL numbers, without a browser.
 import { describe, expect, it } from 'vitest';
 import { modelSource } from '../../src/app/model-source.ts';
+import { loadModelFromFile } from '../../src/app/models.ts';
 import { paramNotes, parseParams } from '../../src/app/params.ts';
 
 const PAGE = 'https://example.org/tessellab/index.html?model=x';
@@ -48,5 +49,25 @@ describe('URL numbers the page adjusts are named', () => {
 
   it('values in range give no note', () => {
     expect(paramNotes('?model=torus&cap=0.5&factor=4&t=0&level=8&errrange=2')).toEqual([]);
+  });
+});
+
+describe("the page's loader (a dropped file)", () => {
+  const CUBE =
+    'v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n' +
+    'f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n';
+
+  it('reads UTF-16 with its BOM as the CLIs do', async () => {
+    const utf16 = new Uint8Array([0xff, 0xfe, ...new Uint8Array(Uint16Array.from([...CUBE].map((c) => c.charCodeAt(0))).buffer)]);
+    const m = await loadModelFromFile(new File([utf16], 'cube.obj'));
+    expect(m.topology.nFaces).toBe(6);
+  });
+
+  it('says why a model would draw nothing: coordinates beyond 32-bit floats, every face a hole', async () => {
+    const huge = CUBE.replace(/^v .*$/gm, (line) => line.replace(/1/g, '1e39'));
+    await expect(loadModelFromFile(new File([huge], 'huge.obj'))).rejects.toThrow(/line 1: vertex 1: coordinate -1e\+39 is beyond/);
+    await expect(loadModelFromFile(new File([`${CUBE}t hole 6/0/0 0 1 2 3 4 5\n`], 'holes.obj'))).rejects.toThrow(
+      /every face of the model is a hole/,
+    );
   });
 });
