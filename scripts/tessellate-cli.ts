@@ -155,6 +155,12 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
   // The demo's first view (src/gpu/render/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
   if (args.demoView) Object.assign(args.o, demoView(mesh));
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
+  // Checked before anything is written or counted (--stats too): a NaN is not an output.
+  const nonFinite = r.out.positions.subarray(0, 3 * r.out.vertexCount).findIndex((x) => !Number.isFinite(x));
+  if (nonFinite >= 0)
+    throw new InputError(
+      `${args.model}: output vertex ${Math.floor(nonFinite / 3) + 1} is not finite: nothing written (the model, --scale or the camera is beyond 32-bit floats)`,
+    );
   // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
   const cam = args.limitPx ? headlessCamera(mesh, args.o) : undefined;
   const limit = cam ? limitDistancePx(cage, mesh, r.out, cam) : undefined;
