@@ -10,7 +10,7 @@
  * Points are printed as numbers in [0, 1] (exact: every coordinate is k/2^16), or as the
  * fixed-point integers k with --fixed. Bad arguments: a message on stderr and exit code 2.
  */
-import { guardedSync } from '../src/cli/boundary.ts';
+import { endQuietlyOnClosedPipe, guardedSync } from '../src/cli/boundary.ts';
 import { readInputText } from '../src/cli/files.ts';
 import { runPatternCli } from '../src/pattern/cli.ts';
 
@@ -25,4 +25,7 @@ export function main(argv: string[]): number {
 }
 
 const isMain = process.argv[1] && /pattern-cli\.ts$/.test(process.argv[1]);
-if (isMain) process.exitCode = main(process.argv.slice(2));
+if (isMain) {
+  endQuietlyOnClosedPipe();
+  process.exitCode = main(process.argv.slice(2));
+}

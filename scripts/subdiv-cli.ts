@@ -16,7 +16,7 @@ import {
   writeObj,
 } from '../src/mesh/index.ts';
 import { Surface, levelFromCage, refineUniform, uniformFaces, uniformSampleCount } from '../src/subdiv/index.ts';
-import { EXIT_BAD_INPUT, EXIT_OK, guardedSync, InputError } from '../src/cli/boundary.ts';
+import { endQuietlyOnClosedPipe, EXIT_BAD_INPUT, EXIT_OK, guardedSync, InputError } from '../src/cli/boundary.ts';
 import { readInputText } from '../src/cli/files.ts';
 
 const USAGE =
@@ -209,4 +209,7 @@ function run(argv: string[], io: SubdivIo): number {
 }
 
 const isMain = process.argv[1] && /subdiv-cli\.ts$/.test(process.argv[1]);
-if (isMain) process.exitCode = main(process.argv.slice(2));
+if (isMain) {
+  endQuietlyOnClosedPipe();
+  process.exitCode = main(process.argv.slice(2));
+}

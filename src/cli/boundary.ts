@@ -89,3 +89,16 @@ export function guardedSync(
     return code;
   }
 }
+
+/**
+ * A reader that stops early (`| head`) closes the pipe: the next write fails with EPIPE, which Node
+ * raises as an unhandled 'error' event with a trace. The output was not wanted any more, so the
+ * process ends quietly, as a command killed by SIGPIPE does in a shell pipeline.
+ */
+export function endQuietlyOnClosedPipe(): void {
+  for (const stream of [process.stdout, process.stderr])
+    stream.on('error', (e: NodeJS.ErrnoException) => {
+      if (e.code === 'EPIPE') process.exit(0);
+      throw e;
+    });
+}
