@@ -52,7 +52,7 @@ import { EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_OK, guarded, InputError, isInputErr
 import { writeOutput } from '../src/cli/files.ts';
 import { loadInput, type TessellateArgs, USAGE, UsageError } from './tessellate-input.ts';
 import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/device/node-device.ts';
-import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera } from '../src/gpu/tess/headless.ts';
+import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, withoutUnusedVertices } from '../src/gpu/tess/headless.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { faceCount, type Cage } from '../src/mesh/index.ts';
@@ -166,17 +166,20 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
   const limit = cam ? limitDistancePx(cage, mesh, r.out, cam) : undefined;
   const displayed = cam ? displayedDistancePx(cage, mesh, r.out, cam) : undefined;
   acc?.patches.destroy();
+  // The cage's unused vertices go through the pipeline; the loader's warning says they are ignored: not written.
+  const { r: written, kept } = withoutUnusedVertices(r);
   if (args.out)
     writeChecked(
       args.out,
       '--out',
       meshToObj(
-        r,
+        written,
         `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}${args.disp ? `, displaced by ${args.disp.path} (scale ${args.disp.scale}, mid ${args.disp.midLevel}, ${args.disp.wrap})` : ''}, ${adapterName}`,
       ),
     );
   if (args.params) {
-    writeParams(args.params, vertexParams(r, cage));
+    const params = vertexParams(r, cage);
+    writeParams(args.params, kept ? Array.from(kept, (v) => params[v]) : params);
   }
   if (args.stats) {
     const timed = Object.keys(r.timings).length > 0;
@@ -189,7 +192,7 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
         gpuBytes: cc ? cc.gpuBytes : acc ? acc.patches.patchBuffer.size + acc.patches.pointBuffer.size + acc.patches.staticBuffer.size : 0,
         subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
         tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
-        vertices: r.out.vertexCount,
+        vertices: written.out.vertexCount,
         triangles: r.out.triangleCount,
         ...(limit && displayed
           ? {
@@ -208,7 +211,7 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');
   console.error(
-    `tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
+    `tessellate: ${written.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
   return EXIT_OK;
 }
