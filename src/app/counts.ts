@@ -1,5 +1,5 @@
 /**
- * Reads the tessellator's `counts` (vertices, triangles, budget scale, attempt) back for the
+ * Reads the tessellator's `counts` (vertices, triangles, budget scale, budget candidate) back for the
  * stats panel, a few frames late and never stalling: one staging buffer, copied into only
  * when it is idle.
  */
@@ -9,7 +9,8 @@ export interface MeshCounts {
   triangleCount: number;
   /** 1 when the factors fitted the buffers; below 1 when the budget pass scaled them down. */
   budgetScale: number;
-  attempt: number;
+  /** The budget candidate taken (src/gpu/contract/tess.ts BUDGET_SCALES): 0 at scale 1. */
+  budgetCandidate: number;
 }
 
 export class CountsReader {
@@ -48,7 +49,7 @@ export class CountsReader {
         vertexCount: words[0],
         triangleCount: words[1],
         budgetScale: new Float32Array(words.buffer, 8, 1)[0],
-        attempt: words[3],
+        budgetCandidate: words[3],
       };
     } catch {
       return null; // the device went away mid-read

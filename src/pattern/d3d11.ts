@@ -50,7 +50,7 @@
  * - The forced fractional_odd picture frame (inside ≤ 1 with some edge > 1) puts the first
  *   ring exactly on the three corners: duplicate positions and zero-area transition triangles.
  */
-import { MAX_FACTOR } from './max-factor.ts';
+import { D3D11_MAX_FACTOR } from './max-factor.ts';
 import { ONE, factorToFixed } from './fixed';
 import type { D3D11Partitioning, LinePattern, TriPattern } from './types';
 
@@ -61,7 +61,7 @@ const ONE_THIRD = Math.floor(ONE / 3); // 0x5555
 const TWO_THIRDS = Math.floor((2 * ONE) / 3); // 0xaaaa
 
 /** Fixed-point reciprocals 1/n for n = 1…64, as round(2^16 / n) (no ties occur). */
-const RECIPROCAL: readonly number[] = Array.from({ length: MAX_FACTOR + 1 }, (_, n) => (n === 0 ? 0 : Math.round(ONE / n)));
+const RECIPROCAL: readonly number[] = Array.from({ length: D3D11_MAX_FACTOR + 1 }, (_, n) => (n === 0 ? 0 : Math.round(ONE / n)));
 
 /**
  * Ruler-function birth order of the 33 slots of a fully refined half-edge (32 segments):
@@ -175,7 +175,7 @@ function clampFactor(f: number, lo: number, hi: number): number {
  * with a non-zero mantissa moves to the next exponent), then clamp to 64.
  */
 function pow2RoundUp(f: number): number {
-  const x = Number.isNaN(f) || f < 1 ? 1 : Math.min(f, MAX_FACTOR);
+  const x = Number.isNaN(f) || f < 1 ? 1 : Math.min(f, D3D11_MAX_FACTOR);
   let p = 1;
   while (p < x) p *= 2;
   return p;

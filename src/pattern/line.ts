@@ -65,7 +65,7 @@ function even(factor: number, maxFactor: number): LinePattern {
 }
 
 export interface LineOptions {
-  /** Largest factor of the talk's modes (a power of two, 2..256). Default 64. */
+  /** Largest factor of the talk's modes (a power of two, 2..256). Default MAX_FACTOR (128). */
   maxFactor?: number;
 }
 

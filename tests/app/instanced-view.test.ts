@@ -29,7 +29,7 @@ describe('instanced counts', () => {
   it('the stats show them per pass, the buckets, and no compute-tessellator rows', () => {
     const input: StatsInput = {
       model: null,
-      counts: { vertexCount: 1, triangleCount: 2, budgetScale: 1, attempt: 0 },
+      counts: { vertexCount: 1, triangleCount: 2, budgetScale: 1, budgetCandidate: 0 },
       vertexCapacity: 10,
       triangleCapacity: 10,
       source: 'tessellator',

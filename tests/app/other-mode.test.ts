@@ -38,7 +38,7 @@ function fakeClock() {
 }
 
 const flush = () => new Promise((r) => setTimeout(r, 0));
-const counts = (triangleCount: number): MeshCounts => ({ vertexCount: triangleCount, triangleCount, budgetScale: 1, attempt: 0 });
+const counts = (triangleCount: number): MeshCounts => ({ vertexCount: triangleCount, triangleCount, budgetScale: 1, budgetCandidate: 0 });
 
 function probeHarness() {
   const clock = fakeClock();

@@ -1,3 +1,4 @@
+import { MAX_FACTOR } from '../../src/pattern/max-factor.ts';
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { ONE, factorToFixed } from '../../src/pattern/fixed.ts';
@@ -54,7 +55,7 @@ describe('every line mode', () => {
   it('clamps out-of-range factors instead of failing', () => {
     for (const mode of TALK_MODES) {
       for (const f of [NaN, -3, 0, 0.5]) expect(line(mode, f)).toEqual(line(mode, 1));
-      for (const f of [64, 65, 1e9, Infinity]) expect(line(mode, f)).toEqual(line(mode, 64));
+      for (const f of [MAX_FACTOR, MAX_FACTOR + 1, 1e9, Infinity]) expect(line(mode, f)).toEqual(line(mode, MAX_FACTOR));
     }
   });
 });
@@ -84,6 +85,20 @@ describe('continuity (no popping)', () => {
       expect(C).toBeLessThan(bound);
     });
   }
+  it(`hable: the top octave, 64 to MAX_FACTOR (${MAX_FACTOR}), moves every point continuously too`, () => {
+    // Coarser steps than above (the octave is the same construction, twice as many points):
+    // the bound scales with the step.
+    const top = 4e-3;
+    let prev = line('hable', 64).x;
+    let worst = 0;
+    for (let i = 1; 64 + i * top <= MAX_FACTOR; i++) {
+      const cur = line('hable', 64 + i * top).x;
+      worst = Math.max(worst, hausdorffSorted(prev, cur) / ONE);
+      prev = cur;
+    }
+    expect(prev.length).toBe(MAX_FACTOR + 1);
+    expect(worst / top).toBeLessThan(0.6);
+  });
   it('pow2-snap pops (the point of the first figure)', () => {
     const gap = hausdorffSorted(line('pow2-snap', 3.999).x, line('pow2-snap', 4).x) / ONE;
     expect(gap).toBeGreaterThan(0.1);

@@ -11,17 +11,8 @@
 // sections, ACC_STATIC), the constants, the bindings (ACC_BUILD_GROUP) and the sector word's
 // getters (ACC_SECTOR_WORD): src/gpu/contract/acc.ts, assembled by contract.ts accBuildPrelude.
 
-const TRI_FACE: u32 = 0xffffffffu;
-const KIND_REGULAR: u32 = 0u;
-const KIND_BEZIER: u32 = 1u;
-const KIND_GREGORY_QUAD: u32 = 2u;
-const KIND_GREGORY_TRI: u32 = 3u;
-const KIND_PM_QUAD: u32 = 4u;
-const KIND_PM_TRI: u32 = 5u;
-const KIND_PM_TRI_LS: u32 = 6u;
-const SECTOR_CREASE: u32 = 1u;
-const SECTOR_CORNER: u32 = 2u;
-const SECTOR_CONE: u32 = 3u;
+// TRI_FACE, the patch kinds (KIND_*) and the sector kinds (SECTOR_*) are generated from
+// src/subdiv/acc.ts, which writes them (accBuildPrelude).
 
 fn cageAt(i: u32) -> vec3<f32> { return vec3<f32>(cagePos[3u * i], cagePos[3u * i + 1u], cagePos[3u * i + 2u]); }
 fn valF(n: u32, i: u32) -> f32 { return bitcast<f32>(accStatic[bp.offValData + accStatic[bp.offValOffs + n] + i]); }

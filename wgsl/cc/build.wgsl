@@ -2,12 +2,13 @@
 // evaluator reads, made from the current cage positions by the topology-only data of
 // src/gpu/cc/build.ts (its header has the layouts). Its declarations are generated (below). Points are f32 xyz: the cage positions (index < ccCageVerts)
 // then, from params.offCtrl in cageBuf, the refined levels, the fans' slices and limits.
-//   points   one thread per point of one level's range (face points, then in a second dispatch
-//            edge and vertex points, which read the new face points), its rule from its word
+//   points   one thread per point of one level (one dispatch a level), its rule from its word;
+//            an edge or vertex point computes the new face points it reads itself (levelInp),
+//            by the same code as the face point's own thread, so a level needs no second dispatch
 //   slices   the EV slice kernel: one thread per sector, several fans per workgroup, the fan's
 //            2-ring ping-ponged in workgroup memory, one Catmull-Clark step per iteration
-//   limits   one thread per fan: limit position and tangents of its centre (Halstead, Kass, DeRose 1993)
-//   vlimits  one thread per prepared vertex: its fan's limit where the factor rule reads it
+//   limits   one thread per fan: limit position and tangents of its centre (Halstead, Kass, DeRose
+//            1993); then one per prepared vertex: its fan's limit where the factor rule reads it
 
 // Declared by the generated prelude (src/gpu/contract/contract.ts ccBuildPrelude): Params, the constants
 // (WORKGROUP_SIZE, GRID_X, CC_NONE), `range` and the bindings params, staticBuf, cageBuf; then
@@ -26,13 +27,32 @@ fn setPt(p: u32, v: vec3<f32>) {
 }
 fn inp(i: u32) -> vec3<f32> { return pt(staticBuf[params.ccInputs + i]); }
 
+// Face point p (its rule's corners are points of the level before): the centroid.
+fn facePoint(p: u32) -> vec3<f32> {
+  let r = params.ccRules + 2u * (p - params.ccCageVerts);
+  let n = ccRuleWord_count(staticBuf[r]);
+  let first = staticBuf[r + 1u];
+  var s = vec3<f32>(0.0);
+  for (var j = 0u; j < n; j++) { s += inp(first + j); }
+  return s / f32(n);
+}
+
+// Input i of an edge or vertex point of this level: a point of the level before, or one of this
+// level's new face points, computed here as its own thread computes it (bit for bit the value it
+// stores), so that the level's points are one dispatch.
+fn levelInp(i: u32) -> vec3<f32> {
+  let p = staticBuf[params.ccInputs + i];
+  if (p >= range.faceFirst && p < range.first + range.count) { return facePoint(p); }
+  return pt(p);
+}
+
 // Vertex masks (OpenSubdiv's Catmull-Clark vertex rules) over the inputs [v, e_0..e_{m-1}, F_0..F_{k-1}].
 fn vertexMask(rule: u32, first: u32, m: u32, k: u32, ia: u32, ib: u32) -> vec3<f32> {
-  let v = inp(first);
+  let v = levelInp(first);
   if (rule == 2u) { return v; }
-  if (rule == 1u) { return 0.75 * v + 0.125 * (inp(first + 1u + ia) + inp(first + 1u + ib)); }
+  if (rule == 1u) { return 0.75 * v + 0.125 * (levelInp(first + 1u + ia) + levelInp(first + 1u + ib)); }
   var s = vec3<f32>(0.0);
-  for (var i = 0u; i < m + k; i++) { s += inp(first + 1u + i); }
+  for (var i = 0u; i < m + k; i++) { s += levelInp(first + 1u + i); }
   let n = f32(m);
   return ((n - 2.0) / n) * v + s / (n * n);
 }
@@ -48,20 +68,16 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let kind = ccRuleWord_kind(w0);
   var out: vec3<f32>;
   if (kind == 0u) {
-    // Face point: the centroid.
-    let n = ccRuleWord_count(w0);
-    var s = vec3<f32>(0.0);
-    for (var j = 0u; j < n; j++) { s += inp(first + j); }
-    out = s / f32(n);
+    out = facePoint(p);
   } else if (kind == 1u) {
     // Edge point: crease (s ≥ 1, boundary), smooth, or their blend for 0 < s < 1.
     let n = ccRuleWord_count(w0);
     let sh = select(0.0, bitcast<f32>(staticBuf[params.ccInputs + first + 4u]), ccRuleWord_sharp(w0) == 1u);
-    let mid = 0.5 * (inp(first) + inp(first + 1u));
+    let mid = 0.5 * (levelInp(first) + levelInp(first + 1u));
     if (n == 2u || sh >= 1.0) {
       out = mid;
     } else {
-      let sm = 0.25 * (inp(first) + inp(first + 1u) + inp(first + 2u) + inp(first + 3u));
+      let sm = 0.25 * (levelInp(first) + levelInp(first + 1u) + levelInp(first + 2u) + levelInp(first + 3u));
       out = select(sm, sh * mid + (1.0 - sh) * sm, sh > 0.0);
     }
   } else {
@@ -282,10 +298,12 @@ fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec
   return array<vec3<f32>, 2>(ringPt(fan, D, ns, anchor, i, 1u) - c, ej - ei);
 }
 
-@compute @workgroup_size(WORKGROUP_SIZE)
-fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let fan = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
-  if (fan >= params.nFans) { return; }
+// A fan's centre: its limit position (anchor + P0) and tangents (T1, T2), and what the per-face
+// tangents of a crease or corner fan need besides. Its one call site is `limits`, for a fan's
+// own thread and for a vertex's alike, so the two agree bit for bit.
+struct FanCentre { pos: vec3<f32>, P0: vec3<f32>, T1: vec3<f32>, T2: vec3<f32>, c: vec3<f32>, anchor: vec3<f32> }
+
+fn fanCentre(fan: u32) -> FanCentre {
   let w0 = fanWord(fan, 0u);
   let ns = ccFanWord_sectors(w0);
   let n = ccFanWord_valence(w0);
@@ -330,6 +348,44 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     T1 = t[0];
     T2 = t[1];
   }
+  return FanCentre(anchor + P0, P0, T1, T2, c, anchor);
+}
+
+// One dispatch: a thread per fan (its centre's limit, and per face the tangents of its own
+// sector at a crease or corner), then a thread per prepared vertex (vertexLimit: the limit where
+// the factor rule and the flat baseline read it, its fan's centre computed again rather than
+// read back, so that no second dispatch has to wait for the fans).
+@compute @workgroup_size(WORKGROUP_SIZE)
+fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let i = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
+  if (i >= params.nFans + params.nVerts) { return; }
+  let isFan = i < params.nFans;
+  let v = i - select(params.nFans, 0u, isFan);
+  var fan = i;
+  if (!isFan) {
+    fan = staticBuf[params.ccVertexFan + v];
+    if (fan != CC_NONE && ccVertexLimitWord_crease(fan) == 1u) { fan = CC_NONE; } // its own closed form
+  }
+  var C = FanCentre(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  if (fan != CC_NONE) { C = fanCentre(fan); }
+  if (!isFan) {
+    vertexLimit(v, fan != CC_NONE, C);
+    return;
+  }
+  let w0 = fanWord(fan, 0u);
+  let ns = ccFanWord_sectors(w0);
+  let n = ccFanWord_valence(w0);
+  let boundary = ccFanWord_boundary(w0) == 1u;
+  let rule = ccFanWord_rule(w0);
+  let D = ccFanWord_depth(w0);
+  let pair = fanWord(fan, 6u);
+  let ia = ccPairWord_a(pair);
+  let ib = ccPairWord_b(pair);
+  let anchor = C.anchor;
+  let c = C.c;
+  let P0 = C.P0;
+  let T1 = C.T1;
+  let T2 = C.T2;
   let lb = fanWord(fan, 5u);
   // Each face's own sector at a crease or corner (build.ts "fan limits"): the span of faces
   // between the two sharp edges round face i, or face i alone at a corner.
@@ -350,17 +406,15 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       setPt(lb + 4u + 2u * i, t[1]);
     }
   }
-  setPt(lb, anchor + P0);
+  setPt(lb, C.pos);
   setPt(lb + 1u, T1);
   setPt(lb + 2u, T2);
 }
 
-// One thread per prepared vertex (the cage's, then the face centres of src/gpu/tess/prepare.ts):
-// its limit position and normal, where the factor rule and the flat baseline read them.
-@compute @workgroup_size(WORKGROUP_SIZE)
-fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let v = (wid.y * GRID_X + wid.x) * WORKGROUP_SIZE + lid;
-  if (v >= params.nVerts) { return; }
+// A prepared vertex (the cage's, then the face centres of src/gpu/tess/prepare.ts): its limit
+// position and normal, where the factor rule and the flat baseline read them; `centre` is its
+// fan's when it has one (hasFan).
+fn vertexLimit(v: u32, hasFan: bool, centre: FanCentre) {
   let fan = staticBuf[params.ccVertexFan + v];
   let o = params.offPositions + 3u * v;
   var p = vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
@@ -392,10 +446,9 @@ fn vlimits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_inde
     p = c + pp;
     let nc = cross(pa, pb);
     if (length(nc) > 0.0) { nn = normalize(nc); }
-  } else if (fan != CC_NONE) {
-    let lb = fanWord(fan, 5u);
-    p = pt(lb);
-    let nc = cross(pt(lb + 1u), pt(lb + 2u));
+  } else if (hasFan) {
+    p = centre.pos;
+    let nc = cross(centre.T1, centre.T2);
     if (length(nc) > 0.0) { nn = normalize(nc); }
   }
   let op = params.offFactorPos + 3u * v;

@@ -33,8 +33,7 @@
 // The bindings (params, staticBuf, cageBuf, and the rest of group 0 per module) are declared in
 // src/gpu/instanced/buffer-layouts.ts (INST_DRAW_MESH_GROUP, INST_LEVELS_GROUP) and generated.
 
-const ONE: u32 = 65536u;
-// PHONG_ALPHA, PATCH_WORDS, LEVELS (the pattern levels 1, 2, 4, …) and MAX_LEVEL (the largest)
+// ONE (the 16.16 unit), PHONG_ALPHA, PATCH_WORDS, LEVELS (the pattern levels 1, 2, 4, …) and MAX_LEVEL (the largest)
 // are generated from their TypeScript values (src/gpu/instanced/levels.ts).
 
 struct SurfacePoint { pos: vec3<f32>, normal: vec3<f32>, du: vec3<f32>, dv: vec3<f32> } // as wgsl/tess/common.wgsl

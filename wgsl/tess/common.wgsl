@@ -9,11 +9,12 @@
 //              edgeOwner, vertexOwner; the Catmull-Clark tables
 //   cageBuf    TESS_CAGE: cage positions then vertex normals, 3 f32 each (rewritten when the
 //              cage moves); with the Catmull-Clark surface then its control points and limits
-//   work       TESS_WORK: per-edge and per-triangle counts, their prefix sums, the planned rows,
-//              and the budget state (BUDGET_* words at params.offBudget)
+//   work       TESS_WORK: per-edge and per-triangle counts at every budget candidate, the chosen
+//              one's prefix sums, the planned rows, and the budget state (BUDGET_* words at
+//              params.offBudget)
 // Each array's offset is the Params field `off` + its name.
 
-const PHONG_ALPHA: f32 = 0.75;
+// PHONG_ALPHA comes with the prelude (src/gpu/contract/constants.ts).
 
 // The plan and emit passes run once the budget accepted counts that fit.
 fn emitEnabled() -> bool {
@@ -57,6 +58,20 @@ fn lineState(F: u32) -> u32 {
   return lo;
 }
 
+// An edge of factor f0 (before the budget: wgsl/tess/factors.wgsl edgeFactor) at budget
+// candidate c (contract/tess.ts BUDGET_SCALES; its last, 0, is factor 1 everywhere): its 16.16
+// factor, line state and segments. The count pass counts with it at every candidate, and the
+// scan's last pass stores it at the chosen one, from the same f0 bits: the same values.
+fn edgeAtCandidate(f0: f32, c: u32) -> vec3<u32> {
+  var f = f0 * BUDGET_SCALES[c];
+  if (c == BUDGET_CANDIDATES - 1u) { f = 1.0; }
+  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
+  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
+  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
+  let s = lineState(F);
+  return vec3<u32>(F, s, statePointCount(s) - 1u);
+}
+
 // Points of a line in state s (segments = points − 1).
 fn statePointCount(s: u32) -> u32 { return staticBuf[tblStateIndexOff() + 2u * s + 1u]; }
 
@@ -94,7 +109,8 @@ fn edgeVert(e: u32, i: u32) -> u32 { return staticBuf[params.offEdgeVerts + 2u *
 fn cornerSlot(t: u32, i: u32) -> u32 { return staticBuf[params.offCornerSlot + 3u * t + i]; }
 fn edgeSplit(e: u32) -> bool { return staticBuf[params.offEdgeSplit + e] != 0u; }
 
-// Per-edge results of the factor pass.
+// Per-edge results of the count pass at the budget's chosen candidate: lane 0 of the edge arrays
+// (contract/tess.ts TESS_WORK), where the scan's last pass copies the chosen lane.
 fn edgeF(e: u32) -> u32 { return work[params.offEdgeF + e]; }
 fn edgeState(e: u32) -> u32 { return work[params.offEdgeState + e]; }
 fn edgeSegments(e: u32) -> u32 { return work[params.offEdgeSegs + e]; }

@@ -1,5 +1,6 @@
-// Pass 1 of each budget attempt, one thread per mesh edge: the edge's tess factor (computed
-// once per edge, so its two triangles cannot disagree), its line state and segment count.
+// An edge's tess factor, line state and segment count at a budget candidate, for the count pass
+// (wgsl/tess/count.wgsl), which computes each triangle's three edges: both triangles of an edge
+// run this same code on the same inputs, so they cannot disagree, and the edge's owner stores it.
 // Mirrors src/gpu/tess/factors.ts edgeFactor; the curvature measure is wgsl/tess/factor-rule.wgsl's, and the
 // bulge term of the edge's two triangles is wgsl/tess/factor-bulge.wgsl's (its pass has run).
 
@@ -51,22 +52,7 @@ fn adaptiveFactor(e: u32) -> f32 {
   return max(surface, detail);
 }
 
-@compute @workgroup_size(WORKGROUP_SIZE)
-fn main(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let e = flatIndex(wid, lid);
-  if (e >= params.nEdges || work[params.offBudget + BUDGET_ACCEPTED] != 0u) { return; }
-  let attempt = work[params.offBudget + BUDGET_ATTEMPT];
-  var f = select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
-  if (attempt == 1u) { f = f * bitcast<f32>(work[params.offBudget + BUDGET_SCALE]); }
-  if (attempt >= 2u) { f = 1.0; }
-  // NaN and everything ≤ 1 become 1: nothing else reaches the tessellator.
-  f = select(1.0, min(f, f32(params.maxFactor)), f >= 1.0);
-  let F = clamp(u32(round(f * 65536.0)), ONE, params.maxFactor * ONE);
-  let s = lineState(F);
-  work[params.offEdgeF + e] = F;
-  work[params.offEdgeState + e] = s;
-  let segments = statePointCount(s) - 1u;
-  work[params.offEdgeSegs + e] = segments;
-  // Its interior points, twice on an edge whose normals split (once per side).
-  work[params.offEdgeInterior + e] = (segments - 1u) * select(1u, 2u, edgeSplit(e));
+// The edge's factor before the budget: the adaptive rule's, or the fixed one.
+fn edgeFactor(e: u32) -> f32 {
+  return select(adaptiveFactor(e), params.fixedFactor, params.mode == 0u);
 }

@@ -1,4 +1,4 @@
-// Writing one vertex of the output mesh (src/gpu/contract/tessellated-mesh.ts), for the weld and emit passes.
+// Writing one vertex of the output mesh (src/gpu/contract/tessellated-mesh.ts), for the emit pass.
 
 // The surface point of triangle t at weights w, displaced when params.dispOn (wgsl/tess/displace.wgsl).
 fn surfaceAt(t: u32, w: vec3<u32>) -> SurfacePoint {
@@ -7,21 +7,16 @@ fn surfaceAt(t: u32, w: vec3<u32>) -> SurfacePoint {
   return displacePoint(t, w, s);
 }
 
-fn writeVertex(index: u32, t: u32, w: vec3<u32>) {
-  writeSplitVertex(index, t, w, t, w);
-}
-
 // A point where the surface's normal splits (an infinitely sharp crease): the position of the
 // point as (tPos, wPos) gives it, the owner side's, so that both sides' output vertices lie at
 // bit-identical places (one evaluation, repeated exactly), and the normal as triangle tN sees it.
-// Where (tN, wN) is (tPos, wPos) (writeVertex: every vertex but a split one) the point is
-// evaluated once.
+// Where (tN, wN) is (tPos, wPos) (every vertex but a split one) the point is evaluated once.
 //
 // The surface is called from ONE place, in a loop of one or two turns, not once per side: a
 // shader compiler that inlines every call (SwiftShader's, which CI and headless runs use) builds
 // the exact surface's evaluator once per call site, and three sites per weld entry point made the
-// weld most of a page's pipeline build (4.2 + 4.5 s of 16 s on 2 CPU cores). The callers pass
-// their cases through writeSplitVertex for the same reason (weld.wgsl).
+// weld most of a page's pipeline build (4.2 + 4.5 s of 16 s on 2 CPU cores). Every kind of
+// vertex comes through writeSplitVertex for the same reason (wgsl/tess/emit.wgsl `output`).
 fn writeSplitVertex(index: u32, tPos: u32, wPos: vec3<u32>, tN: u32, wN: vec3<u32>) {
   if (index >= params.vertexCapacity) { return; }
   let turns = select(1u, 2u, tN != tPos || any(wN != wPos));

@@ -9,7 +9,16 @@
 
 struct EdgeLine { state: u32, F: u32, n: u32, flip: bool }
 
+// The count pass computes its triangle's three edges itself (wgsl/tess/count.wgsl) and sets
+// them here (F, state, segments per local edge); every later pass reads the stored ones.
+var<private> localEdgeLines: array<vec3<u32>, 3>;
+var<private> useLocalEdges: bool = false;
+
 fn edgeLine(t: u32, edgeIndex: u32, flip: bool) -> EdgeLine {
+  if (useLocalEdges) {
+    let l = localEdgeLines[edgeIndex];
+    return EdgeLine(l.y, l.x, l.z, flip);
+  }
   let e = triEdge(t, edgeIndex);
   return EdgeLine(edgeState(e), edgeF(e), edgeSegments(e), flip);
 }

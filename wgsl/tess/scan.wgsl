@@ -1,25 +1,36 @@
-// Exclusive prefix sum of n u32 values inside the `work` buffer, reduce-then-scan in three
-// direct dispatches (WebGPU gives no forward-progress guarantee, so no single-pass lookback):
-//   scanBlocks   each workgroup scans BLOCK = SCAN_WORKGROUP_SIZE × SCAN_ITEMS (128 × 32) values (32 consecutive ones per thread,
-//                summed serially, so a big scan needs few workgroups and few barriers) and
-//                writes its block total
-//   scanSums     one workgroup scans the block totals and writes the grand total at out[n]
-//   addSums      adds each block's offset
-// Up to 65535 blocks of 4096 values. A scan whose `skipOff` word is non-zero does nothing: the
-// budget loop's later attempts skip their scans once an attempt has been accepted.
-
-// `scan: ScanParams`, `work` and the constants come from src/gpu/contract/contract.ts (scanPrelude).
+// The counts' exclusive prefix sums and the budget, in three dispatches whatever the camera
+// (reduce-then-scan: WebGPU gives no forward-progress guarantee, so no single-pass lookback).
+// The factor and count passes have written every count at every budget candidate
+// (contract/tess.ts BUDGET_SCALES), SCANS lanes per candidate (TESS_SCANS, scanLane* below):
+//   scanReduce   every lane at once (workgroup y = lane): each workgroup sums one block of
+//                BLOCK = SCAN_WORKGROUP_SIZE × SCAN_ITEMS (128 × 32) values (32 consecutive ones
+//                per thread, summed serially, so a big count needs few workgroups and barriers)
+//   budget       one workgroup: scans each lane's block sums in place, totals each candidate's
+//                output vertices and triangles, takes the first candidate that fits the output
+//                buffers, and writes the draw and dispatch arguments from its totals
+//   scanDown     the chosen candidate's lanes only (workgroup y = lane kind): each block's own
+//                exclusive scan plus its block's offset, into the prefix-sum arrays; and the
+//                edges' factors, states and segments at the chosen candidate (common.wgsl)
+// Up to 65535 blocks of 4096 values a lane. Totals that do not fit in 32 bits (a large cage at
+// scale 1) saturate, so they read as "does not fit" rather than wrapping to a small number; the
+// chosen candidate's totals fit the output buffers, so its sums are exact.
 
 const THREADS: u32 = SCAN_WORKGROUP_SIZE;
 const ITEMS: u32 = SCAN_ITEMS;
 const BLOCK: u32 = THREADS * ITEMS;
+const SATURATED: u32 = 0xffffffffu;
 var<workgroup> partial: array<u32, THREADS>;
-var<workgroup> skip: u32;
+var<workgroup> chosen: u32;
 
-fn skipped(lid: u32) -> bool {
-  if (lid == 0u) { skip = work[scan.skipOff]; }
-  return workgroupUniformLoad(&skip) != 0u;
+fn addSaturating(a: u32, b: u32) -> u32 {
+  let s = a + b;
+  return select(s, SATURATED, s < a);
 }
+
+// Words of one lane's block sums (src/gpu/contract/tess.ts scanSumsWords of the longer array).
+fn sumsStride() -> u32 { return (max(max(params.nEdges, params.nTris), 1u) + BLOCK - 1u) / BLOCK + 1u; }
+fn laneSums(lane: u32) -> u32 { return params.offSums + lane * sumsStride(); }
+fn laneBlocks(kind: u32) -> u32 { return (scanLaneLength(kind) + BLOCK - 1u) / BLOCK; }
 
 // Inclusive Hillis-Steele scan of `partial` across the workgroup.
 fn scanPartial(lid: u32) {
@@ -27,61 +38,127 @@ fn scanPartial(lid: u32) {
     workgroupBarrier();
     let add = select(0u, partial[lid - step], lid >= step);
     workgroupBarrier();
-    partial[lid] += add;
+    partial[lid] = addSaturating(partial[lid], add);
   }
   workgroupBarrier();
 }
 
 @compute @workgroup_size(THREADS)
-fn scanBlocks(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  if (skipped(lid)) { return; }
+fn scanReduce(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  let lane = wid.y;
+  let kind = lane % SCANS;
+  let n = scanLaneLength(kind);
+  if (wid.x * BLOCK >= n) { return; } // uniform: this lane has fewer blocks than the longest
+  let input = scanLaneIn(kind) + (lane / SCANS) * n;
   let first = wid.x * BLOCK + lid * ITEMS;
   var sum = 0u;
   for (var k = 0u; k < ITEMS; k++) {
-    if (first + k < scan.n) { sum += work[scan.inOff + first + k]; }
+    if (first + k < n) { sum = addSaturating(sum, work[input + first + k]); }
   }
   partial[lid] = sum;
   scanPartial(lid);
-  var run = partial[lid] - sum;
-  for (var k = 0u; k < ITEMS; k++) {
-    if (first + k < scan.n) {
-      let v = work[scan.inOff + first + k];
-      work[scan.outOff + first + k] = run;
-      run += v;
-    }
-  }
-  if (lid == THREADS - 1u) { work[scan.sumsOff + wid.x] = partial[lid]; }
+  if (lid == THREADS - 1u) { work[laneSums(lane) + wid.x] = partial[lid]; }
 }
 
-@compute @workgroup_size(THREADS)
-fn scanSums(@builtin(local_invocation_index) lid: u32) {
-  if (skipped(lid)) { return; }
-  let blocks = (scan.n + BLOCK - 1u) / BLOCK;
+// Scans one lane's block sums in place (exclusive) and returns its total (every thread).
+fn scanLaneSums(lane: u32, lid: u32) -> u32 {
+  let base = laneSums(lane);
+  let blocks = laneBlocks(lane % SCANS);
   let per = (blocks + THREADS - 1u) / THREADS;
   let first = lid * per;
   var total = 0u;
   for (var k = 0u; k < per; k++) {
-    if (first + k < blocks) { total += work[scan.sumsOff + first + k]; }
+    if (first + k < blocks) { total = addSaturating(total, work[base + first + k]); }
   }
   partial[lid] = total;
   scanPartial(lid);
   var run = partial[lid] - total;
   for (var k = 0u; k < per; k++) {
     if (first + k < blocks) {
-      let s = work[scan.sumsOff + first + k];
-      work[scan.sumsOff + first + k] = run;
-      run += s;
+      let s = work[base + first + k];
+      work[base + first + k] = run;
+      run = addSaturating(run, s);
     }
   }
-  if (lid == THREADS - 1u) { work[scan.outOff + scan.n] = partial[lid]; }
+  let all = partial[THREADS - 1u];
+  workgroupBarrier(); // before the next lane reuses `partial`
+  return all;
+}
+
+// The emit pass's indirect dispatch arguments, folded into 2D.
+fn dispatchArgs(threads: u32) -> vec3<u32> {
+  let groups = (threads + WORKGROUP_SIZE - 1u) / WORKGROUP_SIZE;
+  if (groups == 0u) { return vec3<u32>(0u, 1u, 1u); }
+  return vec3<u32>(min(groups, GRID_X), (groups + GRID_X - 1u) / GRID_X, 1u);
+}
+
+// One workgroup: the block sums of every lane scanned, then one decision over the candidates'
+// totals (thread 0). Nothing overflows and nothing is lost at any camera: the weld, plan and
+// emit passes only run when the chosen candidate fits.
+@compute @workgroup_size(THREADS)
+fn budget(@builtin(local_invocation_index) lid: u32) {
+  var totals: array<u32, SCANS * BUDGET_CANDIDATES>;
+  for (var lane = 0u; lane < SCANS * BUDGET_CANDIDATES; lane++) { totals[lane] = scanLaneSums(lane, lid); }
+  if (lid != 0u) { return; }
+  var c = 0u;
+  var vertices = 0u;
+  var triangles = 0u;
+  var fits = false;
+  loop {
+    // Lanes of candidate c: edge points, interior vertices, triangles, rows (TESS_SCANS).
+    vertices = addSaturating(params.nSlots, addSaturating(totals[SCANS * c], totals[SCANS * c + 1u]));
+    triangles = totals[SCANS * c + 2u];
+    fits = vertices <= params.vertexCapacity && triangles <= params.triangleCapacity;
+    if (fits || c == BUDGET_CANDIDATES - 1u) { break; }
+    c++;
+  }
+  let b = params.offBudget;
+  work[b + BUDGET_ACCEPTED] = 1u;
+  work[b + BUDGET_CANDIDATE] = c;
+  work[b + BUDGET_FITS] = select(0u, 1u, fits);
+  work[b + BUDGET_SCALE] = bitcast<u32>(BUDGET_SCALES[c]);
+  // The grand totals, at n of each prefix-sum array (scanDown writes the rest).
+  for (var kind = 0u; kind < SCANS; kind++) { work[scanLaneOut(kind) + scanLaneLength(kind)] = totals[SCANS * c + kind]; }
+  let shown = select(0u, triangles, fits);
+  drawArgs = array(3u * shown, 1u, 0u, 0u, 0u);
+  counts = array(select(0u, vertices, fits), shown, bitcast<u32>(BUDGET_SCALES[c]), c);
+  // One emit thread per output vertex (the welded ones included), then one per output triangle.
+  let v = dispatchArgs(select(0u, vertices, fits));
+  let t = dispatchArgs(shown);
+  emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z);
 }
 
 @compute @workgroup_size(THREADS)
-fn addSums(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  if (skipped(lid)) { return; }
+fn scanDown(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
+  if (lid == 0u) { chosen = work[params.offBudget + BUDGET_CANDIDATE]; }
+  let c = workgroupUniformLoad(&chosen);
+  let kind = wid.y;
+  let n = scanLaneLength(kind);
+  if (wid.x * BLOCK >= n) { return; } // uniform
+  let lane = SCANS * c + kind;
+  let input = scanLaneIn(kind) + c * n;
+  let output = scanLaneOut(kind);
   let first = wid.x * BLOCK + lid * ITEMS;
-  let offset = work[scan.sumsOff + wid.x];
+  var sum = 0u;
   for (var k = 0u; k < ITEMS; k++) {
-    if (first + k < scan.n) { work[scan.outOff + first + k] += offset; }
+    if (first + k < n) { sum = addSaturating(sum, work[input + first + k]); }
+  }
+  partial[lid] = sum;
+  scanPartial(lid);
+  var run = addSaturating(work[laneSums(lane) + wid.x], partial[lid] - sum);
+  for (var k = 0u; k < ITEMS; k++) {
+    let i = first + k;
+    if (i < n) {
+      work[output + i] = run;
+      run = addSaturating(run, work[input + i]);
+      // The edges' lines at the chosen candidate, where the weld, plan and emit read them
+      // (TESS_SCANS: lane kind 0 is the edges').
+      if (kind == 0u) {
+        let l = edgeAtCandidate(bitcast<f32>(work[params.offEdgeFactor + i]), c);
+        work[params.offEdgeF + i] = l.x;
+        work[params.offEdgeState + i] = l.y;
+        work[params.offEdgeSegs + i] = l.z;
+      }
+    }
   }
 }

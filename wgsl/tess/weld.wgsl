@@ -8,50 +8,46 @@
 //            the normals split (prepare.ts splitCreases: its position is the vertex's, its normal
 //            the sector's);
 //   edges:   the interior points of each mesh edge's line, in the edge's canonical direction
-//            (lower to higher vertex), one thread per point (an indirect dispatch sized by the
-//            budget pass: a thread per edge looping over its points made the pass as slow as
-//            its most finely cut edge, 1.4-3 ms on an H200 at factor 16); each is evaluated
-//            through one triangle of the edge, whose barycentrics are stored. An edge whose
-//            normals split has its points twice: the owner's, then the twin's (same positions).
+//            (lower to higher vertex), one thread per point (a thread per edge looping over its
+//            points made the pass as slow as its most finely cut edge, 1.4-3 ms on an H200 at
+//            factor 16); each is evaluated through one triangle of the edge, whose barycentrics
+//            are stored. An edge whose normals split has its points twice: the owner's, then
+//            the twin's (same positions).
+// Both are threads of the one output dispatch (wgsl/tess/emit.wgsl `output`), which asks here
+// where its vertex lies (a VertexPlace) and evaluates every kind of vertex at one call site.
 
-@compute @workgroup_size(WORKGROUP_SIZE)
-fn corners(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let v = flatIndex(wid, lid);
-  if (v >= params.nSlots || !emitEnabled()) { return; }
-  // One call of writeSplitVertex for every case (its header says why): the position's side and
-  // the normal's side, the same but at an extra sector.
-  var tPos: u32;
-  var wPos = vec3<u32>(0u);
-  var tN: u32;
-  var wN = vec3<u32>(0u);
+// Where an output vertex lies: its position through (tPos, wPos), its normal through (tN, wN)
+// (the same but where normals split: outputs.wgsl writeSplitVertex); `unused` marks a cage
+// vertex that no face with a surface uses (cage: outputs.wgsl writeUnusedVertex).
+struct VertexPlace { tPos: u32, wPos: vec3<u32>, tN: u32, wN: vec3<u32>, unused: bool }
+
+// Output vertex v < nSlots: a cage vertex, or an extra sector of one.
+fn cornerPlace(v: u32) -> VertexPlace {
+  var P = VertexPlace(0u, vec3<u32>(0u), 0u, vec3<u32>(0u), false);
   if (v >= params.nVerts) {
     // An extra sector: the normal through its own triangle, the position through the vertex's owner.
     let sector = staticBuf[params.offSlotOwner + v - params.nVerts];
     let ts = ownerWord_tri(sector);
     let cv = triVert(ts, ownerWord_corner(sector));
     let owner = staticBuf[params.offVertexOwner + cv];
-    tPos = ownerWord_tri(owner);
-    wPos[ownerWord_corner(owner)] = ONE;
-    tN = ts;
-    wN[ownerWord_corner(sector)] = ONE;
-  } else {
-    let owner = staticBuf[params.offVertexOwner + v];
-    if (owner == NO_OWNER) {
-      writeUnusedVertex(v, v); // not used by any face with a surface
-      return;
-    }
-    tPos = ownerWord_tri(owner);
-    wPos[ownerWord_corner(owner)] = ONE;
-    tN = tPos;
-    wN = wPos;
+    P.tPos = ownerWord_tri(owner);
+    P.wPos[ownerWord_corner(owner)] = ONE;
+    P.tN = ts;
+    P.wN[ownerWord_corner(sector)] = ONE;
+    return P;
   }
-  writeSplitVertex(v, tPos, wPos, tN, wN);
+  let owner = staticBuf[params.offVertexOwner + v];
+  P.unused = owner == NO_OWNER;
+  if (P.unused) { return P; }
+  P.tPos = ownerWord_tri(owner);
+  P.wPos[ownerWord_corner(owner)] = ONE;
+  P.tN = P.tPos;
+  P.wN = P.wPos;
+  return P;
 }
 
-@compute @workgroup_size(WORKGROUP_SIZE)
-fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  let q = flatIndex(wid, lid); // the q-th interior edge point of the whole mesh
-  if (q >= work[params.offEdgeBase + params.nEdges] || !emitEnabled()) { return; }
+// The q-th interior edge point of the whole mesh (output vertex nSlots + q).
+fn edgePlace(q: u32) -> VertexPlace {
   let e = lastAtMost(params.offEdgeBase, params.nEdges, q);
   let j = q - work[params.offEdgeBase + e];
   let interior = edgeSegments(e) - 1u;
@@ -61,15 +57,14 @@ fn edges(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index)
   let owner = staticBuf[params.offEdgeOwner + e];
   let t = ownerWord_tri(owner);
   let w = edgeWeights(e, owner, x);
-  // The normal's side: the owner's, or on an edge's second copy its twin's (one call site).
-  var tN = t;
-  var wN = w;
+  // The normal's side: the owner's, or on an edge's second copy its twin's.
+  var P = VertexPlace(t, w, t, w, false);
   if (twinSide) {
     let twin = staticBuf[params.offEdgeTwin + e];
-    tN = ownerWord_tri(twin);
-    wN = edgeWeights(e, twin, x);
+    P.tN = ownerWord_tri(twin);
+    P.wN = edgeWeights(e, twin, x);
   }
-  writeSplitVertex(params.nSlots + q, t, w, tN, wN);
+  return P;
 }
 
 // The weights of edge e's point x (a line coordinate along the edge's canonical direction) in

@@ -71,7 +71,7 @@ export function singleCrease(L: Level, g: number): { start: number; sigma: numbe
  * A vertex on a straight semi-sharp crease (two opposite edges of the same semi-sharp σ, the
  * other two smooth, an interior valence-4 vertex of quads, no vertex sharpness): its limit is
  * the corner of the single-crease patches round it, in closed form (wgsl/cc/build.wgsl
- * vlimits). Its 3×3 neighbourhood at 3a + b (global indices), a across the crease, b along it,
+ * vertexLimit). Its 3×3 neighbourhood at 3a + b (global indices), a across the crease, b along it,
  * oriented as the faces (a toward the first ring neighbour, b toward the next: cross(∂a, ∂b) is
  * the surface normal); null if v is not such a vertex.
  */

@@ -12,6 +12,7 @@ import { defineStruct } from './layout.ts';
 export const CC_RANGE = defineStruct('Range', [
   ['first', 'u32', 'Global index of the range’s first point.'],
   ['count', 'u32'],
+  ['faceFirst', 'u32', 'The level’s face points: from here to the end of the range (its edge and vertex points come first).'],
 ] as const);
 
 /**

@@ -19,6 +19,11 @@ export const SCAN_ITEMS = 32;
 /** Widest dispatch in x (WebGPU's default maxComputeWorkgroupsPerDimension); wider ones fold into y. */
 export const GRID_X = 65535;
 
+/** Phong tessellation's shape factor α (Boubekeur and Alexa's 3/4): the compute and instanced
+ * tessellators' Phong surface, the factor rule's chord bound (src/gpu/tess/factors.ts), and the
+ * per-edge α that src/gpu/surface/phong-alpha.ts lowers from it. An f32 in WGSL (tessPrelude). */
+export const PHONG_ALPHA = 0.75;
+
 /** The numbers every shader may read, by their WGSL names (all u32). */
 export const SHARED_CONSTANTS = { WORKGROUP_SIZE, SCAN_WORKGROUP_SIZE, SCAN_ITEMS, GRID_X } as const;
 

@@ -10,8 +10,8 @@
  *   constants.ts   shared numbers (workgroup sizes, the dispatch grid's width), as TypeScript
  *                  values and as a WGSL `const` prelude (constantsWgsl)
  *   tess.ts        the compute tessellator's: its buffers as arenas (TESS_STATIC, TESS_CAGE,
- *                  TESS_WORK), its uniforms (TESS_PARAMS), its bind group (TESS_GROUP), the scan's
- *                  uniforms (SCAN_PARAMS), the packed words its shaders read, its constants
+ *                  TESS_WORK), its uniforms (TESS_PARAMS), its bind group (TESS_GROUP), the budget's
+ *                  candidate scales, the packed words its shaders read, its constants
  *   cc.ts          the Catmull-Clark patch build's bind group and level range, and the sections
  *                  of its words (CC_STATIC, whose offsets are Params' cc* fields)
  *   acc.ts         the ACC patch build's: its static words as an arena (ACC_STATIC), its uniforms
@@ -28,9 +28,22 @@
  * tests/gpu/contract/contract.test.ts parses the generated WGSL back and checks it against the TypeScript
  * views; tests/gpu/contract/contract.gpu.test.ts runs it through a real WGSL compiler.
  */
+import {
+  KIND_BEZIER,
+  KIND_GREGORY_QUAD,
+  KIND_GREGORY_TRI,
+  KIND_PM_QUAD,
+  KIND_PM_TRI,
+  KIND_PM_TRI_LS,
+  KIND_REGULAR,
+  SECTOR_CONE,
+  SECTOR_CORNER,
+  SECTOR_CREASE,
+  TRI_FACE,
+} from '../../subdiv/acc.ts';
 import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_SECTOR_WORD } from './acc.ts';
 import { CC_BUILD_GROUP, CC_NONE, CC_RANGE } from './cc.ts';
-import { constantsWgsl } from './constants.ts';
+import { constantsWgsl, PHONG_ALPHA } from './constants.ts';
 import { wgslConstants, wgslF32 } from './define.ts';
 import { GROUND_EXTENT, PATCH_COLOURS, SCENE_GROUP, SCENE_UNIFORMS } from './render.ts';
 import {
@@ -40,8 +53,7 @@ import {
   DISP_TRI_WORD,
   OWNER_WORD,
   PATTERN_FRAME_WORD,
-  SCAN_GROUP,
-  SCAN_PARAMS,
+  BUDGET_SCALES,
   TESS_BINDINGS,
   TESS_CONSTANTS,
   TESS_GROUP,
@@ -57,7 +69,12 @@ export function ccBuildPrelude(): string {
 
 /** What wgsl/acc/build.wgsl starts with: its uniforms, the constants, its bindings, the sector word. */
 export function accBuildPrelude(): string {
-  return [ACC_BUILD_PARAMS.wgsl, constantsWgsl, ACC_BUILD_GROUP.wgsl(), ACC_SECTOR_WORD.wgsl].join('\n');
+  // The patch kinds, the sector kinds and the ring's triangle marker, as the CPU's ACC writes them.
+  const acc = { TRI_FACE, KIND_REGULAR, KIND_BEZIER, KIND_GREGORY_QUAD, KIND_GREGORY_TRI, KIND_PM_QUAD, KIND_PM_TRI, KIND_PM_TRI_LS };
+  const sectors = { SECTOR_CREASE, SECTOR_CORNER, SECTOR_CONE };
+  return [ACC_BUILD_PARAMS.wgsl, constantsWgsl, wgslConstants({ ...acc, ...sectors }), ACC_BUILD_GROUP.wgsl(), ACC_SECTOR_WORD.wgsl].join(
+    '\n',
+  );
 }
 
 /** What every tessellator shader starts with: Params, the constants, the bindings `names` (all by
@@ -67,6 +84,8 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     TESS_PARAMS.wgsl,
     constantsWgsl,
     wgslConstants(TESS_CONSTANTS),
+    `const PHONG_ALPHA: f32 = ${wgslF32(PHONG_ALPHA)};`,
+    `const BUDGET_SCALES = array<f32, ${BUDGET_SCALES.length}>(${BUDGET_SCALES.map(wgslF32).join(', ')});`,
     TESS_GROUP.wgsl(names),
     PATTERN_FRAME_WORD.wgsl,
     BARY_WORD.wgsl,
@@ -77,9 +96,6 @@ export function tessPrelude(names: readonly TessBinding[] = TESS_BINDINGS): stri
     tableHeaderWgsl('staticBuf', 'params'),
   ].join('\n');
 }
-
-/** What wgsl/tess/scan.wgsl starts with. */
-export const scanPrelude = [SCAN_PARAMS.wgsl, constantsWgsl, SCAN_GROUP.wgsl()].join('\n');
 
 /** What every render shader starts with: the per-frame uniforms (the struct and its binding,
  * group 0 everywhere) and the constants the TypeScript shares with the render shaders. */

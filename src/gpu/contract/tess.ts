@@ -55,21 +55,35 @@ export function decodeBary(word: number): [number, number, number] {
 // ---------------------------------------------------------------------------------------------
 // The compute tessellator (tessellator.ts, wgsl/tess/*.wgsl)
 
-/** Budget attempts per rebuild: scale 1, a scale that fits, then factor 1 everywhere. */
-export const ATTEMPTS = 3;
+/**
+ * The budget's candidate scales of every factor, largest first (src/gpu/tess/factors.ts
+ * budgetCandidate is the CPU's twin of the choice): a rebuild counts its output at all of them in
+ * one pass (wgsl/tess/factors.wgsl, count.wgsl), sums them in one multi-lane scan and takes the
+ * first that fits the output buffers (wgsl/tess/scan.wgsl budget), so no factor or count is ever
+ * computed twice and the chain of dispatches is the same length whatever the camera. Counts grow
+ * about as factor², so each step of 2^-1/2 about halves them; the last candidate (0) is factor 1
+ * everywhere, which setMesh checks always fits.
+ */
+export const BUDGET_SCALES = [1, 2 ** -0.5, 2 ** -1, 2 ** -1.5, 2 ** -2, 2 ** -2.5, 2 ** -3, 0] as const;
+/** How many candidate scales each rebuild counts at (the lanes of the per-edge and per-triangle
+ * counts in TESS_WORK). */
+export const BUDGET_CANDIDATES = BUDGET_SCALES.length;
 export const SCAN_BLOCK = SCAN_WORKGROUP_SIZE * SCAN_ITEMS;
-/** Prefix sums per budget attempt: edge interior points, triangle interior vertices, triangles, rows. */
+/** Prefix sums per candidate: edge interior points, triangle interior vertices, triangles, rows
+ * (TESS_SCANS). */
 export const SCANS = 4;
 /** 1.0 in the 16.16 fixed point of factors and barycentric weights (src/pattern/fixed.ts). */
 export { ONE };
 /** A cage vertex that no triangle uses (its OwnerWord). */
 export const NO_OWNER = 0xffffffff;
-/** The budget state words (work's `budget` array), by index. */
-export const BUDGET = { ACCEPTED: 0, ATTEMPT: 1, SCALE: 2, FITS: 3 } as const;
+/** The budget state words (work's `budget` array), by index: whether the budget pass has run, the
+ * candidate it took, that candidate's scale (f32 bits), and whether it fits. */
+export const BUDGET = { ACCEPTED: 0, CANDIDATE: 1, SCALE: 2, FITS: 3 } as const;
 
 /** The tessellator shaders' numbers beyond the shared ones (all u32), by their WGSL names. */
 export const TESS_CONSTANTS = {
-  ATTEMPTS,
+  BUDGET_CANDIDATES,
+  SCANS,
   ONE,
   NO_OWNER,
   BARY_CORNER1,
@@ -230,12 +244,19 @@ export const TESS_CAGE = defineArena<
 
 /**
  * work (u32 scratch, rewritten every rebuild): the factor each triangle's bulge asks for (an f32's
- * bits, wgsl/tess/factor-bulge.wgsl), per-edge and per-triangle counts and their exclusive prefix sums
- * (n + 1 words: the total at n), the planned rows (two words per row,
- * at most maxFactor + 1 rows a triangle), each triangle's gap-strip moves (gapMoveWords words a
- * triangle), the scans' block sums, the budget state (BUDGET).
+ * bits, wgsl/tess/factor-bulge.wgsl); per edge its factor before the budget (edgeFactor, f32
+ * bits), and at the chosen candidate its 16.16 factor, line state and segments (the scan's last
+ * pass writes them, wgsl/tess/common.wgsl edgeAtCandidate: what the weld, plan and emit read);
+ * per edge its interior points and per triangle its interior vertices, triangles and rows at
+ * every budget candidate (BUDGET_SCALES): lane c of an array over n elements is its words
+ * c·n … c·n + n − 1; the exclusive prefix sums of the chosen candidate (n + 1 words: the total
+ * at n); the planned rows
+ * (two words per row, at most maxFactor + 1 rows a triangle), each triangle's gap-strip moves
+ * (gapMoveWords words a triangle), the scan's block sums (one run of scanSumsWords per lane:
+ * SCANS lanes per candidate), the budget state (BUDGET).
  */
 export const TESS_WORK = defineArena<
+  | 'edgeFactor'
   | 'edgeF'
   | 'edgeState'
   | 'edgeSegs'
@@ -254,21 +275,22 @@ export const TESS_WORK = defineArena<
   | 'budget',
   TessSizes
 >([
+  ['edgeFactor', (s) => s.edges],
   ['edgeF', (s) => s.edges],
   ['edgeState', (s) => s.edges],
   ['edgeSegs', (s) => s.edges],
-  ['edgeInterior', (s) => s.edges],
+  ['edgeInterior', (s) => BUDGET_CANDIDATES * s.edges],
   ['edgeBase', (s) => s.edges + 1],
   ['triBulge', (s) => s.triangles],
-  ['triVertCount', (s) => s.triangles],
+  ['triVertCount', (s) => BUDGET_CANDIDATES * s.triangles],
   ['triVertBase', (s) => s.triangles + 1],
-  ['triTriCount', (s) => s.triangles],
+  ['triTriCount', (s) => BUDGET_CANDIDATES * s.triangles],
   ['triTriBase', (s) => s.triangles + 1],
-  ['triRowCount', (s) => s.triangles],
+  ['triRowCount', (s) => BUDGET_CANDIDATES * s.triangles],
   ['triRowBase', (s) => s.triangles + 1],
   ['rows', (s) => 2 * (s.maxFactor + 1) * s.triangles],
   ['gapMoves', (s) => gapMoveWords(s.maxFactor) * s.triangles],
-  ['sums', (s) => SCANS * scanSumsWords(Math.max(s.edges, s.triangles))],
+  ['sums', (s) => SCANS * BUDGET_CANDIDATES * scanSumsWords(Math.max(s.edges, s.triangles))],
   ['budget', () => Object.keys(BUDGET).length],
 ]);
 
@@ -289,8 +311,9 @@ export function scanSumsWords(n: number): number {
   return Math.ceil(Math.max(n, 1) / SCAN_BLOCK) + 1;
 }
 
-/** The prefix sums of each budget attempt, in order: what is summed into what (TESS_WORK arrays),
- * over edges or triangles. */
+/** The prefix sums of each budget candidate, in lane order (lane SCANS·c + i of candidate c): what
+ * is summed into what (TESS_WORK arrays), over edges or triangles. scanLanesWgsl gives the scan
+ * shader the same table. */
 export const TESS_SCANS = [
   { from: 'edgeInterior', to: 'edgeBase', over: 'edges' },
   { from: 'triVertCount', to: 'triVertBase', over: 'triangles' },
@@ -343,14 +366,12 @@ export const TESS_PARAMS = defineStruct('Params', [
 ] as const);
 
 /** Words of the tessellator's fixed-size outputs: drawIndexedIndirect's arguments, the counts
- * (src/gpu/contract/tessellated-mesh.ts: vertices, triangles, the accepted scale as f32 bits, the attempt), and the
- * indirect dispatches the budget pass sizes (the emit passes' vertices, then triangles, then the
- * weld's edge points: 3 words each). */
-export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 9 } as const;
+ * (src/gpu/contract/tessellated-mesh.ts: vertices, triangles, the accepted scale as f32 bits, the
+ * budget candidate), and the indirect dispatches of the emit pass that the budget sizes (one thread
+ * per output vertex, then one per output triangle: 3 words each). */
+export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 6 } as const;
 /** Byte offset of the triangles' dispatch in emitArgs. */
 export const EMIT_TRIANGLES_ARGS_OFFSET = 4 * 3;
-/** Byte offset of the weld's edge-point dispatch in emitArgs. */
-export const WELD_EDGES_ARGS_OFFSET = 4 * 6;
 
 /** One binding group for every tessellator pass; each pass's layout holds the bindings its entry
  * point uses (usedBindings), so the numbers below are the only place they are written. */
@@ -390,16 +411,16 @@ export const TESS_SAMPLE_GROUP = defineBindGroup(0, {
   results: { binding: 5, space: 'read_write', type: 'array<f32>', doc: '(position, normal) per point' },
 });
 
-/** The prefix sums' uniforms (wgsl/tess/scan.wgsl reads them as `scan`): word offsets in `work`. */
-export const SCAN_PARAMS = defineStruct('ScanParams', [
-  ['inOff', 'u32', 'The n values summed.'],
-  ['outOff', 'u32', 'Their exclusive prefix sums, n + 1 words (the total last).'],
-  ['n', 'u32'],
-  ['sumsOff', 'u32', "This scan's block sums (scanSumsWords)."],
-  ['skipOff', 'u32', 'Skip the scan when this word is non-zero (the budget has accepted).'],
-] as const);
-
-export const SCAN_GROUP = defineBindGroup(0, {
-  scan: { binding: 0, space: 'uniform', type: 'ScanParams' },
-  work: { binding: 1, space: 'read_write', type: 'array<u32>' },
-});
+/** WGSL of TESS_SCANS, for wgsl/tess/scan.wgsl: lane kind i's input, output and length. */
+export function scanLanesWgsl(): string {
+  const cases = (f: (sc: (typeof TESS_SCANS)[number]) => string) =>
+    TESS_SCANS.map((sc, i) => `    case ${i}u: { return ${f(sc)}; }`).join('\n');
+  const fn = (name: string, f: (sc: (typeof TESS_SCANS)[number]) => string) =>
+    `fn ${name}(kind: u32) -> u32 {\n  switch (kind) {\n${cases(f)}\n    default: { return 0u; }\n  }\n}`;
+  const cap = (n: string) => n[0].toUpperCase() + n.slice(1);
+  return [
+    fn('scanLaneIn', (sc) => `params.off${cap(sc.from)}`),
+    fn('scanLaneOut', (sc) => `params.off${cap(sc.to)}`),
+    fn('scanLaneLength', (sc) => (sc.over === 'edges' ? 'params.nEdges' : 'params.nTris')),
+  ].join('\n');
+}

@@ -15,7 +15,7 @@
  *   drawArgs   5 × u32 drawIndexedIndirect args    usage INDIRECT | STORAGE | COPY_SRC
  *              (indexCount, instanceCount = 1, firstIndex = 0, baseVertex = 0, firstInstance = 0),
  *              written by the GPU every time the mesh is rebuilt.
- *   counts     4 × u32: vertexCount, triangleCount, budget scale (f32 bits), attempt used
+ *   counts     4 × u32: vertexCount, triangleCount, budget scale (f32 bits), the budget candidate taken (0: scale 1)
  */
 export interface TessellatedMesh {
   positions: GPUBuffer;

@@ -18,7 +18,8 @@ export interface MeshReadback {
   vertexCount: number;
   triangleCount: number;
   scale: number;
-  attempt: number;
+  /** The budget candidate taken (contract/tess.ts BUDGET_SCALES): 0 at scale 1. */
+  budgetCandidate: number;
   positions: Float32Array;
   normals: Float32Array;
   bary: Uint32Array;
@@ -42,7 +43,7 @@ export async function readMesh(device: GPUDevice, out: TessellatedMesh): Promise
     vertexCount,
     triangleCount,
     scale,
-    attempt: counts[3],
+    budgetCandidate: counts[3],
     positions: new Float32Array(positions),
     normals: new Float32Array(normals),
     bary: new Uint32Array(bary),

@@ -41,6 +41,7 @@ import vertexWgsl from '../../../wgsl/instanced/displace.wgsl?raw';
 import accTriWgsl from '../../../wgsl/instanced/displace-acc.wgsl?raw';
 import { DISP_TRI_WORD, OWNER_WORD, TESS_PARAMS } from '../contract/tess.ts';
 import { renameBorrowed, uploadLenderParams } from './surface-cc.ts';
+import { ONE } from '../../pattern/fixed.ts';
 import { Tessellator } from '../tess/tessellator.ts';
 import { bakeTables } from '../../pattern/tables.ts';
 import type { DisplacementData, DisplacementSettings } from '../tess/displacement-map.ts';
@@ -109,7 +110,6 @@ export function setLenderDisplacement(tess: Tessellator, settings: Partial<Displ
 /** The CPU twin of wgsl/instanced/displace.wgsl ownerPoint: the triangle and 16.16 weights a
  * pattern point at (t, w) is evaluated at. */
 export function ownerPoint(prepared: PreparedMesh, t: number, w: readonly number[]): { t: number; w: [number, number, number] } {
-  const ONE = 65536;
   const tv = (tri: number, i: number) => prepared.triVerts[3 * tri + i];
   for (let k = 0; k < 3; k++) {
     if (w[k] !== ONE) continue;

@@ -20,7 +20,8 @@ import type { DisplacementSettings } from '../tess/displacement-map.ts';
 import { constantsWgsl, grid2d, WORKGROUP_SIZE } from '../contract/constants.ts';
 import { wgslConstants, wgslF32 } from '../contract/define.ts';
 import { createLevelPipelines, type LevelPass, type LevelPipeline } from './level-pipelines.ts';
-import { PHONG_ALPHA } from '../tess/factors.ts';
+import { PHONG_ALPHA } from '../contract/constants.ts';
+import { ONE } from '../../pattern/fixed.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { readBuffer } from '../device/readback.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
@@ -145,7 +146,7 @@ export class InstancedLevels {
     const code = (...parts: string[]) =>
       [
         constantsWgsl,
-        wgslConstants({ RECORD_THREADS, PATCH_WORDS, LEVELS: POW2_LEVEL_COUNT, MAX_LEVEL: POW2_LEVELS[POW2_LEVEL_COUNT - 1] }),
+        wgslConstants({ ONE, RECORD_THREADS, PATCH_WORDS, LEVELS: POW2_LEVEL_COUNT, MAX_LEVEL: POW2_LEVELS[POW2_LEVEL_COUNT - 1] }),
         `const PHONG_ALPHA: f32 = ${wgslF32(PHONG_ALPHA)};`,
         INST_OWNER_WORD.wgsl,
         INST_PARAMS.wgsl,

@@ -16,7 +16,7 @@
  * lowered (56 to 0), its surface moved by up to 0.64 % of its size; the boxes, gear and pawn
  * lowered to 0.645, 0.573 and 0.551 at least; the sphere, torus and sheet unchanged.
  */
-import { PHONG_ALPHA } from '../tess/factors.ts';
+import { PHONG_ALPHA } from '../contract/constants.ts';
 
 /** The least Jacobian of the Phong surface at a triangle's corner, against the flat triangle's. */
 export const PHONG_MIN_JACOBIAN = 0.45;

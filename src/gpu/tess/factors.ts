@@ -60,10 +60,10 @@
  * triangle beside them is on screen.
  */
 import { ONE } from '../../pattern/fixed.ts';
-import { MAX_FACTOR } from '../contract/constants.ts';
+import { MAX_FACTOR, PHONG_ALPHA } from '../contract/constants.ts';
 import type { FactorParams } from '../contract/tessellated-mesh.ts';
 
-export const PHONG_ALPHA = 0.75;
+export { PHONG_ALPHA };
 
 export type Vec3 = readonly [number, number, number];
 
@@ -195,15 +195,21 @@ export function edgeFactor(p0: Vec3, p1: Vec3, n0: Vec3, n1: Vec3, rule: FactorR
 }
 
 /**
- * The budget: if a rebuild would need more than the buffers hold, every factor is scaled by
- * s (counts grow about as factor², hence the square root) and the counts are taken again; if
- * that still does not fit, every factor drops to 1. Returns the scale for the next attempt
- * (1 when it fits).
+ * The budget (wgsl/tess/scan.wgsl `budget`): a rebuild counts its output at every candidate scale
+ * of the factors (contract/tess.ts BUDGET_SCALES, largest first; the last is factor 1 everywhere)
+ * and takes the first whose vertices and triangles fit the buffers, or the last, which setMesh
+ * checks always fits. `totals[c]` are candidate c's counts. Returns the candidate and whether it fits.
  */
-export function budgetScale(vertices: number, triangles: number, vertexCapacity: number, triangleCapacity: number): number {
-  if (vertices <= vertexCapacity && triangles <= triangleCapacity) return 1;
-  const ratio = Math.min(vertexCapacity / vertices, triangleCapacity / triangles);
-  return 0.9 * Math.sqrt(ratio);
+export function budgetCandidate(
+  totals: readonly { vertices: number; triangles: number }[],
+  vertexCapacity: number,
+  triangleCapacity: number,
+): { candidate: number; fits: boolean } {
+  for (let c = 0; c < totals.length; c++) {
+    const fits = totals[c].vertices <= vertexCapacity && totals[c].triangles <= triangleCapacity;
+    if (fits || c === totals.length - 1) return { candidate: c, fits };
+  }
+  throw new Error('no budget candidates');
 }
 
 /** Bytes of output per vertex and per triangle (positions, normals, bary, srcTri; indices). */

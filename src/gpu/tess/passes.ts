@@ -10,7 +10,6 @@ import factorsWgsl from '../../../wgsl/tess/factors.wgsl?raw';
 import factorRuleWgsl from '../../../wgsl/tess/factor-rule.wgsl?raw';
 import factorBulgeWgsl from '../../../wgsl/tess/factor-bulge.wgsl?raw';
 import countWgsl from '../../../wgsl/tess/count.wgsl?raw';
-import budgetWgsl from '../../../wgsl/tess/budget.wgsl?raw';
 import weldWgsl from '../../../wgsl/tess/weld.wgsl?raw';
 import patternWgsl from '../../../wgsl/tess/pattern.wgsl?raw';
 import planWgsl from '../../../wgsl/tess/plan.wgsl?raw';
@@ -20,8 +19,8 @@ import displaceWgsl from '../../../wgsl/tess/displace.wgsl?raw';
 import { CC_BUILD_WGSL as ccBuildWgsl } from '../cc/shaders.ts';
 import { type SurfaceId, surfaceScheme } from '../surface/registry.ts';
 import { CC_BUILD_BINDINGS, CC_BUILD_GROUP } from '../contract/cc.ts';
-import { scanPrelude, tessPrelude } from '../contract/contract.ts';
-import { TESS_BINDINGS, TESS_GROUP } from '../contract/tess.ts';
+import { tessPrelude } from '../contract/contract.ts';
+import { scanLanesWgsl, TESS_BINDINGS, TESS_GROUP } from '../contract/tess.ts';
 import { usedBindings } from '../contract/define.ts';
 
 /** The tessellator's surfaces (src/gpu/surface/registry.ts): Phong tessellation, the exact
@@ -30,18 +29,16 @@ export type Surface = SurfaceId;
 
 export type PassName =
   | 'bulge'
-  | 'factors'
   | 'count'
+  | 'scanReduce'
   | 'budget'
-  | 'corners'
-  | 'edges'
+  | 'scanDown'
   | 'plan'
   | 'emitVertices'
   | 'emitTriangles'
   | 'ccPoints'
   | 'ccSlices'
-  | 'ccLimits'
-  | 'ccVertexLimits';
+  | 'ccLimits';
 
 /** One compute pass: its shader code, its entry point, and the bind group it draws its bindings
  * from (the tessellator's, or the patch build's). */
@@ -61,14 +58,15 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
   const code = (...parts: string[]) => [tessPrelude(), commonWgsl, ...parts].join('\n');
   const surfaceWgsl = scheme.tessWgsl;
   const modules = {
-    // The bulge term evaluates the surface inside each triangle; the edge term reads it.
-    factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl),
-    count: code(patternWgsl, countWgsl),
-    budget: code(budgetWgsl),
-    // The surface, then the displacement over it (surfaceAt), then what writes the vertices.
-    weld: code(surfaceWgsl, displaceWgsl, outputsWgsl, weldWgsl),
+    // The bulge term evaluates the surface inside each triangle; the count pass computes each
+    // triangle's edge factors (the edge term reads the bulge) and counts its pattern.
+    factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl, patternWgsl, countWgsl),
+    // The prefix sums and the budget between them (which lanes are what: TESS_SCANS).
+    scan: code(scanLanesWgsl(), scanWgsl),
     plan: code(patternWgsl, planWgsl),
-    emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, emitWgsl),
+    // The surface, then the displacement over it (surfaceAt), then what writes the vertices, where
+    // the welded ones lie, and the whole output.
+    emit: code(surfaceWgsl, displaceWgsl, outputsWgsl, patternWgsl, weldWgsl, emitWgsl),
     // The patch build's own prelude (contract/contract.ts ccBuildPrelude: CC_BUILD_GROUP) comes with it.
     ccBuild: ccBuildWgsl,
   };
@@ -83,11 +81,10 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
   });
   const passes = [
     pass('bulge', 'tess bulge', 'factors', 'bulge'),
-    pass('factors', 'tess factors', 'factors'),
-    pass('count', 'tess count', 'count'),
-    pass('budget', 'tess budget', 'budget'),
-    pass('corners', 'tess weld corners', 'weld', 'corners'),
-    pass('edges', 'tess weld edges', 'weld', 'edges'),
+    pass('count', 'tess factors + count', 'factors'),
+    pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
+    pass('budget', 'tess budget', 'scan', 'budget'),
+    pass('scanDown', 'tess scan down', 'scan', 'scanDown'),
     pass('plan', 'tess plan', 'plan'),
     pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
     pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
@@ -98,8 +95,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     passes.push(
       pass('ccPoints', 'cc level points', 'ccBuild', 'points'),
       pass('ccSlices', 'cc ev slices', 'ccBuild', 'slices'),
-      pass('ccLimits', 'cc fan limits', 'ccBuild', 'limits'),
-      pass('ccVertexLimits', 'cc vertex limits', 'ccBuild', 'vlimits'),
+      pass('ccLimits', 'cc fan and vertex limits', 'ccBuild', 'limits'),
     );
   }
   return passes;
@@ -114,7 +110,3 @@ export function passBindings(pass: PassSpec): { names: string[]; entries: GPUBin
   const names = usedBindings(pass.code, pass.entry, TESS_BINDINGS);
   return { names, entries: TESS_GROUP.layoutEntries(names) };
 }
-
-/** The three steps of one prefix sum (wgsl/tess/scan.wgsl), which share one bind group. */
-export const SCAN_ENTRIES = { blocks: 'scanBlocks', sums: 'scanSums', add: 'addSums' } as const;
-export const scanCode = [scanPrelude, scanWgsl].join('\n');

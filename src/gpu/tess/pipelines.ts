@@ -1,10 +1,10 @@
 /**
  * The compute tessellator's pipelines, built from the passes of passes.ts: one per pass, each
- * with the explicit layout of the bindings its entry point uses, and the prefix sum's three steps
- * over one shared layout. Tessellator (tessellator.ts) creates them once.
+ * with the explicit layout of the bindings its entry point uses. Tessellator (tessellator.ts)
+ * creates them once.
  */
-import { type PassName, passBindings, SCAN_ENTRIES, scanCode, type Surface, tessellatorPasses } from './passes.ts';
-import { SCAN_GROUP, TESS_GROUP } from '../contract/tess.ts';
+import { type PassName, passBindings, type Surface, tessellatorPasses } from './passes.ts';
+import { TESS_GROUP } from '../contract/tess.ts';
 import { CC_BUILD_GROUP } from '../contract/cc.ts';
 
 /** A pass's pipeline and bind group layout. */
@@ -18,9 +18,6 @@ export interface Pipeline {
 
 export interface TessPipelines {
   pipelines: Partial<Record<PassName, Pipeline>>;
-  scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
-  /** The scan steps' one layout: the whole SCAN_GROUP. */
-  scanLayout: GPUBindGroupLayout;
 }
 
 /** Every pipeline of a tessellator of `surface`. */
@@ -42,16 +39,5 @@ export function createTessPipelines(device: GPUDevice, surface: Surface): TessPi
     const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
     pipelines[pass.name] = { pipeline, layout, bindings: names, binding };
   }
-  // The three scan steps share one bind group, so they share one layout: the whole SCAN_GROUP.
-  const scanLayout = device.createBindGroupLayout({ label: 'scan', entries: SCAN_GROUP.layoutEntries() });
-  const scanModule = device.createShaderModule({ label: 'scan', code: scanCode });
-  const scanPipelineLayout = device.createPipelineLayout({ label: 'scan', bindGroupLayouts: [scanLayout] });
-  const scanPipeline = (step: keyof typeof SCAN_ENTRIES) =>
-    device.createComputePipeline({
-      label: `scan ${step}`,
-      layout: scanPipelineLayout,
-      compute: { module: scanModule, entryPoint: SCAN_ENTRIES[step] },
-    });
-  const scanPipelines = { blocks: scanPipeline('blocks'), sums: scanPipeline('sums'), add: scanPipeline('add') };
-  return { pipelines, scanPipelines, scanLayout };
+  return { pipelines };
 }

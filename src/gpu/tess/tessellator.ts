@@ -3,34 +3,37 @@
  * into big flat buffers, welded, stored once and drawn by every pass. Takes a GPUDevice and
  * never touches the DOM, so the same code runs in the browser, in headless tests and in Node.
  *
- * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except the weld's edge
- * points and emit):
+ * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except emit's), the
+ * same chain of eight dispatches whatever the camera and the budget:
  *   bulge        one thread per triangle: the factor its surface's bulge    wgsl/tess/factor-bulge.wgsl
  *                asks for (the surface at four points against the flat triangle)
- *   budget loop, up to 3 attempts (scale 1, a scale that fits, then factor 1 everywhere):
- *     factors    one thread per edge: tess factor, line state, segments    wgsl/tess/factors.wgsl
- *     count      one thread per triangle: interior vertices and triangles   wgsl/tess/count.wgsl
- *     scan       prefix sums of the three counts                           wgsl/tess/scan.wgsl
- *     budget     accept (and write the indirect draw args) or rescale      wgsl/tess/budget.wgsl
- *   weld         corner and edge vertices, evaluated once each, one thread   wgsl/tess/weld.wgsl
- *                per vertex (the edge points' dispatch is indirect: budget);
- *                on Catmull-Clark, once per side of an infinitely sharp
- *                crease (prepare.ts splitCreases: same position, own normal)
- *   tessellate   plan: one thread per triangle writes its pattern's rows   wgsl/tess/plan.wgsl
- *                emit: one thread per interior vertex, one per triangle    wgsl/tess/emit.wgsl
- *                (indirect dispatches, like the weld's edge points)
- * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers,
- * so every output element costs the same whatever the factors (wgsl/tess/pattern.wgsl holds the
- * pattern reading shared by count, plan and emit).
+ *   count        one thread per triangle: its three edges' tess factor,     wgsl/tess/count.wgsl
+ *                line state and segments (wgsl/tess/factors.wgsl; the
+ *                edge's owner stores them), its interior vertices and
+ *                triangles, at every budget candidate (contract/tess.ts
+ *                BUDGET_SCALES)
+ *   scan         three dispatches: every lane summed by block; the budget   wgsl/tess/scan.wgsl
+ *                takes the first candidate that fits and writes the draw
+ *                and dispatch arguments; the chosen lanes' prefix sums
+ *   plan         one thread per triangle writes its pattern's rows         wgsl/tess/plan.wgsl
+ *   emit         two indirect dispatches sized by the budget: one thread   wgsl/tess/emit.wgsl
+ *                per output vertex (the weld's corner and edge vertices,    wgsl/tess/weld.wgsl
+ *                evaluated once each whoever uses them, on Catmull-Clark
+ *                once per side of an infinitely sharp crease: prepare.ts
+ *                splitCreases; then the triangles' interior vertices), then
+ *                one per output triangle
+ * This is the talk's predict → scan → plan → emit → weld: no workgroup memory and no barriers
+ * outside the scan, so every output element costs the same whatever the factors
+ * (wgsl/tess/pattern.wgsl holds the pattern reading shared by count, plan and emit); no readback
+ * is ever needed. tests/gpu/tess/tessellator.gpu.test.ts counts the dispatches.
  * With the Catmull-Clark surface (options.surface), a patch-build pass comes first:
- *   subdivision  refined points level by level (rule per point), the slices round
- *                extraordinary vertices (workgroup memory), their limits, and the cage
- *                vertices' limit positions and normals for the factor rule  wgsl/cc/build.wgsl
- * Attempts after the accepted one are no-ops on the GPU (they test a flag), so no readback is
- * ever needed.
+ *   subdivision  refined points, one dispatch a level (rule per point), the slices round
+ *                extraordinary vertices (workgroup memory), then in one dispatch their
+ *                limits and the cage vertices' limit positions and normals for the factor
+ *                rule                                                       wgsl/cc/build.wgsl
  *
- * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the scan's
- * uniforms, the constants, the packed words) is declared in contract/tess.ts; which code each pass
+ * What the TypeScript and the WGSL agree on (the buffers' arenas, Params, the bindings, the
+ * budget's candidates, the constants, the packed words) is declared in contract/tess.ts; which code each pass
  * compiles and which bindings its entry point uses is src/gpu/tess/passes.ts; the timestamps are
  * pass-timer.ts; the pipelines are created by src/gpu/tess/pipelines.ts, and the arenas' words
  * and the Params fields of a mesh are packed by src/gpu/tess/arenas.ts. This file uploads a mesh
@@ -40,7 +43,7 @@ import { LimitError } from '../../mesh/errors.ts';
 import type { CatmullClarkData } from '../cc/build.ts';
 import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
-import type { PassName, SCAN_ENTRIES, Surface } from './passes.ts';
+import type { PassName, Surface } from './passes.ts';
 import { surfaceScheme } from '../surface/registry.ts';
 import { createTessPipelines, type Pipeline } from './pipelines.ts';
 import { type CageName, meshParams, type PackInput, packArenas, type WorkName } from './arenas.ts';
@@ -48,18 +51,13 @@ import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { grid2d, groupsFor } from '../contract/constants.ts';
 import {
-  ATTEMPTS,
-  BUDGET,
+  BUDGET_CANDIDATES,
   EMIT_TRIANGLES_ARGS_OFFSET,
   SCAN_BLOCK,
-  SCAN_GROUP,
-  SCAN_PARAMS,
-  scanSumsWords,
+  SCANS,
   TESS_FIXED_WORDS,
   TESS_PARAMS,
-  TESS_SCANS,
   type TessBinding,
-  WELD_EDGES_ARGS_OFFSET,
 } from '../contract/tess.ts';
 import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
@@ -73,9 +71,9 @@ export { type PassName, type PassSpec, passBindings, type Surface, tessellatorPa
 
 export { grid2d } from '../contract/constants.ts';
 
-/** Compute passes one rebuild records (the patch build, the bulge term, factors and count + budget
- * per attempt, weld, plan, emit), each timed by a pair of timestamps. */
-const TIMED_PASSES = 2 + 2 * ATTEMPTS + 3;
+/** Compute passes one rebuild records (the patch build, the bulge term, factors + count + scan,
+ * plan, emit), each timed by a pair of timestamps. */
+const TIMED_PASSES = 5;
 
 export interface TessellatorOptions {
   vertexCapacity?: number;
@@ -107,7 +105,6 @@ interface MeshState {
   workLayout: ArenaLayout<WorkName>;
   cageLayout: ArenaLayout<CageName>;
   groups: Partial<Record<PassName, GPUBindGroup>>;
-  scans: { group: GPUBindGroup; n: number }[];
   cc?: CatmullClarkData;
   ccRanges: { group: GPUBindGroup; count: number }[];
   /** The ACC patches (owned by the caller), built before every tessellation (cageBuf keeps a copy
@@ -127,8 +124,6 @@ export class Tessellator {
   /** Indirect dispatch arguments of the emit passes, written by the budget pass. */
   private readonly emitArgs: GPUBuffer;
   private readonly pipelines: Partial<Record<PassName, Pipeline>>;
-  private readonly scanPipelines: Record<keyof typeof SCAN_ENTRIES, GPUComputePipeline>;
-  private readonly scanLayout: GPUBindGroupLayout;
   private mesh?: MeshState;
   private hasDisplacement = false;
   private displacement: DisplacementSettings = { scale: 0, midLevel: 0, enabled: true };
@@ -168,11 +163,7 @@ export class Tessellator {
       usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
 
-    ({
-      pipelines: this.pipelines,
-      scanPipelines: this.scanPipelines,
-      scanLayout: this.scanLayout,
-    } = createTessPipelines(device, this.surface));
+    ({ pipelines: this.pipelines } = createTessPipelines(device, this.surface));
 
     if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }
@@ -275,9 +266,9 @@ export class Tessellator {
       emitArgs: this.emitArgs,
     };
     const uniforms: GPUBuffer[] = [];
-    const rangeBytes = (first: number, count: number) => {
+    const rangeBytes = (first: number, count: number, faceFirst: number) => {
       const bytes = new ArrayBuffer(CC_RANGE.size);
-      CC_RANGE.write(new DataView(bytes), { first, count });
+      CC_RANGE.write(new DataView(bytes), { first, count, faceFirst });
       return bytes;
     };
     const uniform = (label: string, bytes: ArrayBuffer | Uint32Array) => {
@@ -298,40 +289,12 @@ export class Tessellator {
     const groups: Partial<Record<PassName, GPUBindGroup>> = {};
     for (const name of Object.keys(this.pipelines) as PassName[]) if (name !== 'ccPoints') groups[name] = bindGroup(name);
 
-    const sumsWords = scanSumsWords(Math.max(prepared.edgeCount, prepared.triangleCount));
-    const o = workLayout.offset;
-    const scans = TESS_SCANS.map((s, i) => {
-      const n = s.over === 'edges' ? prepared.edgeCount : prepared.triangleCount;
-      const bytes = new ArrayBuffer(SCAN_PARAMS.size);
-      // Skipped once the budget has accepted an attempt.
-      SCAN_PARAMS.write(new DataView(bytes), {
-        inOff: o[s.from],
-        outOff: o[s.to],
-        n,
-        sumsOff: o.sums + i * sumsWords,
-        skipOff: o.budget + BUDGET.ACCEPTED,
-      });
-      const group = device.createBindGroup({
-        label: `scan ${i}`,
-        layout: this.scanLayout,
-        entries: [
-          { binding: SCAN_GROUP.binding.scan, resource: { buffer: uniform(`scan params ${i}`, bytes) } },
-          { binding: SCAN_GROUP.binding.work, resource: { buffer: work } },
-        ],
-      });
-      return { group, n };
-    });
-    // Catmull-Clark level dispatches: per level, its face points, then its edge and vertex
-    // points (which read the new face points); each with its range in a small uniform.
-    const ccRanges = (cc?.levelRanges ?? []).flatMap(([ff, fc, vf, vc]) =>
-      [
-        [ff, fc],
-        [vf, vc],
-      ].map(([first, count]) => ({
-        count,
-        group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, count)) }),
-      })),
-    );
+    // Catmull-Clark level dispatches: one per level over its edge and vertex points, then its
+    // face points (contiguous: src/gpu/cc/levels.ts), each level's range in a small uniform.
+    const ccRanges = (cc?.levelRanges ?? []).map(([faceFirst, faceCount, first, veCount]) => ({
+      count: veCount + faceCount,
+      group: bindGroup('ccPoints', { range: uniform('cc level range', rangeBytes(first, veCount + faceCount, faceFirst)) }),
+    }));
     return {
       prepared,
       staticBuf,
@@ -340,7 +303,6 @@ export class Tessellator {
       workLayout,
       cageLayout,
       groups,
-      scans,
       cc,
       ccRanges,
       uniforms,
@@ -448,16 +410,11 @@ export class Tessellator {
     encoder.clearBuffer(m.work, 4 * m.workLayout.offset.budget, 4 * m.workLayout.length.budget);
 
     const pass = (label: string, stage: string) => this.timer?.beginPass(encoder, label, stage) ?? encoder.beginComputePass({ label });
-    const { edgeCount: nE, triangleCount: nT, vertexCount: nV } = m.prepared;
+    const { edgeCount: nE, triangleCount: nT } = m.prepared;
     const run = (cp: GPUComputePassEncoder, name: PassName, groups: [number, number]) => {
       cp.setPipeline(this.pipelines[name]!.pipeline);
       cp.setBindGroup(0, m.groups[name]!);
       cp.dispatchWorkgroups(...groups);
-    };
-    const runIndirect = (cp: GPUComputePassEncoder, name: PassName, offset: number) => {
-      cp.setPipeline(this.pipelines[name]!.pipeline);
-      cp.setBindGroup(0, m.groups[name]!);
-      cp.dispatchWorkgroupsIndirect(this.emitArgs, offset);
     };
 
     if (m.cc) {
@@ -471,38 +428,34 @@ export class Tessellator {
       run(cp, 'bulge', groupsFor(nT));
       cp.end();
     }
-    for (let attempt = 0; attempt < ATTEMPTS; attempt++) {
-      let cp = pass(`tess factors ${attempt}`, 'factors');
-      run(cp, 'factors', groupsFor(nE));
-      cp.end();
-      cp = pass(`tess count + budget ${attempt}`, 'count+budget');
+    {
+      // The edges' factors and the counts at every budget candidate, their lanes summed by
+      // block, the budget's choice, and the chosen lanes' prefix sums (wgsl/tess/scan.wgsl).
+      const cp = pass('tess factors + count + scan', 'count+budget');
       run(cp, 'count', groupsFor(nT));
-      for (const s of m.scans) {
-        const blocks = Math.ceil(Math.max(s.n, 1) / SCAN_BLOCK);
-        cp.setBindGroup(0, s.group);
-        cp.setPipeline(this.scanPipelines.blocks);
-        cp.dispatchWorkgroups(blocks);
-        cp.setPipeline(this.scanPipelines.sums);
-        cp.dispatchWorkgroups(1);
-        cp.setPipeline(this.scanPipelines.add);
-        cp.dispatchWorkgroups(blocks);
-      }
+      const blocks = Math.ceil(Math.max(nE, nT, 1) / SCAN_BLOCK);
+      run(cp, 'scanReduce', [blocks, SCANS * BUDGET_CANDIDATES]);
       run(cp, 'budget', [1, 1]);
+      run(cp, 'scanDown', [blocks, SCANS]);
       cp.end();
     }
-    let cp = pass('tess weld', 'weld');
-    // The corners' output vertices: the vertices, then the extra sectors where normals split.
-    run(cp, 'corners', groupsFor(nV + this.extraSlots(m.prepared)));
-    runIndirect(cp, 'edges', WELD_EDGES_ARGS_OFFSET); // one thread per edge point: sized by the budget pass
-    cp.end();
-    cp = pass('tess plan', 'plan');
-    run(cp, 'plan', groupsFor(nT));
-    cp.end();
-    cp = pass('tess emit', 'tessellate');
-    // Sized by the budget pass: emitArgs holds the vertices' dispatch, then the triangles'.
-    runIndirect(cp, 'emitVertices', 0);
-    runIndirect(cp, 'emitTriangles', EMIT_TRIANGLES_ARGS_OFFSET);
-    cp.end();
+    {
+      const cp = pass('tess plan', 'plan');
+      run(cp, 'plan', groupsFor(nT));
+      cp.end();
+    }
+    {
+      // Every output vertex (the welded corners and edge points, then the triangles' interior
+      // vertices) and every output triangle: one indirect dispatch sized by the budget.
+      const cp = pass('tess emit', 'tessellate');
+      cp.setPipeline(this.pipelines.emitVertices!.pipeline);
+      cp.setBindGroup(0, m.groups.emitVertices!);
+      cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
+      cp.setPipeline(this.pipelines.emitTriangles!.pipeline);
+      cp.setBindGroup(0, m.groups.emitTriangles!);
+      cp.dispatchWorkgroupsIndirect(this.emitArgs, EMIT_TRIANGLES_ARGS_OFFSET);
+      cp.end();
+    }
 
     this.timer?.resolve(encoder);
   }
@@ -530,8 +483,8 @@ export class Tessellator {
       cp.dispatchWorkgroups(...groups);
     };
     if (cc.sliceWorkgroups) run('ccSlices', grid2d(cc.sliceWorkgroups));
-    if (cc.fanCount) run('ccLimits', groupsFor(cc.fanCount));
-    run('ccVertexLimits', groupsFor(m.prepared.vertexCount));
+    // The fans' limits, then every prepared vertex's (one dispatch: wgsl/cc/build.wgsl limits).
+    run('ccLimits', groupsFor(cc.fanCount + m.prepared.vertexCount));
   }
 
   /** Record only the Catmull-Clark patch build (control points and vertex limits from the

@@ -2,7 +2,7 @@
  * Single-crease patches on a real WebGPU adapter: a cage whose creases (σ = 2.7 and 0.5) run
  * straight through valence-4 vertices is prepared without the ceil(σ) uniform levels, and the
  * GPU surface (crease row weights × cubic B-spline, wgsl/cc/surface.wgsl) and the vertex limits
- * (wgsl/cc/build.wgsl vlimits) match the exact CPU reference within tests/gpu/cc/cc.gpu.test.ts bounds.
+ * (wgsl/cc/build.wgsl vertexLimit) match the exact CPU reference within tests/gpu/cc/cc.gpu.test.ts bounds.
  */
 import { describe, it, expect, afterAll } from 'vitest';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';

@@ -3,7 +3,7 @@
  * faces regular but for one semi-sharp crease along a side stop at depth 0 (no ceil(σ) levels),
  * and what they store (16 indices in a frame turned so the crease is its x = 0 side, σ) is, with
  * the f64 closed form of src/subdiv/crease-basis.ts, the exact limit surface (src/subdiv); so
- * is the closed-form limit of the cage vertices on such creases (wgsl/cc/build.wgsl vlimits).
+ * is the closed-form limit of the cage vertices on such creases (wgsl/cc/build.wgsl vertexLimit).
  */
 import { describe, it, expect } from 'vitest';
 import { buildCatmullClark, rot, type CatmullClarkData } from '../../../src/gpu/cc/build.ts';
@@ -84,7 +84,7 @@ describe('single-crease patches', () => {
     });
   }
 
-  it('cage vertices on a straight semi-sharp crease: the closed-form limit (vlimits) is the exact one', () => {
+  it('cage vertices on a straight semi-sharp crease: the closed-form limit (vertexLimit) is the exact one', () => {
     const cage = creasedGridCube(6, [
       [2, 2.7],
       [4, 0.5],

@@ -7,10 +7,10 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { wgslPrefix, type BitWord } from '../../../src/gpu/contract/define.ts';
 import { constantsWgsl, SHARED_CONSTANTS } from '../../../src/gpu/contract/constants.ts';
-import { ACC_TRI_CORNERS, ACC_TRI_WORD, BARY_WORD, OWNER_WORD, PATTERN_FRAME_WORD, SCAN_GROUP } from '../../../src/gpu/contract/tess.ts';
+import { ACC_TRI_CORNERS, ACC_TRI_WORD, BARY_WORD, OWNER_WORD, PATTERN_FRAME_WORD } from '../../../src/gpu/contract/tess.ts';
 import { SCENE_UNIFORMS } from '../../../src/gpu/contract/render.ts';
 import { ACC_SECTOR_WORD } from '../../../src/gpu/contract/acc.ts';
-import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
+import { passBindings, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { getDevice, releaseDevice } from '../../support/gpu-device.ts';
 
 afterAll(() => releaseDevice());
@@ -184,11 +184,6 @@ describe("the tessellator's pipelines bind what the contract says", () => {
         await check(`${surface} ${pass.name}`, pass.code, pass.entry, passBindings(pass).entries);
     }, 120_000);
   }
-
-  it('the scan steps', async () => {
-    for (const entry of Object.values(SCAN_ENTRIES))
-      expect(await check(`scan ${entry}`, scanCode, entry, SCAN_GROUP.layoutEntries())).toBeNull();
-  });
 
   it('and it would notice: a binding short, one more, or a storage buffer bound read-only', async () => {
     const budget = tessellatorPasses('phong').find((p) => p.name === 'budget')!;

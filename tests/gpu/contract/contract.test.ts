@@ -27,8 +27,6 @@ import {
   decodeBary,
   PATTERN_FRAME_WORD,
   OWNER_WORD,
-  SCAN_GROUP,
-  SCAN_PARAMS,
   TESS_BINDINGS,
   TESS_CAGE,
   TESS_CONSTANTS,
@@ -64,8 +62,8 @@ import {
   GROUND_EXTENT,
   PATCH_COLOURS,
 } from '../../../src/gpu/contract/render.ts';
-import { accBuildPrelude, sceneWgsl, scanPrelude, tessPrelude } from '../../../src/gpu/contract/contract.ts';
-import { passBindings, SCAN_ENTRIES, scanCode, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
+import { accBuildPrelude, sceneWgsl, tessPrelude } from '../../../src/gpu/contract/contract.ts';
+import { passBindings, tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { bakeTables, PatternTables, TABLE_HEADER, TABLE_HEADER_FIELDS } from '../../../src/pattern/tables.ts';
 import { defineStruct } from '../../../src/gpu/contract/layout.ts';
 import { packPatternFrame } from '../../../src/gpu/tess/prepare.ts';
@@ -356,12 +354,12 @@ describe('shared constants', () => {
   it("the tessellator's shaders take their numbers and declarations from the generated prelude only", () => {
     for (const f of TESS_WGSL_FILES) {
       const code = readFileSync(new URL(`../../../wgsl/${f}.wgsl`, import.meta.url), 'utf8').replace(/\/\/[^\n]*/g, '');
-      expect(code, f).not.toMatch(/@binding|struct Params|struct ScanParams/);
+      expect(code, f).not.toMatch(/@binding|struct Params/);
       for (const name of [...Object.keys(SHARED_CONSTANTS), ...Object.keys(TESS_CONSTANTS)]) {
         expect(code, `${f}: ${name}`).not.toMatch(new RegExp(`const ${name}\\b`));
       }
-      // Workgroup sizes by name (WORKGROUP_SIZE, wgsl/tess/scan.wgsl THREADS = SCAN_WORKGROUP_SIZE; the budget pass: 1), never typed.
-      for (const m of code.matchAll(/@workgroup_size\(([^)]*)\)/g)) expect(m[1], f).toMatch(/^(WORKGROUP_SIZE|THREADS|1)$/);
+      // Workgroup sizes by name (WORKGROUP_SIZE, wgsl/tess/scan.wgsl THREADS = SCAN_WORKGROUP_SIZE), never typed.
+      for (const m of code.matchAll(/@workgroup_size\(([^)]*)\)/g)) expect(m[1], f).toMatch(/^(WORKGROUP_SIZE|THREADS)$/);
       expect(code, f).not.toMatch(/\b(63|64|255|256|65535)u?\b/);
     }
     // The patch build likewise (its prelude: ccBuildPrelude; its words: src/gpu/cc/words.ts).
@@ -658,7 +656,6 @@ const TESS_WGSL_FILES = [
   'tess/outputs',
   'tess/factors',
   'tess/count',
-  'tess/budget',
   'tess/weld',
   'tess/pattern',
   'tess/plan',
@@ -667,7 +664,7 @@ const TESS_WGSL_FILES = [
 ];
 
 describe("the tessellator's contract", () => {
-  for (const struct of [TESS_PARAMS, SCAN_PARAMS] as {
+  for (const struct of [TESS_PARAMS] as {
     wgsl: string;
     size: number;
     offset: Record<string, number>;
@@ -793,7 +790,6 @@ describe("the tessellator's contract", () => {
     const kinds = (entries: GPUBindGroupLayoutEntry[]) => entries.map((e) => ({ group: 0, binding: e.binding, kind: layoutKind(e) }));
     expect(declaredBindings(tessPrelude())).toEqual(kinds(TESS_GROUP.layoutEntries()));
     expect(declaredBindings(tessPrelude(TESS_INPUTS))).toEqual(kinds(TESS_GROUP.layoutEntries([...TESS_INPUTS])));
-    expect(declaredBindings(scanPrelude)).toEqual(kinds(SCAN_GROUP.layoutEntries()));
     // The names in the WGSL are the group's keys.
     const names = [...tessPrelude().matchAll(/var<[^>]*>\s+(\w+)\s*:/g)].map((m) => m[1]);
     expect(names).toEqual(TESS_BINDINGS);
@@ -824,23 +820,24 @@ describe("the tessellator's contract", () => {
   // (bulge came after it: params, static, cage, work, as the factors pass.)
   const HAND_TABLE: Record<string, number[]> = {
     bulge: [0, 1, 2, 3],
-    factors: [0, 1, 2, 3],
-    count: [0, 1, 3],
+    // (the factors pass: [0, 1, 2, 3], folded into count since)
+    count: [0, 1, 2, 3],
+    // (the scan's steps and the budget became tessellator passes with the one-chain rebuild)
+    scanReduce: [0, 3],
     budget: [0, 3, 9, 10, 11],
-    corners: [0, 1, 2, 3, 4, 5, 6, 7],
-    edges: [0, 1, 2, 3, 4, 5, 6, 7],
+    scanDown: [0, 1, 3], // the tables: the edges' lines at the chosen candidate
     plan: [0, 1, 3],
+    // (the weld's corners and edges, in emit's vertices since)
     emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
     emitTriangles: [0, 1, 3, 8],
     ccPoints: [0, 1, 2, 3],
     ccSlices: [0, 1, 2],
     ccLimits: [0, 1, 2],
-    ccVertexLimits: [0, 1, 2],
   };
   for (const surface of ['phong', 'catmull-clark'] as const) {
     it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
       const passes = tessellatorPasses(surface);
-      expect(passes.length).toBe(surface === 'phong' ? 9 : 13);
+      expect(passes.length).toBe(surface === 'phong' ? 8 : 11);
       for (const pass of passes) {
         const { names, entries } = passBindings(pass);
         expect(
@@ -852,10 +849,6 @@ describe("the tessellator's contract", () => {
       }
     });
   }
-
-  it('the three scan steps each use the whole scan group (they share one bind group)', () => {
-    for (const entry of Object.values(SCAN_ENTRIES)) expect(usedBindings(scanCode, entry, ['scan', 'work'])).toEqual(['scan', 'work']);
-  });
 });
 
 describe("the ACC build's contract", () => {

@@ -61,7 +61,7 @@ describe('the surface registry', () => {
       const passes = tessellatorPasses(s.id);
       const build = passes.filter((p) => p.group === 'ccBuild').map((p) => p.name);
       expect(build.length > 0, s.id).toBe(s.patchBuild === 'refinement');
-      for (const p of passes.filter((q) => ['factors', 'corners', 'edges', 'emitVertices'].includes(q.name)))
+      for (const p of passes.filter((q) => ['bulge', 'count', 'emitVertices'].includes(q.name)))
         expect(p.code.includes(s.tessWgsl), `${s.id} ${p.name}`).toBe(true);
     }
   });

@@ -10,7 +10,7 @@ import {
   bulgeFactor,
   edgeFactor,
   phongMidpointOffset,
-  budgetScale,
+  budgetCandidate,
   outputCapacity,
   sphereOutsideFrustum,
   type FactorRule,
@@ -20,6 +20,7 @@ import { faceParam, inverseBilinear } from '../../../src/gpu/tess/face-params.ts
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { makeCage } from '../../../src/mesh/types.ts';
 import { grid2d } from '../../../src/gpu/tess/tessellator.ts';
+import { BUDGET_SCALES } from '../../../src/gpu/contract/tess.ts';
 
 const view = mat4.lookAt(mat4.create(), [0, 0, 5], [0, 0, 0], [0, 1, 0]);
 const proj = mat4.perspectiveZO(mat4.create(), Math.PI / 4, 1, 0.1, 100);
@@ -214,11 +215,14 @@ describe('bulge term', () => {
 });
 
 describe('budget and buffer sizing', () => {
-  it('keeps the scale at 1 when everything fits, else shrinks it so that f² scaling fits', () => {
-    expect(budgetScale(100, 100, 100, 100)).toBe(1);
-    const s = budgetScale(4000, 1000, 1000, 1000);
-    expect(s).toBeLessThan(0.5);
-    expect(4000 * s * s).toBeLessThan(1000);
+  it('takes the largest candidate scale that fits; the candidates halve the counts down to factor 1', () => {
+    expect(BUDGET_SCALES[0]).toBe(1);
+    expect(BUDGET_SCALES.at(-1)).toBe(0); // factor 1 everywhere
+    for (let c = 1; c + 1 < BUDGET_SCALES.length; c++) expect(BUDGET_SCALES[c] ** 2).toBeCloseTo(BUDGET_SCALES[c - 1] ** 2 / 2, 12);
+    const totals = (v: number[]) => v.map((n) => ({ vertices: n, triangles: n }));
+    expect(budgetCandidate(totals([100, 50, 25]), 100, 100)).toEqual({ candidate: 0, fits: true });
+    expect(budgetCandidate(totals([400, 200, 100, 50]), 150, 1000)).toEqual({ candidate: 2, fits: true });
+    expect(budgetCandidate(totals([400, 200]), 10, 10)).toEqual({ candidate: 1, fits: false });
   });
   it('sizes the outputs from the device limits, never above what one binding holds', () => {
     expect(outputCapacity({ maxStorageBufferBindingSize: 128 << 20, maxBufferSize: 256 << 20 })).toEqual({

@@ -14,15 +14,21 @@ import { bakeTables } from '../../../src/pattern/tables.ts';
 import type { FactorParams } from '../../../src/gpu/contract/tessellated-mesh.ts';
 import type { Cage } from '../../../src/mesh/types.ts';
 import { countingEncoder } from '../../support/count-dispatches.ts';
+import { BUDGET_CANDIDATES, BUDGET_SCALES } from '../../../src/gpu/contract/tess.ts';
+import { budgetCandidate } from '../../../src/gpu/tess/factors.ts';
+import { MAX_FACTOR } from '../../../src/pattern/max-factor.ts';
 
 const tables = bakeTables(64);
 afterAll(() => releaseDevice());
 
 const camera = testCamera;
 
-/** Dispatches of one Phong rebuild on a small cage (one block per prefix sum), measured when the
- * counting test was written: it may only fall. */
-const PHONG_DISPATCHES_TODAY = 51;
+/** Dispatches of one Phong rebuild: 51 when the counting test was written (three budget attempts
+ * recorded whatever the first decided, three scan steps per prefix sum, the weld in two
+ * dispatches), 8 since the count pass computes the edges' factors and counts every budget
+ * candidate scale (contract/tess.ts BUDGET_SCALES) and emit writes the welded vertices with the
+ * rest. The throughput work's bound is 12; it may only fall. */
+const PHONG_DISPATCHES = 8;
 
 // Pipelines compile once per capacity setting (SwiftShader compiles slowly).
 const tessellators = new Map<string, Tessellator>();
@@ -50,6 +56,25 @@ async function tessellate(
   return { mesh, out, edgeF, error };
 }
 
+/** Each budget candidate's output vertices and triangles, from the counts the GPU made at every
+ * candidate (TESS_WORK's lanes): what the budget pass chose among. */
+async function candidateTotals(mesh: PreparedMesh, opts: object) {
+  const device = await getDevice();
+  const tess = tessellators.get(JSON.stringify(opts))!;
+  const lanes = async (name: 'edgeInterior' | 'triVertCount' | 'triTriCount', n: number) =>
+    new Uint32Array(await readBuffer(device, tess.workBuffer, 4 * n * BUDGET_CANDIDATES, 4 * tess.workLayout[name]));
+  const [edge, vert, tri] = await Promise.all([
+    lanes('edgeInterior', mesh.edgeCount),
+    lanes('triVertCount', mesh.triangleCount),
+    lanes('triTriCount', mesh.triangleCount),
+  ]);
+  const sum = (a: Uint32Array, c: number, n: number) => a.subarray(c * n, (c + 1) * n).reduce((x, y) => x + y, 0);
+  return BUDGET_SCALES.map((_, c) => ({
+    vertices: mesh.vertexCount + sum(edge, c, mesh.edgeCount) + sum(vert, c, mesh.triangleCount),
+    triangles: sum(tri, c, mesh.triangleCount),
+  }));
+}
+
 const shapes: [string, () => Cage, boolean][] = [
   ['cube', cube, true],
   ['octahedron', octahedron, true],
@@ -75,27 +100,56 @@ describe('compute tessellator', () => {
         expect(error?.message).toBeUndefined();
         const report = checkTessellation(mesh, edgeF, out, { closed });
         expect(report.problems).toEqual([]);
-        expect(out.attempt).toBe(0);
+        expect(out.budgetCandidate).toBe(0);
         if (setting === 'fixed 16') expect(out.triangleCount).toBe(256 * mesh.triangleCount);
         expect(report.maxNormalError).toBeLessThan(1e-4);
       });
     }
   }
 
-  it("a rebuild's dispatch chain on the Phong surface: counted, and no longer than today's", async () => {
+  it("a rebuild's dispatch chain on the Phong surface: counted, whatever the size and the budget", async () => {
     // Each dispatch is a launch and a barrier on a GPU, so a short chain is a floor on the
-    // rebuild's time whatever the size. Today: the bulge pass, three budget attempts (factors,
-    // count, three scan steps per prefix sum, budget) recorded whatever the first one decides,
-    // then weld, plan and emit. The target of the throughput work is 12.
-    await tessellate(cube(), (m) => camera(m, 4, 16));
+    // rebuild's time whatever the size: the bulge, factors + count, the scan's three steps (the
+    // budget between them), plan, and emit's vertices (the welded ones too) and triangles.
     const device = await getDevice();
-    const tess = tessellators.get('{}')!;
-    const { encoder, counts } = countingEncoder(device.createCommandEncoder({ label: 'counted rebuild' }));
-    tess.encode(encoder, camera(prepareMesh(cube()), 4, 16));
-    device.queue.submit([encoder.finish()]);
-    console.log(`Phong rebuild (cube): ${counts.passes} compute passes, ${counts.direct} + ${counts.indirect} indirect dispatches`);
-    expect(counts.indirect).toBe(3);
-    expect(counts.direct + counts.indirect).toBeLessThanOrEqual(PHONG_DISPATCHES_TODAY);
+    for (const [cage, opts] of [
+      [cube(), {}],
+      [torus(90, 48), {}], // several scan blocks
+      [torus(), { vertexCapacity: 600, triangleCapacity: 4 * prepareMesh(torus()).triangleCount }], // over budget
+    ] as const) {
+      await tessellate(cage, (m) => camera(m, 4, 16), opts);
+      const tess = tessellators.get(JSON.stringify(opts))!;
+      const { encoder, counts } = countingEncoder(device.createCommandEncoder({ label: 'counted rebuild' }));
+      tess.encode(encoder, camera(prepareMesh(cage), 4, 16));
+      device.queue.submit([encoder.finish()]);
+      console.log(`Phong rebuild: ${counts.passes} compute passes, ${counts.direct} + ${counts.indirect} indirect dispatches`);
+      expect(counts.indirect).toBe(2);
+      expect(counts.direct + counts.indirect).toBe(PHONG_DISPATCHES);
+    }
+  });
+
+  it(`at the top factor (MAX_FACTOR, ${MAX_FACTOR}) and between 64 and it: matches the CPU and is watertight`, async () => {
+    // The talk's counts need 128 (suzanne: 968 triangles at 128²); the other tests bake to 64.
+    const device = await getDevice();
+    const top = Tessellator.create(device, bakeTables(MAX_FACTOR), { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20 });
+    try {
+      for (const f of [MAX_FACTOR, 100.5]) {
+        const mesh = prepareMesh(cube());
+        device.pushErrorScope('validation');
+        top.setMesh(mesh);
+        const enc = device.createCommandEncoder({ label: 'test rebuild at the top factor' });
+        top.encode(enc, camera(mesh, 4, f));
+        device.queue.submit([enc.finish()]);
+        const out = await readMesh(device, top.output);
+        const edgeF = new Uint32Array(await readBuffer(device, top.workBuffer, 4 * mesh.edgeCount, 4 * top.workLayout.edgeF));
+        expect((await device.popErrorScope())?.message).toBeUndefined();
+        expect(out.budgetCandidate).toBe(0);
+        if (f === MAX_FACTOR) expect(out.triangleCount).toBe(MAX_FACTOR * MAX_FACTOR * mesh.triangleCount);
+        expect(checkTessellation(mesh, edgeF, out, { closed: true }).problems).toEqual([]);
+      }
+    } finally {
+      top.destroy();
+    }
   });
 
   it('a cage of more triangles than one scan block covers (4096) matches the CPU', async () => {
@@ -117,12 +171,16 @@ describe('compute tessellator', () => {
   it('respects a deliberately tiny budget without error, still watertight', async () => {
     const cage = torus();
     const nT = prepareMesh(cage).triangleCount;
-    const { mesh, out, edgeF, error } = await tessellate(cage, (m) => camera(m, 4, 64), { vertexCapacity: 600, triangleCapacity: 4 * nT });
+    const opts = { vertexCapacity: 600, triangleCapacity: 4 * nT };
+    const { mesh, out, edgeF, error } = await tessellate(cage, (m) => camera(m, 4, 64), opts);
     expect(error?.message).toBeUndefined();
-    expect(out.attempt).toBeGreaterThan(0);
+    expect(out.budgetCandidate).toBeGreaterThan(0);
     expect(out.triangleCount).toBeLessThanOrEqual(4 * nT);
     expect(out.vertexCount).toBeLessThanOrEqual(600);
     expect(checkTessellation(mesh, edgeF, out, { closed: true }).problems).toEqual([]);
+    // The GPU's choice is the CPU twin's over the counts the GPU made at every candidate.
+    expect({ candidate: out.budgetCandidate, fits: true }).toEqual(budgetCandidate(await candidateTotals(mesh, opts), 600, 4 * nT));
+    expect(out.scale).toBe(Math.fround(BUDGET_SCALES[out.budgetCandidate]));
   });
 });
 

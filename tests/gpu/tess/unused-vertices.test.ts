@@ -9,7 +9,7 @@ function result(vertexCount: number, indices: number[]): HeadlessResult {
     vertexCount,
     triangleCount: indices.length / 3,
     scale: 1,
-    attempt: 0,
+    budgetCandidate: 0,
     positions: Float32Array.from({ length: 3 * vertexCount + 6 }, (_, i) => i), // capacity past the count
     normals: Float32Array.from({ length: 3 * vertexCount }, (_, i) => -i),
     bary: Uint32Array.from({ length: vertexCount }, (_, v) => 100 + v),
