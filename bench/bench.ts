@@ -18,6 +18,8 @@
  * written (a partial table must not replace BENCHMARKS.md).
  */
 import { existsSync, readFileSync, writeFileSync, readdirSync } from 'node:fs';
+import { guarded, InputError } from '../src/cli/boundary.ts';
+import { checkOutputPath, readInputText } from '../src/cli/files.ts';
 import { spawnSync } from 'node:child_process';
 import { cpus, totalmem } from 'node:os';
 import { createNodeDevice } from '../src/gpu/device/node-device.ts';
@@ -188,6 +190,20 @@ function fixedFactorForAdaptive(mesh: PreparedMesh, o: HeadlessOptions): number 
 }
 
 export async function main(argv: string[]): Promise<number> {
+  return guarded('bench', argv, run, (line) => console.error(line));
+}
+
+const BENCH_OPTIONS = new Set(['--quick', '--out', '--models', '--talk', '--repeats']);
+const BENCH_FLAGS = new Set(['--quick', '--talk']);
+
+async function run(argv: string[]): Promise<number> {
+  // Arguments and the output path checked before the GPU is asked for.
+  for (let i = 0; i < argv.length; i++) {
+    if (!BENCH_OPTIONS.has(argv[i]))
+      throw new InputError(`unknown argument ${argv[i]} (--quick, --models a,b, --out FILE; --talk [--repeats N])`);
+    if (!BENCH_FLAGS.has(argv[i]) && (argv[++i] === undefined || argv[i].startsWith('--')))
+      throw new InputError(`${argv[i - 1]} needs a value`);
+  }
   if (argv.includes('--talk')) return talkTables(argv); // bench/talk.ts: the talk's tables at its counts
   const quick = argv.includes('--quick');
   const outIdx = argv.indexOf('--out');
@@ -202,14 +218,9 @@ export async function main(argv: string[]): Promise<number> {
         )
       : undefined;
   const outFile = outIdx >= 0 ? argv[outIdx + 1] : only ? undefined : 'BENCHMARKS.md';
+  if (outFile) checkOutputPath(outFile, '--out');
   const fixedFactor = quick ? 8 : 16;
   const repeats = quick ? 2 : REPEATS;
-  const { device, adapterName } = await createNodeDevice(['disable-dawn-features=timestamp_quantization']);
-  if (!device.features.has('timestamp-query')) {
-    console.error('bench: this adapter has no timestamp queries; nothing to measure');
-    return 1;
-  }
-  const tess = Tessellator.create(device, bakeTables(64));
 
   const models = readdirSync('public/models')
     .filter((f) => f.endsWith('.obj'))
@@ -227,10 +238,15 @@ export async function main(argv: string[]): Promise<number> {
     const known = new Set(ccModels.map((m) => m.name));
     const unknown = [...only].filter((m) => !known.has(m));
     if (unknown.length) {
-      console.error(`bench: unknown model(s) ${unknown.join(', ')}`);
-      return 2;
+      throw new InputError(`unknown model(s) ${unknown.join(', ')}`);
     }
   }
+  const { device, adapterName } = await createNodeDevice(['disable-dawn-features=timestamp_quantization']);
+  if (!device.features.has('timestamp-query')) {
+    console.error('bench: this adapter has no timestamp queries; nothing to measure');
+    return 1;
+  }
+  const tess = Tessellator.create(device, bakeTables(64));
   const osd = buildOsdTimer();
   if ('reason' in osd) console.log(`note: no OpenSubdiv column: ${osd.reason}`);
   const rows: string[] = [];
@@ -350,7 +366,7 @@ export async function main(argv: string[]): Promise<number> {
   const stageRows: string[] = [];
   const skipped: string[] = [];
   for (const { name, path } of ccModels) {
-    const cage = loadCage(readFileSync(path, 'utf8')).cage;
+    const cage = loadCage(readInputText(path, 'model')).cage;
     const faces = faceCount(cage);
     const o = 'bin' in osd ? timeOpenSubdiv(osd.bin, path, OSD_REPEATS) : undefined;
     if (typeof o === 'string') console.log(`note: ${o}`);

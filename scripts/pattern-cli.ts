@@ -10,10 +10,22 @@
  * Points are printed as numbers in [0, 1] (exact: every coordinate is k/2^16), or as the
  * fixed-point integers k with --fixed. Bad arguments: a message on stderr and exit code 2.
  */
-import { readFileSync } from 'node:fs';
+import { endQuietlyOnClosedPipe, guardedSync } from '../src/cli/boundary.ts';
+import { readInputText } from '../src/cli/files.ts';
 import { runPatternCli } from '../src/pattern/cli.ts';
 
-const result = runPatternCli(process.argv.slice(2), (path) => readFileSync(path, 'utf8'));
-if (result.stdout) process.stdout.write(result.stdout);
-if (result.stderr) process.stderr.write(result.stderr);
-process.exitCode = result.code;
+/** The CLI in the project's error boundary (src/cli/boundary.ts): exit 2 for bad input, never a trace. */
+export function main(argv: string[]): number {
+  return guardedSync('pattern', argv, (a) => {
+    const result = runPatternCli(a, (path) => readInputText(path, 'file'));
+    if (result.stdout) process.stdout.write(result.stdout);
+    if (result.stderr) process.stderr.write(result.stderr);
+    return result.code;
+  });
+}
+
+const isMain = process.argv[1] && /pattern-cli\.ts$/.test(process.argv[1]);
+if (isMain) {
+  endQuietlyOnClosedPipe();
+  process.exitCode = main(process.argv.slice(2));
+}

@@ -43,14 +43,16 @@
  * src/gpu/instanced/displace-vertex.ts; its --adaptive levels do not count the heights).
  * Bad input: a message and exit code 2.
  */
-import { decodeHeightPng, HeightMapError } from '../src/mesh/heightmap-png.ts';
-import type { HeightWrap } from '../src/mesh/heightmap.ts';
-import { requireUvs } from '../src/mesh/uv.ts';
-import { readFileSync, writeFileSync, existsSync } from 'node:fs';
+import { existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
-import { loadCage, CageError } from '../src/mesh/index.ts';
+import { CageError, escapeControl, LimitError } from '../src/mesh/index.ts';
+import { workBytesAtLeast } from '../src/gpu/tess/arenas.ts';
+import { MAX_FACTOR } from '../src/gpu/contract/constants.ts';
+import { EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_OK, guarded, InputError, isInputError } from '../src/cli/boundary.ts';
+import { writeOutput } from '../src/cli/files.ts';
+import { loadInput, type TessellateArgs, USAGE, UsageError } from './tessellate-input.ts';
 import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/device/node-device.ts';
-import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, type HeadlessOptions } from '../src/gpu/tess/headless.ts';
+import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, withoutUnusedVertices } from '../src/gpu/tess/headless.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts';
 import { faceCount, type Cage } from '../src/mesh/index.ts';
@@ -58,181 +60,17 @@ import { tessellateInstanced, InstancedTessellator } from '../src/gpu/instanced/
 import { factorRuleLevels, type LevelParams } from '../src/gpu/instanced/instanced-options.ts';
 import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
 import { weldInstanced, weldedToObj, weldedVertexParams } from '../src/gpu/instanced/headless-output.ts';
-import { isPow2Level } from '../src/pattern/pow2.ts';
 import { AccPatches } from '../src/gpu/acc/patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { displacementLender } from '../src/gpu/instanced/displace-vertex.ts';
 import { prepareDisplacement } from '../src/gpu/tess/displacement-map.ts';
-import { AccError } from '../src/subdiv/acc.ts';
-import { isAccSurface, isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
+import { isAccSurface, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc/surface.ts';
 import { demoView, displayedDistancePx, limitDistancePx } from './limit-distance.ts';
-
-const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
-       npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`;
 
 /** The CLI's one Catmull-Clark preparation call (CPU, topology only, per cage). */
 function prepareCatmullClark(cage: Cage, mesh: PreparedMesh): CatmullClarkData {
   return buildCatmullClark(cage, mesh);
-}
-
-class UsageError extends Error {}
-
-function vec3(text: string | undefined, what: string): [number, number, number] {
-  const parts = (text ?? '').split(',').map((s) => Number(s.trim()));
-  if (parts.length !== 3 || parts.some((x) => !Number.isFinite(x))) throw new UsageError(`${what}: expected x,y,z, got '${text}'`);
-  return parts as [number, number, number];
-}
-
-function parse(argv: string[]) {
-  let model: string | undefined;
-  const o: HeadlessOptions = { mode: 'adaptive' };
-  let modeSeen = 0;
-  let out: string | undefined;
-  let params: string | undefined;
-  let stats = false;
-  let surface: string | undefined;
-  let tessellator = 'compute';
-  let level: number | undefined;
-  let demoView = false;
-  let limitPx = false;
-  let displacement: string | undefined;
-  let scale: number | undefined;
-  let mid = 0.5;
-  let wrap: HeightWrap = 'repeat';
-  for (let i = 0; i < argv.length; i++) {
-    const a = argv[i];
-    const value = () => {
-      const v = argv[++i];
-      if (v === undefined || v.startsWith('--')) throw new UsageError(`${a} needs a value`);
-      return v;
-    };
-    switch (a) {
-      case '--fixed': {
-        const f = Number(value());
-        if (!(f >= 1 && f <= 64)) throw new UsageError(`--fixed: a tess factor in [1, 64], got ${argv[i]}`);
-        o.mode = 'fixed';
-        o.fixedFactor = f;
-        modeSeen++;
-        break;
-      }
-      case '--tessellator':
-        tessellator = value();
-        if (tessellator !== 'compute' && tessellator !== 'instanced')
-          throw new UsageError(`unknown tessellator '${tessellator}' (compute or instanced)`);
-        break;
-      case '--level': {
-        const L = Number(value());
-        if (!isPow2Level(L)) throw new UsageError(`--level: a power of two in [1, 64], got ${argv[i]}`);
-        level = L;
-        modeSeen++;
-        break;
-      }
-      case '--adaptive':
-        o.mode = 'adaptive';
-        modeSeen++;
-        break;
-      case '--lod': {
-        const s = Number(value());
-        if (!(s > 0) || !Number.isFinite(s)) throw new UsageError(`--lod: a positive number, got ${argv[i]}`);
-        o.lodScale = s;
-        break;
-      }
-      case '--eye':
-        o.eye = vec3(value(), '--eye');
-        break;
-      case '--target':
-        o.target = vec3(value(), '--target');
-        break;
-      case '--out':
-        out = value();
-        break;
-      case '--params':
-        params = value();
-        break;
-      case '--stats':
-        stats = true;
-        break;
-      case '--surface':
-        surface = value();
-        break;
-      case '--flat-baseline':
-        o.flatBaseline = true;
-        break;
-      case '--demo-view':
-        demoView = true;
-        break;
-      case '--displacement':
-        displacement = value();
-        break;
-      case '--scale': {
-        scale = Number(value());
-        if (!Number.isFinite(scale)) throw new UsageError(`--scale: a number (world units per unit of height), got ${argv[i]}`);
-        break;
-      }
-      case '--mid': {
-        mid = Number(value());
-        if (!(mid >= 0 && mid <= 1)) throw new UsageError(`--mid: a height in [0, 1], got ${argv[i]}`);
-        break;
-      }
-      case '--wrap': {
-        const w = value();
-        if (w !== 'repeat' && w !== 'clamp') throw new UsageError(`--wrap: repeat or clamp, got ${w}`);
-        wrap = w;
-        break;
-      }
-      case '--limit-px':
-        limitPx = true;
-        break;
-      default:
-        if (a.startsWith('--')) throw new UsageError(`unknown option ${a}`);
-        if (model) throw new UsageError(`one model only (got '${model}' and '${a}')`);
-        model = a;
-    }
-  }
-  if (!model) throw new UsageError('no model given');
-  const instanced = tessellator === 'instanced';
-  if (instanced) {
-    if (o.mode === 'fixed') throw new UsageError('--tessellator instanced takes --level L (a power of two), not --fixed');
-    if (surface !== undefined && !isSurfaceId(surface))
-      throw new UsageError(`--tessellator instanced: --surface ${SURFACE_IDS.join(', ')} (got ${surface})`);
-    if (o.flatBaseline) throw new UsageError('--flat-baseline applies to the compute tessellator only');
-  } else if (level !== undefined)
-    throw new UsageError('--level applies to --tessellator instanced (the compute tessellator takes --fixed F)');
-  if (modeSeen !== 1)
-    throw new UsageError(instanced ? 'give exactly one of --level L or --adaptive' : 'give exactly one of --fixed F or --adaptive');
-  if (!out && !stats) throw new UsageError('--out (or --stats) is required');
-  surface ??= instanced ? 'phong' : 'catmull-clark';
-  if (!isSurfaceId(surface)) throw new UsageError(`unknown surface '${surface}' (${SURFACE_IDS.join(', ')})`);
-  const scheme = surfaceScheme(surface);
-  const acc = instanced && isAccSurface(surface) ? surface : undefined;
-  // The instanced tessellator takes its ACC scheme as `acc`; the compute tessellator as its surface.
-  o.surface = acc ? 'phong' : surface;
-  if ((demoView || limitPx) && instanced) throw new UsageError('--demo-view and --limit-px apply to the compute tessellator');
-  if (limitPx && !scheme.exactLimit) throw new UsageError('--limit-px measures against the exact Catmull-Clark surface only');
-  if (demoView && (o.eye || o.target)) throw new UsageError('--demo-view is a camera: not with --eye or --target');
-  if (o.flatBaseline && !scheme.flatBaseline) throw new UsageError('--flat-baseline applies to the Catmull-Clark surface only');
-  if ((o.mode === 'fixed' || level !== undefined) && (o.lodScale || o.eye || o.target))
-    throw new UsageError('--lod, --eye and --target apply to --adaptive only');
-  if (displacement === undefined && (scale !== undefined || argv.includes('--mid') || argv.includes('--wrap')))
-    throw new UsageError('--scale, --mid and --wrap go with --displacement map.png');
-  if (displacement !== undefined && scale === undefined)
-    throw new UsageError('--displacement needs --scale S (world units per unit of height)');
-  const disp = displacement === undefined ? undefined : { path: displacement, scale: scale as number, midLevel: mid, wrap };
-  return {
-    model,
-    o,
-    out,
-    params,
-    stats,
-    instanced,
-    level,
-    acc,
-    demoView,
-    limitPx,
-    disp,
-    instancedCC: instanced && scheme.instancedKind === 'lent-limit',
-  };
 }
 
 /** A device lent by the caller, with its adapter's name: main runs on it and leaves it alive. The
@@ -244,33 +82,30 @@ export interface LentDevice {
 }
 
 export async function main(argv: string[], lent?: LentDevice): Promise<number> {
-  let args: ReturnType<typeof parse>;
-  let cage: ReturnType<typeof loadCage>['cage'];
+  // console.error, not process.stderr: the in-process tests capture the console.
+  return guarded(
+    'tessellate',
+    argv,
+    (a) => run(a, lent),
+    (line) => console.error(line),
+  );
+}
+
+async function run(argv: string[], lent?: LentDevice): Promise<number> {
+  let input: ReturnType<typeof loadInput>;
   try {
-    args = parse(argv);
-    if (!existsSync(args.model)) throw new UsageError(`no such file: ${args.model}`);
-    cage = loadCage(readFileSync(args.model, 'utf8')).cage;
-    if (args.disp) {
-      if (!existsSync(args.disp.path)) throw new UsageError(`no such file: ${args.disp.path}`);
-      const map = decodeHeightPng(readFileSync(args.disp.path));
-      requireUvs(cage);
-      args.o.displacement = { map, scale: args.disp.scale, midLevel: args.disp.midLevel, wrap: args.disp.wrap };
-    }
+    input = loadInput(argv);
   } catch (e) {
     if (e instanceof UsageError) {
-      console.error(`tessellate: ${e.message}\n${USAGE}`);
-      return 2;
+      console.error(`tessellate: ${escapeControl(e.message)}\n${USAGE}`);
+      return EXIT_BAD_INPUT;
     }
-    if (e instanceof CageError) {
-      console.error(`tessellate: ${argv.find((a) => !a.startsWith('--'))}: ${e.message}`);
-      return 2;
-    }
-    if (e instanceof HeightMapError) {
-      console.error(`tessellate: ${e.message}`);
-      return 2;
-    }
+    // The model's name before a cage's line-numbered issues.
+    if (e instanceof CageError) throw new InputError(`${argv.find((a) => !a.startsWith('--'))}: ${e.message}`);
     throw e;
   }
+  const { args, cage } = input;
+  for (const w of input.warnings) console.error(escapeControl(`tessellate: ${w}`));
   let device: GPUDevice;
   let adapterName: string;
   try {
@@ -285,48 +120,66 @@ export async function main(argv: string[], lent?: LentDevice): Promise<number> {
       });
       return r.status ?? 1;
     }
-    console.error(`tessellate: ${(e as Error).message}`);
-    return 1;
+    console.error(`tessellate: no GPU: ${(e as Error).message}`);
+    return EXIT_INTERNAL;
   }
-  const release = () => {
+  try {
+    return args.instanced ? await runInstanced(device, adapterName, cage, args) : await runCompute(device, adapterName, cage, args);
+  } finally {
+    // A failure mid-run (a limit found by a build) still frees the device's memory.
     if (!lent) device.destroy();
-  };
-  if (args.instanced) {
-    const code = await runInstanced(device, adapterName, cage, args);
-    release();
-    return code;
   }
+}
+
+/** The compute tessellator: the surface's preparation, one rebuild, the readback, the outputs. */
+async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, args: TessellateArgs): Promise<number> {
+  // From the face sizes, before a preparation that grows with them: a cage whose scratch buffer
+  // alone exceeds the device's binding limit is refused now, not after a minute and gigabytes.
+  const least = workBytesAtLeast(cage, MAX_FACTOR);
+  const bindingLimit = device.limits.maxStorageBufferBindingSize;
+  if (least > bindingLimit)
+    throw new LimitError(
+      `${args.model}: ${faceCount(cage)} faces need at least ${mib(least)} of GPU scratch memory, more than this device's ${mib(bindingLimit)} binding limit: the cage is too large for this GPU`,
+    );
   const mesh = prepareMesh(cage);
   const started = performance.now();
-  const cc = args.o.surface && surfaceScheme(args.o.surface).patchBuild === 'refinement' ? prepareCatmullClark(cage, mesh) : undefined;
+  let cc: CatmullClarkData | undefined;
   let acc: AccSurface | undefined;
   try {
+    cc = args.o.surface && surfaceScheme(args.o.surface).patchBuild === 'refinement' ? prepareCatmullClark(cage, mesh) : undefined;
     acc = args.o.surface && isAccSurface(args.o.surface) ? prepareAccSurface(device, cage, mesh, args.o.surface) : undefined;
   } catch (e) {
-    if (!(e instanceof AccError)) throw e;
-    console.error(`tessellate: ${args.model}: ${e.message}`);
-    release();
-    return 2;
+    throw modelError(args.model, e);
   }
   const cpuPrepMs = performance.now() - started;
   // The demo's first view (src/gpu/render/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
   if (args.demoView) Object.assign(args.o, demoView(mesh));
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
+  // Checked before anything is written or counted (--stats too): a NaN is not an output.
+  const nonFinite = r.out.positions.subarray(0, 3 * r.out.vertexCount).findIndex((x) => !Number.isFinite(x));
+  if (nonFinite >= 0)
+    throw new InputError(
+      `${args.model}: output vertex ${Math.floor(nonFinite / 3) + 1} is not finite: nothing written (the model, --scale or the camera is beyond 32-bit floats)`,
+    );
   // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
   const cam = args.limitPx ? headlessCamera(mesh, args.o) : undefined;
   const limit = cam ? limitDistancePx(cage, mesh, r.out, cam) : undefined;
   const displayed = cam ? displayedDistancePx(cage, mesh, r.out, cam) : undefined;
   acc?.patches.destroy();
+  // The cage's unused vertices go through the pipeline; the loader's warning says they are ignored: not written.
+  const { r: written, kept } = withoutUnusedVertices(r);
   if (args.out)
-    writeFileSync(
+    writeChecked(
       args.out,
+      '--out',
       meshToObj(
-        r,
+        written,
         `tessellab: ${args.model}, ${args.o.surface} surface, ${args.o.mode}${args.o.mode === 'fixed' ? ` ${args.o.fixedFactor}` : ''}${args.disp ? `, displaced by ${args.disp.path} (scale ${args.disp.scale}, mid ${args.disp.midLevel}, ${args.disp.wrap})` : ''}, ${adapterName}`,
       ),
     );
   if (args.params) {
-    writeParams(args.params, vertexParams(r, cage));
+    const params = vertexParams(r, cage);
+    writeParams(args.params, kept ? Array.from(kept, (v) => params[v]) : params);
   }
   if (args.stats) {
     const timed = Object.keys(r.timings).length > 0;
@@ -339,7 +192,7 @@ export async function main(argv: string[], lent?: LentDevice): Promise<number> {
         gpuBytes: cc ? cc.gpuBytes : acc ? acc.patches.patchBuffer.size + acc.patches.pointBuffer.size + acc.patches.staticBuffer.size : 0,
         subdivisionMs: timed ? Number(subdivision.toFixed(4)) : null,
         tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
-        vertices: r.out.vertexCount,
+        vertices: written.out.vertexCount,
         triangles: r.out.triangleCount,
         ...(limit && displayed
           ? {
@@ -358,15 +211,37 @@ export async function main(argv: string[], lent?: LentDevice): Promise<number> {
   }
   const wrote = [args.out, args.params].filter(Boolean).join(' and ');
   console.error(
-    `tessellate: ${r.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
+    `tessellate: ${written.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
-  release();
-  return 0;
+  return EXIT_OK;
+}
+
+function mib(bytes: number): string {
+  return `${(bytes / 1024 / 1024).toFixed(0)} MiB`;
+}
+
+/** A refusal by a surface's build (AccError, LimitError), with the model's name; other errors as they are. */
+function modelError(model: string, e: unknown): unknown {
+  return isInputError(e) ? new InputError(`${model}: ${e.message}`) : e;
+}
+
+/** Write an output after checking it holds no NaN or infinity (an output that cannot be read back
+ * is refused, exit code 2, rather than written). */
+function writeChecked(path: string, what: string, text: string): void {
+  const bad = /\b(NaN|-?Infinity)\b/.exec(text);
+  if (bad) {
+    const line = text.slice(0, bad.index).split('\n').length;
+    throw new InputError(
+      `${what} ${path}: not written: the output has non-finite values (${bad[1]} on its line ${line}); the model, --scale or the camera is beyond 32-bit floats`,
+    );
+  }
+  writeOutput(path, text, what);
 }
 
 function writeParams(path: string, p: ReturnType<typeof vertexParams>): void {
-  writeFileSync(
+  writeChecked(
     path,
+    '--params',
     path.endsWith('.txt')
       ? paramsToText(p)
       : JSON.stringify({
@@ -377,7 +252,7 @@ function writeParams(path: string, p: ReturnType<typeof vertexParams>): void {
 }
 
 /** `--tessellator instanced`: levels, the draw's vertex function in compute, the weld. */
-async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, args: ReturnType<typeof parse>): Promise<number> {
+async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, args: TessellateArgs): Promise<number> {
   const mesh = prepareMesh(cage);
   const started = performance.now();
   const im = prepareInstanced(cage, mesh);
@@ -386,8 +261,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   try {
     cc = args.instancedCC ? prepareCatmullClark(cage, mesh) : undefined;
   } catch (e) {
-    console.error(`tessellate: ${args.model}: ${(e as Error).message}`);
-    return 2;
+    throw modelError(args.model, e);
   }
   const cpuPrepMs = performance.now() - started;
   let lp: LevelParams;
@@ -402,11 +276,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
     try {
       acc = new AccPatches(device, cage, args.acc);
     } catch (e) {
-      if (e instanceof AccError) {
-        console.error(`tessellate: ${args.model}: ${e.message}`);
-        return 2;
-      }
-      throw e;
+      throw modelError(args.model, e);
     }
   }
   // Displacement: the arenas of a lending compute tessellator (src/gpu/instanced/displace-vertex.ts), on
@@ -427,8 +297,7 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
     tess.destroy();
     ccSource?.destroy();
     lender?.destroy();
-    console.error(`tessellate: ${(e as Error).message}`);
-    return 1;
+    throw modelError(args.model, e);
   }
   const gpuBytes =
     tess.gpuBytes +
@@ -445,8 +314,9 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
     (args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`) +
     (d ? `, displaced (scale ${d.scale}, mid ${d.midLevel}, ${d.wrap})` : '');
   if (args.out)
-    writeFileSync(
+    writeChecked(
       args.out,
+      '--out',
       weldedToObj(w, `tessellab: ${args.model}, instanced tessellator, ${surfaceName} surface, ${what}, ${adapterName}`),
     );
   if (args.params) writeParams(args.params, weldedVertexParams(im, cage, r.out, w));

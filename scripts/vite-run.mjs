@@ -11,6 +11,13 @@ if (!entry) {
   console.error('usage: node scripts/vite-run.mjs MODULE.ts [args...]');
   process.exit(2);
 }
+// A reader that stops early (`| head`) closes the pipe: end quietly, not with an EPIPE trace
+// (src/cli/boundary.ts endQuietlyOnClosedPipe, for the CLIs that tsx runs).
+for (const stream of [process.stdout, process.stderr])
+  stream.on('error', (e) => {
+    if (e.code === 'EPIPE') process.exit(0);
+    throw e;
+  });
 const root = resolve(fileURLToPath(import.meta.url), '../..');
 const server = await createServer({
   configFile: false,

@@ -6,7 +6,7 @@
  * the Node decoder). The 2D canvas is 8-bit, so a 16-bit PNG is displaced at 8 bits here (the CLI
  * reads all 16).
  */
-import { heightMapFromRgba, type DisplacedModelEntry, type HeightMap } from '../mesh/heightmap.ts';
+import { heightMapFromRgba, MAX_HEIGHT_MAP_PIXELS, type DisplacedModelEntry, type HeightMap } from '../mesh/heightmap.ts';
 import type { CageHeightMap } from './geometry.ts';
 
 /** A height map as the demo holds it for one cage: the map, and its own scale and mid level
@@ -56,7 +56,8 @@ export async function decodeHeightImage(blob: Blob, name: string): Promise<Heigh
   }
   try {
     const { width, height } = bitmap;
-    if (width * height > 8192 * 8192) throw new Error(`${name} is ${width}x${height}: larger than 8192x8192 texels`);
+    if (width * height > MAX_HEIGHT_MAP_PIXELS)
+      throw new Error(`${name} is ${width}x${height}: more than the ${MAX_HEIGHT_MAP_PIXELS} texels (8192x8192) taken`);
     const canvas = new OffscreenCanvas(width, height);
     const ctx = canvas.getContext('2d', { willReadFrequently: true });
     if (!ctx) throw new Error('no 2D canvas to read the image with');

@@ -6,7 +6,9 @@
 import { enableDrop } from './file-input.ts';
 import { DEFAULT_MODEL } from './models.ts';
 import { buildPanel } from './panel.ts';
-import { isModelUrl, parseParams } from './params.ts';
+import { modelSource } from './model-source.ts';
+import { paramNotes, parseParams } from './params.ts';
+import { showToast } from './ui.ts';
 import { TessellationDemo } from './tessellation-demo.ts';
 
 async function main(): Promise<void> {
@@ -29,14 +31,21 @@ async function main(): Promise<void> {
   if ((window as { tessellabHoldPreparation?: boolean }).tessellabHoldPreparation) demo.holdPreparation(true);
   if (!(await demo.start())) return;
 
-  const name = params.model ?? DEFAULT_MODEL;
-  demo.panel = params.ui ? buildPanel(demo, isModelUrl(name) ? DEFAULT_MODEL : name) : null;
+  // The URL's numbers the page changed (clamped, rounded, defaulted): said, not done silently.
+  const notes = paramNotes(location.search);
+  if (notes.length) showToast(notes.join('\n'), { title: 'Link parameters adjusted', timeout: 10000 });
+  const source = modelSource(params.model ?? DEFAULT_MODEL, location.href);
+  demo.panel = params.ui ? buildPanel(demo, source.kind === 'builtin' ? source.name : DEFAULT_MODEL) : null;
   enableDrop((file) => void demo.loadFile(file));
 
   const camera = { yaw: params.yaw, pitch: params.pitch, dist: params.dist };
-  if (isModelUrl(name)) {
-    await demo.loadUrl(name, camera);
-  } else if (!(await demo.loadBuiltin(name, camera)) && name !== DEFAULT_MODEL && !demo.model) {
+  if (source.kind === 'url') {
+    await demo.loadUrl(source.url, camera);
+  } else if (source.kind === 'refused') {
+    // Said instead of fetched; the default model is shown meanwhile.
+    showToast(source.reason, { kind: 'error', title: 'Model link not loaded' });
+    await demo.loadBuiltin(DEFAULT_MODEL, camera);
+  } else if (!(await demo.loadBuiltin(source.name, camera)) && source.name !== DEFAULT_MODEL && !demo.model) {
     await demo.loadBuiltin(DEFAULT_MODEL, camera);
   }
 }

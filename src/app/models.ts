@@ -1,9 +1,10 @@
 /**
- * Where cages come from: the project's own models (public/models), any URL (`?model=URL`),
+ * Where cages come from: the project's own models (public/models), an OBJ on the page's own site
+ * (`?model=path`, checked by model-source.ts),
  * or a file dropped on the page. Everything ends in `loadCage`, which either gives a valid
  * cage or throws a CageError with line numbers.
  */
-import { loadCage, type LoadedCage } from '../mesh/index.ts';
+import { decodeText, loadCage, type LoadedCage } from '../mesh/index.ts';
 import { errorMessage } from './controller.ts';
 
 export interface ModelEntry {
@@ -54,11 +55,20 @@ export async function loadModelFromUrl(url: string, title: string): Promise<Load
   if (!res.ok) throw new Error(`could not fetch ${url}: HTTP ${res.status} ${res.statusText}`);
   // Dev servers and SPA hosts answer unknown paths with the index page, not a 404.
   if ((res.headers.get('content-type') ?? '').includes('text/html')) throw new Error(`could not fetch ${url}: not found`);
-  const text = await res.text();
-  return { ...loadCage(text), title };
+  // Decoded as the CLIs decode files (UTF-8, or UTF-16 by its byte-order mark).
+  const text = decodeText(new Uint8Array(await res.arrayBuffer()));
+  return drawable({ ...loadCage(text), title });
 }
 
 export async function loadModelFromFile(file: File): Promise<LoadedModel> {
-  const text = await file.text();
-  return { ...loadCage(text), title: file.name };
+  const text = decodeText(new Uint8Array(await file.arrayBuffer()));
+  return drawable({ ...loadCage(text), title: file.name });
+}
+
+/** A model that loads but would draw nothing is refused with the reason, not shown as an empty
+ * view (the loader has already refused coordinates the GPU cannot hold, src/mesh/range.ts). */
+function drawable(m: LoadedModel): LoadedModel {
+  const holes = new Set(m.cage.holes);
+  if (holes.size >= m.topology.nFaces) throw new Error('every face of the model is a hole (t hole): there is nothing to draw');
+  return m;
 }

@@ -21,7 +21,7 @@ const SURFACE_ALIASES: Record<string, Surface> = { cc: 'catmull-clark', catmullc
 export type TessellatorKind = 'compute' | 'instanced';
 
 export interface DemoParams {
-  /** A model name from the project's list, or a URL of an OBJ file. */
+  /** A model name from the project's list, or the path of an OBJ on the page's own site (model-source.ts). */
   model: string | null;
   /** The model's up axis: the project's models are Z-up; many OBJ exporters write Y-up. */
   up: UpAxis;
@@ -248,7 +248,40 @@ function round(x: number, digits: number): number {
   return Math.round(x * k) / k;
 }
 
-/** A model parameter that names a file rather than one of the project's models. */
-export function isModelUrl(model: string): boolean {
-  return /[/.:]/.test(model);
+/** The numeric parameters, by URL key, and the field each sets. */
+const NUMERIC: [key: string, field: keyof DemoParams][] = [
+  ['lod', 'lod'],
+  ['factor', 'factor'],
+  ['cap', 'capacity'],
+  ['level', 'level'],
+  ['errrange', 'errRange'],
+  ['dscale', 'dscale'],
+  ['t', 't'],
+  ['yaw', 'yaw'],
+  ['pitch', 'pitch'],
+  ['dist', 'dist'],
+];
+
+/**
+ * Notes for the numbers a URL gave that the page could not use as given (out of range: clamped;
+ * not a number: the default; a level between powers of two: rounded down), to show the visitor
+ * which values are in effect instead of changing them silently (`cap=1e9` would otherwise raise
+ * the GPU memory without a word).
+ */
+export function paramNotes(search: string): string[] {
+  const q = new URLSearchParams(search.startsWith('?') ? search.slice(1) : search);
+  const p = parseParams(search);
+  const notes: string[] = [];
+  for (const [key, field] of NUMERIC) {
+    const raw = q.get(key);
+    if (raw === null || raw.trim() === '') continue;
+    const used = p[field];
+    const x = Number(raw);
+    const shown = raw.length > 24 ? `${raw.slice(0, 21)}...` : raw;
+    if (!Number.isFinite(x)) notes.push(`${key}=${shown} is not a number: ${used === null ? 'the default' : used} is used`);
+    else if (x !== used) notes.push(`${key}=${shown} is outside what the page takes: ${used} is used`);
+  }
+  return notes;
 }
+
+export { isModelUrl } from './model-source.ts';

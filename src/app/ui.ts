@@ -4,6 +4,7 @@
  * quitIf… helpers: never a blank page, always a reason and somewhere to go.
  */
 import type { GpuProblem } from '../gpu/device/device.ts';
+import { escapeControl } from '../mesh/text.ts';
 
 export type PageState = 'loading' | 'ready' | 'error' | 'no-webgpu' | 'lost';
 
@@ -33,11 +34,12 @@ export function showToast(message: string, options: ToastOptions = {}): HTMLElem
   toast.dataset.testid = `toast-${kind}`;
   if (options.title) {
     const h = document.createElement('strong');
-    h.textContent = options.title;
+    h.textContent = escapeControl(options.title, { newlines: false });
     toast.append(h);
   }
   const body = document.createElement('pre');
-  body.textContent = message;
+  // Messages quote file names and file text: their control characters and direction overrides shown, not applied.
+  body.textContent = escapeControl(message);
   toast.append(body);
   const close = document.createElement('button');
   close.className = 'close';

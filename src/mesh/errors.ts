@@ -19,3 +19,15 @@ export class CageError extends Error {
 export function formatIssue(i: CageIssue): string {
   return i.line > 0 ? `line ${i.line}: ${i.message}` : i.message;
 }
+
+/**
+ * Thrown for a valid input that is larger than what a build or a device takes (a face with more
+ * corners than a word holds, a vertex wider than a workgroup, a buffer over the device's binding
+ * limit). The message says what and by how much, in the model's terms, for the user to act on.
+ */
+export class LimitError extends Error {
+  constructor(message: string) {
+    super(message);
+    this.name = 'LimitError';
+  }
+}

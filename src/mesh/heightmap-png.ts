@@ -7,8 +7,9 @@
 // RGB with equal channels reads exactly and the GPU can read the same channel (.r) of any
 // texture format. Alpha is ignored. Bit depth: 16-bit PNGs stay 16-bit; 1, 2, 4 and 8-bit PNGs
 // become 8-bit (1/2/4-bit grey scaled exactly to 0..255, as the PNG spec's replication does).
+import { crc32, inflateSync } from 'node:zlib';
 import { PNG } from 'pngjs';
-import type { HeightMap } from './heightmap.ts';
+import { type HeightMap, MAX_HEIGHT_MAP_PIXELS } from './heightmap.ts';
 
 export class HeightMapError extends Error {
   constructor(message: string) {
@@ -25,6 +26,7 @@ export function decodeHeightPng(bytes: Uint8Array): HeightMap {
   if (bytes.length < 8 || PNG_SIGNATURE.some((b, i) => bytes[i] !== b)) {
     throw new HeightMapError(`height map: not a PNG file (${bytes.length < 8 ? `only ${bytes.length} bytes` : 'wrong signature'})`);
   }
+  checkPngLayout(bytes);
   let png: ReturnType<typeof PNG.sync.read>;
   try {
     // skipRescale keeps 16-bit samples as 16-bit (in a Uint16Array) instead of cutting them to 8.
@@ -43,6 +45,79 @@ export function decodeHeightPng(bytes: Uint8Array): HeightMap {
   const data = new Uint16Array(width * height);
   for (let p = 0; p < width * height; p++) data[p] = src[4 * p] * scale;
   return { width, height, data, bits };
+}
+
+function corrupt(reason: string): HeightMapError {
+  return new HeightMapError(`height map: corrupt, truncated or unsupported PNG (${reason})`);
+}
+
+/** Channels per pixel of each PNG colour type (3 is palette indices). */
+const CHANNELS: Record<number, number> = { 0: 1, 2: 3, 3: 1, 4: 2, 6: 4 };
+
+/**
+ * Check what the file declares against what it holds, before the decoder allocates for it: the
+ * size against MAX_HEIGHT_MAP_PIXELS (a 69-byte file can declare 16384² and cost gigabytes), every
+ * chunk inside the file, an IEND, and the inflated image data as long as the size needs (pngjs
+ * reads missing rows as zeros: a truncated map would be a silently flat one).
+ */
+function checkPngLayout(bytes: Uint8Array): void {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  let at = 8;
+  let header: { width: number; height: number; depth: number; colorType: number; interlace: number } | undefined;
+  const idat: Uint8Array[] = [];
+  let ended = false;
+  while (at + 8 <= bytes.length && !ended) {
+    const length = view.getUint32(at);
+    const type = String.fromCharCode(...bytes.subarray(at + 4, at + 8));
+    if (at + 12 + length > bytes.length) throw corrupt(`its ${type.replace(/[^A-Za-z]/g, '?')} chunk runs past the end of the file`);
+    const data = bytes.subarray(at + 8, at + 8 + length);
+    // A chunk whose CRC fails is not read (an IHDR's size least of all).
+    if (crc32(bytes.subarray(at + 4, at + 8 + length)) !== view.getUint32(at + 8 + length))
+      throw corrupt(`its ${type.replace(/[^A-Za-z]/g, '?')} chunk fails its CRC check`);
+    if (type === 'IHDR' && length >= 13) {
+      const d = new DataView(data.buffer, data.byteOffset, data.byteLength);
+      header = { width: d.getUint32(0), height: d.getUint32(4), depth: data[8], colorType: data[9], interlace: data[12] };
+      if (!(header.width > 0 && header.height > 0)) throw new HeightMapError(`height map: PNG has size ${header.width}x${header.height}`);
+      if (header.width * header.height > MAX_HEIGHT_MAP_PIXELS)
+        throw new HeightMapError(
+          `height map: the PNG declares ${header.width}x${header.height}, more than the ${MAX_HEIGHT_MAP_PIXELS} texels (8192x8192) taken`,
+        );
+    } else if (type === 'IDAT') idat.push(data);
+    else if (type === 'IEND') ended = true;
+    at += 12 + length;
+  }
+  if (!header) throw corrupt('no IHDR header chunk');
+  if (!ended) throw corrupt('no IEND chunk: the file is cut short');
+  const channels = CHANNELS[header.colorType];
+  if (channels === undefined) return; // the decoder names an unknown colour type
+  // Filtered scanlines: a filter byte and ceil(width·bits/8) bytes per row, per Adam7 pass if interlaced.
+  const rowBytes = (w: number) => (w > 0 ? 1 + Math.ceil((w * channels * header.depth) / 8) : 0);
+  let expected = 0;
+  if (header.interlace === 1) {
+    const passes = [
+      [0, 0, 8, 8],
+      [4, 0, 8, 8],
+      [0, 4, 4, 8],
+      [2, 0, 4, 4],
+      [0, 2, 2, 4],
+      [1, 0, 2, 2],
+      [0, 1, 1, 2],
+    ];
+    for (const [x0, y0, dx, dy] of passes) {
+      const w = Math.ceil((header.width - x0) / dx);
+      const h = Math.ceil((header.height - y0) / dy);
+      if (w > 0 && h > 0) expected += h * rowBytes(w);
+    }
+  } else expected = header.height * rowBytes(header.width);
+  let inflated: number;
+  try {
+    inflated = inflateSync(Buffer.concat(idat), { maxOutputLength: expected + 1, finishFlush: 2 /* Z_SYNC_FLUSH */ }).length;
+  } catch (e) {
+    if ((e as { code?: string }).code === 'ERR_BUFFER_TOO_LARGE') return; // more than needed: the decoder ignores the rest
+    throw corrupt(`its image data does not inflate: ${(e as Error)?.message ?? String(e)}`);
+  }
+  if (inflated < expected)
+    throw corrupt(`its image data holds ${inflated} of the ${expected} bytes a ${header.width}x${header.height} image needs`);
 }
 
 /** Encode a height map as a greyscale PNG of its own bit depth (deflate level 9, for small files). */

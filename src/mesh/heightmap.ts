@@ -16,6 +16,10 @@
 //   'repeat': index mod size (tiling maps, the default), 'clamp': clamped to [0, size − 1]
 //   (clamp-to-edge, for atlases).
 
+/** The largest height map taken, in texels (8192²: 128 MiB as 16-bit samples), by the page's
+ * decoder (src/app/displacement.ts) and the CLI's (src/mesh/heightmap-png.ts) alike. */
+export const MAX_HEIGHT_MAP_PIXELS = 8192 * 8192;
+
 export type HeightWrap = 'repeat' | 'clamp';
 
 /** One entry of public/models/displaced.json (written by scripts/models.ts): a project model, its

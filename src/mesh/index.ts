@@ -5,8 +5,11 @@ export * from './topology.ts';
 export * from './uv.ts';
 // Runtime-agnostic height maps; the Node PNG decoder (heightmap-png.ts, pngjs) is NOT re-exported, so the browser build never pulls it.
 export * from './heightmap.ts';
+export * from './range.ts';
+export * from './text.ts';
 import { CageError, type CageIssue } from './errors.ts';
 import { parseObj } from './obj.ts';
+import { coordinateIssues, faceSizeIssues, zeroAreaFaces } from './range.ts';
 import { buildTopology, type Topology } from './topology.ts';
 import type { Cage } from './types.ts';
 import { uvCoverage } from './uv.ts';
@@ -24,7 +27,15 @@ export interface LoadedCage {
 export function loadCage(text: string): LoadedCage {
   try {
     const { cage, warnings } = parseObj(text);
+    const range = [...faceSizeIssues(cage), ...coordinateIssues(cage)];
+    if (range.length) throw new CageError(range);
     const topology = buildTopology(cage);
+    const flat = zeroAreaFaces(cage);
+    if (flat.length)
+      warnings.push({
+        line: cage.faceLines[flat[0]] ?? 0,
+        message: `${flat.length === 1 ? 'face' : `${flat.length} faces (the first:`} ${flat[0] + 1}${flat.length === 1 ? ' has' : ') have'} zero area: their normals are undefined`,
+      });
     let unused = 0;
     for (let v = 0; v < topology.nVerts; v++) if (topology.vertHeOffsets[v + 1] === topology.vertHeOffsets[v]) unused++;
     if (unused) warnings.push({ line: 0, message: `${unused} vertices are not used by any face (ignored)` });

@@ -1,6 +1,7 @@
 // Wavefront OBJ reader/writer for subdivision cages, with OpenSubdiv's
 // regression-shape tag lines (`t crease 2/1/0 v0 v1 s`, 0-based indices).
 import { CageError, type CageIssue } from './errors.ts';
+import { escapeControl } from './text.ts';
 import {
   type Cage,
   type CornerTag,
@@ -68,8 +69,10 @@ function parseFloatTok(tok: string): number | string {
   return x;
 }
 
+/** A token quoted in a message: cut short, its control characters escaped (a file's bytes must not
+ * drive the terminal or the page that shows the message). */
 function clip(s: string): string {
-  return s.length > 24 ? s.slice(0, 21) + '...' : s;
+  return escapeControl(s.length > 24 ? s.slice(0, 21) + '...' : s, { newlines: false });
 }
 
 interface PendingFace {

@@ -2,6 +2,7 @@
  * The pattern CLI as a pure function (argv → stdout, stderr, exit code), so it is tested
  * without spawning processes. scripts/pattern-cli.ts is the thin Node wrapper.
  */
+import { escapeControl } from '../mesh/text.ts';
 import { toUnit } from './fixed.ts';
 import { MAX_FACTOR } from './max-factor.ts';
 import { line } from './line.ts';
@@ -26,6 +27,15 @@ triangle modes: ${TRI_MODES.join(', ')}
 --factors-file: one set per line, "f0,f1,f2[,inside][;r0,r1,r2]"; blank lines and # comments skipped.`;
 
 class UsageError extends Error {}
+
+/** The most output one run builds: the result is one string (V8 caps strings at 512 MiB). */
+export const MAX_OUTPUT_CHARS = 256 * 1024 * 1024;
+
+function tooMuch(what: string, chars: number): UsageError {
+  return new UsageError(
+    `${what}: the output would be up to about ${Math.round(chars / 1024 / 1024)} MiB, more than the ${MAX_OUTPUT_CHARS / 1024 / 1024} MiB one run writes: ask for less`,
+  );
+}
 
 interface Args {
   command: 'line' | 'tri';
@@ -158,6 +168,9 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
       positiveFactor(from, '--sweep');
       const n = Math.floor((to - from) / step + 1e-9);
       if (n > 1_000_000) throw new UsageError(`--sweep: ${n + 1} factors is too many (at most 1,000,001)`);
+      // From the counts before the work: no line is longer than the largest factor's, plus its factor.
+      const longest = JSON.stringify(lineJson(m, Math.min(to, maxFactor), maxFactor, fixed, true)).length + 24;
+      if ((n + 1) * longest > MAX_OUTPUT_CHARS) throw tooMuch('--sweep', (n + 1) * longest);
       const out: string[] = [];
       for (let i = 0; i <= n; i++) {
         const f = Number((from + i * step).toPrecision(12));
@@ -189,6 +202,7 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
       throw new UsageError(`--factors-file: cannot read '${String(file)}': ${(e as Error).message}`);
     }
     const out: string[] = [];
+    let chars = 0;
     text.split(/\r?\n/).forEach((raw, i) => {
       const lineText = raw.replace(/#.*/, '').trim();
       if (!lineText) return;
@@ -207,10 +221,13 @@ export function runPatternCli(argv: string[], readFile: (path: string) => string
       }
       const extra = { factors: f, ...(inside !== undefined ? { inside } : {}), ...(reverse ? { reverse: reverse.map(Number) } : {}) };
       out.push(JSON.stringify(triJson(p, fixed, extra))); // always JSON: one object per line
+      chars += out[out.length - 1].length + 1;
+      if (chars > MAX_OUTPUT_CHARS) throw tooMuch(`--factors-file ${String(file)} (at line ${i + 1})`, chars);
     });
     return { stdout: out.length ? out.join('\n') + '\n' : '', stderr: '', code: 0 };
   } catch (e) {
-    if (e instanceof UsageError) return { stdout: '', stderr: `pattern: ${e.message}\n${USAGE}\n`, code: 2 };
+    // Messages quote the user's files and arguments: their control characters are escaped.
+    if (e instanceof UsageError) return { stdout: '', stderr: `pattern: ${escapeControl(e.message)}\n${USAGE}\n`, code: 2 };
     throw e;
   }
 }

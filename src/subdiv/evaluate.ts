@@ -53,12 +53,19 @@ function normalize(n: [number, number, number]): { N: [number, number, number]; 
   return { N: [n[0] / l, n[1] / l, n[2] / l], ok: true };
 }
 
+/** Sub-face trees an n-gon's evaluator keeps: all of them while n·kept stays under this many
+ * (every n-gon of an ordinary model, so its evaluation order costs nothing), else a few: each tree
+ * holds the whole fan round the centre, so keeping all n of a large n-gon's costs memory ~ n². */
+const CACHED_ROOT_BUDGET = 4096;
+const MIN_CACHED_ROOTS = 8;
+
 /** Evaluation tree for one cage face (caches refined neighbourhoods). */
 export class FaceEvaluator {
   readonly size: number;
   readonly hole: boolean;
   private readonly base: Level;
   private roots: (Node | undefined)[] = [];
+  private cachedRoots = 0;
   private baseRefined: Level | null = null;
 
   constructor(L: Level, face: number) {
@@ -67,9 +74,21 @@ export class FaceEvaluator {
     this.hole = !!L.hole[face];
   }
 
+  /** Sub-face trees held now (an n-gon's memory stays linear in n: see CACHED_ROOT_BUDGET). */
+  get cachedSubFaces(): number {
+    return this.cachedRoots;
+  }
+
   private root(k: number): Node {
     let r = this.roots[k];
     if (!r) {
+      // Every sub-face's tree holds the n-gon's whole fan round its centre (valence n) at each
+      // depth, so keeping all n of them costs memory ~ n² (3.7 GB for a 1,500-gon's samples).
+      if (this.cachedRoots >= Math.max(MIN_CACHED_ROOTS, Math.floor(CACHED_ROOT_BUDGET / this.size))) {
+        this.roots = [];
+        this.cachedRoots = 0;
+      }
+      this.cachedRoots++;
       if (this.size === 4) r = makeNode(this.base);
       else {
         if (!this.baseRefined) this.baseRefined = refine(this.base);

@@ -16,14 +16,33 @@ export interface FaceSamples {
   sub: SubFaceSamples[];
 }
 
+/** What sampling every face at resolution N makes, from the counts alone: the samples in all, and
+ * in the largest face (an n-gon has n sub-faces), for a caller to bound its output first. */
+export function uniformSampleCount(S: Surface, N: number): { samples: number; largestFace: number } {
+  let samples = 0;
+  let largestFace = 0;
+  for (let f = 0; f < S.faceCount; f++) {
+    if (!S.hasLimitSurface(f)) continue;
+    const n = S.faceSize(f);
+    const face = (n === 4 ? 1 : n) * (N + 1) * (N + 1);
+    samples += face;
+    largestFace = Math.max(largestFace, face);
+  }
+  return { samples, largestFace };
+}
+
 /** Sample every face (every sub-face of non-quads) on an (N+1)^2 grid. */
 export function sampleUniform(S: Surface, N: number): { faces: FaceSamples[] } {
+  return { faces: [...uniformFaces(S, N)] };
+}
+
+/** The same, one face at a time: a caller can write each and let it go. */
+export function* uniformFaces(S: Surface, N: number): Generator<FaceSamples> {
   if (!(Number.isInteger(N) && N >= 1 && N <= 4096)) throw new RangeError(`resolution ${N} must be an integer in 1..4096`);
-  const faces: FaceSamples[] = [];
   for (let f = 0; f < S.faceCount; f++) {
     const n = S.faceSize(f);
     if (!S.hasLimitSurface(f)) {
-      faces.push({ f, n, hole: true, sub: [] });
+      yield { f, n, hole: true, sub: [] };
       continue;
     }
     const ev = S.faceEvaluator(f);
@@ -45,7 +64,6 @@ export function sampleUniform(S: Surface, N: number): { faces: FaceSamples[] } {
       }
       sub.push({ k, res: N, P, N: Nn });
     }
-    faces.push({ f, n, sub });
+    yield { f, n, sub };
   }
-  return { faces };
 }

@@ -120,6 +120,7 @@
  * src/gpu/cc/levels.ts (1: levels and point rules), src/gpu/cc/fans.ts (2: fans, vertex limits,
  * their packing), src/gpu/cc/regions.ts and src/gpu/cc/single-crease.ts (3: regions, tri words).
  */
+import { LimitError } from '../../mesh/errors.ts';
 import {
   type Cage,
   type SubdivOptions,
@@ -178,14 +179,23 @@ export interface CatmullClarkData {
 
 /**
  * A vertex's valence never changes under refinement, so one whose fan needs more threads than a
- * workgroup can never be a fan centre: say so now rather than "too many levels" later.
+ * workgroup can never be a fan centre: say so now rather than "too many levels" later. Faces too.
  */
 function refuseWideVertices(topo: Topology): void {
+  // A face's centre is a vertex of valence n after one step: an n-gon wider than a workgroup has
+  // a centre no fan can take, and its regions would refine to MAX_LEVEL and fail there, slowly.
+  for (let f = 0; f < topo.nFaces; f++) {
+    const n = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
+    if (n > WORKGROUP_SIZE)
+      throw new LimitError(
+        `face ${f + 1} has ${n} corners; the Catmull-Clark surface's GPU build takes faces of at most ${WORKGROUP_SIZE} (its centre becomes a vertex of valence ${n})`,
+      );
+  }
   for (let v = 0; v < topo.nVerts; v++) {
     const faces = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
     if (faces + (topo.vertBoundary[v] ? 1 : 0) > WORKGROUP_SIZE)
-      throw new Error(
-        `Catmull-Clark: vertex ${v + 1} has ${faces} faces, more than the ${WORKGROUP_SIZE} threads of a slice workgroup (not supported)`,
+      throw new LimitError(
+        `vertex ${v + 1} has ${faces} faces round it; the Catmull-Clark surface's GPU build takes at most ${WORKGROUP_SIZE - (topo.vertBoundary[v] ? 1 : 0)} (one workgroup's threads per vertex)`,
       );
   }
 }
@@ -198,7 +208,7 @@ function refuseWideVertices(topo: Topology): void {
  */
 export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: CatmullClarkOptions = {}): CatmullClarkData {
   const options: SubdivOptions = opts.subdiv ?? { ...DEFAULT_OPTIONS, ...cage.fileOptions };
-  if (options.creasing === 'chaikin') throw new Error('Chaikin creasing is not supported by the GPU path');
+  if (options.creasing === 'chaikin') throw new LimitError('Chaikin creasing is not supported by the GPU path');
   const topo = buildTopology(cage);
   const sharp = computeSharpness(cage, topo, options);
   const cls = classify(topo, sharp);

@@ -4,6 +4,7 @@
  * and the per-level caches of which vertices are regular. Topology only: the GPU makes the points
  * from these rules (wgsl/cc/build.wgsl).
  */
+import { LimitError } from '../../mesh/errors.ts';
 import { type HalfEdges, type Sharpness, SHARPNESS_INFINITE, isRegularVertex, vertexAdjacency } from '../../mesh/index.ts';
 import { CC_PAIR_WORD, CC_RULE_WORD } from './words.ts';
 import { U32, f32bits } from './word-list.ts';
@@ -119,7 +120,8 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
     }
     // The rule word's count and faces fields (CC_RULE_WORD) bound the valence this build takes.
     const most = Math.min(2 ** CC_RULE_WORD.fields.count[1], 2 ** CC_RULE_WORD.fields.faces[1]) - 1;
-    if (e1 - e0 > most || h1 - h0 > most) throw new Error(`vertex of valence ${e1 - e0} is not supported (at most ${most})`);
+    if (e1 - e0 > most || h1 - h0 > most)
+      throw new LimitError(`a vertex of valence ${e1 - e0} is not supported by the Catmull-Clark build (at most ${most})`);
     rules.push(CC_RULE_WORD.pack({ kind: RULE_VERTEX, parent: pr, child: cr, sharp: 0, count: e1 - e0, faces: h1 - h0 }));
     rules.push(first);
     // A sharp vertex (either rule not smooth) carries its crease pair and W after its inputs.
@@ -150,6 +152,10 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   for (let f = 0; f < nF; f++) {
     const a = m.faceOffsets[f],
       b = m.faceOffsets[f + 1];
+    if (b - a >= 2 ** CC_RULE_WORD.fields.count[1])
+      throw new LimitError(
+        `a face of ${b - a} corners is not supported by the Catmull-Clark build (at most ${2 ** CC_RULE_WORD.fields.count[1] - 1})`,
+      );
     rules.push(CC_RULE_WORD.pack({ kind: RULE_FACE, parent: 0, child: 0, sharp: 0, count: b - a, faces: 0 }));
     rules.push(inputs.n);
     for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
@@ -289,7 +295,7 @@ export function levelStack(topo: HalfEdges, sharp: Sharpness): LevelStack {
   };
   const level = (l: number): Level => {
     if (l > MAX_LEVEL)
-      throw new Error(
+      throw new LimitError(
         `Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (semi-sharp creases decay one level per unit of ` +
           `sharpness; this cage has sharpness up to ${+maxSemiSharp().toPrecision(3)}: not supported)`,
       );

@@ -44,6 +44,7 @@
  *   surface-cc.ts         the exact Catmull-Clark surface through a lending compute Tessellator
  *   displace-vertex.ts    displacement in the vertex function, from a lender's arenas
  */
+import { LimitError } from '../../mesh/errors.ts';
 import drawWgsl from '../../../wgsl/instanced/draw.wgsl?raw';
 import frameWgsl from '../../../wgsl/instanced/frame.wgsl?raw';
 import headlessWgsl from '../../../wgsl/instanced/headless.wgsl?raw';
@@ -349,7 +350,7 @@ export class InstancedTessellator extends InstancedLevels implements SurfaceDraw
     const limit = device.limits.maxStorageBufferBindingSize;
     const words = 9 * nv + 3 * nt;
     if (4 * words > limit) {
-      throw new Error(
+      throw new LimitError(
         `the headless output (${nv} vertices, ${nt} triangles) exceeds the device's storage binding limit (${limit} bytes): lower the levels`,
       );
     }

@@ -11,7 +11,8 @@ import type { DisplacementData } from './displacement-map.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { CC_NO_WORDS, CC_STATIC } from '../contract/cc.ts';
 import { TESS_CAGE, type TESS_PARAMS, TESS_STATIC, TESS_WORK, type TessSizes } from '../contract/tess.ts';
-import type { PreparedMesh } from './prepare.ts';
+import { fannedRoundCentre, type PreparedMesh } from './prepare.ts';
+import type { Cage } from '../../mesh/types.ts';
 
 export type WorkName = (typeof TESS_WORK.names)[number];
 export type CageName = (typeof TESS_CAGE.names)[number];
@@ -151,4 +152,40 @@ function packArena<K extends string, T extends Uint32Array | Float32Array>(
     into.set(src, layout.offset[k]);
   }
   return into;
+}
+
+/**
+ * A lower bound of the work arena's bytes for a cage, from its face sizes alone: the triangles
+ * prepare.ts cuts its faces into (holes left out, though they may count) and 3/2 edges a triangle
+ * (an edge borders at most two). A caller compares it with the device's binding limit before the
+ * CPU preparation, which for a cage of a million quads takes most of a minute and gigabytes before
+ * the exact size is known.
+ */
+export function workBytesAtLeast(cage: Cage, maxFactor: number): number {
+  const holes = new Set(cage.holes);
+  let triangles = 0;
+  for (let f = 0; f < cage.faceOffsets.length - 1; f++) {
+    if (holes.has(f)) continue;
+    const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+    triangles += fannedRoundCentre(n) ? n : n - 2;
+  }
+  const sizes: TessSizes = {
+    vertices: 0,
+    extraSlots: 0,
+    edges: Math.ceil((3 * triangles) / 2),
+    triangles,
+    maxFactor,
+    tableWords: 0,
+    ccWords: 0,
+    ccPoints: 0,
+    limitVertices: 0,
+    accTriangles: 0,
+    accPatchWords: 0,
+    accPoints: 0,
+    heightWords: 0,
+    dispTriangles: 0,
+    dispEdges: 0,
+    cornerUvs: 0,
+  };
+  return 4 * TESS_WORK.layout(sizes).words;
 }

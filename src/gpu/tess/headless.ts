@@ -111,6 +111,38 @@ export async function tessellateOnce(
   }
 }
 
+/**
+ * The output without the vertices no triangle uses (a cage's unused vertices go through the
+ * pipeline, numbered as in the cage), for writing: the result, and the output vertices it keeps in
+ * order (null when it keeps all). A caller filters per-vertex data (vertexParams) by `kept`.
+ */
+export function withoutUnusedVertices(r: HeadlessResult): { r: HeadlessResult; kept: Uint32Array | null } {
+  const { out } = r;
+  const used = new Uint8Array(out.vertexCount);
+  for (let i = 0; i < 3 * out.triangleCount; i++) used[out.indices[i]] = 1;
+  let n = 0;
+  for (const u of used) n += u;
+  if (n === out.vertexCount) return { r, kept: null };
+  const kept = new Uint32Array(n);
+  const renumber = new Uint32Array(out.vertexCount);
+  const positions = new Float32Array(3 * n);
+  const normals = new Float32Array(3 * n);
+  const bary = new Uint32Array(n);
+  const srcTri = new Uint32Array(n);
+  for (let v = 0, k = 0; v < out.vertexCount; v++) {
+    if (!used[v]) continue;
+    kept[k] = v;
+    renumber[v] = k;
+    positions.set(out.positions.subarray(3 * v, 3 * v + 3), 3 * k);
+    normals.set(out.normals.subarray(3 * v, 3 * v + 3), 3 * k);
+    bary[k] = out.bary[v];
+    srcTri[k] = out.srcTri[v];
+    k++;
+  }
+  const indices = out.indices.slice(0, 3 * out.triangleCount).map((v) => renumber[v]);
+  return { r: { ...r, out: { ...out, vertexCount: n, positions, normals, bary, srcTri, indices } }, kept };
+}
+
 /** Float barycentric weights of output vertex v on its source triangle. */
 export function vertexWeights(out: MeshReadback, v: number): [number, number, number] {
   const [w0, w1, w2] = decodeBary(out.bary[v]);

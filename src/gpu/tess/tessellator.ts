@@ -39,6 +39,7 @@
  * and the Params fields of a mesh are packed by src/gpu/tess/arenas.ts. This file uploads a mesh
  * (setMesh: validate, pack, bind) and records the passes (encode).
  */
+import { LimitError } from '../../mesh/errors.ts';
 import type { CatmullClarkData } from '../cc/build.ts';
 import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
@@ -223,8 +224,8 @@ export class Tessellator {
     const packed = packArenas(input);
     const { staticWords, cageLayout, cageWords, workLayout } = packed;
     if (4 * workLayout.words > this.device.limits.maxStorageBufferBindingSize) {
-      throw new Error(
-        `the cage is too large: its scratch buffer (${4 * workLayout.words} bytes) exceeds the device's storage binding limit`,
+      throw new LimitError(
+        `the cage is too large for this GPU: its scratch buffer (${4 * workLayout.words} bytes) exceeds the device's storage binding limit (${this.device.limits.maxStorageBufferBindingSize} bytes)`,
       );
     }
     TESS_PARAMS.write(new DataView(this.paramsBytes), meshParams(input, packed, this.output));
@@ -323,7 +324,7 @@ export class Tessellator {
   /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */
   private validate(prepared: PreparedMesh, cc?: CatmullClarkData, acc?: AccSurface): CatmullClarkData | undefined {
     const scheme = surfaceScheme(this.surface);
-    if (prepared.triangleCount === 0) throw new Error('the mesh has no faces to tessellate');
+    if (prepared.triangleCount === 0) throw new LimitError('the model has no faces to tessellate (every face is a hole)');
     if (scheme.patchBuild === 'refinement' && !cc)
       throw new Error(`the ${scheme.name} surface needs the tables of buildCatmullClark(cage, prepared)`);
     if (scheme.patchBuild === 'acc-patches') {
