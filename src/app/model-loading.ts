@@ -7,6 +7,7 @@
 import { uvCoverage } from '../mesh/index.ts';
 import type { Cage } from '../mesh/types.ts';
 import { builtinHeight, decodeHeightImage, defaultHeightScale, fetchBuiltinHeight, type HeightEntry } from './displacement.ts';
+import { checkFileSize, MAX_HEIGHT_MAP_FILE_BYTES } from './file-size.ts';
 import { loadModelFromUrl, modelUrl, type LoadedModel } from './models.ts';
 import { showToast } from './ui.ts';
 
@@ -26,8 +27,9 @@ export async function fetchBuiltinModel(name: string, heights: WeakMap<Cage, Hei
 }
 
 /** `file` decoded as a height map for `model`, which needs uvs on every face corner; throws an
- * Error whose message says why it cannot be used. */
+ * Error whose message says why it cannot be used (a file over the size cap is not read). */
 export async function readHeightMap(file: Blob & { name: string }, model: LoadedModel): Promise<HeightEntry['height']['map']> {
+  checkFileSize(file, MAX_HEIGHT_MAP_FILE_BYTES, 'height maps');
   if (uvCoverage(model.cage) !== 'complete')
     throw new Error(`${model.title} has no texture coordinates on every face corner (OBJ vt and f v/vt): a height map needs them.`);
   return decodeHeightImage(file, file.name);

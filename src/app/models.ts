@@ -6,6 +6,7 @@
  */
 import { decodeText, loadCage, type LoadedCage } from '../mesh/index.ts';
 import { errorMessage } from './controller.ts';
+import { checkFileSize, MAX_MODEL_FILE_BYTES } from './file-size.ts';
 
 export interface ModelEntry {
   /** File name without `.obj`: what `?model=` takes. */
@@ -60,7 +61,9 @@ export async function loadModelFromUrl(url: string, title: string): Promise<Load
   return drawable({ ...loadCage(text), title });
 }
 
+/** A user's OBJ file: refused from its size before it is read (src/app/file-size.ts). */
 export async function loadModelFromFile(file: File): Promise<LoadedModel> {
+  checkFileSize(file, MAX_MODEL_FILE_BYTES, 'model files');
   const text = decodeText(new Uint8Array(await file.arrayBuffer()));
   return drawable({ ...loadCage(text), title: file.name });
 }

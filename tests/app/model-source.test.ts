@@ -1,6 +1,7 @@
 // The page's ?model= policy and its notes for adjusted URL numbers, without a browser.
 import { describe, expect, it } from 'vitest';
 import { modelSource } from '../../src/app/model-source.ts';
+import { checkFileSize, MAX_HEIGHT_MAP_FILE_BYTES, MAX_MODEL_FILE_BYTES } from '../../src/app/file-size.ts';
 import { loadModelFromFile } from '../../src/app/models.ts';
 import { paramNotes, parseParams } from '../../src/app/params.ts';
 
@@ -69,5 +70,25 @@ describe("the page's loader (a dropped file)", () => {
     await expect(loadModelFromFile(new File([`${CUBE}t hole 6/0/0 0 1 2 3 4 5\n`], 'holes.obj'))).rejects.toThrow(
       /every face of the model is a hole/,
     );
+  });
+});
+
+describe('a file over the size cap is refused before it is read', () => {
+  it('checks File.size only: at the cap taken, one byte over refused with both sizes', () => {
+    expect(() => checkFileSize({ name: 'a.obj', size: MAX_MODEL_FILE_BYTES }, MAX_MODEL_FILE_BYTES, 'model files')).not.toThrow();
+    expect(() => checkFileSize({ name: 'a.obj', size: MAX_MODEL_FILE_BYTES + 1 }, MAX_MODEL_FILE_BYTES, 'model files')).toThrow(
+      'a.obj is 256.0 MiB: the page reads model files of up to 256.0 MiB, so it was not opened.',
+    );
+    expect(() => checkFileSize({ name: 'h.png', size: 3 * 2 ** 30 }, MAX_HEIGHT_MAP_FILE_BYTES, 'height maps')).toThrow(
+      /h\.png is 3072\.0 MiB: the page reads height maps of up to 256\.0 MiB/,
+    );
+  });
+
+  it("the page's loader refuses a 3 GiB file without asking for its bytes", async () => {
+    const read = () => {
+      throw new Error('the file was read');
+    };
+    const huge = { name: 'huge.obj', size: 3 * 2 ** 30, arrayBuffer: read, text: read, stream: read } as unknown as File;
+    await expect(loadModelFromFile(huge)).rejects.toThrow(/huge\.obj is 3072\.0 MiB: the page reads model files of up to/);
   });
 });
