@@ -2,7 +2,8 @@
 // (huge, tiny and non-finite numbers, huge faces and valences, truncation, binary noise, UTF-16,
 // terminal escapes, hostile arguments). Every run must end done or refused as bad input (exit 0 or
 // 2, a message, no trace, no raw control byte) within a time bound, and what subdiv writes must be
-// finite. Deterministic: one seed, a fixed number of cases.
+// finite, and no case may raise the process's peak memory by more than a budget (CASE_PEAK_MIB).
+// Deterministic: one seed, a fixed number of cases.
 import { describe, expect, it } from 'vitest';
 import { decodeHeightPng, encodeHeightPng, HeightMapError } from '../../src/mesh/heightmap-png.ts';
 import { heightMapFromFunction } from '../../src/mesh/index.ts';
@@ -13,6 +14,25 @@ const SEED = Number(process.env.TESSELLAB_FUZZ_SEED ?? 0x7e55e1a);
 const CASES = Number(process.env.TESSELLAB_FUZZ_CASES ?? 150);
 /** The slowest run allowed (a fuzz case is small: this is a hang detector, not a benchmark). */
 const RUN_MS = 8000;
+/**
+ * Memory: a sync run cannot be sampled while it runs, and the heap's size after it depends on
+ * when the GC ran, so a case is measured by its peak: the process's high-water resident size
+ * (process.resourceUsage().maxRSS, which only rises) before and after it. A case that allocated
+ * more than the peak so far raises it by about that much, garbage or not; one that stays under the
+ * peak raises nothing. The largest rise on the fixed seed is ~20 MiB (a valence-90 vertex), and
+ * the issue's failures were gigabytes (a 16384² PNG: 2.4 GB; a 10,000-gon in subdiv: past 6 GB),
+ * so 256 MiB a case leaves GC timing and allocator noise a wide margin and still catches them.
+ * The whole file's peak, from the test's start, is held under 1 GiB (the issue's 2 GB per run
+ * halved): a leak across cases shows there. Vitest's default pool runs a test file in its own
+ * process, so other files' memory is not counted.
+ */
+const CASE_PEAK_MIB = 256;
+const FILE_PEAK_MIB = 1024;
+
+/** MiB the process's peak resident size has risen since `peakKiB` (a maxRSS reading). */
+function peakGrowthMiB(peakKiB: number): number {
+  return (process.resourceUsage().maxRSS - peakKiB) / 1024;
+}
 
 /** mulberry32: small, seedable, good enough to pick mutations. */
 function rng(seed: number): () => number {
@@ -221,6 +241,7 @@ describe(`hostile input, seeded (seed ${SEED.toString(16)}, ${CASES} cases)`, ()
     const dir = tempDir();
     const out = `${dir}/out.obj`;
     const tally = { done: 0, refused: 0 };
+    const filePeak0 = process.resourceUsage().maxRSS;
     for (let c = 0; c < CASES; c++) {
       let text = pick(r, SEEDS);
       const applied: string[] = [];
@@ -237,6 +258,7 @@ describe(`hostile input, seeded (seed ${SEED.toString(16)}, ${CASES} cases)`, ()
         pick(r, ['0 0.5 0.5\n', '0 0 0.5 0.5\n', '1e308 0 0\n', 'NaN 0 0\n', '0 2 0.5\n', '\u001b[2J\n']),
       );
       const what = `case ${c} (${applied.join(', ')})`;
+      const peak0 = process.resourceUsage().maxRSS;
       const runs: Run[] = [await tessellateCpu(...tessellateArgs(model, out, map, r)), subdiv(...subdivArgs(model, points, r))];
       for (const run of runs) {
         assertHandled(run, what);
@@ -244,8 +266,10 @@ describe(`hostile input, seeded (seed ${SEED.toString(16)}, ${CASES} cases)`, ()
         assertFiniteJson(run, what);
         tally[run.code === 0 ? 'done' : 'refused']++;
       }
+      expect(peakGrowthMiB(peak0), `${what}: MiB the process's peak memory rose by`).toBeLessThan(CASE_PEAK_MIB);
     }
-    if (process.env.TESSELLAB_FUZZ_SEED) console.log(tally);
+    expect(peakGrowthMiB(filePeak0), "MiB the process's peak memory rose by over all cases").toBeLessThan(FILE_PEAK_MIB);
+    if (process.env.TESSELLAB_FUZZ_SEED) console.log(tally, `peak memory +${peakGrowthMiB(filePeak0).toFixed(0)} MiB`);
     // The corpus must exercise both outcomes, or the mutations have stopped reaching the work.
     expect(tally.done).toBeGreaterThan(CASES / 4);
     expect(tally.refused).toBeGreaterThan(CASES / 4);
@@ -263,17 +287,21 @@ describe(`hostile input, seeded (seed ${SEED.toString(16)}, ${CASES} cases)`, ()
         ['tri', '--mode', 'clamped', '--factors-file', put(dir, `f${c}.txt`, `${n()},${n()},${n()};${n()},0,1\n\u001b[2J\n`)],
         ['line', '--mode', 'hable', '--factor', '3', '--max-factor', n()],
       ]);
+      const peak0 = process.resourceUsage().maxRSS;
       const run = pattern(...argv);
       assertHandled(run, argv.join(' '));
       expect(run.ms).toBeLessThan(RUN_MS);
+      expect(peakGrowthMiB(peak0), argv.join(' ')).toBeLessThan(CASE_PEAK_MIB);
     }
     for (let c = 0; c < 200; c++) {
+      const peak0 = process.resourceUsage().maxRSS;
       try {
         const map = decodeHeightPng(hostilePng(r));
         expect(map.width * map.height).toBe(map.data.length);
       } catch (e) {
         expect(e).toBeInstanceOf(HeightMapError);
       }
+      expect(peakGrowthMiB(peak0), `PNG ${c}`).toBeLessThan(CASE_PEAK_MIB);
     }
   });
 });
