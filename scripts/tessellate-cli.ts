@@ -58,7 +58,7 @@ import { buildCatmullClark, type CatmullClarkData } from '../src/gpu/cc/build.ts
 import { faceCount, type Cage } from '../src/mesh/index.ts';
 import { tessellateInstanced, InstancedTessellator } from '../src/gpu/instanced/instanced.ts';
 import { factorRuleLevels, type LevelParams } from '../src/gpu/instanced/instanced-options.ts';
-import { prepareInstanced } from '../src/gpu/instanced/prepare-patches.ts';
+import { prepareInstanced, refuseInstancedOverLimit } from '../src/gpu/instanced/prepare-patches.ts';
 import { weldInstanced, weldedToObj, weldedVertexParams } from '../src/gpu/instanced/headless-output.ts';
 import { AccPatches } from '../src/gpu/acc/patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
@@ -253,6 +253,13 @@ function writeParams(path: string, p: ReturnType<typeof vertexParams>): void {
 
 /** `--tessellator instanced`: levels, the draw's vertex function in compute, the weld. */
 async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, args: TessellateArgs): Promise<number> {
+  // From the face sizes (and --level), before the preparation, as runCompute does: a cage whose
+  // patch records, level lists or static-level output exceed the binding limit is refused now.
+  try {
+    refuseInstancedOverLimit(cage, device.limits.maxStorageBufferBindingSize, args.level);
+  } catch (e) {
+    throw modelError(args.model, e);
+  }
   const mesh = prepareMesh(cage);
   const started = performance.now();
   const im = prepareInstanced(cage, mesh);

@@ -2,12 +2,14 @@
  * The instanced tessellator's CPU preparation of a cage: its patches (a quad face one quad patch,
  * any other face its prepared triangles as triangle patches), their edges and each edge's owner
  * (InstancedMesh, prepareInstanced), and the readers of a patch record (domain, edges, which
- * sides run canonically).
+ * sides run canonically), and the check of a cage's buffers against a device's binding limit from
+ * its face sizes, before any of that preparation (instancedBytesAtLeast, refuseInstancedOverLimit).
  */
-import { INST_OWNER_WORD, PATCH_WORDS } from './buffer-layouts.ts';
-import type { PreparedMesh } from '../tess/prepare.ts';
+import { INST_OWNER_WORD, INST_STATIC, INST_WORK, PATCH_WORDS } from './buffer-layouts.ts';
+import { fannedRoundCentre, type PreparedMesh } from '../tess/prepare.ts';
+import { LimitError } from '../../mesh/errors.ts';
 import type { Cage } from '../../mesh/types.ts';
-import type { PatchDomain } from '../../pattern/pow2.ts';
+import { packPatterns, patternTriangleCount, patternVertexCount, type PatchDomain } from '../../pattern/pow2.ts';
 
 export interface InstancedMesh {
   prepared: PreparedMesh;
@@ -98,4 +100,75 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
     edgeVerts: Uint32Array.from(edgeVerts),
     edgeOwner: Uint32Array.from(edgeOwner),
   };
+}
+
+/** Lower bounds, in bytes, of the instanced tessellator's buffers that grow with a cage. */
+export interface InstancedBytes {
+  /** staticBuf: the prepared triangles, the patch records, the edge owners, the patterns. */
+  static: number;
+  /** The work buffer: per patch its levels and a place in every level's list, per edge a code. */
+  work: number;
+  /** The headless output at a static level (9 words a vertex, 3 a triangle), 0 without a level. */
+  output: number;
+}
+
+/**
+ * Lower bounds of the instanced tessellator's buffers for `cage`, from its face sizes alone: a
+ * quad is one patch (two prepared triangles), any other face its prepared triangles (n − 2, or n
+ * round a centre), each a triangle patch; a patch has 3 or 4 edges and an edge borders at most two
+ * patches. `level` (the CLI's --level, a power of two) gives every patch that pattern, so the
+ * headless output is known too. Computed before prepareMesh and prepareInstanced, which for
+ * millions of faces take most of a minute and gigabytes before the exact sizes are known.
+ */
+export function instancedBytesAtLeast(cage: Cage, level?: number): InstancedBytes {
+  const holes = new Set(cage.holes);
+  let quads = 0,
+    tris = 0,
+    triangles = 0;
+  for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
+    const n = cage.faceOffsets[f + 1] - cage.faceOffsets[f];
+    if (holes.has(f) || n < 3) continue;
+    const cut = fannedRoundCentre(n) ? n : n - 2;
+    triangles += cut;
+    if (n === 4) quads++;
+    else tris += cut;
+  }
+  const patches = quads + tris;
+  const edges = Math.ceil((4 * quads + 3 * tris) / 2);
+  const patterns = packPatterns();
+  const staticWords = INST_STATIC.layout({
+    triangles,
+    patches,
+    edges,
+    patternIJWords: patterns.ij.length,
+    patternIndices: patterns.indices.length,
+  }).words;
+  const workWords = INST_WORK.layout({ patches, edges }).words;
+  let outputWords = 0;
+  if (level !== undefined)
+    for (const [domain, count] of [
+      ['quad', quads],
+      ['tri', tris],
+    ] as [PatchDomain, number][])
+      outputWords += count * (9 * patternVertexCount(domain, level) + 3 * patternTriangleCount(domain, level));
+  return { static: 4 * staticWords, work: 4 * workWords, output: 4 * outputWords };
+}
+
+const mib = (bytes: number) => `${(bytes / 1024 / 1024).toFixed(1)} MiB`;
+
+/** Throws a LimitError when one of the instanced tessellator's buffers for `cage` (at `level`,
+ * when static) would exceed `bindingLimit` (the device's maxStorageBufferBindingSize): every one
+ * is bound whole, so such a cage cannot be drawn on this device at all. Cheap: face sizes only. */
+export function refuseInstancedOverLimit(cage: Cage, bindingLimit: number, level?: number): void {
+  const least = instancedBytesAtLeast(cage, level);
+  const faces = cage.faceOffsets.length - 1;
+  const over = (bytes: number, what: string, todo: string) => {
+    if (bytes > bindingLimit)
+      throw new LimitError(
+        `${faces} faces need at least ${mib(bytes)} for the instanced tessellator's ${what}, more than this device's ${mib(bindingLimit)} binding limit: ${todo}`,
+      );
+  };
+  over(least.static, 'patch records', 'the cage is too large for this GPU');
+  over(least.work, 'level lists', 'the cage is too large for this GPU');
+  over(least.output, `output at --level ${level}`, 'lower --level');
 }
