@@ -245,6 +245,35 @@ test('?model= takes a URL', async ({ page }) => {
   await expect(picked(page)).toHaveText('gear.obj');
 });
 
+test('hostile input: an outside ?model= link is not fetched; an opened cube beyond 32-bit floats is refused', async ({ page }) => {
+  // One page load for both (each load waits for the creature's first frame on SwiftShader).
+  test.setTimeout(120_000);
+  const outside = 'http://example.com/x.obj';
+  const requests: string[] = [];
+  page.on('request', (r) => requests.push(r.url()));
+  await page.goto(`/?model=${encodeURIComponent(outside)}&cap=1e9&t=0`);
+  // The note is shown before the first model loads and goes after 10 s: checked first.
+  await expect(page.getByRole('status').filter({ hasText: 'Link parameters adjusted' })).toContainText('cap=1e9 is outside');
+  const refusal = page.getByTestId('toast-error');
+  await expect(refusal).toContainText('Model link not loaded');
+  await expect(refusal).toContainText('another site (http://example.com)');
+  await ready(page);
+  await expect(page.getByTestId('stats-cage')).toContainText('creature');
+  expect(requests.filter((u) => new URL(u).hostname === 'example.com')).toEqual([]);
+
+  // The panel's "open an OBJ file…" (its file input), with a cube at 1e39: the loader's line, the model kept.
+  const huge =
+    'v -1e39 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n' +
+    'f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n';
+  const chooser = page.waitForEvent('filechooser');
+  await page.getByText('open an OBJ file…').click();
+  await (await chooser).setFiles({ name: 'huge.obj', mimeType: 'text/plain', buffer: Buffer.from(huge) });
+  await expect(refusal).toContainText('Could not load huge.obj');
+  await expect(refusal).toContainText('line 1: vertex 1: coordinate -1e+39 is beyond');
+  await expect(refusal).toContainText('Still showing creature');
+  await expect(page.getByTestId('stats-cage')).toContainText('creature');
+});
+
 test('recovers from a lost device', async ({ page }) => {
   const errors = collectErrors(page);
   await page.goto('/?model=torus&t=0');
