@@ -50,7 +50,7 @@ import { workBytesAtLeast } from '../src/gpu/tess/arenas.ts';
 import { MAX_FACTOR } from '../src/gpu/contract/constants.ts';
 import { EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_OK, guarded, InputError, isInputError } from '../src/cli/boundary.ts';
 import { writeOutput } from '../src/cli/files.ts';
-import { loadInput, type TessellateArgs, USAGE, UsageError } from './tessellate-input.ts';
+import { loadInput, refuseNonFiniteOutput, type TessellateArgs, USAGE, UsageError } from './tessellate-input.ts';
 import { createNodeDevice, SWIFTSHADER_ICD } from '../src/gpu/device/node-device.ts';
 import { tessellateOnce, meshToObj, vertexParams, paramsToText, headlessCamera, withoutUnusedVertices } from '../src/gpu/tess/headless.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
@@ -156,11 +156,7 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
   if (args.demoView) Object.assign(args.o, demoView(mesh));
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
   // Checked before anything is written or counted (--stats too): a NaN is not an output.
-  const nonFinite = r.out.positions.subarray(0, 3 * r.out.vertexCount).findIndex((x) => !Number.isFinite(x));
-  if (nonFinite >= 0)
-    throw new InputError(
-      `${args.model}: output vertex ${Math.floor(nonFinite / 3) + 1} is not finite: nothing written (the model, --scale or the camera is beyond 32-bit floats)`,
-    );
+  refuseNonFiniteOutput(args.model, r.out.positions, r.out.vertexCount);
   // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
   const cam = args.limitPx ? headlessCamera(mesh, args.o) : undefined;
   const limit = cam ? limitDistancePx(cage, mesh, r.out, cam) : undefined;
@@ -317,6 +313,9 @@ async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, 
   lender?.destroy();
   const surfaceName = args.acc ?? (cc ? 'catmull-clark' : 'phong');
   const w = weldInstanced(im, r.out);
+  // Checked before anything is written or counted (--stats too), as runCompute does. The cage's
+  // unused vertices need no dropping here: the weld's vertices all come from patches.
+  refuseNonFiniteOutput(args.model, w.positions, w.vertexCount);
   const what =
     (args.level !== undefined ? `level ${args.level}` : `adaptive (lod ${args.o.lodScale ?? 1})`) +
     (d ? `, displaced (scale ${d.scale}, mid ${d.midLevel}, ${d.wrap})` : '');

@@ -224,3 +224,14 @@ export function loadInput(argv: string[]): TessellateInput {
   }
   return { args, cage, warnings };
 }
+
+/** Throws an InputError naming the first output vertex (1-based) with a NaN or an infinity among
+ * the first `vertexCount` of `positions` (xyz each): both tessellators check their output with it
+ * before anything is written or counted (--stats too), so a NaN is never an output. */
+export function refuseNonFiniteOutput(model: string, positions: ArrayLike<number>, vertexCount: number): void {
+  for (let i = 0; i < 3 * vertexCount; i++)
+    if (!Number.isFinite(positions[i]))
+      throw new InputError(
+        `${model}: output vertex ${Math.floor(i / 3) + 1} is not finite: nothing written (the model, --scale or the camera is beyond 32-bit floats)`,
+      );
+}

@@ -6,6 +6,7 @@ import { describeFailure } from '../../src/cli/boundary.ts';
 import { decodeHeightPng, encodeHeightPng, HeightMapError } from '../../src/mesh/heightmap-png.ts';
 import { CageError, decodeText, escapeControl, heightMapFromFunction, loadCage, MAX_FACE_CORNERS } from '../../src/mesh/index.ts';
 import { Surface } from '../../src/subdiv/index.ts';
+import { refuseNonFiniteOutput } from '../../scripts/tessellate-input.ts';
 import { assertHandled, pattern, put, subdiv, tempDir, tessellateCpu } from '../support/hostile-cli.ts';
 
 const dir = tempDir();
@@ -156,6 +157,19 @@ describe('tessellate: refused before the GPU, in words, exit 2', () => {
     expect(r.err).toMatch(/line 19: face 7 has zero area/);
     expect(r.err).toMatch(/1 vertices are not used by any face/);
     expect(r.err).toMatch(/--eye and --target are the same point/);
+  });
+
+  it("an output with a NaN or an infinity is refused by both tessellators' check, naming its vertex", () => {
+    const positions = new Float32Array([0, 1, 2, 3, 4, 5, 6, Number.NaN, 8, 9, Number.POSITIVE_INFINITY, 11]);
+    expect(() => refuseNonFiniteOutput('m.obj', positions, 2)).not.toThrow();
+    let refusal: unknown;
+    try {
+      refuseNonFiniteOutput('m.obj', positions, 4);
+    } catch (e) {
+      refusal = e;
+    }
+    expect((refusal as Error).message).toMatch(/^m\.obj: output vertex 3 is not finite: nothing written/);
+    expect(describeFailure('tessellate', refusal, false).code).toBe(2);
   });
 });
 
