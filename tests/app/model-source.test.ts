@@ -2,6 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { modelSource } from '../../src/app/model-source.ts';
 import { checkFileSize, MAX_HEIGHT_MAP_FILE_BYTES, MAX_MODEL_FILE_BYTES } from '../../src/app/file-size.ts';
+import { readHeightMap } from '../../src/app/model-loading.ts';
 import { loadModelFromFile } from '../../src/app/models.ts';
 import { paramNotes, parseParams } from '../../src/app/params.ts';
 
@@ -90,5 +91,16 @@ describe('a file over the size cap is refused before it is read', () => {
     };
     const huge = { name: 'huge.obj', size: 3 * 2 ** 30, arrayBuffer: read, text: read, stream: read } as unknown as File;
     await expect(loadModelFromFile(huge)).rejects.toThrow(/huge\.obj is 3072\.0 MiB: the page reads model files of up to/);
+  });
+
+  it('a height map too: refused from its size on a model with uvs, before the image is decoded', async () => {
+    const quad = await loadModelFromFile(
+      new File(['v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n'], 'quad.obj'),
+    );
+    const read = () => {
+      throw new Error('the file was read');
+    };
+    const huge = { name: 'huge.png', size: 2 ** 30, arrayBuffer: read, text: read, stream: read, slice: read } as unknown as File;
+    await expect(readHeightMap(huge, quad)).rejects.toThrow(/huge\.png is 1024\.0 MiB: the page reads height maps of up to 256\.0 MiB/);
   });
 });
