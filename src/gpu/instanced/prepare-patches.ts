@@ -102,6 +102,9 @@ export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedM
   };
 }
 
+/** The packed patterns' sizes in words (the same for every cage): made once, when first asked for. */
+let patternWords: { ij: number; indices: number } | undefined;
+
 /** Lower bounds, in bytes, of the instanced tessellator's buffers that grow with a cage. */
 export interface InstancedBytes {
   /** staticBuf: the prepared triangles, the patch records, the edge owners, the patterns. */
@@ -135,13 +138,13 @@ export function instancedBytesAtLeast(cage: Cage, level?: number): InstancedByte
   }
   const patches = quads + tris;
   const edges = Math.ceil((4 * quads + 3 * tris) / 2);
-  const patterns = packPatterns();
+  patternWords ??= (({ ij, indices }) => ({ ij: ij.length, indices: indices.length }))(packPatterns());
   const staticWords = INST_STATIC.layout({
     triangles,
     patches,
     edges,
-    patternIJWords: patterns.ij.length,
-    patternIndices: patterns.indices.length,
+    patternIJWords: patternWords.ij,
+    patternIndices: patternWords.indices,
   }).words;
   const workWords = INST_WORK.layout({ patches, edges }).words;
   let outputWords = 0;
