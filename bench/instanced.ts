@@ -49,7 +49,7 @@ import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
-import { adapterNote, isSwiftShader, timeRebuild } from './bench.ts';
+import { adapterNote, isSwiftShader, timeRebuild } from './timing.ts';
 
 const SECTIONS = {
   phong: '## Compute against instanced tessellation, pass by pass',

@@ -36,7 +36,7 @@ import { ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
 import { timeInstanced } from './instanced.ts';
-import { adapterNote, timeRebuild, timeTrivialWrite } from './bench.ts';
+import { adapterNote, timeRebuild, timeTrivialWrite } from './timing.ts';
 
 export const TALK_SECTION = "## The talk's tables at the talk's counts";
 
