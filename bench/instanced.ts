@@ -30,7 +30,7 @@
  * Writes its own section of BENCHMARKS.md (kept by `npm run bench`, which keeps the sections
  * other scripts write); with --models and no --out nothing is written.
  */
-import { existsSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { createNodeDevice } from '../src/gpu/device/node-device.ts';
 import { Tessellator } from '../src/gpu/tess/tessellator.ts';
@@ -49,7 +49,7 @@ import { buildCatmullClark } from '../src/gpu/cc/build.ts';
 import { isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
-import { adapterNote, isSwiftShader, timeRebuild } from './timing.ts';
+import { adapterNote, isSwiftShader, timeRebuild, writeSection } from './timing.ts';
 
 const SECTIONS = {
   phong: '## Compute against instanced tessellation, pass by pass',
@@ -253,18 +253,7 @@ ${header}
 ${rule}
 ${rows.join('\n')}
 `;
-  if (outFile) {
-    const doc = existsSync(outFile) ? readFileSync(outFile, 'utf8') : '# Benchmarks\n';
-    // In place when the section is there (a rerun must not move it); else before the real-GPU
-    // part, so the SwiftShader tables stay together; else at the end.
-    const parts = doc.split(/^(?=## )/m);
-    const own = parts.findIndex((p) => p.startsWith(SECTION));
-    const gpu = parts.findIndex((p) => /^## (Reading the real-GPU|On a real GPU)/.test(p));
-    if (own >= 0) parts[own] = `${section}\n`;
-    else if (gpu >= 0) parts.splice(gpu, 0, `${section}\n`);
-    else parts.push(`${parts.pop()?.trimEnd() ?? ''}\n\n${section}`);
-    writeFileSync(outFile, `${parts.join('').trimEnd()}\n`);
-    console.log(`\nwritten to ${outFile}`);
-  } else console.log('\n--models without --out: nothing written');
+  if (outFile) writeSection(outFile, SECTION, section);
+  else console.log('\n--models without --out: nothing written');
   return 0;
 }

@@ -18,7 +18,7 @@
  * Third-party cages: read from ../shared/cages, never copied. Writes its own section of
  * BENCHMARKS.md (kept by `npm run bench`); the talk-scale runs live here, not in CI.
  */
-import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { createNodeDevice } from '../src/gpu/device/node-device.ts';
 import { Tessellator } from '../src/gpu/tess/tessellator.ts';
@@ -36,7 +36,7 @@ import { ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { benchLightViewProj, timeDrawPasses } from './draw-timing.ts';
 import { timeInstanced } from './instanced.ts';
-import { adapterNote, timeRebuild, timeTrivialWrite } from './timing.ts';
+import { adapterNote, timeRebuild, timeTrivialWrite, writeSection } from './timing.ts';
 
 export const TALK_SECTION = "## The talk's tables at the talk's counts";
 
@@ -165,16 +165,7 @@ adaptive pipeline at a fixed factor: positions, normals, topology).
 |---|---:|---:|---:|---:|
 ${uniform.join('\n')}
 `;
-  if (outFile) {
-    const doc = existsSync(outFile) ? readFileSync(outFile, 'utf8') : '# Benchmarks\n';
-    const parts = doc.split(/^(?=## )/m);
-    const own = parts.findIndex((p) => p.startsWith(TALK_SECTION));
-    const gpu = parts.findIndex((p) => /^## (Reading the real-GPU|On a real GPU)/.test(p));
-    if (own >= 0) parts[own] = `${section}\n`;
-    else if (gpu >= 0) parts.splice(gpu, 0, `${section}\n`);
-    else parts.push(`${parts.pop()?.trimEnd() ?? ''}\n\n${section}`);
-    writeFileSync(outFile, `${parts.join('').trimEnd()}\n`);
-    console.log(`\nwritten to ${outFile}`);
-  } else console.log('\n--models without --out: nothing written');
+  if (outFile) writeSection(outFile, TALK_SECTION, section);
+  else console.log('\n--models without --out: nothing written');
   return 0;
 }

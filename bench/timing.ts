@@ -3,6 +3,7 @@
  * the compute tessellator timed by its GPU timestamps, the write-only kernel that bounds it, and
  * what the times mean on the adapter that measured them.
  */
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import type { Tessellator } from '../src/gpu/tess/tessellator.ts';
 import type { PreparedMesh } from '../src/gpu/tess/prepare.ts';
 import { headlessCamera, type HeadlessOptions } from '../src/gpu/tess/headless.ts';
@@ -94,4 +95,21 @@ export async function timeTrivialWrite(device: GPUDevice, bytes: number, repeats
   querySet.destroy();
   resolve.destroy();
   return median(ms);
+}
+
+/**
+ * Writes `section` (starting with its `## title`) into `outFile`: in place when the section is
+ * there (a rerun must not move it); else before the real-GPU part, so the SwiftShader tables stay
+ * together; else at the end. The benchmarks that keep their own section of BENCHMARKS.md use it.
+ */
+export function writeSection(outFile: string, title: string, section: string): void {
+  const doc = existsSync(outFile) ? readFileSync(outFile, 'utf8') : '# Benchmarks\n';
+  const parts = doc.split(/^(?=## )/m);
+  const own = parts.findIndex((p) => p.startsWith(title));
+  const gpu = parts.findIndex((p) => /^## (Reading the real-GPU|On a real GPU)/.test(p));
+  if (own >= 0) parts[own] = `${section}\n`;
+  else if (gpu >= 0) parts.splice(gpu, 0, `${section}\n`);
+  else parts.push(`${parts.pop()?.trimEnd() ?? ''}\n\n${section}`);
+  writeFileSync(outFile, `${parts.join('').trimEnd()}\n`);
+  console.log(`\nwritten to ${outFile}`);
 }

@@ -7,7 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import { decodeHeightPng, encodeHeightPng, HeightMapError } from '../../src/mesh/heightmap-png.ts';
 import { heightMapFromFunction } from '../../src/mesh/index.ts';
-import { assertHandled, pattern, put, type Run, subdiv, tempDir, tessellateCpu } from '../support/hostile-cli.ts';
+import { assertHandled, fan, ngon, pattern, put, type Run, subdiv, tempDir, tessellateCpu } from '../support/hostile-cli.ts';
 
 // TESSELLAB_FUZZ_SEED / TESSELLAB_FUZZ_CASES explore further by hand; CI runs the fixed ones.
 const SEED = Number(process.env.TESSELLAB_FUZZ_SEED ?? 0x7e55e1a);
@@ -52,17 +52,6 @@ const CUBE =
   't crease 2/1/0 0 1 2.5\nt corner 1/1/0 6 3\n';
 const SHEET =
   'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 1\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 2 2 0\nf 1 2 5 4\nf 2 3 6 5\nf 4 5 8\nf 4 8 7\nf 5 6 9 8\n';
-function ngon(n: number): string {
-  const v = Array.from({ length: n }, (_, i) => `v ${Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`);
-  return `${v.join('\n')}\nf ${Array.from({ length: n }, (_, i) => i + 1).join(' ')}\n`;
-}
-function fan(n: number): string {
-  const v = [
-    'v 0 0 0',
-    ...Array.from({ length: n }, (_, i) => `v ${Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`),
-  ];
-  return `${v.join('\n')}\n${Array.from({ length: n }, (_, i) => `f 1 ${i + 2} ${((i + 1) % n) + 2}`).join('\n')}\n`;
-}
 const SEEDS = [CUBE, SHEET, ngon(24), fan(40), `${CUBE}t hole 2/0/0 0 1\n`];
 
 // Extreme values, and some ordinary ones so that a mutant is sometimes a working cage.

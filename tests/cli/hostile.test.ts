@@ -7,7 +7,7 @@ import { decodeHeightPng, encodeHeightPng, HeightMapError } from '../../src/mesh
 import { CageError, decodeText, escapeControl, heightMapFromFunction, loadCage, MAX_FACE_CORNERS } from '../../src/mesh/index.ts';
 import { Surface } from '../../src/subdiv/index.ts';
 import { refuseNonFiniteOutput } from '../../scripts/tessellate-input.ts';
-import { assertHandled, pattern, put, subdiv, tempDir, tessellateCpu } from '../support/hostile-cli.ts';
+import { assertHandled, fan, ngon, pattern, put, subdiv, tempDir, tessellateCpu } from '../support/hostile-cli.ts';
 
 const dir = tempDir();
 const CUBE =
@@ -22,20 +22,6 @@ function scaledCube(s: string): string {
     /^v (\S+) (\S+) (\S+)$/gm,
     (_, x, y, z) => `v ${[x, y, z].map((c: string) => (c.startsWith('-') ? `-${s}` : s)).join(' ')}`,
   );
-}
-
-/** An n-gon (a disc), and a fan of n triangles round vertex 1 (valence n, on a boundary). */
-function ngon(n: number): string {
-  const v = Array.from({ length: n }, (_, i) => `v ${Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`);
-  return `${v.join('\n')}\nf ${Array.from({ length: n }, (_, i) => i + 1).join(' ')}\n`;
-}
-function fan(n: number): string {
-  const v = [
-    'v 0 0 0',
-    ...Array.from({ length: n }, (_, i) => `v ${Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`),
-  ];
-  const f = Array.from({ length: n }, (_, i) => `f 1 ${i + 2} ${((i + 1) % n) + 2}`);
-  return `${v.join('\n')}\n${f.join('\n')}\n`;
 }
 
 /** A cube with UVs on one face only would be refused for displacement; this one has a vt on every corner. */

@@ -112,3 +112,17 @@ export function assertHandled(r: Run, what: string): void {
   expect(RAW_CONTROL.test(r.err), `${what}: raw control character in ${JSON.stringify(r.err)}`).toBe(false);
   if (r.code === 2) expect(r.err.trim(), what).not.toBe('');
 }
+
+/** An n-gon (a disc), and a fan of n triangles round vertex 1 (valence n, on a boundary). */
+export function ngon(n: number): string {
+  const v = Array.from({ length: n }, (_, i) => `v ${Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`);
+  return `${v.join('\n')}\nf ${Array.from({ length: n }, (_, i) => i + 1).join(' ')}\n`;
+}
+export function fan(n: number): string {
+  const v = [
+    'v 0 0 0',
+    ...Array.from({ length: n }, (_, i) => `v ${Math.cos((2 * Math.PI * i) / n)} ${Math.sin((2 * Math.PI * i) / n)} 0`),
+  ];
+  const f = Array.from({ length: n }, (_, i) => `f 1 ${i + 2} ${((i + 1) % n) + 2}`);
+  return `${v.join('\n')}\n${f.join('\n')}\n`;
+}
