@@ -231,18 +231,15 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       P[6u * lid + 3u] = o[5];
       P[6u * lid + 4u] = o[2];
       P[6u * lid + 5u] = o[6];
-      // Step k's slice (layout: src/gpu/cc/build.ts): the centre at every step; the ring, each
-      // sector's (1,0) and (1,1), at the steps k ≡ D (mod 2). The evaluator rebuilds the rest
-      // of the 2-ring it needs by local steps from the start level (wgsl/cc/surface.wgsl).
+      // Step k's slice (layout: src/gpu/cc/build.ts): the centre, and every sector's 12 points
+      // (a, b), a ∈ 1..3, b ∈ 0..3, at 4(a − 1) + b: the evaluator's sub-patches A, B, C of
+      // step k read them as they are (wgsl/cc/surface.wgsl ccSubPatch).
       if (sec == 0u) {
         C[lid] = cNew;
         setPt(sliceBase + k - 1u, cNew);
       }
-      if (((D - k) & 1u) == 0u) {
-        let rb = sliceBase + D + ((k - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * sec;
-        setPt(rb, o[0]);
-        setPt(rb + 1u, o[1]);
-      }
+      let sb = sliceBase + D + 12u * ((k - 1u) * ns + sec);
+      for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
     }
     workgroupBarrier();
   }
@@ -252,15 +249,15 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 // Limit position and tangents of each fan's centre (Halstead, Kass, DeRose 1993; OpenSubdiv's crease and corner
 // masks) from its last level: the
 // start-level ring when the fan has no slices, else its step-D ring and centre (offsets from
-// the anchor; step D's ring is always stored).
+// the anchor; step D's slice).
 // Written at the fan's limit base: P (absolute), T1, T2 (normal = T1 × T2).
 
 fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> vec3<f32> {
-  // which: 0 → (1,0) of sector i, 1 → (1,1)
+  // which: 0 → (1,0) of sector i, 1 → (1,1): the slice's points 0 and 1 of step D
   if (D == 0u) {
     return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
   }
-  return pt(fanWord(fan, 2u) + D + ((D - 1u - ((D + 1u) & 1u)) / 2u) * 2u * ns + 2u * i + which);
+  return pt(fanWord(fan, 2u) + D + 12u * ((D - 1u) * ns + i) + which);
 }
 
 // Tangents of the crease span of faces a..b−1 (axes a and b infinitely sharp, indices mod n):

@@ -107,14 +107,9 @@ fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
 }
 
 // The fans' slices (src/gpu/cc/build.ts, wgsl/cc/build.wgsl) hold per step k = 1..D the centre
-// and, at the steps k ≡ D (mod 2), the 1-ring ((1,0) and (1,1) of every sector), as offsets
-// from the fan's anchor; step 0 is the start level, read through the sector table. To evaluate
-// sector i at step L the evaluator needs step L−1's 2-ring of sectors i−1, i, i+1; it rebuilds
-// the outer points (a = 2 or b = 2) of those three sectors by local steps from step 0 (ccStep:
-// the slice kernel's own masks), reading the ring and the centre of each step from storage. The
-// outer points that one step needs, beyond the ring, are closed under the step: sector i's
-// four, sector i+1's (2,0) (2,1), sector i−1's (1,2) (each mask below reads no more), so three
-// sectors suffice at any depth; the other outputs of a step on sectors i±1 are not read.
+// and every sector's 12 points (a, b), a ∈ 1..3, b ∈ 0..3 of its frame, as offsets from the
+// fan's anchor: patch-major, so that a point of sector i at step L is one bicubic of 16 points
+// read as they are, whatever L (the slice kernel made them once per rebuild, not once per vertex).
 struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32>, D: u32 }
 
 fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
@@ -132,95 +127,11 @@ fn ccCentre(f: CCFan, k: u32) -> vec3<f32> {
   if (k == 0u) { return vec3<f32>(0.0); }
   return ccP(f.base + k - 1u);
 }
-// Ring point w (0: (1,0), 1: (1,1)) of sector j at a step whose ring is stored (or step 0).
-fn ccRingStored(f: CCFan, k: u32, j: u32, w: u32) -> vec3<f32> {
-  if (k == 0u) { return ccP(staticBuf[f.sectors + 7u * j + 1u + 2u * w]) - f.anchor; }
-  return ccP(f.base + f.D + ((k - 1u - ((f.D + 1u) & 1u)) / 2u) * 2u * f.ns + 2u * j + w);
-}
-// Ring point at any step: a step between two stored rings is one step of the ring masks
-// (ccStep's o[0] and o[1]) from the stored ring before it. The reads are one call site in a
-// loop (every call is inlined: compile time).
-fn ccRing(f: CCFan, k: u32, j: u32, w: u32) -> vec3<f32> {
-  let stored = k == 0u || ((f.D - k) & 1u) == 0u;
-  let pseudo = f.boundary && j == f.n;
-  if (!stored && pseudo && w == 1u) { return vec3<f32>(0.0); }
-  // Stored: the one point. Else step k−1's (1,0), (1,1) of j, (1,0) of j+1, (1,0), (1,1) of j−1.
-  let nx = select(ccNb(f, j, 1), j, pseudo);
-  let pv = ccNb(f, j, -1);
-  var r: array<vec3<f32>, 5>;
-  let m = select(5u, 1u, stored);
-  for (var t = 0u; t < m; t++) {
-    let sj = select(select(select(pv, nx, t == 2u), j, t < 2u), j, stored);
-    let sw = select(select(0u, 1u, t == 1u || t == 4u), w, stored);
-    r[t] = ccRingStored(f, select(k - 1u, k, stored), sj, sw);
-  }
-  if (stored) { return r[0]; }
-  let c = ccCentre(f, k - 1u);
-  let f00 = 0.25 * (c + r[0] + r[1] + r[2]);
-  if (w == 1u) { return f00; }
-  if (staticBuf[f.sectors + 7u * j] == 1u) { return 0.5 * (c + r[0]); }
-  let g00 = 0.25 * (c + r[3] + r[4] + r[0]);
-  return 0.25 * (c + r[0] + f00 + g00);
-}
 
-// The local 2-ring: the 6 points (1,0) (2,0) (1,1) (2,1) (1,2) (2,2) of sectors idx[0..2] =
-// i, i+1, i−1 at one step; the ring points among them are read from storage instead.
-struct CCLocal { idx: vec3<u32>, p: array<vec3<f32>, 18> }
-
-// Outer point p (1: (2,0), 3: (2,1), 4: (1,2), 5: (2,2)) of sector j from the local 2-ring.
-fn ccOuter(loc: ptr<function, CCLocal>, j: u32, p: u32) -> vec3<f32> {
-  let slot = select(select(2u, 1u, j == (*loc).idx.y), 0u, j == (*loc).idx.x);
-  return (*loc).p[6u * slot + p];
-}
-
-// The 12 points (a, b), a ∈ 1..3, b ∈ 0..3 (index 4(a−1) + b) of sector j after step L: the
-// slice kernel's masks, on step L−1's points of sectors j−1, j, j+1.
-fn ccStep(f: CCFan, loc: ptr<function, CCLocal>, j: u32, L: u32) -> array<vec3<f32>, 12> {
-  let k = L - 1u;
-  let c = ccCentre(f, k);
-  let pseudo = f.boundary && j == f.n;
-  var nx = ccNb(f, j, 1);
-  var pv = ccNb(f, j, -1);
-  if (pseudo) { nx = j; }
-  // The ring points read: (1,0), (1,1) of j, (1,0) of j+1, (1,0), (1,1) of j−1 (one call site).
-  var r: array<vec3<f32>, 5>;
-  for (var t = 0u; t < 5u; t++) {
-    r[t] = ccRing(f, k, select(select(pv, nx, t == 2u), j, t < 2u), select(0u, 1u, t == 1u || t == 4u));
-  }
-  let p10 = r[0];
-  let p11 = r[1];
-  let n10 = r[2];
-  let q10 = r[3];
-  let q11 = r[4];
-  let p20 = ccOuter(loc, j, 1u);
-  let p21 = ccOuter(loc, j, 3u);
-  let p12 = ccOuter(loc, j, 4u);
-  let p22 = ccOuter(loc, j, 5u);
-  let n20 = ccOuter(loc, nx, 1u);
-  let q12 = ccOuter(loc, pv, 4u);
-  let inf = staticBuf[f.sectors + 7u * j] == 1u;
-  let f00 = 0.25 * (c + p10 + p11 + n10);
-  let f10 = 0.25 * (p10 + p20 + p21 + p11);
-  let f01 = 0.25 * (n10 + p11 + p12 + n20);
-  let f11 = 0.25 * (p11 + p21 + p22 + p12);
-  let g00 = 0.25 * (c + q10 + q11 + p10);
-  let g01 = 0.25 * (p10 + q11 + q12 + p20);
-  var o: array<vec3<f32>, 12>;
-  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
-  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
-  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
-  if (!pseudo) {
-    o[1] = f00;
-    o[9] = f10;
-    o[3] = f01;
-    o[11] = f11;
-    o[5] = 0.25 * (p10 + p11 + f00 + f10);
-    o[2] = 0.25 * (n10 + p11 + f00 + f01);
-    o[10] = 0.25 * (p11 + p21 + f10 + f11);
-    o[7] = 0.25 * (p11 + p12 + f01 + f11);
-    o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11);
-  }
-  return o;
+// Point q = 4(a − 1) + b of sector j after step k ≥ 1 (a boundary's pseudo-sector has only its
+// axis points, q = 0, 4, 8).
+fn ccSlice(f: CCFan, k: u32, j: u32, q: u32) -> vec3<f32> {
+  return ccP(f.base + f.D + 12u * ((k - 1u) * f.ns + j) + q);
 }
 
 // Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step L,
@@ -228,35 +139,6 @@ fn ccStep(f: CCFan, loc: ptr<function, CCLocal>, j: u32, L: u32) -> array<vec3<f
 // (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
 // (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
 fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
-  // Steps 1..L−1 carry the local 2-ring; step L's 12 points of sectors i (own, 0..11), i+1
-  // (12..23) and i−1 (A only, 24..35) are the sub-patch's. ONE call site of ccStep in the loops:
-  // shader compilers inline every call, and one copy of the step per call site made this
-  // evaluator take seconds to compile on SwiftShader (three pipelines include it).
-  var loc: CCLocal;
-  loc.idx = vec3<u32>(i, ccNb(f, i, 1), ccNb(f, i, -1));
-  for (var s = 0u; s < 3u; s++) {
-    for (var q = 0u; q < 6u; q++) { loc.p[6u * s + q] = ccP(staticBuf[f.sectors + 7u * loc.idx[s] + 1u + q]) - f.anchor; }
-  }
-  var pts: array<vec3<f32>, 37>;
-  for (var k = 1u; k <= L; k++) {
-    var nxt: array<vec3<f32>, 18>;
-    for (var s = 0u; s < 3u; s++) {
-      if (k == L && s == 2u && which != 0u) { continue; }
-      let o = ccStep(f, &loc, loc.idx[s], k);
-      if (k == L) {
-        for (var q = 0u; q < 12u; q++) { pts[12u * s + q] = o[q]; }
-      } else {
-        nxt[6u * s] = o[0];
-        nxt[6u * s + 1u] = o[4];
-        nxt[6u * s + 2u] = o[1];
-        nxt[6u * s + 3u] = o[5];
-        nxt[6u * s + 4u] = o[2];
-        nxt[6u * s + 5u] = o[6];
-      }
-    }
-    loc.p = nxt;
-  }
-  if (which == 2u) { pts[36] = ccRing(f, L, ccNb(f, i, 2), 0u); }
   let cL = ccCentre(f, L);
   var cp: array<vec3<f32>, 16>;
   let da = select(0, -1, which == 2u);
@@ -265,19 +147,22 @@ fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec
     for (var c = 0; c < 4; c++) {
       let a = c + da;
       let b = r + db;
-      var q: vec3<f32>;
-      if (a == 0 && b == 0) {
-        q = cL;
-      } else if (a == -1 && b == 0) {
-        q = pts[36];
+      // Which sector's point: one read (one call site).
+      let centre = a == 0 && b == 0;
+      var j = i;
+      var q = 0u;
+      if (a == -1 && b == 0) {
+        j = ccNb(f, i, 2);
       } else if (b < 0) {
-        q = pts[24u + u32(a)];
-      } else if (a <= 0) {
-        q = pts[12u + 4u * u32(b - 1) + u32(-a)];
-      } else {
-        q = pts[4u * u32(a - 1) + u32(b)];
+        j = ccNb(f, i, -1);
+        q = u32(a);
+      } else if (a <= 0 && !centre) {
+        j = ccNb(f, i, 1);
+        q = 4u * u32(b - 1) + u32(-a);
+      } else if (a > 0) {
+        q = 4u * u32(a - 1) + u32(b);
       }
-      cp[4 * r + c] = q;
+      cp[4 * r + c] = select(ccSlice(f, L, j, q), cL, centre);
     }
   }
   // Phantoms: A's bottom on axis i, C's left on axis i+1, when infinitely sharp.

@@ -66,18 +66,16 @@
  *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary), all as OFFSETS from the
  *     fan's anchor (its centre at level s: f32 precision of deep levels):
  *       centres   D points, the centre after step k = 1..D at slot k − 1;
- *       rings     the fan's 1-ring, (1,0) and (1,1) of each sector at slot 2i, 2i + 1, after
- *                 the steps k ≡ D (mod 2) only (ceil(D/2) rings; step D's is always there),
- *                 ring of step k at D + ((k − 1 − ((D + 1) mod 2)) / 2)·2·ns.
- *     Why so little: the slice kernel computes the whole 2-ring of every step in workgroup
- *     memory, but what the evaluator cannot redo cheaply is only what spreads round the fan:
- *     the centre (it reads every sector) and the 1-ring (each point reads its two neighbour
- *     sectors, so a local step of one sector would need ever more sectors). Given those, one
- *     sector's own outer points (a = 2 or b = 2) at step L follow by L local steps from the start
- *     level that read only sectors i−1, i, i+1 (wgsl/cc/surface.wgsl), and a ring of an odd
- *     step follows from the stored ring before it by one step. A sector then costs 4 points
- *     every other step instead of 6 every step: a third of the slices' memory at 2/6 · 1/2
- *     (imrod, all triangles: 2.7 KB of slices per face before, under 0.6 KB now).
+ *       points    per step k = 1..D, per sector j < ns, its 12 points (a, b), a ∈ 1..3, b ∈ 0..3
+ *                 of its frame at 4(a − 1) + b: at D + 12((k − 1)·ns + j) (a boundary's
+ *                 pseudo-sector has its axis points 0, 4, 8 only).
+ *     Why all of them (patch-major): a point of the surface near the EV lies on sub-patch A, B
+ *     or C of one sector at one step L, and those 16 points are this sector's 12 and a few of
+ *     its neighbours' (wgsl/cc/surface.wgsl ccSubPatch). The slice kernel computes them anyway
+ *     (in workgroup memory, once per rebuild); storing them costs 12 points per sector and step
+ *     (GPU subdivision data in all: imrod 6.6 KB per face, suzanne 2.1, monsterfrog 1.4, bigguy 1.0) where keeping only the centre
+ *     and the ring made every vertex redo up to L local steps of three sectors from the start
+ *     level, the largest part of the exact surface's evaluation.
  *   Then the limits: P (absolute), T1, T2 (the vertex's: the factor rule, the flat baseline);
  *     then, at a crease or corner centre (rule not smooth), T1, T2 of each face i < n at
  *     3 + 2i, 4 + 2i: an infinitely sharp crease splits the tangent plane into sectors (one per

@@ -322,7 +322,7 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
     if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) F.D = Math.min(15, F.D + EXTRA_DEPTH_SHARP);
     const ns = F.sectors.length;
     const sliceBase = nextPoint;
-    nextPoint += F.D + Math.ceil(F.D / 2) * 2 * ns;
+    nextPoint += F.D + 12 * F.D * ns;
     const limitBase = nextPoint;
     nextPoint += 3 + (F.rule === VRULE_SMOOTH ? 0 : 2 * F.n);
     maxDepth = Math.max(maxDepth, F.D);
