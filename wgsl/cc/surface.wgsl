@@ -28,37 +28,39 @@ fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
   return array<vec4<f32>, 2>(b, d);
 }
 
-// Bicubic B-spline patch of 16 points (row-major, row ~ y), all relative to point 5 (the
-// corner (0,0): f32 precision of small patches), phantom mask bit j = side j (0: row 0, 1:
-// column 3, 2: row 3, 3: column 0) reflected (rows first, then columns, as OpenSubdiv does).
-fn ccBicubic(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
-  return ccBicubicW(cp, mask, ccBasis(x), y);
+// A bicubic B-spline patch of 16 points (row-major, row ~ y) is summed point by point as its
+// points are read, with no array of them: its weights (value and derivative, per column in x
+// and per row in y) carry the phantom points instead. Phantom mask bit j = side j (0: row 0,
+// 1: column 3, 2: row 3, 3: column 0) is OpenSubdiv's reflection, row 0 = 2·row 1 − row 2 and
+// so on, which is linear, so it folds into the weights: the phantom row's weight moves to the
+// two rows it is made of (+2, −1), and the phantom points themselves get weight 0.
+struct CCWeights { x: vec4<f32>, dx: vec4<f32>, y: vec4<f32>, dy: vec4<f32> }
+
+fn ccFoldLow(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(0.0, w.y + 2.0 * w.x, w.z - w.x, w.w); }
+fn ccFoldHigh(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(w.x, w.y - w.w, w.z + 2.0 * w.w, 0.0); }
+
+// The x weights are given (value, d/dx per column): ccBasis(x), or a single-crease patch's row
+// weights (ccRegularPatch).
+fn ccWeights(bx: array<vec4<f32>, 2>, y: f32, mask: u32) -> CCWeights {
+  let by = ccBasis(y);
+  var w = CCWeights(bx[0], bx[1], by[0], by[1]);
+  if ((mask & 1u) != 0u) { w.y = ccFoldLow(w.y); w.dy = ccFoldLow(w.dy); }
+  if ((mask & 4u) != 0u) { w.y = ccFoldHigh(w.y); w.dy = ccFoldHigh(w.dy); }
+  if ((mask & 8u) != 0u) { w.x = ccFoldLow(w.x); w.dx = ccFoldLow(w.dx); }
+  if ((mask & 2u) != 0u) { w.x = ccFoldHigh(w.x); w.dx = ccFoldHigh(w.dx); }
+  return w;
 }
 
-// The same with the x weights given (value, d/dx per column): ccBasis(x), or a single-crease
-// patch's row weights (ccRegularPatch).
-fn ccBicubicW(cp: ptr<function, array<vec3<f32>, 16>>, mask: u32, bx: array<vec4<f32>, 2>, y: f32) -> array<vec3<f32>, 3> {
-  if ((mask & 1u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[c] = 2.0 * (*cp)[4u + c] - (*cp)[8u + c]; } }
-  if ((mask & 4u) != 0u) { for (var c = 0u; c < 4u; c++) { (*cp)[12u + c] = 2.0 * (*cp)[8u + c] - (*cp)[4u + c]; } }
-  if ((mask & 8u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r] = 2.0 * (*cp)[4u * r + 1u] - (*cp)[4u * r + 2u]; } }
-  if ((mask & 2u) != 0u) { for (var r = 0u; r < 4u; r++) { (*cp)[4u * r + 3u] = 2.0 * (*cp)[4u * r + 2u] - (*cp)[4u * r + 1u]; } }
-  let by = ccBasis(y);
-  var p = vec3<f32>(0.0);
-  var pu = vec3<f32>(0.0);
-  var pv = vec3<f32>(0.0);
-  for (var r = 0u; r < 4u; r++) {
-    var row = vec3<f32>(0.0);
-    var rowd = vec3<f32>(0.0);
-    for (var c = 0u; c < 4u; c++) {
-      let q = (*cp)[4u * r + c];
-      row += bx[0][c] * q;
-      rowd += bx[1][c] * q;
-    }
-    p += by[0][r] * row;
-    pu += by[0][r] * rowd;
-    pv += by[1][r] * row;
-  }
-  return array<vec3<f32>, 3>(p, pu, pv);
+// The running sum: position and the two derivatives, of points relative to point 5 (the
+// corner (0,0): f32 precision of small patches).
+struct CCSum { p: vec3<f32>, pu: vec3<f32>, pv: vec3<f32> }
+
+fn ccAdd(s: ptr<function, CCSum>, w: CCWeights, q: u32, P: vec3<f32>) {
+  let r = q >> 2u;
+  let c = q & 3u;
+  (*s).p += (w.y[r] * w.x[c]) * P;
+  (*s).pu += (w.y[r] * w.dx[c]) * P;
+  (*s).pv += (w.dy[r] * w.x[c]) * P;
 }
 
 fn ccNormal(pu: vec3<f32>, pv: vec3<f32>) -> vec3<f32> {
@@ -93,17 +95,17 @@ fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
 // the indices; Nießner, Loop, Greiner 2012): the closed-form crease row weights in x times the cubic B-spline in
 // y (wgsl/cc/crease-basis.wgsl), which also gives both derivatives for the normal.
 fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
-  var cp: array<vec3<f32>, 16>;
   let b = params.ccPatchIdx + base;
-  let anchor = ccP(staticBuf[b + 5u]);
-  for (var i = 0u; i < 16u; i++) { cp[i] = ccP(staticBuf[b + i]) - anchor; }
   var bx = ccBasis(x);
   if (ccRegionWord_crease(w0) == 1u) {
     let cw = creaseRowWeights(bitcast<f32>(staticBuf[b + 16u]), x);
     bx = array<vec4<f32>, 2>(cw.value, cw.du);
   }
-  let e = ccBicubicW(&cp, ccRegionWord_mask(w0), bx, y);
-  return SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), e[1], e[2]);
+  let w = ccWeights(bx, y, ccRegionWord_mask(w0));
+  let anchor = ccP(staticBuf[b + 5u]);
+  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  for (var q = 0u; q < 16u; q++) { ccAdd(&e, w, q, ccP(staticBuf[b + q]) - anchor); }
+  return SurfacePoint(anchor + e.p, ccNormal(e.pu, e.pv), e.pu, e.pv);
 }
 
 // The fans' slices (src/gpu/cc/build.ts, wgsl/cc/build.wgsl) hold per step k = 1..D the centre
@@ -123,57 +125,44 @@ fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
   return u32(((m % n) + n) % n);
 }
 
-fn ccCentre(f: CCFan, k: u32) -> vec3<f32> {
-  if (k == 0u) { return vec3<f32>(0.0); }
-  return ccP(f.base + k - 1u);
-}
-
-// Point q = 4(a − 1) + b of sector j after step k ≥ 1 (a boundary's pseudo-sector has only its
-// axis points, q = 0, 4, 8).
-fn ccSlice(f: CCFan, k: u32, j: u32, q: u32) -> vec3<f32> {
-  return ccP(f.base + f.D + 12u * ((k - 1u) * f.ns + j) + q);
-}
-
-// Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step L,
-// at local (x, y); offsets from the anchor. Grid point (a, b), a, b ∈ −1..3: own a ≥ 1;
-// (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector i+1's (b, 1);
-// (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the valence-4 (0, 1)).
-fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> array<vec3<f32>, 3> {
-  let cL = ccCentre(f, L);
-  var cp: array<vec3<f32>, 16>;
-  let da = select(0, -1, which == 2u);
-  let db = select(0, -1, which == 0u);
-  for (var r = 0; r < 4; r++) {
-    for (var c = 0; c < 4; c++) {
-      let a = c + da;
-      let b = r + db;
-      // Which sector's point: one read (one call site).
-      let centre = a == 0 && b == 0;
-      var j = i;
-      var q = 0u;
-      if (a == -1 && b == 0) {
-        j = ccNb(f, i, 2);
-      } else if (b < 0) {
-        j = ccNb(f, i, -1);
-        q = u32(a);
-      } else if (a <= 0 && !centre) {
-        j = ccNb(f, i, 1);
-        q = 4u * u32(b - 1) + u32(-a);
-      } else if (a > 0) {
-        q = 4u * u32(a - 1) + u32(b);
-      }
-      cp[4 * r + c] = select(ccSlice(f, L, j, q), cL, centre);
-    }
+// Control point k (row-major, row ~ y) of sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2:
+// [0,1]×[1,2]) of sector i after step L ≥ 1: its point index. Grid point (a, b), a, b ∈ −1..3:
+// own a ≥ 1, at 4(a − 1) + b of the sector's 12 (a boundary's pseudo-sector has its axis points
+// 0, 4, 8 only); (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector
+// i+1's (b, 1); (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the
+// valence-4 (0, 1)).
+fn ccSubPatchPoint(f: CCFan, i: u32, L: u32, which: u32, k: u32) -> u32 {
+  let a = i32(k & 3u) + select(0, -1, which == 2u);
+  let b = i32(k >> 2u) + select(0, -1, which == 0u);
+  if (a == 0 && b == 0) { return f.base + L - 1u; }
+  var j = i;
+  var q = 0u;
+  if (a == -1 && b == 0) {
+    j = ccNb(f, i, 2);
+  } else if (b < 0) {
+    j = ccNb(f, i, -1);
+    q = u32(a);
+  } else if (a <= 0) {
+    j = ccNb(f, i, 1);
+    q = 4u * u32(b - 1) + u32(-a);
+  } else {
+    q = 4u * u32(a - 1) + u32(b);
   }
+  return f.base + f.D + 12u * ((L - 1u) * f.ns + j) + q;
+}
+
+// Sub-patch `which` of sector i after step L at its local (x, y): offsets from the fan's anchor.
+fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> CCSum {
   // Phantoms: A's bottom on axis i, C's left on axis i+1, when infinitely sharp.
   var mask = 0u;
   if (which == 0u && staticBuf[f.sectors + 7u * i] == 1u) { mask = 1u; }
   if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, i, 1)] == 1u) { mask = 8u; }
-  // Anchor the sum at the patch's corner (0,0) too.
-  let o = cp[5];
-  for (var j = 0u; j < 16u; j++) { cp[j] -= o; }
-  var e = ccBicubic(&cp, mask, x, y);
-  e[0] += o;
+  let w = ccWeights(ccBasis(x), y, mask);
+  // Summed relative to the patch's corner (0,0) too.
+  let o = ccP(ccSubPatchPoint(f, i, L, which, 5u));
+  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  for (var q = 0u; q < 16u; q++) { ccAdd(&e, w, q, ccP(ccSubPatchPoint(f, i, L, which, q)) - o); }
+  e.p += o;
   return e;
 }
 
@@ -215,7 +204,8 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
     lx = a - 1.0;
     if (b < 1.0) { which = 0u; ly = b; } else { which = 1u; }
   }
-  let e = ccSubPatch(f, sec, L, which, lx, ly);
+  let s = ccSubPatch(f, sec, L, which, lx, ly);
+  let e = array<vec3<f32>, 3>(s.p, s.pu, s.pv);
   // Tangents along the region's (x, y): the sub-patch's along (a, b) are 2^L times its own, and
   // (a, b) = rot(x, y)·2^(L − off). Inside the last square the blend's tangents are taken as
   // the ring point's (the radial blend has no useful parametric derivative at that scale).
