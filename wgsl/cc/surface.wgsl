@@ -125,30 +125,29 @@ fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
   return u32(((m % n) + n) % n);
 }
 
-// Control point k (row-major, row ~ y) of sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2:
-// [0,1]×[1,2]) of sector i after step L ≥ 1: its point index. Grid point (a, b), a, b ∈ −1..3:
-// own a ≥ 1, at 4(a − 1) + b of the sector's 12 (a boundary's pseudo-sector has its axis points
-// 0, 4, 8 only); (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1) = sector
-// i+1's (b, 1); (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the
+// Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step
+// L ≥ 1, by where its points lie: the 12 points of sectors i (own), i+1, i−1, i+2 at that step,
+// the centre, and the grid offset of its control point 0 (da, db).
+struct CCSubPatch { own: u32, next: u32, prev: u32, next2: u32, centre: u32, da: i32, db: i32 }
+
+fn ccSubPatchOf(f: CCFan, i: u32, L: u32, which: u32) -> CCSubPatch {
+  let step = f.base + f.D + 12u * (L - 1u) * f.ns;
+  return CCSubPatch(step + 12u * i, step + 12u * ccNb(f, i, 1), step + 12u * ccNb(f, i, -1), step + 12u * ccNb(f, i, 2),
+    f.base + L - 1u, select(0, -1, which == 2u), select(0, -1, which == 0u));
+}
+
+// Control point k (row-major, row ~ y) of the sub-patch: its point index. Grid point (a, b),
+// a, b ∈ −1..3: own a ≥ 1, at 4(a − 1) + b of the sector's 12 (a boundary's pseudo-sector has
+// its axis points 0, 4, 8 only); (0, 0) the centre; (0, b ≥ 1) = sector i+1's (b, 0); (−1, b ≥ 1)
+// = sector i+1's (b, 1); (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the
 // valence-4 (0, 1)).
-fn ccSubPatchPoint(f: CCFan, i: u32, L: u32, which: u32, k: u32) -> u32 {
-  let a = i32(k & 3u) + select(0, -1, which == 2u);
-  let b = i32(k >> 2u) + select(0, -1, which == 0u);
-  if (a == 0 && b == 0) { return f.base + L - 1u; }
-  var j = i;
-  var q = 0u;
-  if (a == -1 && b == 0) {
-    j = ccNb(f, i, 2);
-  } else if (b < 0) {
-    j = ccNb(f, i, -1);
-    q = u32(a);
-  } else if (a <= 0) {
-    j = ccNb(f, i, 1);
-    q = 4u * u32(b - 1) + u32(-a);
-  } else {
-    q = 4u * u32(a - 1) + u32(b);
-  }
-  return f.base + f.D + 12u * ((L - 1u) * f.ns + j) + q;
+fn ccSubPatchPoint(s: CCSubPatch, k: u32) -> u32 {
+  let a = i32(k & 3u) + s.da;
+  let b = i32(k >> 2u) + s.db;
+  if (b < 0) { return s.prev + u32(a); }
+  if (a >= 1) { return s.own + u32(4 * (a - 1) + b); }
+  if (b == 0) { return select(s.next2, s.centre, a == 0); }
+  return s.next + u32(4 * (b - 1) - a);
 }
 
 // Sub-patch `which` of sector i after step L at its local (x, y): offsets from the fan's anchor.
@@ -158,10 +157,11 @@ fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> CCSum {
   if (which == 0u && staticBuf[f.sectors + 7u * i] == 1u) { mask = 1u; }
   if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, i, 1)] == 1u) { mask = 8u; }
   let w = ccWeights(ccBasis(x), y, mask);
+  let sp = ccSubPatchOf(f, i, L, which);
   // Summed relative to the patch's corner (0,0) too.
-  let o = ccP(ccSubPatchPoint(f, i, L, which, 5u));
+  let o = ccP(ccSubPatchPoint(sp, 5u));
   var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
-  for (var q = 0u; q < 16u; q++) { ccAdd(&e, w, q, ccP(ccSubPatchPoint(f, i, L, which, q)) - o); }
+  for (var q = 0u; q < 16u; q++) { ccAdd(&e, w, q, ccP(ccSubPatchPoint(sp, q)) - o); }
   e.p += o;
   return e;
 }
@@ -179,9 +179,9 @@ fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
   // (build.ts "fan limits": a sharp crease or corner has a tangent plane per sector).
   let lt = select(lb + 1u, lb + 3u + 2u * sec, ccFanWord_rule(fw) != 0u);
   let m = max(ab.x, ab.y);
-  // Step L: the first with max(a, b)·2^L ≥ 1 (exact powers of two in f32).
-  var L = 1u;
-  while (L < D && m * exp2(f32(L)) < 1.0) { L++; }
+  // Step L: the first with max(a, b)·2^L ≥ 1, at most D: for m in [2^(e−1), 2^e), 1 − e
+  // (frexp's exponent e; exact, as the powers of two are).
+  let L = select(u32(clamp(1 - frexp(m).exp, 1, i32(D))), D, m <= 0.0);
   var a = ab.x * exp2(f32(L));
   var b = ab.y * exp2(f32(L));
   let t = max(a, b);
