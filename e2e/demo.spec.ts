@@ -208,7 +208,7 @@ test('the turntable rebuilds adaptive geometry every frame without errors', asyn
   expect(errors).toEqual([]);
 });
 
-test('a bad OBJ shows its error with line numbers and keeps the model', async ({ page }) => {
+test('a bad OBJ shows its error with line numbers and keeps the model; a good one replaces it, and no link claims it', async ({ page }) => {
   await page.goto('/?model=torus&t=0');
   await ready(page);
   const before = await page.locator('#view').screenshot();
@@ -228,6 +228,12 @@ test('a bad OBJ shows its error with line numbers and keeps the model', async ({
   await expect(page.getByTestId('stats-cage')).toContainText('quad.obj');
   // The picker names the file, not the project model shown before it.
   await expect(picked(page)).toHaveText('quad.obj');
+  // Nor does the address, and no link claims to show the file: a link cannot carry it.
+  expect(new URL(page.url()).searchParams.get('model')).toBeNull();
+  await page.getByText('copy link to this view').click();
+  await expect(page.getByRole('status').filter({ hasText: 'No link to a local file' })).toContainText(
+    'quad.obj is a file on this computer',
+  );
 });
 
 test('a missing model falls back to the default with a message', async ({ page }) => {

@@ -338,9 +338,15 @@ export abstract class DemoScene extends DemoBase {
     return this.controller.loadModel(() => loadModelFromUrl(url, title), url, { camera, pick: title });
   }
 
-  loadFile(file: File): Promise<boolean> {
+  async loadFile(file: File): Promise<boolean> {
     if (/\.png$/i.test(file.name) || file.type.startsWith('image/')) return this.loadHeightMap(file);
-    return this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
+    const shown = await this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
+    // The URL no longer names the model shown before: a local file has no name a link can load.
+    if (shown && this.model?.localFile) {
+      this.params.model = null;
+      this.syncUrl();
+    }
+    return shown;
   }
 
   /**
@@ -460,8 +466,17 @@ export abstract class DemoScene extends DemoBase {
     if (this.#bounds) this.setCamera(this.frameBounds(this.#bounds));
   }
 
-  /** The current view as URL parameters (camera included), for sharing. */
-  shareUrl(): string {
+  /** The address bar follows the parameters (camera angles describe the first view only: they
+   * go once the visitor changes anything). */
+  syncUrl(): void {
+    const p: DemoParams = { ...this.params, yaw: null, pitch: null, dist: null };
+    history.replaceState(null, '', `${location.pathname}${formatParams(p)}`);
+  }
+
+  /** The current view as URL parameters (camera included), for sharing; null while a local file
+   * is shown (a link cannot carry it). */
+  shareUrl(): string | null {
+    if (this.model?.localFile) return null;
     const cam = this.camera;
     const p: DemoParams = { ...this.params, t: null };
     if (cam) {

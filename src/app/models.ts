@@ -43,6 +43,8 @@ export function modelUrl(name: string): string {
 export interface LoadedModel extends LoadedCage {
   /** Shown in the stats and the error messages. */
   title: string;
+  /** A file from the visitor's computer: no link can carry it (the URL and "copy link" say so). */
+  localFile?: boolean;
 }
 
 /** Fetch and parse an OBJ. Network and parse failures both come back as Errors with a message fit to show. */
@@ -65,7 +67,7 @@ export async function loadModelFromUrl(url: string, title: string): Promise<Load
 export async function loadModelFromFile(file: File): Promise<LoadedModel> {
   checkFileSize(file, MAX_MODEL_FILE_BYTES, 'model files');
   const text = decodeText(new Uint8Array(await file.arrayBuffer()));
-  return drawable({ ...loadCage(text), title: file.name });
+  return drawable({ ...loadCage(text), title: file.name, localFile: true });
 }
 
 /** A model that loads but would draw nothing is refused with the reason, not shown as an empty

@@ -2,7 +2,7 @@
  * The demo's control panel (lil-gui), declared as data: PANEL lists each folder's controls (label,
  * kind, options or range, the parameter they bind, what a change invalidates, when they show),
  * and buildPanel turns the table into lil-gui controls. Every change of a parameter updates the
- * URL first (syncUrl), then asks the demo for what it invalidates (src/app/tessellation-demo.ts).
+ * URL first (the demo's syncUrl), then asks the demo for what it invalidates (src/app/tessellation-demo.ts).
  */
 import GUI, { type Controller } from 'lil-gui';
 import { BUILTIN_MODELS } from './models.ts';
@@ -11,7 +11,6 @@ import {
   DSCALE_RANGE,
   ERR_RANGE,
   FACTOR_RANGE,
-  formatParams,
   LEVEL_CHOICES,
   LOD_RANGE,
   type CompareSurface,
@@ -244,15 +243,16 @@ export const PANEL: readonly Folder[] = [
   },
 ];
 
-function syncUrl(params: DemoParams): void {
-  // Camera angles in the URL describe the first view only: drop them once the user changes anything.
-  const p: DemoParams = { ...params, yaw: null, pitch: null, dist: null };
-  history.replaceState(null, '', `${location.pathname}${formatParams(p)}`);
-}
-
 /** Copy the link to the current view (shown instead where the clipboard refuses). */
 function shareLink(demo: TessellationDemo): void {
   const url = demo.shareUrl();
+  if (url === null) {
+    showToast(
+      `${demo.model?.title ?? 'This model'} is a file on this computer: a link cannot carry it. Links show the project's models, or an OBJ on this site (?model=path).`,
+      { title: 'No link to a local file', timeout: 8000 },
+    );
+    return;
+  }
   void navigator.clipboard?.writeText(url).then(
     () => showToast('Link to this view copied.', { timeout: 2500 }),
     () => showToast(url, { title: 'Link to this view' }),
@@ -278,7 +278,7 @@ export function buildPanel(demo: TessellationDemo, initialModel: string): Panel 
       const ui = addControl(f, control, demo, state, () => {
         // The URL first, then what the panel shows, then what the change invalidates.
         control.commit?.(p, state);
-        syncUrl(p);
+        demo.syncUrl();
         showAll();
         control.change(demo, state);
         refresh();
