@@ -266,6 +266,25 @@ describe('safe text', () => {
     }
   });
 
+  it('a binary file is refused in one line, not parsed into lines of its bytes', () => {
+    const png = encodeHeightPng(heightMapFromFunction(8, 8, 8, (u, v) => u * v));
+    const noise = Uint8Array.from({ length: 4000 }, (_, i) => 0x80 + ((i * 37) % 0x7f));
+    for (const [name, bytes, why] of [
+      ['height.png', png, 'NUL bytes'],
+      ['noise.obj', noise, 'not UTF-8 text'],
+    ] as const) {
+      expect(() => decodeText(bytes)).toThrow(CageError);
+      const r = subdiv('--check', put(dir, name, bytes));
+      assertHandled(r, name);
+      expect(r.code).toBe(2);
+      expect(r.err).toContain(`not a text OBJ file: `);
+      expect(r.err).toContain(why);
+      expect(r.err.trim().split('\n')).toHaveLength(1);
+    }
+    // A Latin-1 comment is still text: its line parses as a comment.
+    expect(decodeText(Uint8Array.from([...new TextEncoder().encode('# caf'), 0xe9, 0x0a, ...new TextEncoder().encode(CUBE)]))).toContain('v ');
+  });
+
   it('escapeControl keeps text, escapes C0, C1, DEL and bidirectional overrides', () => {
     expect(escapeControl('a\tb\nc')).toBe('a\tb\nc');
     expect(escapeControl('a\tb\nc', { newlines: false })).toBe('a\\tb\\nc');
