@@ -30,7 +30,8 @@ function refuseBinary(b: Uint8Array): void {
   const decoded = new TextDecoder('utf-8').decode(head);
   let invalid = 0;
   for (const c of decoded) if (c === '\uFFFD') invalid++;
-  if (invalid > 16 && invalid > decoded.length / 10) throw notText(`${invalid} of its first ${decoded.length} characters are not UTF-8 text`);
+  if (invalid > 16 && invalid > decoded.length / 10)
+    throw notText(`${invalid} of its first ${decoded.length} characters are not UTF-8 text`);
 }
 
 // C0 controls but tab and newline, DEL, C1 controls (U+009B is a one-character CSI on some

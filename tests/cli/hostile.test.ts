@@ -282,7 +282,9 @@ describe('safe text', () => {
       expect(r.err.trim().split('\n')).toHaveLength(1);
     }
     // A Latin-1 comment is still text: its line parses as a comment.
-    expect(decodeText(Uint8Array.from([...new TextEncoder().encode('# caf'), 0xe9, 0x0a, ...new TextEncoder().encode(CUBE)]))).toContain('v ');
+    expect(decodeText(Uint8Array.from([...new TextEncoder().encode('# caf'), 0xe9, 0x0a, ...new TextEncoder().encode(CUBE)]))).toContain(
+      'v ',
+    );
   });
 
   it('escapeControl keeps text, escapes C0, C1, DEL and bidirectional overrides', () => {
