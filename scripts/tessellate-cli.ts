@@ -1,7 +1,7 @@
 /**
  * `npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z])
  *   (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc]
- *   [--flat-baseline] [--demo-view] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`
+ *   [--flat-baseline] [--demo-view] [--limit-px] [--capacity N] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`
  * `npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye … --target …]) …`
  * Runs the GPU tessellation pipeline in Node (Dawn, any adapter; SwiftShader when there is no
  * GPU) and writes the welded mesh: by default on the exact Catmull-Clark limit surface (with
@@ -35,6 +35,10 @@
  * pixels of that camera (scripts/limit-distance.ts), into --stats as "limitPx" {max, p99, vertices},
  * and the drawn triangles between them (their edge midpoints and centroids, along the limit normal)
  * as "displayedPx" {max, p99, samples}.
+ * --capacity N: the output vertices and triangles (each) the compute tessellator holds, default
+ * 16,777,216 (the talk's largest count fits), at most what one storage binding of the adapter
+ * holds (the device is made with the adapter's largest limits); a tessellation past it has its
+ * factors scaled down by the budget, said on stderr ("budgetScale" in --stats).
  * --displacement map.png --scale S moves every output vertex along the surface normal by
  * h = (sample − M)·S (M = --mid, default 0.5), the map (8 or 16-bit PNG, greyscale or its red
  * channel) sampled bilinearly at the cage's uvs (the model needs vt on every face corner),
@@ -47,6 +51,7 @@ import { existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { CageError, escapeControl, LimitError } from '../src/mesh/index.ts';
 import { workBytesAtLeast } from '../src/gpu/tess/arenas.ts';
+import { outputCapacity } from '../src/gpu/tess/factors.ts';
 import { MAX_FACTOR } from '../src/gpu/contract/constants.ts';
 import { EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_OK, guarded, InputError, isInputError } from '../src/cli/boundary.ts';
 import { writeOutput } from '../src/cli/files.ts';
@@ -154,7 +159,16 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
   const cpuPrepMs = performance.now() - started;
   // The demo's first view (src/gpu/render/camera.ts fitOrbit on a 1280×720 canvas), as the camera.
   if (args.demoView) Object.assign(args.o, demoView(mesh));
+  const capacity = outputCapacity(device.limits, args.o);
+  if (args.o.vertexCapacity !== undefined && capacity.vertexCapacity < args.o.vertexCapacity)
+    console.error(
+      `tessellate: --capacity ${args.o.vertexCapacity}: this device holds ${capacity.vertexCapacity} (its storage binding limit)`,
+    );
   const r = await tessellateOnce(device, cage, args.o, undefined, { mesh, cc, acc });
+  if (r.out.scale < 1)
+    console.error(
+      `tessellate: the tessellation would pass the capacity of ${capacity.triangleCapacity} triangles or vertices: its factors were scaled by ${r.out.scale.toPrecision(3)} (--capacity N holds more)`,
+    );
   // Checked before anything is written or counted (--stats too): a NaN is not an output.
   refuseNonFiniteOutput(args.model, r.out.positions, r.out.vertexCount);
   // --limit-px: in pixels of the camera the run used (the same headlessCamera tessellateOnce made).
@@ -190,6 +204,8 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
         tessellationMs: timed ? Number((total - subdivision).toFixed(4)) : null,
         vertices: written.out.vertexCount,
         triangles: r.out.triangleCount,
+        capacity: capacity.triangleCapacity,
+        budgetScale: r.out.scale,
         ...(limit && displayed
           ? {
               limitPx: { max: Number(limit.maxPx.toFixed(4)), p99: Number(limit.p99Px.toFixed(4)), vertices: limit.count },

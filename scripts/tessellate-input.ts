@@ -10,12 +10,17 @@ import type { HeightWrap } from '../src/mesh/heightmap.ts';
 import { decodeHeightPng } from '../src/mesh/heightmap-png.ts';
 import { type Cage, type CageIssue, faceCount, formatIssue, loadCage, MAX_COORDINATE, requireUvs } from '../src/mesh/index.ts';
 import { isPow2Level } from '../src/pattern/pow2.ts';
+import { MAX_FACTOR } from '../src/pattern/max-factor.ts';
 import { isAccSurface, isSurfaceId, SURFACE_IDS, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { checkOutputPath, readInputBytes, readInputText } from '../src/cli/files.ts';
 import { InputError } from '../src/cli/boundary.ts';
 
-export const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
+export const USAGE = `usage: npm run tessellate -- model.obj (--fixed F | --adaptive [--lod S] [--eye x,y,z --target x,y,z | --demo-view]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface catmull-clark|phong|bezier-acc|gregory-acc|pm-acc] [--flat-baseline] [--limit-px] [--capacity N] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]
        npm run tessellate -- model.obj --tessellator instanced (--level L | --adaptive [--lod S] [--eye x,y,z --target x,y,z]) (--out out.obj | --stats) [--params out.json|out.txt] [--surface phong|catmull-clark|bezier-acc|gregory-acc|pm-acc] [--displacement map.png --scale S [--mid M] [--wrap repeat|clamp]]`;
+
+/** The largest --capacity: 2^28 vertices and triangles (3 GiB of output each); the device's
+ * binding limit usually holds fewer (the run says so). */
+export const MAX_CAPACITY = 1 << 28;
 
 /** A bad argument: its message and the usage lines, exit code 2. */
 export class UsageError extends Error {
@@ -60,7 +65,7 @@ export function parse(argv: string[]) {
     switch (a) {
       case '--fixed': {
         const f = Number(value());
-        if (!(f >= 1 && f <= 64)) throw new UsageError(`--fixed: a tess factor in [1, 64], got ${argv[i]}`);
+        if (!(f >= 1 && f <= MAX_FACTOR)) throw new UsageError(`--fixed: a tess factor in [1, ${MAX_FACTOR}], got ${argv[i]}`);
         o.mode = 'fixed';
         o.fixedFactor = f;
         modeSeen++;
@@ -138,6 +143,16 @@ export function parse(argv: string[]) {
       case '--limit-px':
         limitPx = true;
         break;
+      case '--capacity': {
+        // Output vertices and triangles the tessellator holds (each): past it the budget scales
+        // the factors down, as the demo does within its own capacity.
+        const n = Number(value());
+        if (!Number.isInteger(n) || n < 1 || n > MAX_CAPACITY)
+          throw new UsageError(`--capacity: output vertices and triangles, an integer in [1, ${MAX_CAPACITY}], got ${argv[i]}`);
+        o.vertexCapacity = n;
+        o.triangleCapacity = n;
+        break;
+      }
       default:
         if (a.startsWith('--')) throw new UsageError(`unknown option ${a}`);
         if (model) throw new UsageError(`one model only (got '${model}' and '${a}')`);
@@ -146,6 +161,7 @@ export function parse(argv: string[]) {
   }
   if (!model) throw new UsageError('no model given');
   const instanced = tessellator === 'instanced';
+  if (instanced && o.vertexCapacity !== undefined) throw new UsageError('--capacity applies to the compute tessellator');
   if (instanced) {
     if (o.mode === 'fixed') throw new UsageError('--tessellator instanced takes --level L (a power of two), not --fixed');
     if (surface !== undefined && !isSurfaceId(surface))

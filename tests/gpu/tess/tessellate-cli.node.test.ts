@@ -78,6 +78,28 @@ describe('npm run tessellate', () => {
     expect(worst).toBeLessThan(1e-5);
   });
 
+  it('--fixed reaches the top factor, and --capacity N holds the output: the factors scaled, said on stderr and in --stats', async () => {
+    // Factor 128 on the torus would be millions of triangles; 5,000 makes the budget scale it.
+    const r = await run('public/models/torus.obj', '--fixed', '128', '--surface', 'phong', '--capacity', '5000', '--stats');
+    expect(r.status, r.stderr).toBe(0);
+    const s = JSON.parse(
+      r.stdout
+        .trim()
+        .split('\n')
+        .filter((l) => l.startsWith('{'))[0],
+    );
+    expect(s.capacity).toBe(5000);
+    expect(s.triangles).toBeLessThanOrEqual(5000);
+    expect(s.vertices).toBeLessThanOrEqual(5000);
+    expect(s.budgetScale).toBeLessThan(1);
+    expect(r.stderr).toContain('its factors were scaled by');
+    for (const bad of ['0', '1.5', '1e12']) {
+      const b = await run('public/models/torus.obj', '--fixed', '4', '--capacity', bad, '--stats');
+      expect(b.status).toBe(2);
+      expect(b.stderr).toContain('--capacity: output vertices and triangles');
+    }
+  });
+
   it("--stats prints one JSON line whose counts are the cage's and the written OBJ's", async () => {
     const model = 'public/models/creased-box.obj';
     const out = join(dir, 'stats.obj');
