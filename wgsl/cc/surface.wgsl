@@ -56,8 +56,8 @@ fn ccWeights(bx: array<vec4<f32>, 2>, y: f32, mask: u32) -> CCWeights {
 struct CCSum { p: vec3<f32>, pu: vec3<f32>, pv: vec3<f32> }
 
 fn ccAdd(s: ptr<function, CCSum>, w: CCWeights, q: u32, P: vec3<f32>) {
-  let r = q >> 2u;
-  let c = q & 3u;
+  let r = q / 4u;
+  let c = q % 4u;
   (*s).p += (w.y[r] * w.x[c]) * P;
   (*s).pu += (w.y[r] * w.dx[c]) * P;
   (*s).pv += (w.dy[r] * w.x[c]) * P;
@@ -142,8 +142,8 @@ fn ccSubPatchOf(f: CCFan, i: u32, L: u32, which: u32) -> CCSubPatch {
 // = sector i+1's (b, 1); (a, −1) = sector i−1's (1, a); (−1, 0) = sector i+2's (1, 0) (across the
 // valence-4 (0, 1)).
 fn ccSubPatchPoint(s: CCSubPatch, k: u32) -> u32 {
-  let a = i32(k & 3u) + s.da;
-  let b = i32(k >> 2u) + s.db;
+  let a = i32(k % 4u) + s.da;
+  let b = i32(k / 4u) + s.db;
   if (b < 0) { return s.prev + u32(a); }
   if (a >= 1) { return s.own + u32(4 * (a - 1) + b); }
   if (b == 0) { return select(s.next2, s.centre, a == 0); }
