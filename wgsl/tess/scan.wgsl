@@ -122,10 +122,10 @@ fn budget(@builtin(local_invocation_index) lid: u32) {
   let shown = select(0u, triangles, fits);
   drawArgs = array(3u * shown, 1u, 0u, 0u, 0u);
   counts = array(select(0u, vertices, fits), shown, bitcast<u32>(BUDGET_SCALES[c]), c);
-  // One emit thread per output vertex (the welded ones included), then one per output triangle.
+  // One emit thread per output vertex (the welded ones included); the triangles' emit is a
+  // workgroup per cage triangle (wgsl/tess/emit.wgsl `triangles`), sized on the CPU.
   let v = dispatchArgs(select(0u, vertices, fits));
-  let t = dispatchArgs(shown);
-  emitArgs = array(v.x, v.y, v.z, t.x, t.y, t.z);
+  emitArgs = array(v.x, v.y, v.z);
 }
 
 @compute @workgroup_size(THREADS)

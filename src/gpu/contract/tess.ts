@@ -367,11 +367,9 @@ export const TESS_PARAMS = defineStruct('Params', [
 
 /** Words of the tessellator's fixed-size outputs: drawIndexedIndirect's arguments, the counts
  * (src/gpu/contract/tessellated-mesh.ts: vertices, triangles, the accepted scale as f32 bits, the
- * budget candidate), and the indirect dispatches of the emit pass that the budget sizes (one thread
- * per output vertex, then one per output triangle: 3 words each). */
-export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 6 } as const;
-/** Byte offset of the triangles' dispatch in emitArgs. */
-export const EMIT_TRIANGLES_ARGS_OFFSET = 4 * 3;
+ * budget candidate), and the indirect dispatch of the vertices' emit that the budget sizes (one
+ * thread per output vertex; the triangles' emit is a workgroup per cage triangle). */
+export const TESS_FIXED_WORDS = { drawArgs: 5, counts: 4, emitArgs: 3 } as const;
 
 /** One binding group for every tessellator pass; each pass's layout holds the bindings its entry
  * point uses (usedBindings), so the numbers below are the only place they are written. */

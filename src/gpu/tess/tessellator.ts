@@ -52,7 +52,6 @@ import type { ArenaLayout } from '../contract/define.ts';
 import { grid2d, groupsFor } from '../contract/constants.ts';
 import {
   BUDGET_CANDIDATES,
-  EMIT_TRIANGLES_ARGS_OFFSET,
   SCAN_BLOCK,
   SCANS,
   TESS_FIXED_WORDS,
@@ -446,14 +445,15 @@ export class Tessellator {
     }
     {
       // Every output vertex (the welded corners and edge points, then the triangles' interior
-      // vertices) and every output triangle: one indirect dispatch sized by the budget.
+      // vertices: an indirect dispatch sized by the budget), then every output triangle (a
+      // workgroup per cage triangle).
       const cp = pass('tess emit', 'tessellate');
       cp.setPipeline(this.pipelines.emitVertices!.pipeline);
       cp.setBindGroup(0, m.groups.emitVertices!);
       cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
       cp.setPipeline(this.pipelines.emitTriangles!.pipeline);
       cp.setBindGroup(0, m.groups.emitTriangles!);
-      cp.dispatchWorkgroupsIndirect(this.emitArgs, EMIT_TRIANGLES_ARGS_OFFSET);
+      cp.dispatchWorkgroups(...grid2d(nT));
       cp.end();
     }
 
