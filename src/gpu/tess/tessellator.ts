@@ -50,14 +50,7 @@ import { type CageName, meshParams, type PackInput, packArenas, type WorkName } 
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { grid2d, groupsFor } from '../contract/constants.ts';
-import {
-  BUDGET_CANDIDATES,
-  SCAN_BLOCK,
-  SCANS,
-  TESS_FIXED_WORDS,
-  TESS_PARAMS,
-  type TessBinding,
-} from '../contract/tess.ts';
+import { BUDGET_CANDIDATES, SCAN_BLOCK, SCANS, TESS_FIXED_WORDS, TESS_PARAMS, type TessBinding } from '../contract/tess.ts';
 import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
