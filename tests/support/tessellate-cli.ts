@@ -66,3 +66,14 @@ export function spawnCli(...args: string[]): CliResult {
   });
   return { status: r.status, stdout: r.stdout, stderr: r.stderr };
 }
+
+/** The one JSON line that --stats prints on stdout, parsed. */
+// biome-ignore lint/suspicious/noExplicitAny: the stats line's fields are the test's to read
+export function statsLine(stdout: string): any {
+  return JSON.parse(
+    stdout
+      .trim()
+      .split('\n')
+      .filter((l) => l.startsWith('{'))[0],
+  );
+}

@@ -11,7 +11,7 @@ import { describe, it, expect } from 'vitest';
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';
 import { DEFAULT_OPTIONS, loadCage } from '../../../src/mesh/index.ts';
 import { DisplacedSurface, Surface } from '../../../src/subdiv/index.ts';
-import { runCli } from '../../support/tessellate-cli.ts';
+import { runCli, statsLine } from '../../support/tessellate-cli.ts';
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -57,12 +57,7 @@ describe('npm run tessellate -- --tessellator instanced --surface catmull-clark'
       '--stats',
     );
     expect(r.status, r.stderr).toBe(0);
-    const stats = JSON.parse(
-      r.stdout
-        .trim()
-        .split('\n')
-        .filter((l) => l.startsWith('{'))[0],
-    );
+    const stats = statsLine(r.stdout);
     const { v, f } = objOf(out);
     expect(readFileSync(out, 'utf8')).toContain('catmull-clark surface');
     expect(stats.vertices).toBe(v.length);
@@ -118,13 +113,6 @@ function openEdges(f: number[][]): number {
 describe('npm run tessellate -- --tessellator instanced --displacement', () => {
   const model = 'public/models/brick-box.obj';
   const png = 'public/models/brick-box-height.png';
-  const stats = (stdout: string) =>
-    JSON.parse(
-      stdout
-        .trim()
-        .split('\n')
-        .filter((l) => l.startsWith('{'))[0],
-    );
 
   it('catmull-clark, brick box, level 4: closed, weld gap exactly 0, every vertex on the f64 displaced limit at its --params', async () => {
     const out = join(dir, 'brick-cc.obj');
@@ -150,7 +138,7 @@ describe('npm run tessellate -- --tessellator instanced --displacement', () => {
       '--stats',
     );
     expect(r.status, r.stderr).toBe(0);
-    const st = stats(r.stdout);
+    const st = statsLine(r.stdout);
     const { v, f } = objOf(out);
     expect(readFileSync(out, 'utf8')).toContain('displaced');
     expect(st.weldGap).toBe(0);
@@ -207,7 +195,7 @@ describe('npm run tessellate -- --tessellator instanced --displacement', () => {
       '--stats',
     );
     expect(r.status, r.stderr).toBe(0);
-    expect(stats(r.stdout).weldGap).toBe(0);
+    expect(statsLine(r.stdout).weldGap).toBe(0);
     expect(openEdges(objOf(out).f)).toBe(0);
   });
 });

@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { loadCage, DEFAULT_OPTIONS } from '../../../src/mesh/index.ts';
 import { decodeHeightPng } from '../../../src/mesh/heightmap-png.ts';
 import { DisplacedSurface, Surface } from '../../../src/subdiv/index.ts';
-import { runCli, spawnCli } from '../../support/tessellate-cli.ts';
+import { runCli, spawnCli, statsLine } from '../../support/tessellate-cli.ts';
 
 const dir = mkdtempSync(join(tmpdir(), 'tessellab-cli-'));
 // In this process (tests/support/tessellate-cli.ts says why); spawnCli where the claim is the process's.
@@ -82,12 +82,7 @@ describe('npm run tessellate', () => {
     // Factor 128 on the torus would be millions of triangles; 5,000 makes the budget scale it.
     const r = await run('public/models/torus.obj', '--fixed', '128', '--surface', 'phong', '--capacity', '5000', '--stats');
     expect(r.status, r.stderr).toBe(0);
-    const s = JSON.parse(
-      r.stdout
-        .trim()
-        .split('\n')
-        .filter((l) => l.startsWith('{'))[0],
-    );
+    const s = statsLine(r.stdout);
     expect(s.capacity).toBe(5000);
     expect(s.triangles).toBeLessThanOrEqual(5000);
     expect(s.vertices).toBeLessThanOrEqual(5000);
@@ -169,12 +164,7 @@ describe('npm run tessellate', () => {
       '--stats',
     );
     expect(r.status, r.stderr).toBe(0);
-    const stats = JSON.parse(
-      r.stdout
-        .trim()
-        .split('\n')
-        .filter((l) => l.startsWith('{'))[0],
-    );
+    const stats = statsLine(r.stdout);
     r = await run('public/models/torus.obj', '--fixed', '4', '--surface', 'phong', '--out', comp);
     expect(r.status, r.stderr).toBe(0);
     const a = objOf(inst),
@@ -217,12 +207,7 @@ describe('npm run tessellate', () => {
       '--stats',
     );
     expect(r.status, r.stderr).toBe(0);
-    const stats = JSON.parse(
-      r.stdout
-        .trim()
-        .split('\n')
-        .filter((l) => l.startsWith('{'))[0],
-    );
+    const stats = statsLine(r.stdout);
     const { v, f } = objOf(out);
     expect(stats.vertices).toBe(v.length);
     expect(stats.triangles).toBe(f.length);
@@ -253,12 +238,7 @@ describe('npm run tessellate', () => {
       '--stats',
     );
     expect(r.status, r.stderr).toBe(0);
-    const stats = JSON.parse(
-      r.stdout
-        .trim()
-        .split('\n')
-        .filter((l) => l.startsWith('{'))[0],
-    );
+    const stats = statsLine(r.stdout);
     const { v, f } = objOf(out);
     expect(stats.vertices).toBe(v.length);
     expect(stats.triangles).toBe(f.length);
