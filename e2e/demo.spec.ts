@@ -113,10 +113,25 @@ test('the patch-colour toggle changes the picture, and back', async ({ page }) =
   expect(errors).toEqual([]);
 });
 
-test('the surface switch: Phong, flat cage and back to Catmull-Clark', async ({ page }) => {
+test('the surface switch: Phong, flat cage and back to Catmull-Clark; a model picked again is not fetched or prepared again', async ({
+  page,
+}) => {
   const errors = collectErrors(page);
-  await page.goto('/?model=torus&t=0');
+  const fetched: string[] = [];
+  page.on('request', (r) => fetched.push(new URL(r.url()).pathname));
+  await page.goto('/?model=torus&t=0&up=z');
   await ready(page);
+  const modelUp = () => page.evaluate(() => (window as unknown as { tessellab: { modelUp(): number[] } }).tessellab.modelUp());
+  expect(await modelUp()).toEqual([0, 0, -1]);
+  // Away and back: the same cage (its surface data cached with it), not a second download.
+  const cage = page.locator('.lil-gui.panel .lil-option').filter({ hasText: 'cage' }).first().locator('select');
+  await cage.selectOption({ label: 'Gear' });
+  await expect(page.getByTestId('stats-cage')).toContainText('gear');
+  // The link's up axis was the torus's: the gear opens Y-up, as it is stored.
+  expect(await modelUp()).toEqual([0, 1, 0]);
+  await cage.selectOption({ label: 'Torus' });
+  await expect(page.getByTestId('stats-cage')).toContainText('torus');
+  expect(fetched.filter((p) => p.endsWith('/torus.obj'))).toHaveLength(1);
   const surface = control(page, 'surface').locator('select');
   await surface.selectOption({ label: 'Phong' });
   await expect(page.getByTestId('stats-surface')).toHaveText('Phong');
@@ -189,6 +204,11 @@ test('rebuilds the geometry only when the camera (adaptive), factors or model ch
   await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 10, { steps: 3 });
   await page.mouse.up();
   await expect.poll(() => builds(page)).toBeGreaterThan(1);
+  // The drag's builds land while earlier ones' timings are read back: once the page is still,
+  // every figure is the newest build's, none left marked as an older one's.
+  await expect(page.getByTestId('stats-build')).toBeVisible();
+  await expect(page.getByTestId('stats-building')).toHaveCount(0, { timeout: 30_000 });
+  await expect(page.getByTestId('stats-build-stale')).toHaveCount(0, { timeout: 30_000 });
   // Fixed factors do not depend on the camera: switching rebuilds once, turning the view does not.
   await page.goto('/?model=torus&t=0&mode=fixed&factor=3');
   await ready(page);
@@ -211,7 +231,11 @@ test('the turntable rebuilds adaptive geometry every frame without errors', asyn
 test('a bad OBJ shows its error with line numbers and keeps the model; a good one replaces it, and no link claims it', async ({ page }) => {
   await page.goto('/?model=torus&t=0');
   await ready(page);
-  const before = await page.locator('#view').screenshot();
+  // The canvas, not the panels over it: the stats fill in their timings as they come back, and a
+  // screenshot taken before they had settled differed from the later one (a race, seen with two
+  // test workers).
+  const canvas = () => page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')] });
+  const before = await canvas();
   await dropFile(page, 'broken.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n');
   const toast = page.getByTestId('toast-error');
   await expect(toast).toBeVisible();
@@ -222,7 +246,7 @@ test('a bad OBJ shows its error with line numbers and keeps the model; a good on
   // The same frame as before (once the message, drawn over the canvas, is dismissed).
   await toast.getByRole('button', { name: 'Dismiss' }).click();
   await expect(toast).toBeHidden();
-  expect(await page.locator('#view').screenshot()).toEqual(before);
+  expect(await canvas()).toEqual(before);
   // A good file replaces the model.
   await dropFile(page, 'quad.obj', 'v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n');
   await expect(page.getByTestId('stats-cage')).toContainText('quad.obj');

@@ -24,6 +24,11 @@ for (const name of ['suzanne', 'bigguy', 'monsterfrog', 'imrod']) {
     await expect(surface).toContainText('prepared in');
     await expect(page.getByTestId('stats-output')).toContainText('tris', { timeout: 60_000 });
     await expect(page.locator('#loading')).toBeHidden();
+    // Upright: the four are stored Y-up, OBJ's convention, which a dropped file is read in (the
+    // orbit camera's up is the world's +Y), and the URL names no model it does not show.
+    expect(await page.evaluate(() => (window as unknown as { tessellab: { modelUp(): number[] } }).tessellab.modelUp())).toEqual([0, 1, 0]);
+    await expect(page.getByTestId('stats-cage')).toContainText(`${name}.obj`);
+    expect(new URL(page.url()).searchParams.get('model')).toBeNull();
     expect(errors).toEqual([]);
   });
 }

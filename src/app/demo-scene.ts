@@ -17,7 +17,7 @@ import { DemoController, type DemoPorts, type Shown } from './controller.ts';
 import { DemoBase } from './demo-base.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { loadModelFromFile, loadModelFromUrl, type LoadedModel } from './models.ts';
-import { formatParams, type DemoParams } from './params.ts';
+import { DEFAULT_PARAMS, formatParams, type DemoParams } from './params.ts';
 import { HEAT_DEFAULT_RANGE } from '../gpu/acc/heat.ts';
 import { ErrorViews } from './error-views.ts';
 import { setLoading, setPageState, showToast } from './ui.ts';
@@ -32,7 +32,9 @@ import type { DemoMode, ModeHost } from './modes/mode.ts';
 import { ModeSwitch } from './modes/mode-switch.ts';
 import { pickMode } from './modes/pick-mode.ts';
 
-export type CameraParams = Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist'>>;
+/** How a model is first placed: the URL's camera and up axis (for the model the URL names). A
+ * model picked or opened later has none: it opens Y-up (OBJ's convention), framed afresh. */
+export type CameraParams = Partial<Pick<DemoParams, 'yaw' | 'pitch' | 'dist' | 'up'>>;
 
 /** What a model request carries to the page: the first view, and what the cage picker shows. */
 interface Placement {
@@ -53,7 +55,7 @@ export abstract class DemoScene extends DemoBase {
   panel: PickerDisplay | null = null;
   /** The model's bounds in world space, and its model-to-world rotation (up axis to +Y). */
   #bounds: Bounds | null = null;
-  protected modelMatrix = upAxisMatrix('z') as Float32Array;
+  protected modelMatrix = upAxisMatrix(DEFAULT_PARAMS.up) as Float32Array;
 
   protected renderer: Renderer | null = null;
   /** The tessellator of the surface drawn (one at a time: each holds big output buffers), and
@@ -175,6 +177,9 @@ export abstract class DemoScene extends DemoBase {
       shown: (model, previous, placement) => {
         if (model !== previous) {
           for (const w of model.warnings.slice(0, 3)) console.info(`${model.title}: ${w.line ? `line ${w.line}: ` : ''}${w.message}`);
+          // The up axis belongs to the model it was chosen for: a new model opens Y-up unless its
+          // link says otherwise.
+          this.params.up = placement?.camera?.up ?? DEFAULT_PARAMS.up;
           this.placeModel(placement?.camera);
         }
         if (placement) this.panel?.showPicked(placement.pick);
@@ -327,9 +332,22 @@ export abstract class DemoScene extends DemoBase {
     this.#boundHeat = pass;
   }
 
+  /** The project's models once fetched: picking one again shows the same cage, whose surface
+   * data (cached per cage) is then not prepared again, as the panel's "cached" says. A failed
+   * fetch is not kept. */
+  readonly #builtins = new Map<string, Promise<LoadedModel>>();
+
   /** Load one of the project's models (by name), a URL, or a file; the picker shows which. */
   loadBuiltin(name: string, camera?: CameraParams): Promise<boolean> {
-    const load = () => fetchBuiltinModel(name, this.#heights);
+    const load = () => {
+      let model = this.#builtins.get(name);
+      if (!model) {
+        model = fetchBuiltinModel(name, this.#heights);
+        this.#builtins.set(name, model);
+        model.catch(() => this.#builtins.delete(name));
+      }
+      return model;
+    };
     return this.controller.loadModel(load, name, { camera, pick: name });
   }
 
@@ -417,6 +435,12 @@ export abstract class DemoScene extends DemoBase {
     this.#cageLines = uploadCageLines(this.gpu.device, model.cage, seam);
     renderer.setCage(this.#cageLines);
     this.requestFrame();
+  }
+
+  /** Where the model's own +Y points in the world (the camera's up is the world's +Y): [0, 1, 0] for a
+   * model read Y-up, [0, 0, -1] for one read Z-up. A test hook (e2e/talk-models.spec.ts). */
+  modelUp(): number[] {
+    return [this.modelMatrix[4], this.modelMatrix[5], this.modelMatrix[6]].map((c) => Math.round(c * 1e6) / 1e6 + 0);
   }
 
   /** World bounds, light and camera for the current model and up axis. */

@@ -24,6 +24,8 @@ async function main(): Promise<void> {
     holdPreparation: (hold: boolean) => demo.holdPreparation(hold),
     /** The bytes (and counts) of the page's live GPU buffers and textures, and per label. */
     gpuMemory: () => ({ ...demo.memory.counts, byLabel: demo.memory.byLabel() }),
+    /** Where the shown model's +Y points in the world (up on screen when it is [0, 1, 0]). */
+    modelUp: () => demo.modelUp(),
     /** The instanced tessellator's bucket draw records (GPU) and the CPU's count (static mode). */
     instancedRecords: () => demo.instancedRecords(),
   };
@@ -38,7 +40,7 @@ async function main(): Promise<void> {
   demo.panel = params.ui ? buildPanel(demo, source.kind === 'builtin' ? source.name : DEFAULT_MODEL) : null;
   enableDrop((file) => void demo.loadFile(file));
 
-  const camera = { yaw: params.yaw, pitch: params.pitch, dist: params.dist };
+  const camera = { yaw: params.yaw, pitch: params.pitch, dist: params.dist, up: params.up };
   if (source.kind === 'url') {
     await demo.loadUrl(source.url, camera);
   } else if (source.kind === 'refused') {

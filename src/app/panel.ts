@@ -91,7 +91,7 @@ export const PANEL: readonly Folder[] = [
       {
         label: 'up axis',
         kind: 'choice',
-        options: { 'Z (project models)': 'z', Y: 'y' },
+        options: { 'Y (OBJ convention)': 'y', Z: 'z' },
         param: 'up',
         change: (demo) => demo.placeModel(),
       },

@@ -23,7 +23,8 @@ export type TessellatorKind = 'compute' | 'instanced';
 export interface DemoParams {
   /** A model name from the project's list, or the path of an OBJ on the page's own site (model-source.ts). */
   model: string | null;
-  /** The model's up axis: the project's models are Z-up; many OBJ exporters write Y-up. */
+  /** The shown model's up axis: Y, OBJ's convention, as the project's models and the talk's are
+   * stored; some exporters (CAD, Blender without its axis conversion) write Z-up. */
   up: UpAxis;
   mode: Mode;
   /** The tessellated Catmull-Clark or Phong surface, or the cage's own faces (flat, before
@@ -103,7 +104,7 @@ export const DSCALE_RANGE = { min: -4, max: 4 } as const;
 
 export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   model: null,
-  up: 'z',
+  up: 'y',
   mode: 'adaptive',
   surface: 'catmull-clark',
   patches: false,

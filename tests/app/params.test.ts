@@ -9,11 +9,11 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=y&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&errorview=normal&errrange=2&compare=pm-acc&disp=0&dscale=2.5&seams=1',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=z&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&errorview=normal&errrange=2&compare=pm-acc&disp=0&dscale=2.5&seams=1',
     );
     expect(p).toEqual({
       model: 'torus',
-      up: 'y',
+      up: 'z',
       mode: 'fixed',
       surface: 'cage',
       patches: false,
@@ -71,7 +71,7 @@ describe('URL parameters', () => {
     expect(p.mode).toBe(DEFAULT_PARAMS.mode);
     expect(p.wire).toBe(DEFAULT_PARAMS.wire);
     expect(p.pitch).toBe(89);
-    expect(p.up).toBe('z');
+    expect(p.up).toBe(DEFAULT_PARAMS.up);
     expect(parseParams('lod=NaN&factor=Infinity').lod).toBe(DEFAULT_PARAMS.lod);
   });
 
@@ -101,7 +101,7 @@ describe('URL parameters', () => {
     const cases = [
       '?model=gear&mode=fixed&factor=7.5',
       '?lod=0.25&wire=0&cage=1&surface=cage',
-      '?model=sheet&up=y&t=0&yaw=12.5&pitch=20&dist=2.5',
+      '?model=sheet&up=z&t=0&yaw=12.5&pitch=20&dist=2.5',
       '?spin=1&ui=0&cap=16',
       '?surface=phong',
       '?patches=1&flat=0',

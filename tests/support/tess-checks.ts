@@ -62,7 +62,9 @@ export function checkTessellation(
     closed: boolean;
     maxErrors?: number;
     /** The surface at (t, w); null where the caller holds the vertex to its own rule instead. */
-    reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[] } | null;
+    /** The surface at (t, w), and the position error it is held to there (a fraction of the model
+     * size; 1e-5 unless `bound` says otherwise, as in the Catmull-Clark surface's blended squares). */
+    reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[]; bound?: number } | null;
     /** The tessellator splits normals at infinitely sharp creases (the Catmull-Clark surface:
      * prepare.ts splitCreases), so those points are output once per side or sector. */
     split?: boolean;
@@ -123,6 +125,9 @@ export function checkTessellation(
   // normal where displacement is on): only its normal is its own side's.
   let maxPositionError = 0;
   let maxNormalError = 0;
+  /** The vertex furthest over its bound (error ÷ bound), and the message for it. */
+  let worstExcess = 0;
+  let worstMessage = '';
   for (let v = 0; v < out.vertexCount; v++) {
     const s = out.srcTri[v];
     if (v < mesh.vertexCount && mesh.vertexOwner[v] === NO_OWNER) continue; // a cage vertex no face uses
@@ -136,8 +141,13 @@ export function checkTessellation(
     const dp = canonical[v] !== v ? 0 : Math.hypot(pos[0] - ref.pos[0], pos[1] - ref.pos[1], pos[2] - ref.pos[2]) / mesh.size;
     maxPositionError = Math.max(maxPositionError, dp);
     maxNormalError = Math.max(maxNormalError, angleBetween(nrm, ref.normal));
+    const bound = (ref as { bound?: number }).bound ?? 1e-5;
+    if (dp / bound > worstExcess) {
+      worstExcess = dp / bound;
+      worstMessage = `position error ${dp} of the model size > ${bound}`;
+    }
   }
-  if (maxPositionError > 1e-5) add(`position error ${maxPositionError} of the model size > 1e-5`);
+  if (worstExcess > 1) add(worstMessage);
 
   // Watertight: every edge of a closed output used by exactly two triangles, once each way (by
   // the first vertex at each position where normals split, above).

@@ -95,7 +95,7 @@ async function runPipeline(device: GPUDevice, cage: Cage, s: (typeof SURFACES)[n
   const tess = Tessellator.create(device, tables, { surface: s.surface, vertexCapacity: 100_000, triangleCapacity: 100_000 });
   const mesh = prepareMesh(cage);
   tess.setMesh(mesh, s.data(cage, mesh));
-  const modelMatrix = upAxisMatrix('z') as Float32Array;
+  const modelMatrix = upAxisMatrix('y') as Float32Array; // the project's models are stored Y-up
   const bounds = transformBounds(boundsOf(cage.positions), modelMatrix);
   const renderer = Renderer.create(device, { colorFormat: FORMAT, shadowMapSize: 512 });
   renderer.setMesh(tess.output);

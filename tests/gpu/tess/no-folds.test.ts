@@ -14,7 +14,7 @@
  * factors just above 1: four of its cage triangles, at factors up to 1.4375 and at 2 (the test
  * "the creature's Phong surface still folds" below; seven, up to 3.125, before the per-edge α).
  * They lie where the legs leave the body: at the two cage vertices between the legs (x = ±1.2,
- * y = 0, z = 0.75), whose vertex normals lie 6° from the planes of some of their faces (84° from
+ * y = 0.75, z = 0 as stored, Y-up), whose vertex normals lie 6° from the planes of some of their faces (84° from
  * those faces' normals), and at two legs' roots (16°). Phong tessellation projects onto those
  * tangent planes, which pulls the points near such a vertex sideways, and whole rows of its
  * pattern turn over. Elsewhere a fold is the pattern's: a sliver whose three vertices lie on one
@@ -22,6 +22,8 @@
  *
  * MET since the Phong surface's α per edge (src/gpu/surface/phong.ts phongTriAlphas, 2026-11-27): 0 on
  * every project model over the 24 views (the creature 0 of 1,538,342; 6 of 1,614,614 before).
+ * Still 0 since the models are stored Y-up (2026-11-28), which turned these views 90° about x
+ * relative to them: the figures in this header are of the views before that.
  * What is left, found with views this test does not take (.scratch, not kept): 24 directions
  * (yaw 45° apart, pitch −0.8, 0, 0.8) at 17 distances 1.25× apart from 1 to 35 times the
  * model's size, LOD 1: the creature folds 164 of 9,861,132 triangles (921 of 10,333,694 with
