@@ -64,6 +64,8 @@ export abstract class DemoBase {
   protected abstract onFrame(encoder: GPUCommandEncoder, target: GPUTexture, time: number): void;
   /** After the frame's commands were submitted: read back timings and counters. */
   protected onAfterSubmit(): void {}
+  /** The frames stopped (nothing to draw): the frame time went to 0 ("idle"). */
+  protected onIdle(): void {}
   /** The user moved the camera. */
   protected onCameraChanged(): void {}
   /** Release GPU resources of a lost device (they are garbage, but hold JS references). */
@@ -185,7 +187,14 @@ export abstract class DemoBase {
     // stays owed and is drawn when the tab is shown again (see #bindInput's visibilitychange).
     if (this.#recovering || !this.camera || document.visibilityState === 'hidden') return;
     if (!this.#dirty && !(this.frozenTime === null && this.isAnimating())) {
-      this.#lastFrameAt = 0;
+      // Idle: the frame time is of frames drawn in a row, so none is shown now (it used to keep
+      // the last figure while nothing was drawn).
+      if (this.#lastFrameAt) {
+        this.#lastFrameAt = 0;
+        this.#frameSamples.length = 0;
+        this.timing.frameMs = 0;
+        this.onIdle();
+      }
       return;
     }
     this.#dirty = false;

@@ -40,6 +40,8 @@ export interface GeometrySource {
   readTimings(): Promise<Record<string, number>>;
   /** The timestamps' readback never settled: its builds go untimed (src/gpu/device/map-within.ts). */
   readonly timingStalled?: boolean;
+  /** A build's timestamps wait to be read: it came while the last read was in flight. */
+  readonly timingUnread?: boolean;
   destroy(): void;
 }
 
@@ -178,6 +180,10 @@ export class TessellatorGeometry implements GeometrySource {
 
   get timingStalled(): boolean {
     return this.#tessellator.timingStalled;
+  }
+
+  get timingUnread(): boolean {
+    return this.#tessellator.timingUnread;
   }
 
   destroy(): void {

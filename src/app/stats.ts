@@ -55,6 +55,10 @@ export interface StatsInput {
   source: 'cage' | 'tessellator';
   mode: 'adaptive' | 'fixed';
   tessTimes: Record<string, number>;
+  /** The tessellation times are an older build's: the drawn one is still on the GPU or being read. */
+  tessTimesStale?: boolean;
+  /** The counts are an older build's, likewise ("building…" beside them). */
+  countsStale?: boolean;
   drawTimes: Record<string, number>;
   timestamps: boolean;
   /** The device has timestamp queries but their readback never settled: timing stopped. */
@@ -101,6 +105,11 @@ function mib(bytes: number): string {
   return `${(bytes / 2 ** 20).toFixed(bytes < 10 * 2 ** 20 ? 2 : 1)} MiB`;
 }
 
+/** A ratio with two significant digits (0.0085×, 0.42×, 3.1×, 12×). */
+export function ratio(x: number): string {
+  return `${x >= 10 ? Math.round(x) : x.toPrecision(2)}×`;
+}
+
 function ms(x: number): string {
   return x < 0.01 ? '<0.01' : x.toFixed(2);
 }
@@ -129,8 +138,9 @@ function errorText(e: ErrorStats): string {
   if (!t) return `${name} <span class="muted">measuring…</span>`;
   return (
     `${name} geometry max <span data-testid="err-max-geometry">${percentOfDiagonal(t.maxDistance)}</span> · RMS ${percentOfDiagonal(t.rmsDistance)}` +
+    ` <span class="muted">of the diagonal</span>` +
     ` · normal max <span data-testid="err-max-normal">${degrees(t.maxAngle)}</span> · RMS ${degrees(t.rmsAngle)}` +
-    ` <span class="muted">of the diagonal · ${int.format(t.vertices)} verts</span>`
+    ` <span class="muted">· ${int.format(t.vertices)} verts</span>`
   );
 }
 
@@ -208,7 +218,10 @@ export function renderStats(s: StatsInput): string {
           'stats-buckets',
         ),
       );
-  } else rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>` : '…', 'stats-output'));
+  } else {
+    const building = s.countsStale ? ' <span class="muted" data-testid="stats-building">· building…</span>' : '';
+    rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>${building}` : '…', 'stats-output'));
+  }
   if (split && s.timestamps) {
     // Both tessellators' draw passes, from their timing slots (src/gpu/render/renderer.ts DrawOptions.region).
     const t = s.drawTimes;
@@ -221,7 +234,7 @@ export function renderStats(s: StatsInput): string {
   const o = s.source === 'cage' || inst ? null : s.other;
   if (o && o.mode !== s.mode) {
     let text = `${size(o.counts)} <span class="muted">${o.mode}, ${esc(o.setting)}`;
-    if (c && c.triangleCount > 0) text += ` · ${(o.counts.triangleCount / c.triangleCount).toFixed(2)}× the drawn tris`;
+    if (c && c.triangleCount > 0) text += ` · ${ratio(o.counts.triangleCount / c.triangleCount)} the drawn tris`;
     text += '</span>';
     if (o.counts.budgetScale < 1) text += ` <span class="warn">over budget</span>`;
     rows.push(row(`vs ${o.mode}`, text, 'stats-other'));
@@ -244,11 +257,16 @@ export function renderStats(s: StatsInput): string {
     if (tess.length) {
       const total = tess.reduce((a, [, v]) => a + v, 0);
       const detail = tess.map(([k, v]) => `${esc(k)} ${ms(v)}`).join(' · ');
-      rows.push(row('tessellation ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>`, 'stats-build'));
+      const stale = s.tessTimesStale
+        ? ' <span class="muted" data-testid="stats-build-stale">(the previous build; timing the new one…)</span>'
+        : '';
+      rows.push(row('tessellation ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>${stale}`, 'stats-build'));
     }
-    const draw = Object.entries(s.drawTimes)
+    let draw = Object.entries(s.drawTimes)
       .map(([k, v]) => `${esc(k)} ${ms(v)}`)
       .join(' · ');
+    // Nothing drawn now: the figures are the frame on screen's, said so.
+    if (draw && !s.frameMs) draw += ' <span class="muted">last frame</span>';
     const none = s.timingStalled ? '<span class="muted">timestamps did not come back: timing stopped</span>' : '…';
     if (!split) rows.push(row(inst ? 'draw ms (evaluates)' : 'draw ms', draw || none, 'stats-gpu'));
   } else {

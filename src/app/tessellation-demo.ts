@@ -52,7 +52,19 @@ export class TessellationDemo extends DemoScene {
   /** A build's counts still to be copied for reading back. */
   #countsOwed = false;
   #rebuiltThisFrame = false;
-  #tessTimingInFlight = false;
+  /**
+   * Whose figures the stats show. Every drawn build takes the next serial; the counts and the
+   * build's timings carry the serial of the build they were read from, so a figure of an older
+   * build (the new one still on the GPU, or its read in flight) is marked as such, never passed
+   * off as the new one's.
+   */
+  #buildSerial = 0;
+  #countsCopiedFor = 0;
+  #countsFor = 0;
+  #tessTimesFor = 0;
+  /** A read of the build's (or the frames') timestamps is running: later ones are read after it. */
+  #tessReading = false;
+  #drawReading = false;
   /** The stats panel is redrawn at most every 250 ms (see updateStats). */
   readonly #statsThrottle = new TrailingThrottle(() => this.#renderStats(), 250, {
     now: () => performance.now(),
@@ -236,6 +248,7 @@ export class TessellationDemo extends DemoScene {
       geometry.encode(encoder, factors);
       this.#builtFactors = factors;
       this.#countsOwed = true;
+      this.#buildSerial++;
       // The stats count tessellator builds; the flat cage's (drawn meanwhile while a surface is
       // prepared) encodes nothing.
       if (geometry instanceof TessellatorGeometry) this.#rebuilds++;
@@ -246,6 +259,7 @@ export class TessellationDemo extends DemoScene {
     if (builds.compute && this.#countsOwed && geometry.output && this.#counts?.idle) {
       this.#counts.copy(encoder, geometry.output.counts);
       this.#countsOwed = false;
+      this.#countsCopiedFor = this.#buildSerial;
     }
     return plan;
   }
@@ -273,8 +287,9 @@ export class TessellationDemo extends DemoScene {
    * frame, one extra build in that mode whose counts are read back, then the drawn build again
    * (separate submissions: each build writes the tessellator's parameters with writeBuffer).
    * Redone when the model, surface, flat baseline or the other mode's setting change, and, for
-   * adaptive, at most once a second while the camera moves. The tessellator times only one
-   * build at a time, so these extra builds never take the drawn build's timings.
+   * adaptive, at most once a second while the camera moves. Its timing is never what the stats
+   * read: the rebuild of the drawn output that follows it is the newer one (the stats read the
+   * newest build's timestamps, src/gpu/device/timestamp-ring.ts).
    */
   #countOtherMode(): void {
     const geometry = this.geometry;
@@ -302,13 +317,7 @@ export class TessellationDemo extends DemoScene {
   }
 
   protected override onAfterSubmit(): void {
-    const renderer = this.renderer;
-    const geometry = this.geometry;
     this.#countOtherMode();
-    // One read of the build's timestamps at a time: while one is mapping, later builds (a
-    // turntable rebuilds every frame) go untimed rather than map the same buffer twice.
-    const readTess = this.#rebuiltThisFrame && !this.#tessTimingInFlight;
-    if (readTess) this.#tessTimingInFlight = true;
     // Each read updates the stats on its own: the counts never wait on a timing read (on some
     // drivers a timestamp buffer's map settles late or not at all).
     const quietly = <T>(p: Promise<T> | undefined, fallback: T) => (p ?? Promise.resolve(fallback)).catch(() => fallback);
@@ -316,8 +325,12 @@ export class TessellationDemo extends DemoScene {
     // timestamp buffer whose map comes back late cannot hold the counts behind it (Debian's
     // Chromium 156 on SwiftShader kept the output row at "…" so). A timing map that never comes
     // back is cancelled after a deadline and timing stops (src/gpu/device/map-within.ts).
+    const copiedFor = this.#countsCopiedFor;
     const countsRead = quietly(this.#counts?.read(), null).then((counts) => {
-      if (counts) this.#lastCounts = counts;
+      if (counts) {
+        this.#lastCounts = counts;
+        this.#countsFor = copiedFor;
+      }
       this.updateStats();
       if (this.#countsOwed) this.requestFrame();
     });
@@ -339,21 +352,8 @@ export class TessellationDemo extends DemoScene {
         if (errors.copyOwed) this.requestFrame();
       });
     }
-    void countsRead.then(() =>
-      quietly(renderer?.readTimings(), {}).then((draw) => {
-        this.#drawTimes = draw;
-        this.updateStats();
-      }),
-    );
-    if (readTess) {
-      void countsRead.then(() =>
-        quietly(geometry?.readTimings(), {}).then((tess) => {
-          this.#tessTimingInFlight = false;
-          if (Object.keys(tess).length) this.#tessTimes = tess;
-          this.updateStats();
-        }),
-      );
-    }
+    void countsRead.then(() => this.#readDrawTimes());
+    if (this.#rebuiltThisFrame) void countsRead.then(() => this.#readTessTimes());
     // Not the interim cage drawn while the model's surface is prepared: ready means the surface asked for.
     if (!this.#firstFrameShown && this.model && !this.controller.preparing) {
       this.#firstFrameShown = true;
@@ -363,6 +363,57 @@ export class TessellationDemo extends DemoScene {
         setPageState('ready');
       });
     }
+  }
+
+  /**
+   * The newest build's timestamps, then again while a newer build's wait (one read at a time:
+   * builds submitted meanwhile are timed into the ring, src/gpu/device/timestamp-ring.ts, and read
+   * after it). The demo draws on demand: without the second read, a build landing during a read
+   * kept the older build's figures on screen until some later build.
+   */
+  async #readTessTimes(): Promise<void> {
+    if (this.#tessReading) return;
+    this.#tessReading = true;
+    try {
+      for (;;) {
+        const geometry = this.geometry;
+        if (!geometry) break;
+        const serial = this.#buildSerial;
+        const tess = await geometry.readTimings().catch(() => ({}) as Record<string, number>);
+        if (geometry !== this.geometry) break;
+        if (Object.keys(tess).length) {
+          this.#tessTimes = tess;
+          this.#tessTimesFor = serial;
+        }
+        this.updateStats();
+        if (!geometry.timingUnread) break;
+      }
+    } finally {
+      this.#tessReading = false;
+    }
+  }
+
+  /** The newest frame's draw timestamps, the same way (a frame drawn during a read is read next). */
+  async #readDrawTimes(): Promise<void> {
+    if (this.#drawReading) return;
+    this.#drawReading = true;
+    try {
+      for (;;) {
+        const renderer = this.renderer;
+        if (!renderer) break;
+        const draw = await renderer.readTimings().catch(() => ({}) as Record<string, number>);
+        if (renderer !== this.renderer) break;
+        this.#drawTimes = draw;
+        this.updateStats();
+        if (!renderer.timingUnread) break;
+      }
+    } finally {
+      this.#drawReading = false;
+    }
+  }
+
+  protected override onIdle(): void {
+    this.updateStats();
   }
 
   /**
@@ -396,6 +447,8 @@ export class TessellationDemo extends DemoScene {
       other: this.#otherMode.counts,
       mode: this.params.mode,
       tessTimes: this.#tessTimes,
+      tessTimesStale: this.#tessTimesFor !== this.#buildSerial,
+      countsStale: this.#countsFor !== this.#buildSerial,
       drawTimes: this.#drawTimes,
       timestamps: this.gpu.timestamps,
       timingStalled: !!(this.renderer?.timingStalled || this.geometry?.timingStalled),
@@ -412,8 +465,10 @@ export class TessellationDemo extends DemoScene {
   }
 
   protected override onModelShown(previous: LoadedModel | null): void {
+    // Another model: no figure of the previous one stays on screen.
     this.#lastCounts = null;
     this.#tessTimes = {};
+    this.#drawTimes = {};
     this.updateLegend();
     this.invalidateGeometry();
     // The first model's message stays until its first frame is on screen (onAfterSubmit).

@@ -20,7 +20,7 @@
 import { HEAT_UNIFORMS, type HeatView } from '../acc/heat.ts';
 import type { TessellatedMesh } from '../contract/tessellated-mesh.ts';
 import type { CageLines } from './cage-mesh.ts';
-import { mapWithin, MapStalled, TIMING_MAP_DEADLINE_MS } from '../device/map-within.ts';
+import { MapStalled } from '../device/map-within.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
 import { SCENE_UNIFORMS } from '../contract/render.ts';
 import { createRenderPipelines, DEPTH_FORMAT } from './pipelines.ts';
@@ -471,13 +471,10 @@ export class Renderer {
     if (timing) {
       const n = TIMED_PASSES.length * 2;
       encoder.resolveQuerySet(timing.querySet, q, n, timing.resolve, 256 * slot);
-      // Copy only into an idle readback buffer: a mapped or mapping one cannot be written; a
-      // split view copies after its last region (slot 1).
-      if (timing.state === 'idle' && (!region || slot === TIMING_SLOTS - 1)) {
-        for (let k = 0; k < TIMING_SLOTS; k++) encoder.copyBufferToBuffer(timing.resolve, 256 * k, timing.read, 8 * n * k, 8 * n);
-        timing.state = 'copied';
-        timing.slots = region ? TIMING_SLOTS : 1;
-      }
+      // Into a free readback buffer of the ring; a split view copies after its last region (slot 1).
+      const read = !region || slot === TIMING_SLOTS - 1 ? timing.ring.acquire(region ? TIMING_SLOTS : 1) : null;
+      if (read)
+        for (let k = 0; k < TIMING_SLOTS; k++) encoder.copyBufferToBuffer(timing.resolve, 256 * k, read as GPUBuffer, 8 * n * k, 8 * n);
     }
   }
 
@@ -488,30 +485,30 @@ export class Renderer {
   async readTimings(): Promise<Record<string, number>> {
     const timing = this.#timing;
     if (!timing) return {};
-    if (timing.state === 'copied') {
-      timing.state = 'mapping';
-      try {
-        await mapWithin(timing.read, TIMING_MAP_DEADLINE_MS);
-        const ticks = new BigInt64Array(timing.read.getMappedRange().slice(0));
-        timing.read.unmap();
+    try {
+      const got = await timing.ring.readLatest();
+      if (got) {
         const out: Record<string, number> = {};
-        for (let slot = 0; slot < timing.slots; slot++)
+        for (let slot = 0; slot < got.meta; slot++)
           TIMED_PASSES.forEach((name, i) => {
             const k = TIMED_PASSES.length * slot + i;
-            const ns = Number(ticks[2 * k + 1] - ticks[2 * k]);
+            const ns = Number(got.ticks[2 * k + 1] - got.ticks[2 * k]);
             // Timestamps may be quantized or reordered; a negative span means "unknown".
             if (ns >= 0) out[slot ? `${name} 2` : name] = ns / 1e6;
           });
         timing.last = out;
-      } catch (err) {
-        // A map that never settled: stop timing (the stats say so). Else the device was lost or
-        // destroyed while mapping: keep the last numbers.
-        if (err instanceof MapStalled) this.#timingStalled = true;
-      } finally {
-        timing.state = 'idle';
       }
+    } catch (err) {
+      // A map that never settled: stop timing (the stats say so). Else the device was lost or
+      // destroyed while mapping: keep the last numbers.
+      if (err instanceof MapStalled) this.#timingStalled = true;
     }
     return { ...timing.last };
+  }
+
+  /** A frame's timestamps wait to be read (it was drawn while the last read was in flight). */
+  get timingUnread(): boolean {
+    return this.#timing?.ring.unread ?? false;
   }
 
   destroy(): void {
@@ -525,7 +522,7 @@ export class Renderer {
     if (this.#timing) {
       this.#timing.querySet.destroy();
       this.#timing.resolve.destroy();
-      this.#timing.read.destroy();
+      this.#timing.ring.destroy();
     }
   }
 

@@ -492,11 +492,16 @@ export class Tessellator {
     cp.end();
   }
 
-  /** GPU milliseconds per stage of the last encoded rebuild ({} without timestamp queries).
-   * Rebuilds encoded while a read is in flight are not timed; a second call while one read is
-   * in flight gets the same answer. */
+  /** GPU milliseconds per stage of the newest submitted rebuild ({} without timestamp queries);
+   * a second call while one read is in flight gets the same answer (then `timingUnread` says
+   * whether a newer rebuild waits to be read). */
   readTimings(): Promise<Record<string, number>> {
     return this.timer?.read() ?? Promise.resolve({});
+  }
+
+  /** A rebuild's timestamps wait to be read (it was submitted while a read was in flight). */
+  get timingUnread(): boolean {
+    return this.timer?.unread ?? false;
   }
 
   /** The timestamps' readback never settled (src/gpu/device/map-within.ts): rebuilds go untimed. */

@@ -131,3 +131,72 @@ describe('PassTimer with a readback that never settles', () => {
     await expect(timer.read()).resolves.toEqual({});
   });
 });
+
+describe('PassTimer and the timestamp ring: a sequence submitted while a read is in flight is timed too', () => {
+  vi.stubGlobal('GPUBufferUsage', { MAP_READ: 1, COPY_DST: 8, COPY_SRC: 4, QUERY_RESOLVE: 512 });
+  /** Read buffers whose mapped contents say which copy they hold: [0, k ms] for copy k. */
+  class TaggedBuffer extends FakeBuffer {
+    ms = 0;
+    override getMappedRange(): ArrayBuffer {
+      return new BigUint64Array([0n, BigInt(this.ms * 1e6)]).buffer;
+    }
+  }
+  function timerWith(): { timer: PassTimer; reads: TaggedBuffer[]; copy: (ms: number) => void } {
+    const reads: TaggedBuffer[] = [];
+    let made = 0;
+    const device = {
+      createQuerySet: (d: { count: number }) => ({ count: d.count, destroy() {} }),
+      // The first buffer is the resolve buffer; the rest are the ring's readbacks.
+      createBuffer: () => {
+        if (made++ === 0) return new FakeBuffer();
+        const b = new TaggedBuffer();
+        reads.push(b);
+        return b;
+      },
+    } as unknown as GPUDevice;
+    const timer = new PassTimer(device, 't', 1);
+    const copy = (ms: number) => {
+      const enc = {
+        beginComputePass: () => ({}) as GPUComputePassEncoder,
+        resolveQuerySet() {},
+        copyBufferToBuffer(_s: unknown, _so: number, dst: TaggedBuffer) {
+          dst.ms = ms;
+        },
+      } as unknown as GPUCommandEncoder;
+      timer.beginPass(enc, 'build', 'build');
+      timer.resolve(enc);
+    };
+    return { timer, reads, copy };
+  }
+
+  it('reads the newest sequence, and the one that landed during the read after it', async () => {
+    const { timer, reads, copy } = timerWith();
+    copy(1);
+    const first = timer.read();
+    // A build lands while the first read maps: it is copied into another buffer, not dropped.
+    copy(2);
+    expect(timer.unread).toBe(true);
+    reads[0].settle();
+    expect(await first).toEqual({ build: 1 });
+    const second = timer.read();
+    reads[1].settle();
+    expect(await second).toEqual({ build: 2 });
+    expect(timer.unread).toBe(false);
+  });
+
+  it('with every buffer taken, gives up the oldest unread copy, never the newest', async () => {
+    const { timer, reads, copy } = timerWith();
+    copy(1);
+    const first = timer.read(); // maps reads[0]
+    copy(2);
+    copy(3);
+    copy(4); // reads[1] and reads[2] hold 2 and 3: the oldest (2) gives way to 4
+    reads[0].settle();
+    expect(await first).toEqual({ build: 1 });
+    const next = timer.read();
+    reads[1].settle();
+    expect(await next).toEqual({ build: 4 });
+    // 3 was older than 4: released unread.
+    expect(timer.unread).toBe(false);
+  });
+});
