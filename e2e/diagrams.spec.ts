@@ -1,6 +1,6 @@
 // End-to-end checks of the diagram pages (diagrams/*.html) in the system Chromium.
 import { execFileSync } from 'node:child_process';
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test, type Locator, type Page } from '@playwright/test';
 import { FIGURES } from '../src/diagrams/figures.ts';
 
 test.use({ viewport: { width: 1100, height: 900 } });
@@ -351,4 +351,192 @@ test.describe('reduced motion', () => {
     await page.goto('diagrams/embed.html');
     await expect(page.locator('tess-diagram#embed-element [data-testid="diagram"]')).toHaveAttribute('data-state', 'paused');
   });
+});
+
+// ---------------------------------------------------------------------------------------------
+// A phone (issue 32): the figures' labels are readable at 390 CSS px, on the page and embedded.
+// ---------------------------------------------------------------------------------------------
+
+/** Smallest text a reader can be expected to read on a phone, in CSS px. */
+const MIN_LABEL_PX = 11;
+
+interface DrawnLabels {
+  /** How many labels the last frame drew. */
+  count: number;
+  /** The smallest, in CSS px, and its text. */
+  minPx: number;
+  minText: string;
+  /** Labels that run past the canvas's left or right edge. */
+  outside: string[];
+}
+
+/**
+ * Wraps the 2D canvas's fillText (in every frame of the page, before any script runs) so that
+ * each call records its font size as DRAWN: the font's px times the context's transform scale
+ * gives backing-store pixels, and the canvas's CSS width over its pixel width turns those into
+ * CSS px. This measures what the reader sees, whatever scale the figure chose to draw at.
+ */
+async function recordLabels(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const proto = CanvasRenderingContext2D.prototype;
+    const fillText = proto.fillText;
+    proto.fillText = function (this: CanvasRenderingContext2D, text: string, x: number, y: number, maxWidth?: number) {
+      const px = Number(/(\d+(?:\.\d+)?)px/.exec(this.font)?.[1]);
+      const t = this.getTransform();
+      const w = this.measureText(text).width;
+      const left = this.textAlign === 'center' ? x - w / 2 : this.textAlign === 'right' || this.textAlign === 'end' ? x - w : x;
+      const c = this.canvas as HTMLCanvasElement & { drawnLabels?: unknown[] };
+      (c.drawnLabels ??= []).push({ text, px: px * Math.hypot(t.a, t.b), left: t.a * left + t.e, right: t.a * (left + w) + t.e });
+      return maxWidth === undefined ? fillText.call(this, text, x, y) : fillText.call(this, text, x, y, maxWidth);
+    };
+  });
+}
+
+/** Redraws the figure's canvas (one step of its time, which also pauses it) and reads its labels. */
+async function labelsAfterRedraw(fig: Locator, page: Page): Promise<DrawnLabels> {
+  const canvas = fig.locator('[data-testid="diagram-canvas"]');
+  await canvas.evaluate((c: HTMLCanvasElement & { drawnLabels?: unknown[] }) => (c.drawnLabels = []));
+  await fig.focus();
+  await page.keyboard.press('ArrowRight');
+  await expect(fig).toHaveAttribute('data-state', 'paused');
+  return canvas.evaluate((c: HTMLCanvasElement & { drawnLabels?: { text: string; px: number; left: number; right: number }[] }) => {
+    const cssPerPixel = c.getBoundingClientRect().width / c.width;
+    const labels = c.drawnLabels ?? [];
+    let min = { px: Number.POSITIVE_INFINITY, text: '' };
+    for (const l of labels) if (l.px * cssPerPixel < min.px) min = { px: l.px * cssPerPixel, text: l.text };
+    const outside = labels.filter((l) => l.left < -1 || l.right > c.width + 1).map((l) => l.text);
+    return { count: labels.length, minPx: Math.round(min.px * 100) / 100, minText: min.text, outside };
+  });
+}
+
+function expectReadable(where: string, got: DrawnLabels): void {
+  expect(got.count, `${where}: labels drawn`).toBeGreaterThan(0);
+  expect(got.minPx, `${where}: smallest label "${got.minText}"`).toBeGreaterThanOrEqual(MIN_LABEL_PX);
+  expect(got.outside, `${where}: labels past the canvas's edge`).toEqual([]);
+}
+
+test.describe('a phone: 390 CSS px wide', () => {
+  test.use({ viewport: { width: 390, height: 844 } });
+  test.describe.configure({ mode: 'parallel' });
+
+  test('every preset on its page draws labels of at least 11 CSS px', async ({ page }) => {
+    test.setTimeout(120_000);
+    await recordLabels(page);
+    const sizes: string[] = [];
+    for (const f of FIGURES) {
+      await page.goto(`diagrams/${f.kind}.html?fig=${f.id}`);
+      const got = await labelsAfterRedraw(page.locator('[data-testid="diagram"]'), page);
+      sizes.push(`${f.id} ${got.minPx}`);
+      expectReadable(`page ${f.id}`, got);
+    }
+    test.info().annotations.push({ type: 'smallest label px (page)', description: sizes.join(', ') });
+  });
+
+  test('every preset in the iframe and in <tess-diagram> draws labels of at least 11 CSS px', async ({ page }) => {
+    test.setTimeout(120_000);
+    await recordLabels(page);
+    await page.goto('diagrams/embed.html');
+    const iframe = page.locator('[data-testid="embed-iframe"]');
+    const element = page.locator('tess-diagram#embed-element');
+    const sizes: string[] = [];
+    for (const f of FIGURES) {
+      await iframe.evaluate((el: HTMLIFrameElement, src) => (el.src = src), `./${f.kind}.html?fig=${f.id}&chrome=0&embed=1`);
+      const inner = page.frameLocator('[data-testid="embed-iframe"]').locator('[data-testid="diagram"]');
+      await expect(inner.locator('.td-title')).toHaveText(f.title);
+      const framed = await labelsAfterRedraw(inner, page);
+      await element.evaluate(
+        (el, [kind, fig]) => {
+          el.setAttribute('kind', kind);
+          el.setAttribute('fig', fig);
+        },
+        [f.kind, f.id],
+      );
+      const own = element.locator('[data-testid="diagram"]');
+      await expect(own.locator('.td-title')).toHaveText(f.title);
+      const custom = await labelsAfterRedraw(own, page);
+      sizes.push(`${f.id} ${framed.minPx}/${custom.minPx}`);
+      expectReadable(`iframe ${f.id}`, framed);
+      expectReadable(`<tess-diagram> ${f.id}`, custom);
+    }
+    test.info().annotations.push({ type: 'smallest label px (iframe/element)', description: sizes.join(', ') });
+  });
+});
+
+test.describe('a narrow blog column on a wide screen', () => {
+  // The figure measures its own width, not the window's: a 360 px column on a 1100 px screen
+  // gets the phone layout too.
+  test('<tess-diagram> in a 360 px column draws labels of at least 11 CSS px', async ({ page }) => {
+    await recordLabels(page);
+    await page.goto('diagrams/embed.html');
+    await page.locator('article.post').evaluate((a: HTMLElement) => (a.style.maxWidth = '360px'));
+    const element = page.locator('tess-diagram#embed-element');
+    for (const fig of ['all-lines', 'd3d11-does-not-converge', 'd3d11-vs-clamped', 'thin-triangle']) {
+      const f = FIGURES.find((x) => x.id === fig) as (typeof FIGURES)[number];
+      await element.evaluate(
+        (el, [kind, id]) => {
+          el.setAttribute('kind', kind);
+          el.setAttribute('fig', id);
+        },
+        [f.kind, f.id],
+      );
+      const own = element.locator('[data-testid="diagram"]');
+      await expect(own.locator('.td-title')).toHaveText(f.title);
+      expectReadable(`column ${fig}`, await labelsAfterRedraw(own, page));
+    }
+  });
+});
+
+// ---------------------------------------------------------------------------------------------
+// Exports sized for a blog post (issue 32): every preset's GIF and WebM at the default settings.
+// ---------------------------------------------------------------------------------------------
+
+const BLOG_BYTES = 3 * 1024 * 1024;
+
+/** Each preset's GIF or WebM as the export buttons make them (DiagramPlayer.exportAnimation). */
+async function exportSizes(page: Page, kind: 'line' | 'triangle', format: 'gif' | 'webm'): Promise<{ id: string; bytes: number }[]> {
+  await page.goto(`diagrams/${kind}.html?autoplay=0`);
+  const ids = FIGURES.filter((f) => f.kind === kind).map((f) => f.id);
+  return page.evaluate(
+    async ({ kind, format, ids }) => {
+      // The dev server's module, the one the page runs (a variable, or TypeScript looks for the file).
+      const url = '/src/diagrams/player.ts';
+      const { DiagramPlayer }: typeof import('../src/diagrams/player.ts') = await import(url);
+      const out: { id: string; bytes: number }[] = [];
+      for (const id of ids) {
+        const mount = document.createElement('div');
+        document.body.append(mount);
+        const player = new DiagramPlayer({ kind, input: `fig=${id}&autoplay=0`, mount, styleRoot: document, pagesBase: './' });
+        const blob = await player.exportAnimation(format);
+        // The file is what it says: a GIF header, or WebM's EBML magic.
+        const head = new Uint8Array(await blob.slice(0, 6).arrayBuffer());
+        const ok =
+          format === 'gif'
+            ? String.fromCharCode(...head) === 'GIF89a'
+            : head[0] === 0x1a && head[1] === 0x45 && head[2] === 0xdf && head[3] === 0xa3;
+        if (!ok) throw new Error(`${id}: not a ${format} file`);
+        out.push({ id, bytes: blob.size });
+        player.destroy();
+        mount.remove();
+      }
+      return out;
+    },
+    { kind, format, ids },
+  );
+}
+
+test.describe('exports fit a blog post', () => {
+  // Each test is one kind and one format (the triangle WebMs take the longest, about 40 s on
+  // SwiftShader); in parallel mode they spread over both workers.
+  test.describe.configure({ mode: 'parallel' });
+  for (const kind of ['line', 'triangle'] as const) {
+    for (const format of ['gif', 'webm'] as const) {
+      test(`every ${kind} preset's ${format} at the default settings is at most 3 MB`, async ({ page }) => {
+        test.setTimeout(180_000);
+        const sizes = await exportSizes(page, kind, format);
+        expect(sizes.map((s) => s.id)).toEqual(FIGURES.filter((f) => f.kind === kind).map((f) => f.id));
+        test.info().annotations.push({ type: `${format} bytes`, description: sizes.map((s) => `${s.id} ${s.bytes}`).join(', ') });
+        for (const s of sizes) expect(s.bytes, `${s.id} ${format}`).toBeLessThanOrEqual(BLOG_BYTES);
+      });
+    }
+  }
 });
