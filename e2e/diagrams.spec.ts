@@ -556,6 +556,58 @@ test.describe('exports fit a blog post', () => {
     });
   }
 
+  // The GIF stores only the pixels that changed: decoded (ImageDecoder composites each frame
+  // over the ones before), every frame must still be the figure's frame, up to the palette.
+  test('the GIF, decoded, shows the figure frame by frame', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?autoplay=0');
+    const worst = await page.evaluate(async () => {
+      const url = '/src/diagrams/player.ts';
+      const { DiagramPlayer }: typeof import('../src/diagrams/player.ts') = await import(url);
+      const ex: typeof import('../src/diagrams/export.ts') = await import('/src/diagrams/export.ts' as string);
+      const sc: typeof import('../src/diagrams/scene.ts') = await import('/src/diagrams/scene.ts' as string);
+      const mount = document.createElement('div');
+      document.body.append(mount);
+      // Points slide, appear and change colour here, over a still outline and labels.
+      const player = new DiagramPlayer({
+        kind: 'triangle',
+        input: 'fig=low-factors&autoplay=0',
+        mount,
+        styleRoot: document,
+        pagesBase: './',
+      });
+      const gif = await player.exportAnimation('gif');
+      const decoder = new ImageDecoder({ data: await gif.arrayBuffer(), type: 'image/gif' });
+      await decoder.tracks.ready;
+      const frames = (decoder.tracks.selectedTrack as ImageTrack).frameCount;
+      const { fps, width } = ex.GIF_DEFAULTS;
+      let worst = 0;
+      for (const i of [0, 1, Math.floor(frames / 3), Math.floor((2 * frames) / 3), frames - 1]) {
+        const { image } = await decoder.decode({ frameIndex: i });
+        const [w, h] = [image.displayWidth, image.displayHeight];
+        const scene = player.frameAt(i / fps).scene;
+        const a = new OffscreenCanvas(w, h).getContext('2d') as OffscreenCanvasRenderingContext2D;
+        a.drawImage(image, 0, 0);
+        image.close();
+        const b = new OffscreenCanvas(w, h).getContext('2d') as OffscreenCanvasRenderingContext2D;
+        sc.drawScene(b, scene, sc.PALETTES[player.resolvedTheme()], width / scene.width);
+        const da = a.getImageData(0, 0, a.canvas.width, a.canvas.height).data;
+        const db = b.getImageData(0, 0, b.canvas.width, b.canvas.height).data;
+        // A pixel differs if it is far from the drawn one: the palette moves antialiased edge
+        // pixels by up to about 100 (summed over r, g, b); a line or point left over from the frame
+        // before, or missing, is off by 300 to 600 (ink against fill).
+        let off = 0;
+        for (let k = 0; k < da.length; k += 4)
+          if (Math.abs(da[k] - db[k]) + Math.abs(da[k + 1] - db[k + 1]) + Math.abs(da[k + 2] - db[k + 2]) > 250) off++;
+        worst = Math.max(worst, off / (da.length / 4));
+      }
+      player.destroy();
+      return { worst, frames };
+    });
+    expect(worst.frames).toBeGreaterThan(10);
+    // 1e-4 measured; one stale line 200 px long would be 8e-4 of this 640 x 400 GIF.
+    expect(worst.worst).toBeLessThan(4e-4);
+  });
+
   // The WebMs: encoding all 27 takes about a minute of CI (VP9 in software), so this encodes the
   // two hardest and bounds the rest by the encoder's rate control. The WebM is encoded at a fixed
   // target bitrate, so its size is at most about bitrate x clip length: the test measures how
