@@ -1,7 +1,10 @@
 // End-to-end checks of the diagram pages (diagrams/*.html) in the system Chromium.
 import { execFileSync } from 'node:child_process';
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test, type Locator, type Page } from '@playwright/test';
+import { MAX_CLIP_SECONDS, WEBM_DEFAULTS } from '../src/diagrams/export.ts';
 import { FIGURES } from '../src/diagrams/figures.ts';
+import { parseParams } from '../src/diagrams/params.ts';
+import { period } from '../src/diagrams/timeline.ts';
 
 test.use({ viewport: { width: 1100, height: 900 } });
 
@@ -350,5 +353,288 @@ test.describe('reduced motion', () => {
     // The custom element too.
     await page.goto('diagrams/embed.html');
     await expect(page.locator('tess-diagram#embed-element [data-testid="diagram"]')).toHaveAttribute('data-state', 'paused');
+  });
+});
+
+// ---------------------------------------------------------------------------------------------
+// A phone (issue 32): the figures' labels are readable at 390 CSS px, on the page and embedded.
+// ---------------------------------------------------------------------------------------------
+
+/** Smallest text a reader can be expected to read on a phone, in CSS px. */
+const MIN_LABEL_PX = 11;
+
+interface DrawnLabels {
+  /** How many labels the last frame drew. */
+  count: number;
+  /** The smallest, in CSS px, and its text. */
+  minPx: number;
+  minText: string;
+  /** Labels that run past the canvas's left or right edge. */
+  outside: string[];
+}
+
+/**
+ * Wraps the 2D canvas's fillText (in every frame of the page, before any script runs) so that
+ * each call records its font size as DRAWN: the font's px times the context's transform scale
+ * gives backing-store pixels, and the canvas's CSS width over its pixel width turns those into
+ * CSS px. This measures what the reader sees, whatever scale the figure chose to draw at.
+ */
+async function recordLabels(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const proto = CanvasRenderingContext2D.prototype;
+    const fillText = proto.fillText;
+    proto.fillText = function (this: CanvasRenderingContext2D, text: string, x: number, y: number, maxWidth?: number) {
+      const px = Number(/(\d+(?:\.\d+)?)px/.exec(this.font)?.[1]);
+      const t = this.getTransform();
+      const w = this.measureText(text).width;
+      const left = this.textAlign === 'center' ? x - w / 2 : this.textAlign === 'right' || this.textAlign === 'end' ? x - w : x;
+      const c = this.canvas as HTMLCanvasElement & { drawnLabels?: unknown[] };
+      (c.drawnLabels ??= []).push({ text, px: px * Math.hypot(t.a, t.b), left: t.a * left + t.e, right: t.a * (left + w) + t.e });
+      return maxWidth === undefined ? fillText.call(this, text, x, y) : fillText.call(this, text, x, y, maxWidth);
+    };
+  });
+}
+
+/** Redraws the figure's canvas (one step of its time, which also pauses it) and reads its labels. */
+async function labelsAfterRedraw(fig: Locator, page: Page): Promise<DrawnLabels> {
+  const canvas = fig.locator('[data-testid="diagram-canvas"]');
+  await canvas.evaluate((c: HTMLCanvasElement & { drawnLabels?: unknown[] }) => (c.drawnLabels = []));
+  await fig.focus();
+  await page.keyboard.press('ArrowRight');
+  await expect(fig).toHaveAttribute('data-state', 'paused');
+  return canvas.evaluate((c: HTMLCanvasElement & { drawnLabels?: { text: string; px: number; left: number; right: number }[] }) => {
+    const cssPerPixel = c.getBoundingClientRect().width / c.width;
+    const labels = c.drawnLabels ?? [];
+    let min = { px: Number.POSITIVE_INFINITY, text: '' };
+    for (const l of labels) if (l.px * cssPerPixel < min.px) min = { px: l.px * cssPerPixel, text: l.text };
+    const outside = labels.filter((l) => l.left < -1 || l.right > c.width + 1).map((l) => l.text);
+    return { count: labels.length, minPx: Math.round(min.px * 100) / 100, minText: min.text, outside };
+  });
+}
+
+function expectReadable(where: string, got: DrawnLabels): void {
+  expect(got.count, `${where}: labels drawn`).toBeGreaterThan(0);
+  expect(got.minPx, `${where}: smallest label "${got.minText}"`).toBeGreaterThanOrEqual(MIN_LABEL_PX);
+  expect(got.outside, `${where}: labels past the canvas's edge`).toEqual([]);
+}
+
+test.describe('a phone: 390 CSS px wide', () => {
+  test.use({ viewport: { width: 390, height: 844 } });
+  test.describe.configure({ mode: 'parallel' });
+
+  test('every preset on its page draws labels of at least 11 CSS px', async ({ page }) => {
+    test.setTimeout(120_000);
+    await recordLabels(page);
+    const sizes: string[] = [];
+    for (const f of FIGURES) {
+      await page.goto(`diagrams/${f.kind}.html?fig=${f.id}&autoplay=0`);
+      const got = await labelsAfterRedraw(page.locator('[data-testid="diagram"]'), page);
+      sizes.push(`${f.id} ${got.minPx}`);
+      expectReadable(`page ${f.id}`, got);
+    }
+    test.info().annotations.push({ type: 'smallest label px (page)', description: sizes.join(', ') });
+  });
+
+  test('every preset in the iframe and in <tess-diagram> draws labels of at least 11 CSS px', async ({ page }) => {
+    test.setTimeout(120_000);
+    await recordLabels(page);
+    await page.goto('diagrams/embed.html');
+    const iframe = page.locator('[data-testid="embed-iframe"]');
+    const element = page.locator('tess-diagram#embed-element');
+    const sizes: string[] = [];
+    for (const f of FIGURES) {
+      await iframe.evaluate((el: HTMLIFrameElement, src) => (el.src = src), `./${f.kind}.html?fig=${f.id}&chrome=0&embed=1&autoplay=0`);
+      const inner = page.frameLocator('[data-testid="embed-iframe"]').locator('[data-testid="diagram"]');
+      await expect(inner.locator('.td-title')).toHaveText(f.title);
+      const framed = await labelsAfterRedraw(inner, page);
+      await element.evaluate(
+        (el, [kind, fig]) => {
+          el.setAttribute('kind', kind);
+          el.setAttribute('autoplay', '0');
+          el.setAttribute('fig', fig);
+        },
+        [f.kind, f.id],
+      );
+      const own = element.locator('[data-testid="diagram"]');
+      await expect(own.locator('.td-title')).toHaveText(f.title);
+      const custom = await labelsAfterRedraw(own, page);
+      sizes.push(`${f.id} ${framed.minPx}/${custom.minPx}`);
+      expectReadable(`iframe ${f.id}`, framed);
+      expectReadable(`<tess-diagram> ${f.id}`, custom);
+    }
+    test.info().annotations.push({ type: 'smallest label px (iframe/element)', description: sizes.join(', ') });
+  });
+});
+
+test.describe('a narrow blog column on a wide screen', () => {
+  // The figure measures its own width, not the window's: a 360 px column on a 1100 px screen
+  // gets the phone layout too.
+  test('<tess-diagram> in a 360 px column draws labels of at least 11 CSS px', async ({ page }) => {
+    await recordLabels(page);
+    await page.goto('diagrams/embed.html');
+    await page.locator('article.post').evaluate((a: HTMLElement) => (a.style.maxWidth = '360px'));
+    const element = page.locator('tess-diagram#embed-element');
+    for (const fig of ['all-lines', 'd3d11-does-not-converge', 'd3d11-vs-clamped', 'thin-triangle']) {
+      const f = FIGURES.find((x) => x.id === fig) as (typeof FIGURES)[number];
+      await element.evaluate(
+        (el, [kind, id]) => {
+          el.setAttribute('kind', kind);
+          el.setAttribute('autoplay', '0');
+          el.setAttribute('fig', id);
+        },
+        [f.kind, f.id],
+      );
+      const own = element.locator('[data-testid="diagram"]');
+      await expect(own.locator('.td-title')).toHaveText(f.title);
+      expectReadable(`column ${fig}`, await labelsAfterRedraw(own, page));
+    }
+  });
+});
+
+// ---------------------------------------------------------------------------------------------
+// Exports sized for a blog post (issue 32): every preset's GIF and WebM at the default settings.
+// ---------------------------------------------------------------------------------------------
+
+const BLOG_BYTES = 3 * 1024 * 1024;
+
+/** Presets' GIF or WebM as the export buttons make them (DiagramPlayer.exportAnimation). */
+async function exportSizes(
+  page: Page,
+  kind: 'line' | 'triangle',
+  format: 'gif' | 'webm',
+  ids: string[],
+): Promise<{ id: string; bytes: number }[]> {
+  await page.goto(`diagrams/${kind}.html?autoplay=0`);
+  return page.evaluate(
+    async ({ kind, format, ids }) => {
+      // The dev server's module, the one the page runs (a variable, or TypeScript looks for the file).
+      const url = '/src/diagrams/player.ts';
+      const { DiagramPlayer }: typeof import('../src/diagrams/player.ts') = await import(url);
+      const out: { id: string; bytes: number }[] = [];
+      for (const id of ids) {
+        const mount = document.createElement('div');
+        document.body.append(mount);
+        const player = new DiagramPlayer({ kind, input: `fig=${id}&autoplay=0`, mount, styleRoot: document, pagesBase: './' });
+        const blob = await player.exportAnimation(format);
+        // The file is what it says: a GIF header, or WebM's EBML magic.
+        const head = new Uint8Array(await blob.slice(0, 6).arrayBuffer());
+        const ok =
+          format === 'gif'
+            ? String.fromCharCode(...head) === 'GIF89a'
+            : head[0] === 0x1a && head[1] === 0x45 && head[2] === 0xdf && head[3] === 0xa3;
+        if (!ok) throw new Error(`${id}: not a ${format} file`);
+        out.push({ id, bytes: blob.size });
+        player.destroy();
+        mount.remove();
+      }
+      return out;
+    },
+    { kind, format, ids },
+  );
+}
+
+/** The seconds of a preset's exported clip (as exportWebm counts its frames). */
+function clipSeconds(f: (typeof FIGURES)[number]): number {
+  const p = parseParams(f.kind, `fig=${f.id}`).params;
+  const fps = WEBM_DEFAULTS.fps;
+  return Math.max(1, Math.round(Math.min(period(p.timing), MAX_CLIP_SECONDS) * fps)) / fps;
+}
+
+test.describe('exports fit a blog post', () => {
+  test.describe.configure({ mode: 'parallel' });
+
+  // Every preset's GIF, measured: a GIF's size depends on how much of each frame changes, which
+  // nothing but encoding it tells. About 15 s a kind on SwiftShader.
+  for (const kind of ['line', 'triangle'] as const) {
+    test(`every ${kind} preset's GIF at the default settings is at most 3 MB`, async ({ page }) => {
+      test.setTimeout(120_000);
+      const ids = FIGURES.filter((f) => f.kind === kind).map((f) => f.id);
+      const sizes = await exportSizes(page, kind, 'gif', ids);
+      test.info().annotations.push({ type: 'GIF bytes', description: sizes.map((s) => `${s.id} ${s.bytes}`).join(', ') });
+      expect(sizes.map((s) => s.id)).toEqual(ids);
+      for (const s of sizes) expect(s.bytes, `${s.id} GIF`).toBeLessThanOrEqual(BLOG_BYTES);
+    });
+  }
+
+  // The GIF stores only the pixels that changed: decoded (ImageDecoder composites each frame
+  // over the ones before), every frame must still be the figure's frame, up to the palette.
+  test('the GIF, decoded, shows the figure frame by frame', async ({ page }) => {
+    await page.goto('diagrams/triangle.html?autoplay=0');
+    const worst = await page.evaluate(async () => {
+      const url = '/src/diagrams/player.ts';
+      const { DiagramPlayer }: typeof import('../src/diagrams/player.ts') = await import(url);
+      const ex: typeof import('../src/diagrams/export.ts') = await import('/src/diagrams/export.ts' as string);
+      const sc: typeof import('../src/diagrams/scene.ts') = await import('/src/diagrams/scene.ts' as string);
+      const mount = document.createElement('div');
+      document.body.append(mount);
+      // Points slide, appear and change colour here, over a still outline and labels.
+      const player = new DiagramPlayer({
+        kind: 'triangle',
+        input: 'fig=low-factors&autoplay=0',
+        mount,
+        styleRoot: document,
+        pagesBase: './',
+      });
+      const gif = await player.exportAnimation('gif');
+      const decoder = new ImageDecoder({ data: await gif.arrayBuffer(), type: 'image/gif' });
+      await decoder.tracks.ready;
+      const frames = (decoder.tracks.selectedTrack as ImageTrack).frameCount;
+      const { fps, width } = ex.GIF_DEFAULTS;
+      let worst = 0;
+      for (const i of [0, 1, Math.floor(frames / 3), Math.floor((2 * frames) / 3), frames - 1]) {
+        const { image } = await decoder.decode({ frameIndex: i });
+        const [w, h] = [image.displayWidth, image.displayHeight];
+        const scene = player.frameAt(i / fps).scene;
+        const a = new OffscreenCanvas(w, h).getContext('2d') as OffscreenCanvasRenderingContext2D;
+        a.drawImage(image, 0, 0);
+        image.close();
+        const b = new OffscreenCanvas(w, h).getContext('2d') as OffscreenCanvasRenderingContext2D;
+        sc.drawScene(b, scene, sc.PALETTES[player.resolvedTheme()], width / scene.width);
+        const da = a.getImageData(0, 0, a.canvas.width, a.canvas.height).data;
+        const db = b.getImageData(0, 0, b.canvas.width, b.canvas.height).data;
+        // A pixel differs if it is far from the drawn one: the palette moves antialiased edge
+        // pixels by up to about 100 (summed over r, g, b); a line or point left over from the frame
+        // before, or missing, is off by 300 to 600 (ink against fill).
+        let off = 0;
+        for (let k = 0; k < da.length; k += 4)
+          if (Math.abs(da[k] - db[k]) + Math.abs(da[k + 1] - db[k + 1]) + Math.abs(da[k + 2] - db[k + 2]) > 250) off++;
+        worst = Math.max(worst, off / (da.length / 4));
+      }
+      player.destroy();
+      return { worst, frames };
+    });
+    expect(worst.frames).toBeGreaterThan(10);
+    // 1e-4 measured; one stale line 200 px long would be 8e-4 of this 640 x 400 GIF.
+    expect(worst.worst).toBeLessThan(4e-4);
+  });
+
+  // The WebMs: encoding all 27 takes about a minute of CI (VP9 in software), so this encodes the
+  // two hardest and bounds the rest by the encoder's rate control. The WebM is encoded at a fixed
+  // target bitrate, so its size is at most about bitrate x clip length: the test measures how
+  // far the encoder goes over its target on the most complex preset (the five triangle meshes,
+  // 0.98 of the target when measured; simpler clips come in under it) and on the longest clip,
+  // allows 10 % over, and asserts that bound for every preset's clip length. (All 27 encoded
+  // once, at 24 fps and 800 kbit/s: 82 KB to 2.09 MB, at most 0.98 of the target.)
+  test("every preset's WebM at the default settings is at most 3 MB (two encoded, the rest bounded)", async ({ page }) => {
+    test.setTimeout(120_000);
+    const OVERSHOOT = 1.1;
+    const hardest = [
+      ['triangle', 'd3d11-vs-clamped'],
+      ['line', 'd3d11-does-not-converge'],
+    ] as const;
+    const lines: string[] = [];
+    for (const [kind, id] of hardest) {
+      const [{ bytes }] = await exportSizes(page, kind, 'webm', [id]);
+      const f = FIGURES.find((x) => x.id === id) as (typeof FIGURES)[number];
+      const target = (WEBM_DEFAULTS.bitrate / 8) * clipSeconds(f);
+      lines.push(`${id} ${bytes} (${(bytes / target).toFixed(3)} of target)`);
+      expect(bytes, `${id} WebM`).toBeLessThanOrEqual(OVERSHOOT * target);
+      expect(bytes, `${id} WebM`).toBeLessThanOrEqual(BLOG_BYTES);
+    }
+    test.info().annotations.push({ type: 'WebM bytes', description: lines.join(', ') });
+    for (const f of FIGURES) {
+      const bound = OVERSHOOT * (WEBM_DEFAULTS.bitrate / 8) * clipSeconds(f);
+      expect(bound, `${f.id} WebM bound (${clipSeconds(f)} s)`).toBeLessThanOrEqual(BLOG_BYTES);
+    }
   });
 });

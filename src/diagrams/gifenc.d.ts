@@ -6,7 +6,7 @@ declare module 'gifenc' {
       index: Uint8Array,
       width: number,
       height: number,
-      opts?: { palette?: Palette; delay?: number; repeat?: number; transparent?: boolean; dispose?: number },
+      opts?: { palette?: Palette; delay?: number; repeat?: number; transparent?: boolean; transparentIndex?: number; dispose?: number },
     ): void;
     finish(): void;
     bytes(): Uint8Array;
@@ -17,6 +17,7 @@ declare module 'gifenc' {
     maxColors: number,
     opts?: { format?: 'rgb565' | 'rgb444' | 'rgba4444'; oneBitAlpha?: boolean | number; clearAlpha?: boolean },
   ): Palette;
+  export function nearestColorIndex(palette: Palette, pixel: number[]): number;
   export function applyPalette(
     rgba: Uint8Array | Uint8ClampedArray,
     palette: Palette,

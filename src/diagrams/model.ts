@@ -25,3 +25,24 @@ export interface FigureFrame {
   counts: PanelCounts[];
   factors: FactorValue[];
 }
+
+/**
+ * Below this many CSS px of available width (a phone, a blog column) a figure lays itself out
+ * again instead of shrinking its 760 px layout: panels stacked, drawn at about one scene unit
+ * per CSS px, so that the type sizes below are what the reader sees.
+ */
+export const COMPACT_BELOW = 600;
+
+/** The smallest type of a compact layout, in CSS px (the small labels of the wide layout are
+ * 10 to 10.5 px at full size, and the wide layout is shrunk below 600 px). */
+export const MIN_TEXT_PX = 11;
+
+/** The narrowest a compact layout gets (a 320 px phone's content width is about 280 px). */
+export const MIN_COMPACT_WIDTH = 280;
+
+/** The layout for `width` CSS px of available width: null for the wide layout, else the compact
+ * layout's width (whole px, so it never draws wider than the space it measured). */
+export function compactWidth(width: number | undefined): number | null {
+  if (width === undefined || !(width > 0) || width >= COMPACT_BELOW) return null;
+  return Math.max(MIN_COMPACT_WIDTH, Math.floor(width));
+}

@@ -60,6 +60,7 @@ export class DiagramPlayer {
   private scale = 1;
   private busy = false;
   private readonly canvas: HTMLCanvasElement;
+  private readonly stage: HTMLElement;
   private readonly els: {
     play?: HTMLButtonElement;
     mini?: HTMLButtonElement;
@@ -108,6 +109,7 @@ export class DiagramPlayer {
       );
     }
     const stage = h('div', { class: 'td-stage' }, this.canvas);
+    this.stage = stage;
     this.root = h(
       'figure',
       {
@@ -134,6 +136,8 @@ export class DiagramPlayer {
     this.canvas.addEventListener('click', () => this.setPlaying(!this.playing));
     this.root.addEventListener('keydown', (e) => this.onKey(e));
 
+    // The figure's own width, not the window's, picks its layout (an embed in a narrow blog
+    // column is a phone too): redraw whenever the stage changes size.
     if (typeof ResizeObserver === 'function') {
       const ro = new ResizeObserver(() => this.render());
       ro.observe(stage);
@@ -196,18 +200,27 @@ export class DiagramPlayer {
     return this.darkQuery?.matches ? 'dark' : 'light';
   }
 
-  frameAt(t: number): FigureFrame {
+  /** The frame at time t, laid out for `width` CSS px (the wide layout if not given: exports). */
+  frameAt(t: number, width?: number): FigureFrame {
     const p = this.params;
-    return p.kind === 'line' ? lineFigure(p, t, this.title) : triangleFigure(p, t, this.title);
+    return p.kind === 'line' ? lineFigure(p, t, this.title, width) : triangleFigure(p, t, this.title, width);
+  }
+
+  /** The width the canvas can take: the stage's content box, in CSS px (0 before layout).
+   * Fractional (clientWidth rounds, and a layout 1 px wider than its space draws 1/300 smaller). */
+  private availableWidth(): number {
+    const st = getComputedStyle(this.stage);
+    return this.stage.getBoundingClientRect().width - (parseFloat(st.paddingLeft) || 0) - (parseFloat(st.paddingRight) || 0);
   }
 
   render(): void {
-    const fr = this.frameAt(this.time);
+    const fr = this.frameAt(this.time, this.availableWidth() || undefined);
     this.frame = fr;
     const { scene } = fr;
     const theme = this.resolvedTheme();
     this.root.dataset.theme = theme;
-    // Size: the canvas fills the stage's width, pixels at the device's ratio.
+    // Size: the canvas fills the stage's width, pixels at the device's ratio. (A compact scene is
+    // as wide as the stage already, so it draws at one scene unit per CSS px.)
     const c = this.canvas;
     c.style.aspectRatio = `${scene.width} / ${scene.height}`;
     c.style.maxWidth = `${Math.round(scene.width * 1.3)}px`;
@@ -476,16 +489,15 @@ export class DiagramPlayer {
       download(exportSvg(this.frameAt(this.time).scene, this.palette()), `${name()}.svg`);
       this.status('SVG saved.');
     });
-    const clip = () => ({ frameAt: (t: number) => this.frameAt(t).scene, start: this.animated ? 0 : this.time, length: period(p.timing) });
     exportButton('WebM', async () => {
       this.setPlaying(false);
-      const blob = await exportWebm(clip(), this.palette(), (i, n) => this.status(`Encoding WebM… ${Math.round((100 * i) / n)}%`));
+      const blob = await this.exportAnimation('webm', (i, n) => this.status(`Encoding WebM… ${Math.round((100 * i) / n)}%`));
       download(blob, `tessellab-${p.fig ?? p.kind}.webm`);
       this.status(`WebM saved (${(blob.size / 1024).toFixed(0)} KB).`);
     });
     exportButton('GIF', async () => {
       this.setPlaying(false);
-      const blob = await exportGif(clip(), this.palette(), (i, n) => this.status(`Encoding GIF… ${Math.round((100 * i) / n)}%`));
+      const blob = await this.exportAnimation('gif', (i, n) => this.status(`Encoding GIF… ${Math.round((100 * i) / n)}%`));
       download(blob, `tessellab-${p.fig ?? p.kind}.gif`);
       this.status(`GIF saved (${(blob.size / 1024).toFixed(0)} KB).`);
     });
@@ -517,6 +529,19 @@ export class DiagramPlayer {
 
     els.controls = h('div', { class: 'td-controls', 'data-testid': 'controls' }, transport, chips, sliders, opts, els.counts, exp, embed);
     return els.controls;
+  }
+
+  /**
+   * One cycle of the animation (or the current frame, if nothing moves) as a GIF or WebM at the
+   * default export settings, in the wide layout whatever the screen: a file for a blog post.
+   */
+  exportAnimation(format: 'gif' | 'webm', onProgress: (done: number, total: number) => void = () => {}): Promise<Blob> {
+    const clip = {
+      frameAt: (t: number) => this.frameAt(t).scene,
+      start: this.animated ? 0 : this.time,
+      length: period(this.params.timing),
+    };
+    return format === 'gif' ? exportGif(clip, this.palette(), onProgress) : exportWebm(clip, this.palette(), onProgress);
   }
 
   private sliderBox: HTMLElement | null = null;

@@ -10,6 +10,10 @@
  * without a gap (an illustration of the rejected step, drawn here from the two edge lines), the
  * clamp with the gap and the open strip, the gap matching, and the full pattern. Counts are of
  * what is drawn; at `full` (and `match`) they are the pattern's own, as the CLI prints them.
+ *
+ * Below 600 px of available width the panels are laid out again for a phone: one or two columns
+ * at one scene unit per CSS px, each triangle as large as its cell allows with the edge labels
+ * beside it (all of this figure's type is 11 px or more already; the wide layout shrinks it).
  */
 import { chooseFrame, clampedConstruction, type PatternFrame } from '../pattern/clamped.ts';
 import { d3d11Triangle } from '../pattern/d3d11.ts';
@@ -17,7 +21,7 @@ import { ONE } from '../pattern/fixed.ts';
 import { line } from '../pattern/line.ts';
 import type { D3D11Partitioning, TriMode } from '../pattern/types.ts';
 import { TRI_MODE_LABEL, fmtFactor, plural } from './labels.ts';
-import type { FactorValue, FigureFrame, PanelCounts } from './model.ts';
+import { compactWidth, type FactorValue, type FigureFrame, type PanelCounts } from './model.ts';
 import type { Shape, TriParams } from './params.ts';
 import { SceneBuilder, type Role } from './scene.ts';
 import { isAnimated, phaseAt, snapValue, trackValue, type Track } from './timeline.ts';
@@ -239,11 +243,19 @@ function outline(b: SceneBuilder, m: Mapper): void {
   b.path([flat([m.A, m.B, m.C])], { stroke: 'ink', width: 1.6 }, true);
 }
 
-/** Edge factor labels outside each edge: bottom, left, right of the frame. */
-function edgeLabels(b: SceneBuilder, m: Mapper, frame: PatternFrame, fc: TriFactors, shape: Shape): void {
+const EDGE_LABEL_PX = 11;
+
+interface LabelSpot {
+  x: number;
+  y: number;
+  anchor: 'start' | 'middle' | 'end';
+}
+
+/** Where the edge factor labels go, outside each edge: bottom, left, right of the frame. */
+function edgeLabelSpots(m: Mapper, shape: Shape): [LabelSpot, LabelSpot, LabelSpot] {
   const cx = (m.A[0] + m.B[0] + m.C[0]) / 3;
   const cy = (m.A[1] + m.B[1] + m.C[1]) / 3;
-  const put = (P: V2, Q: V2, edge: number, extra = 0) => {
+  const put = (P: V2, Q: V2, extra = 0): LabelSpot => {
     const mx = (P[0] + Q[0]) / 2;
     const my = (P[1] + Q[1]) / 2;
     let nx = mx - cx;
@@ -255,11 +267,49 @@ function edgeLabels(b: SceneBuilder, m: Mapper, frame: PatternFrame, fc: TriFact
     const x = mx + nx * d;
     const y = my + ny * d + 4;
     const anchor = Math.abs(nx) < 0.35 ? 'middle' : nx < 0 ? 'end' : 'start';
-    b.text(x, y, `f${edge} ${fmtFactor(fc.edges[edge])}`, 11, 'muted', { anchor, mono: true });
+    return { x, y, anchor };
   };
-  put(m.A, m.B, frame.bottomEdge, 2);
-  put(m.A, m.C, frame.leftEdge, shape === 'thin' ? 4 : 0);
-  put(m.B, m.C, frame.rightEdge, shape === 'thin' ? 4 : 0);
+  return [put(m.A, m.B, 2), put(m.A, m.C, shape === 'thin' ? 4 : 0), put(m.B, m.C, shape === 'thin' ? 4 : 0)];
+}
+
+function edgeLabels(b: SceneBuilder, m: Mapper, frame: PatternFrame, fc: TriFactors, shape: Shape): void {
+  const spots = edgeLabelSpots(m, shape);
+  [frame.bottomEdge, frame.leftEdge, frame.rightEdge].forEach((edge, k) => {
+    const { x, y, anchor } = spots[k];
+    b.text(x, y, `f${edge} ${fmtFactor(fc.edges[edge])}`, EDGE_LABEL_PX, 'muted', { anchor, mono: true });
+  });
+}
+
+/**
+ * The horizontal extent of a triangle drawn at scale S with its edge labels, relative to the
+ * left of the triangle's box. A label is taken as 8 monospaced characters ("f0 12.00"), 0.6 em
+ * each, the advance of the usual monospaced fonts.
+ */
+function extentWithLabels(corners: [V2, V2, V2], S: number, shape: Shape, ticks: boolean): [number, number] {
+  const minX = Math.min(...corners.map((c) => c[0]));
+  const minY = Math.min(...corners.map((c) => c[1]));
+  const at = (c: V2): V2 => [(c[0] - minX) * S, (c[1] - minY) * S];
+  const m = new Mapper(at(corners[0]), at(corners[1]), at(corners[2]));
+  const w = 8 * 0.6 * EDGE_LABEL_PX;
+  let lo = 0;
+  let hi = Math.max(...corners.map((c) => (c[0] - minX) * S));
+  if (ticks) {
+    // The clamp stage's ticks stand 13 units outside the third edge (drawClampNoGap).
+    const mid = m.uv(0.5, 0.5);
+    const cx = (m.A[0] + m.B[0] + m.C[0]) / 3;
+    const cy = (m.A[1] + m.B[1] + m.C[1]) / 3;
+    const nx = (mid[0] - cx) / (Math.hypot(mid[0] - cx, mid[1] - cy) || 1);
+    for (const P of [m.B, m.C]) {
+      lo = Math.min(lo, P[0] + nx * 13);
+      hi = Math.max(hi, P[0] + nx * 13);
+    }
+  }
+  for (const { x, anchor } of edgeLabelSpots(m, shape)) {
+    const left = anchor === 'start' ? x : anchor === 'end' ? x - w : x - w / 2;
+    lo = Math.min(lo, left);
+    hi = Math.max(hi, left + w);
+  }
+  return [lo, hi];
 }
 
 /** Frame lines and their moving flags (for the parallelogram and clamp stages). */
@@ -397,12 +447,21 @@ function drawClamped(b: SceneBuilder, box: PanelBox, p: TriParams, pat: FramePat
   outline(b, m);
 }
 
-function layout(
-  n: number,
-  shape: Shape,
-  stage: TriParams['stage'],
-  modes: TriMode[],
-): { cols: number; rows: number; S: number; bw: number; bh: number; corners: [V2, V2, V2] } {
+interface TriLayout {
+  W: number;
+  cols: number;
+  rows: number;
+  /** Scene units per unit of the shape's box. */
+  S: number;
+  bw: number;
+  bh: number;
+  corners: [V2, V2, V2];
+  /** Where the triangle's box starts, from the left of its cell (centred: the box, or on a
+   * phone the box with its edge labels). */
+  inset: number;
+}
+
+function layout(n: number, shape: Shape, stage: TriParams['stage'], modes: TriMode[], width: number | undefined): TriLayout {
   const corners = shapeCorners(shape);
   const withD = stage === 'parallelogram' && modes.includes('clamped');
   const xs = corners.map((c) => c[0]);
@@ -413,26 +472,54 @@ function layout(
   }
   const bw = Math.max(...xs) - Math.min(...xs);
   const bh = Math.max(...ys) - Math.min(...ys);
-  const cols = n <= 3 ? n : Math.ceil(n / 2);
+  const narrow = compactWidth(width);
+  if (narrow === null) {
+    const cols = n <= 3 ? n : Math.ceil(n / 2);
+    const rows = Math.ceil(n / cols);
+    const avail = (TRI_WIDTH - 40 - (cols - 1) * 56) / cols;
+    const maxH = shape === 'thin' ? 440 : n === 1 ? 380 : rows > 1 ? 250 : 300;
+    const S = Math.min(maxH / bh, (avail - 24) / bw);
+    return { W: TRI_WIDTH, cols, rows, S, bw, bh, corners, inset: (TRI_WIDTH / cols - bw * S) / 2 };
+  }
+  // A phone: a column per 290 px (one on a phone, two in a wider column), each triangle as large
+  // as its cell allows with its edge labels beside it, but no taller than 300 px (360 for the
+  // thin shape), so that a panel and its counts fit on the screen at once.
+  const cols = Math.max(1, Math.min(n, Math.floor(narrow / 290)));
   const rows = Math.ceil(n / cols);
-  const avail = (TRI_WIDTH - 40 - (cols - 1) * 56) / cols;
-  const maxH = shape === 'thin' ? 440 : n === 1 ? 380 : rows > 1 ? 250 : 300;
-  const S = Math.min(maxH / bh, (avail - 24) / bw);
-  return { cols, rows, S, bw, bh, corners };
+  const cellW = narrow / cols;
+  const room = cellW - 12;
+  const maxH = shape === 'thin' ? 360 : 300;
+  let lo = 0;
+  let hi = maxH / bh;
+  const fits = (S: number) => {
+    const [l, r] = extentWithLabels(corners, S, shape, stage === 'clamp');
+    return r - l <= room && (withD ? bw * S <= room : true);
+  };
+  if (fits(hi)) lo = hi;
+  else for (let i = 0; i < 40; i++) fits((lo + hi) / 2) ? (lo = (lo + hi) / 2) : (hi = (lo + hi) / 2);
+  const S = lo;
+  const [l, r] = extentWithLabels(corners, S, shape, stage === 'clamp');
+  // The parallelogram stage draws past the triangle (its fourth corner D) but has no labels there.
+  const [el, er] = withD ? [Math.min(l, 0), Math.max(r, bw * S)] : [l, r];
+  return { W: narrow, cols, rows, S, bw, bh, corners, inset: (cellW - (er - el)) / 2 - el };
 }
 
-export function triangleFigure(p: TriParams, t: number, title = 'Triangle patterns'): FigureFrame {
+/**
+ * The frame at time t, laid out for `width` CSS px of available width: the wide layout (760 px,
+ * scaled to fit) unless that is under 600 px, then the compact one at exactly that width.
+ */
+export function triangleFigure(p: TriParams, t: number, title = 'Triangle patterns', width?: number): FigureFrame {
   const fc = triFactorsAt(p, t);
   const b = new SceneBuilder();
   const counts: PanelCounts[] = [];
   const n = p.modes.length;
-  const L = layout(n, p.shape, p.stage, p.modes);
+  const L = layout(n, p.shape, p.stage, p.modes, width);
   const frame = chooseFrame(p.reverse);
   const minX = Math.min(...L.corners.map((c) => c[0]));
   const minY = Math.min(...L.corners.map((c) => c[1]));
   const headH = 56;
   const footH = 52;
-  const cellW = TRI_WIDTH / L.cols;
+  const cellW = L.W / L.cols;
   const cellH = headH + L.bh * L.S + footH;
   const hasD3D = p.modes.some((m) => m !== 'clamped');
   p.modes.forEach((mode, k) => {
@@ -442,7 +529,7 @@ export function triangleFigure(p: TriParams, t: number, title = 'Triangle patter
     const offset = ((L.cols - itemsInRow) * cellW) / 2;
     const cx = offset + col * cellW + cellW / 2;
     const top = row * cellH + headH;
-    const x0 = cx - (L.bw * L.S) / 2;
+    const x0 = offset + col * cellW + L.inset;
     const tr = (c: V2): V2 => [x0 + (c[0] - minX) * L.S, top + (c[1] - minY) * L.S];
     const m = new Mapper(tr(L.corners[0]), tr(L.corners[1]), tr(L.corners[2]));
     const box: PanelBox = { m, x: cx, y: top, w: L.bw * L.S, h: L.bh * L.S };
@@ -496,5 +583,5 @@ export function triangleFigure(p: TriParams, t: number, title = 'Triangle patter
   const factors: FactorValue[] = [...fc.edges.map((value, i) => ({ name: `f${i}`, value, animated: isAnimated(p.factors[i]) }))];
   if (hasD3D) factors.push({ name: 'inside', value: fc.inside, animated: p.inside ? isAnimated(p.inside) : p.factors.some(isAnimated) });
   const desc = `factors ${fc.edges.map(fmtFactor).join(', ')}${hasD3D ? `, inside ${fmtFactor(fc.inside)}` : ''}: ${counts.map((c) => `${c.label} ${countsLine(c)}`).join('; ')}`;
-  return { scene: b.build(TRI_WIDTH, H, title, desc), counts, factors };
+  return { scene: b.build(L.W, H, title, desc), counts, factors };
 }

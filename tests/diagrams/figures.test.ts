@@ -5,6 +5,7 @@ import { d3d11TriCounts } from '../../src/pattern/d3d11.ts';
 import { line } from '../../src/pattern/line.ts';
 import { FIGURES } from '../../src/diagrams/figures.ts';
 import { computeTrace, lineFigure } from '../../src/diagrams/line-figure.ts';
+import { MIN_TEXT_PX } from '../../src/diagrams/model.ts';
 import { parseParams, type LineParams, type TriParams } from '../../src/diagrams/params.ts';
 import { PALETTES, sceneToSvg, type Scene } from '../../src/diagrams/scene.ts';
 import { period } from '../../src/diagrams/timeline.ts';
@@ -44,6 +45,71 @@ describe('every figure', () => {
       const draw = () => sceneToSvg((p.kind === 'line' ? lineFigure(p, 1.7) : triangleFigure(p, 1.7)).scene, PALETTES.light);
       expect(draw(), f.id).toBe(draw());
     }
+  });
+});
+
+describe('the compact (phone) layout', () => {
+  const draw = (f: (typeof FIGURES)[number], t: number, width?: number) => {
+    const p = parseParams(f.kind, `fig=${f.id}`).params;
+    return p.kind === 'line' ? lineFigure(p, t, f.title, width) : triangleFigure(p, t, f.title, width);
+  };
+
+  it('is as wide as the space it is given below 600 px, with no type under 11 px and the same counts', () => {
+    for (const f of FIGURES) {
+      const p = parseParams(f.kind, `fig=${f.id}`).params;
+      for (const width of [280, 334.6, 390, 599]) {
+        for (const t of [p.start, period(p.timing) * 0.37]) {
+          const fr = draw(f, t, width);
+          const where = `${f.id} at ${width} px, t ${t}`;
+          expect(fr.scene.width, where).toBe(Math.floor(width));
+          expect(coordinatesFinite(fr.scene), where).toBe(true);
+          const sizes = fr.scene.shapes.flatMap((s) => (s.kind === 'text' ? [s.size] : []));
+          expect(sizes.length, where).toBeGreaterThan(0);
+          expect(Math.min(...sizes), where).toBeGreaterThanOrEqual(MIN_TEXT_PX);
+          expect(fr.counts, where).toEqual(draw(f, t).counts);
+        }
+      }
+    }
+  });
+
+  it('keeps the shapes inside the scene (the labels: their anchors)', () => {
+    for (const f of FIGURES) {
+      const fr = draw(f, parseParams(f.kind, `fig=${f.id}`).params.start, 334);
+      const { width, height } = fr.scene;
+      for (const s of fr.scene.shapes) {
+        const xs =
+          s.kind === 'path'
+            ? s.polys.flatMap((q) => q.filter((_, i) => i % 2 === 0))
+            : s.kind === 'dots'
+              ? s.pts.filter((_, i) => i % 2 === 0)
+              : [s.x];
+        const ys =
+          s.kind === 'path'
+            ? s.polys.flatMap((q) => q.filter((_, i) => i % 2 === 1))
+            : s.kind === 'dots'
+              ? s.pts.filter((_, i) => i % 2 === 1)
+              : [s.y];
+        expect(Math.min(...xs), f.id).toBeGreaterThanOrEqual(0);
+        expect(Math.max(...xs), f.id).toBeLessThanOrEqual(width);
+        expect(Math.min(...ys), f.id).toBeGreaterThanOrEqual(0);
+        expect(Math.max(...ys), f.id).toBeLessThanOrEqual(height);
+      }
+    }
+  });
+
+  it('is taller than the wide layout scaled to the same width (it does not just shrink)', () => {
+    for (const f of FIGURES) {
+      const t = parseParams(f.kind, `fig=${f.id}`).params.start;
+      const wide = draw(f, t).scene;
+      const narrow = draw(f, t, 334).scene;
+      expect(narrow.height / narrow.width, f.id).toBeGreaterThan(wide.height / wide.width);
+    }
+  });
+
+  it('is not used at 600 px and over, nor without a width', () => {
+    const f = FIGURES[0];
+    expect(draw(f, 1, 600).scene).toEqual(draw(f, 1).scene);
+    expect(draw(f, 1, 1200).scene.width).toBe(760);
   });
 });
 
