@@ -435,18 +435,25 @@ test.describe('a phone: 390 CSS px wide', () => {
     test.info().annotations.push({ type: 'smallest label px (page)', description: sizes.join(', ') });
   });
 
-  test('every preset in the iframe and in <tess-diagram> draws labels of at least 11 CSS px', async ({ page }) => {
+  test('presets in the iframe and every preset in <tess-diagram> draw labels of at least 11 CSS px', async ({ page }) => {
     test.setTimeout(120_000);
     await recordLabels(page);
     await page.goto('diagrams/embed.html');
     const iframe = page.locator('[data-testid="embed-iframe"]');
     const element = page.locator('tess-diagram#embed-element');
     const sizes: string[] = [];
+    // The iframe shows the page the first test measures, in a narrower frame: three presets (the
+    // densest line and triangle figures and a plain one) say it lays out there too; the
+    // element, which lays out in the host page's column, takes every preset.
+    const framedIds = new Set(['all-lines', 'd3d11-vs-clamped', 'hable']);
     for (const f of FIGURES) {
-      await iframe.evaluate((el: HTMLIFrameElement, src) => (el.src = src), `./${f.kind}.html?fig=${f.id}&chrome=0&embed=1&autoplay=0`);
-      const inner = page.frameLocator('[data-testid="embed-iframe"]').locator('[data-testid="diagram"]');
-      await expect(inner.locator('.td-title')).toHaveText(f.title);
-      const framed = await labelsAfterRedraw(inner, page);
+      let framed: DrawnLabels | null = null;
+      if (framedIds.has(f.id)) {
+        await iframe.evaluate((el: HTMLIFrameElement, src) => (el.src = src), `./${f.kind}.html?fig=${f.id}&chrome=0&embed=1&autoplay=0`);
+        const inner = page.frameLocator('[data-testid="embed-iframe"]').locator('[data-testid="diagram"]');
+        await expect(inner.locator('.td-title')).toHaveText(f.title);
+        framed = await labelsAfterRedraw(inner, page);
+      }
       await element.evaluate(
         (el, [kind, fig]) => {
           el.setAttribute('kind', kind);
@@ -458,8 +465,8 @@ test.describe('a phone: 390 CSS px wide', () => {
       const own = element.locator('[data-testid="diagram"]');
       await expect(own.locator('.td-title')).toHaveText(f.title);
       const custom = await labelsAfterRedraw(own, page);
-      sizes.push(`${f.id} ${framed.minPx}/${custom.minPx}`);
-      expectReadable(`iframe ${f.id}`, framed);
+      sizes.push(`${f.id} ${framed ? framed.minPx : '-'}/${custom.minPx}`);
+      if (framed) expectReadable(`iframe ${f.id}`, framed);
       expectReadable(`<tess-diagram> ${f.id}`, custom);
     }
     test.info().annotations.push({ type: 'smallest label px (iframe/element)', description: sizes.join(', ') });
