@@ -60,7 +60,8 @@ export interface DemoControllerOptions {
   interimAfterMs?: number;
 }
 
-const BUILDING = 'Preparing subdivision data…';
+/** The wait for surface data, as the controller says it (the page may say more: DemoScene). */
+export const BUILDING = 'Preparing subdivision data…';
 
 export class DemoController<M extends { title: string }, D, P = void> {
   readonly #ports: DemoPorts<M, D, P>;

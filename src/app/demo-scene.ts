@@ -6,14 +6,16 @@
  * (models by name, URL or file, and PNG height maps). Drawing its frames, the stats and the
  * legend are the demo's (src/app/tessellation-demo.ts).
  */
-import { isClosed } from '../mesh/index.ts';
+import { isClosed, LimitError, type Cage } from '../mesh/index.ts';
+import { MAX_FACTOR } from '../pattern/max-factor.ts';
 import { boundsOf, transformBounds, upAxisMatrix, type Bounds, type OrbitCamera } from '../gpu/render/camera.ts';
 import { uploadCageLines, type CageLines } from '../gpu/render/cage-mesh.ts';
 import { Renderer } from '../gpu/render/renderer.ts';
-import { clampMessages, wantedOutputLimits } from './limits.ts';
+import { cageTooLarge, clampMessages, wantedOutputLimits } from './limits.ts';
 import type { LimitName } from '../gpu/device/device.ts';
 import { ArrivedTables, CcTableCache, type CcTables } from './cc-tables.ts';
-import { DemoController, type DemoPorts, type Shown } from './controller.ts';
+import { BUILDING, DemoController, type DemoPorts, type Shown } from './controller.ts';
+import { TessPipelineCache } from './tess-pipelines.ts';
 import { DemoBase } from './demo-base.ts';
 import { CageGeometry, TessellatorGeometry, type GeometrySource, type TessSurface } from './geometry.ts';
 import { loadModelFromFile, loadModelFromUrl, type LoadedModel } from './models.ts';
@@ -156,13 +158,49 @@ export abstract class DemoScene extends DemoBase {
     };
   }
 
+  /** The file whose parse is in flight (its progress is said only while it is the latest). */
+  #loadingFile: File | null = null;
+
+  /** The exact surface's pipelines on this device (made at init), compiled when first asked for. */
+  #pipelines: TessPipelineCache | null = null;
+  /** The controller waits for a surface (its BUILDING message), and for which cage's data. */
+  #waitingForSurface = false;
+  #preparing: Cage | null = null;
+
+  /** What the surface's wait is for, said while the controller waits: the data, else the shaders. */
+  #sayWait(): void {
+    if (!this.#waitingForSurface) return;
+    const cage = this.#preparing;
+    const compiling = this.#pipelines?.progress('catmull-clark');
+    if (cage && !this.#ccTables.has(cage)) setLoading(BUILDING);
+    else if (compiling) setLoading(`Compiling the exact surface's shaders (${compiling[0]} of ${compiling[1] || '…'})…`);
+    else setLoading(BUILDING);
+  }
+
   /** The page's side of the controller. */
   #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
     return {
-      prepareSurface: (model) => this.#hold.promise.then(() => this.#ccTables.get(model.cage)),
-      surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage),
+      // The surface data and the exact surface's pipelines, both before its first frame: the
+      // pipelines compile off the queue meanwhile (the flat cage is drawn), and once compiled
+      // they are kept for every later model.
+      prepareSurface: (model) =>
+        this.#hold.promise.then(() => {
+          this.#preparing = model.cage;
+          const tables = this.#ccTables.get(model.cage);
+          void tables.then(
+            () => this.#sayWait(),
+            () => {},
+          );
+          const pipelines = this.#pipelines?.prepare('catmull-clark');
+          return pipelines ? Promise.all([tables, pipelines]).then(([t]) => t) : tables;
+        }),
+      surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage) && !!this.#pipelines?.get('catmull-clark'),
       upload: (model, surface, data) => this.#upload(model, surface, data),
-      loading: (message) => setLoading(message),
+      loading: (message) => {
+        this.#waitingForSurface = message === BUILDING;
+        if (this.#waitingForSurface) this.#sayWait();
+        else setLoading(message);
+      },
       preparing: () => this.updateStats(true),
       failed: (title, message, kept) => {
         showToast(message, { kind: 'error', title });
@@ -223,6 +261,7 @@ export abstract class DemoScene extends DemoBase {
     const device = this.gpu.device;
     this.#reportClamps();
     this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
+    this.#pipelines = new TessPipelineCache(device, () => this.#sayWait());
     this.#flat = new CageGeometry(device);
     this.errors = new ErrorViews(device);
     this.#boundHeat = null;
@@ -232,6 +271,7 @@ export abstract class DemoScene extends DemoBase {
 
   protected override onDeviceLost(): void {
     this.renderer = null;
+    this.#pipelines = null;
     this.tess = {};
     this.#flat = null;
     this.#cageLines = null;
@@ -319,7 +359,7 @@ export abstract class DemoScene extends DemoBase {
     let tess = this.tess[surface];
     if (!tess) {
       for (const other of Object.values(this.tess)) other.destroy();
-      tess = new TessellatorGeometry(this.gpu.device, this.params.capacity * 1e6, surface);
+      tess = new TessellatorGeometry(this.gpu.device, this.params.capacity * 1e6, surface, this.#pipelines?.get(surface));
       this.tess = { [surface]: tess };
     }
     return tess;
@@ -353,12 +393,29 @@ export abstract class DemoScene extends DemoBase {
 
   loadUrl(url: string, camera?: CameraParams): Promise<boolean> {
     const title = url.split('/').pop() || url;
-    return this.controller.loadModel(() => loadModelFromUrl(url, title), url, { camera, pick: title });
+    return this.controller.loadModel(() => loadModelFromUrl(url, title).then((m) => this.#fits(m)), url, { camera, pick: title });
+  }
+
+  /** `model`, or a LimitError in plain words when this device cannot hold its cage: said from
+   * its counts, before the preparation (prepareMesh, the Catmull-Clark tables) that would take
+   * the page's main thread for most of a minute on a cage of a million faces and then fail. */
+  #fits(model: LoadedModel): LoadedModel {
+    const tooLarge = cageTooLarge(model.cage, MAX_FACTOR, this.gpu.device.limits.maxStorageBufferBindingSize);
+    if (tooLarge) throw new LimitError(tooLarge);
+    return model;
   }
 
   async loadFile(file: File): Promise<boolean> {
     if (/\.png$/i.test(file.name) || file.type.startsWith('image/')) return this.loadHeightMap(file);
-    const shown = await this.controller.loadModel(() => loadModelFromFile(file), file.name, { pick: file.name });
+    // Read and parsed in a worker: the page stays responsive, and says what it is doing.
+    const progress = (line: string) => {
+      if (this.#loadingFile === file) setLoading(`Loading ${file.name}: ${line}…`);
+    };
+    this.#loadingFile = file;
+    const load = () => loadModelFromFile(file, progress).then((m) => this.#fits(m));
+    const shown = await this.controller.loadModel(load, file.name, { pick: file.name }).finally(() => {
+      if (this.#loadingFile === file) this.#loadingFile = null;
+    });
     // The URL no longer names the model shown before: a local file has no name a link can load.
     if (shown && this.model?.localFile) {
       this.params.model = null;

@@ -8,6 +8,7 @@ import type { Cage } from '../mesh/types.ts';
 import type { FactorParams, TessellatedMesh } from '../gpu/contract/tessellated-mesh.ts';
 import { destroyMesh, uploadCageMesh } from '../gpu/render/cage-mesh.ts';
 import { prepareMesh, Tessellator } from '../gpu/tess/tessellator.ts';
+import type { TessPipelines } from '../gpu/tess/pipelines.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import { MAX_FACTOR } from '../pattern/max-factor.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
@@ -96,11 +97,17 @@ export class TessellatorGeometry implements GeometrySource {
   /** What the cage shown was set with, so a height map can be added to it (setHeightMap). */
   #last: { cage: Cage; prepared: PreparedMesh; cc?: CatmullClarkData; height: CageHeightMap | null } | null = null;
 
-  constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong') {
+  /** `pipelines`: the surface's, compiled before (src/app/tess-pipelines.ts); made now if absent. */
+  constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong', pipelines?: TessPipelines) {
     this.#device = device;
     // The tables are baked in JavaScript from the same pattern code the tests check (~50 ms), once.
     this.surface = surface;
-    this.#tessellator = Tessellator.create(device, patternTables(), { vertexCapacity: capacity, triangleCapacity: capacity, surface });
+    this.#tessellator = Tessellator.create(device, patternTables(), {
+      vertexCapacity: capacity,
+      triangleCapacity: capacity,
+      surface,
+      pipelines,
+    });
   }
 
   /** Catmull-Clark: the flat-baseline blend at low tess factors (Tessellator.flatBaseline). */

@@ -1,7 +1,13 @@
 /**
  * The compute tessellator's pipelines, built from the passes of passes.ts: one per pass, each
- * with the explicit layout of the bindings its entry point uses. Tessellator (tessellator.ts)
- * creates them once.
+ * with the explicit layout of the bindings its entry point uses. A Tessellator (tessellator.ts)
+ * creates them when it is made, unless it is handed a set made before (createTessPipelinesAsync).
+ *
+ * Why an async path: on a software GPU the exact surface's passes take seconds to compile (about
+ * 4 s of SwiftShader for Catmull-Clark's eleven, in Node), and created synchronously they hold up
+ * whatever the GPU does next: the page's first frame waited for them behind a message that spoke
+ * of the subdivision data. createComputePipelineAsync compiles them side by side, off the queue,
+ * while the page draws the flat cage; the demo keeps the sets per surface (src/app/tess-pipelines.ts).
  */
 import { type PassName, passBindings, type Surface, tessellatorPasses } from './passes.ts';
 import { TESS_GROUP } from '../contract/tess.ts';
@@ -17,27 +23,59 @@ export interface Pipeline {
 }
 
 export interface TessPipelines {
+  /** The surface they evaluate (a set is only for a tessellator of that surface). */
+  surface: Surface;
   pipelines: Partial<Record<PassName, Pipeline>>;
 }
 
-/** Every pipeline of a tessellator of `surface`. */
-export function createTessPipelines(device: GPUDevice, surface: Surface): TessPipelines {
-  const pipelines: Partial<Record<PassName, Pipeline>> = {};
+/** Every pass of a tessellator of `surface`: its pipeline's descriptor and the rest of its Pipeline. */
+function passDescriptors(device: GPUDevice, surface: Surface) {
   // Explicit layouts: each pass binds what its entry point uses, so a shared helper that starts
   // reading one more buffer changes only the layouts of the passes that call it.
   const modules = new Map<string, GPUShaderModule>();
-  for (const pass of tessellatorPasses(surface)) {
+  return tessellatorPasses(surface).map((pass) => {
     let module = modules.get(pass.module);
     if (!module) modules.set(pass.module, (module = device.createShaderModule({ label: `tess ${pass.module}`, code: pass.code })));
     const { names, entries } = passBindings(pass);
     const layout = device.createBindGroupLayout({ label: pass.label, entries });
-    const pipeline = device.createComputePipeline({
+    const descriptor: GPUComputePipelineDescriptor = {
       label: pass.label,
       layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
       compute: { module, entryPoint: pass.entry },
-    });
+    };
     const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
-    pipelines[pass.name] = { pipeline, layout, bindings: names, binding };
-  }
-  return { pipelines };
+    return { name: pass.name, descriptor, layout, bindings: names, binding };
+  });
+}
+
+/** Every pipeline of a tessellator of `surface`, made now (each compiles before the next call). */
+export function createTessPipelines(device: GPUDevice, surface: Surface): TessPipelines {
+  const pipelines: Partial<Record<PassName, Pipeline>> = {};
+  for (const p of passDescriptors(device, surface))
+    pipelines[p.name] = {
+      pipeline: device.createComputePipeline(p.descriptor),
+      layout: p.layout,
+      bindings: p.bindings,
+      binding: p.binding,
+    };
+  return { surface, pipelines };
+}
+
+/** The same, compiled side by side off the queue; `progress(done, total)` after each. */
+export async function createTessPipelinesAsync(
+  device: GPUDevice,
+  surface: Surface,
+  progress?: (done: number, total: number) => void,
+): Promise<TessPipelines> {
+  const passes = passDescriptors(device, surface);
+  let done = 0;
+  const made = await Promise.all(
+    passes.map((p) =>
+      device.createComputePipelineAsync(p.descriptor).then((pipeline) => {
+        progress?.(++done, passes.length);
+        return [p.name, { pipeline, layout: p.layout, bindings: p.bindings, binding: p.binding }] as const;
+      }),
+    ),
+  );
+  return { surface, pipelines: Object.fromEntries(made) };
 }

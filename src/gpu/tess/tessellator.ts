@@ -45,7 +45,7 @@ import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
 import type { PassName, Surface } from './passes.ts';
 import { surfaceScheme } from '../surface/registry.ts';
-import { createTessPipelines, type Pipeline } from './pipelines.ts';
+import { createTessPipelines, type Pipeline, type TessPipelines } from './pipelines.ts';
 import { type CageName, meshParams, type PackInput, packArenas, type WorkName } from './arenas.ts';
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
@@ -78,6 +78,9 @@ export interface TessellatorOptions {
   /** Catmull-Clark: blend from the flat triangle (corner limit positions) to the surface as the
    * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
   flatBaseline?: boolean;
+  /** The pipelines, made before for this device and surface (pipelines.ts createTessPipelinesAsync);
+   * made now when absent. */
+  pipelines?: TessPipelines;
 }
 
 /** What setMesh packs before it binds. */
@@ -155,7 +158,9 @@ export class Tessellator {
       usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST,
     });
 
-    ({ pipelines: this.pipelines } = createTessPipelines(device, this.surface));
+    if (opts.pipelines && opts.pipelines.surface !== this.surface)
+      throw new Error(`pipelines for ${opts.pipelines.surface} handed to a ${this.surface} tessellator`);
+    ({ pipelines: this.pipelines } = opts.pipelines ?? createTessPipelines(device, this.surface));
 
     if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }

@@ -8,6 +8,7 @@ import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.t
 import { checkTessellation } from '../../support/tess-checks.ts';
 import { cube, octahedron, torus, sheet } from '../../support/shapes.ts';
 import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
+import { createTessPipelinesAsync } from '../../../src/gpu/tess/pipelines.ts';
 import { prepareMesh, type PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
 import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
@@ -106,6 +107,26 @@ describe('compute tessellator', () => {
       });
     }
   }
+
+  it('pipelines compiled asynchronously (as the demo makes them) build what pipelines made at once build, bit for bit', async () => {
+    const device = await getDevice();
+    const pipelines = await createTessPipelinesAsync(device, 'phong');
+    const cage = torus();
+    const { out: once } = await tessellate(cage, (m) => camera(m, 1.5 * m.size, undefined, 4));
+    const tess = Tessellator.create(device, tables, { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20, pipelines });
+    const mesh = prepareMesh(cage);
+    tess.setMesh(mesh);
+    const enc = device.createCommandEncoder({ label: 'rebuild with async pipelines' });
+    tess.encode(enc, camera(mesh, 1.5 * mesh.size, undefined, 4));
+    device.queue.submit([enc.finish()]);
+    const made = await readMesh(device, tess.output);
+    tess.destroy();
+    expect(made.triangleCount).toBe(once.triangleCount);
+    expect(made.positions).toEqual(once.positions);
+    expect(made.indices).toEqual(once.indices);
+    // A set is for its own surface only.
+    expect(() => Tessellator.create(device, tables, { surface: 'catmull-clark', pipelines })).toThrow(/pipelines for phong/);
+  });
 
   it("a rebuild's dispatch chain on the Phong surface: counted, whatever the size and the budget", async () => {
     // Each dispatch is a launch and a barrier on a GPU, so a short chain is a floor on the
