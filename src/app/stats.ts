@@ -117,9 +117,20 @@ function ms(x: number): string {
 /** Timing stages of the Catmull-Clark patch build; every other stage is tessellation. */
 const SUBDIVISION_STAGES = new Set(['subdivision']);
 
+/** The rows the compact view shows (the rest show when the panel is expanded); a row that warns
+ * shows either way (see `warns`). */
+const COMPACT_ROWS = new Set(['surface', 'output', 'output (left)', 'output (right)', 'tessellation ms', 'frame', 'compare', 'limits']);
+
 function row(label: string, value: string, testid?: string): string {
-  return `<dt>${label}</dt><dd${testid ? ` data-testid="${testid}"` : ''}>${value}</dd>`;
+  const compact = COMPACT_ROWS.has(label) || label.startsWith('error') || value.includes('class="warn"');
+  const cls = compact ? '' : ' class="more"';
+  return `<dt${cls}>${label}</dt><dd${cls}${testid ? ` data-testid="${testid}"` : ''}>${value}</dd>`;
 }
+
+/** The button that expands the compact view to every row, and back (the page toggles the panel's
+ * `expanded` class: src/app/tessellation-demo.ts). */
+const TOGGLE =
+  '<button type="button" class="stats-toggle" data-testid="stats-toggle"><span class="when-compact">all ▸</span><span class="when-expanded">fewer ▴</span></button>';
 
 /** A fraction of the diagonal as a percentage with 3 significant digits (0 stays 0). */
 export function percentOfDiagonal(x: number): string {
@@ -158,7 +169,7 @@ export function renderStats(s: StatsInput): string {
     if (sf.fallback) text += ` <span class="warn">${SURFACE_NAMES[sf.asked ?? 'catmull-clark']} unavailable: ${esc(sf.fallback)}</span>`;
     if (isExact(sf.shown) && sf.kinds) {
       const [reg, irr, tri, crease] = sf.kinds;
-      text += ` <span class="muted">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;
+      text += ` <span class="muted detail">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;
       if (sf.tablesMs !== undefined) text += ` · prepared in ${sf.tablesMs < 10 ? sf.tablesMs.toFixed(1) : Math.round(sf.tablesMs)} ms`;
       text += '</span>';
     }
@@ -220,7 +231,7 @@ export function renderStats(s: StatsInput): string {
       );
   } else {
     const building = s.countsStale ? ' <span class="muted" data-testid="stats-building">· building…</span>' : '';
-    rows.push(row('output', c ? `${size(c)} <span class="muted">${what}</span>${building}` : '…', 'stats-output'));
+    rows.push(row('output', c ? `${size(c)} <span class="muted detail">${what}</span>${building}` : '…', 'stats-output'));
   }
   if (split && s.timestamps) {
     // Both tessellators' draw passes, from their timing slots (src/gpu/render/renderer.ts DrawOptions.region).
@@ -260,7 +271,7 @@ export function renderStats(s: StatsInput): string {
       const stale = s.tessTimesStale
         ? ' <span class="muted" data-testid="stats-build-stale">(the previous build; timing the new one…)</span>'
         : '';
-      rows.push(row('tessellation ms', `<b>${ms(total)}</b> <span class="muted">${detail}</span>${stale}`, 'stats-build'));
+      rows.push(row('tessellation ms', `<b>${ms(total)}</b> <span class="muted detail">${detail}</span>${stale}`, 'stats-build'));
     }
     let draw = Object.entries(s.drawTimes)
       .map(([k, v]) => `${esc(k)} ${ms(v)}`)
@@ -291,5 +302,5 @@ export function renderStats(s: StatsInput): string {
   }
   if (s.clamps?.length) rows.push(row('limits', s.clamps.map((c) => `<span class="warn">${esc(c)}</span>`).join('<br>'), 'stats-limits'));
   rows.push(row('adapter', `<span class="muted">${esc(s.adapter)}</span>`));
-  return `<dl>${rows.join('')}</dl>`;
+  return `<dl>${rows.join('')}</dl>${TOGGLE}`;
 }

@@ -428,6 +428,10 @@ export class TessellationDemo extends DemoScene {
   #renderStats(): void {
     const panel = document.getElementById('stats');
     if (!panel || !this.params.ui) return;
+    // The compact view's button (the panel is rewritten below; the listener and the class stay).
+    panel.onclick ??= (e) => {
+      if ((e.target as Element).closest('.stats-toggle')) panel.classList.toggle('expanded');
+    };
     const mode = this.mode;
     const { compare, instanced } = mode.stats();
     panel.innerHTML = renderStats({
