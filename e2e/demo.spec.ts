@@ -53,7 +53,7 @@ test.describe('frozen frames (?t=) match their references', () => {
 
   test('the whole page, with the cage overlay', async ({ page }) => {
     const errors = collectErrors(page);
-    await page.goto('/?model=pawn&t=0&cage=1');
+    await page.goto('/?model=pawn&t=0&cage=1&wire=1');
     await ready(page);
     // The stats show live timings: mask them, keep everything else (panel, title, canvas).
     await expect(page).toHaveScreenshot('pawn-frozen.png', { mask: [page.locator('#stats')], maskColor: '#161a20' });
@@ -61,14 +61,14 @@ test.describe('frozen frames (?t=) match their references', () => {
   });
 
   test('the canvas alone, Phong, fixed factors', async ({ page }) => {
-    await page.goto('/?model=creature&t=0&ui=0&mode=fixed&factor=6&surface=phong');
+    await page.goto('/?model=creature&t=0&ui=0&mode=fixed&factor=6&surface=phong&wire=1');
     await ready(page);
     await expect(page.locator('#view')).toHaveScreenshot('creature-fixed-6.png');
   });
 
   test('the canvas alone, Catmull-Clark (the default), adaptive', async ({ page }) => {
     const errors = collectErrors(page);
-    await page.goto('/?model=creature&t=0&ui=0');
+    await page.goto('/?model=creature&t=0&ui=0&wire=1');
     await ready(page);
     await expect(page.locator('#view')).toHaveScreenshot('creature-cc.png');
     expect(errors).toEqual([]);

@@ -449,7 +449,17 @@ test.describe('a phone: 390 CSS px wide', () => {
     for (const f of FIGURES) {
       let framed: DrawnLabels | null = null;
       if (framedIds.has(f.id)) {
-        await iframe.evaluate((el: HTMLIFrameElement, src) => (el.src = src), `./${f.kind}.html?fig=${f.id}&chrome=0&embed=1&autoplay=0`);
+        // Wait for the new document's load: a title check alone passed on the page the iframe
+        // showed before when that was the same preset, and the navigation then destroyed the
+        // context the labels were read in (a race seen in CI).
+        await iframe.evaluate(
+          (el: HTMLIFrameElement, src) =>
+            new Promise<void>((resolve) => {
+              el.addEventListener('load', () => resolve(), { once: true });
+              el.src = src;
+            }),
+          `./${f.kind}.html?fig=${f.id}&chrome=0&embed=1&autoplay=0`,
+        );
         const inner = page.frameLocator('[data-testid="embed-iframe"]').locator('[data-testid="diagram"]');
         await expect(inner.locator('.td-title')).toHaveText(f.title);
         framed = await labelsAfterRedraw(inner, page);

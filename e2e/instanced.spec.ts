@@ -101,9 +101,16 @@ test('split view: compute on the left, instanced on the right, same cage and cam
     await expect(page.getByTestId('stats-gpu-compute')).toContainText(/shadow [\d.<]+ · lit [\d.<]+/, { timeout: 5_000 });
     await expect(page.getByTestId('stats-gpu')).toContainText(/shadow [\d.<]+ · lit [\d.<]+/, { timeout: 5_000 });
   }
+  // Each half says which tessellator draws it, with a line between them.
+  await expect(page.getByTestId('split-left')).toContainText('compute · Phong');
+  await expect(page.getByTestId('split-right')).toContainText('instanced · Phong · static level 8');
+  await expect(page.getByTestId('split-divider')).toBeVisible();
   // Both halves show the torus: bright (lit clay) pixels on each side of the canvas's middle.
   const shot = PNG.sync.read(
-    await page.locator('#view').screenshot({ mask: [page.locator('#stats'), page.locator('.lil-gui.panel')], maskColor: '#000000' }),
+    await page.locator('#view').screenshot({
+      mask: [page.locator('#stats'), page.locator('.lil-gui.panel'), page.locator('.side-label'), page.locator('.side-divider')],
+      maskColor: '#000000',
+    }),
   );
   const halves = [0, 0];
   for (let y = 0; y < shot.height; y++)

@@ -4,6 +4,7 @@
  * stats), and the labels over the two halves. The left half is the demo's surface
  * (src/app/tessellation-demo.ts draws both).
  */
+import { SideLabels } from './side-labels.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import type { Cage } from '../mesh/types.ts';
 import { errorMessage } from './controller.ts';
@@ -21,7 +22,7 @@ export class CompareView {
   /** A build is owed: a new cage, new tables, or a new tessellator. */
   dirty = true;
   #refused: { cage: Cage; surface: CompareSurface; message: string } | null = null;
-  #labels: [HTMLElement, HTMLElement] | null = null;
+  readonly #labels = new SideLabels('compare');
 
   /** Another surface is asked for (or none): the tessellator goes. */
   reset(): void {
@@ -96,22 +97,9 @@ export class CompareView {
     return this.tessellator;
   }
 
-  /** The labels over the two halves: shown with `text` (left, right) when `on`, else hidden. */
+  /** The labels over the two halves (and the line between them): shown with `text` (left, right)
+   * when `on`, else hidden. */
   showLabels(on: boolean, text: () => [string, string]): void {
-    if (!on && !this.#labels) return;
-    if (!this.#labels) {
-      const make = (side: 'left' | 'right') => {
-        const el = document.createElement('div');
-        el.className = `compare-label ${side}`;
-        el.dataset.testid = `compare-${side}`;
-        document.body.append(el);
-        return el;
-      };
-      this.#labels = [make('left'), make('right')];
-    }
-    const [left, right] = this.#labels;
-    left.hidden = right.hidden = !on;
-    if (!on) return;
-    [left.textContent, right.textContent] = text();
+    this.#labels.show(on, text);
   }
 }

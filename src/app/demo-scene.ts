@@ -171,28 +171,25 @@ export abstract class DemoScene extends DemoBase {
   #sayWait(): void {
     if (!this.#waitingForSurface) return;
     const cage = this.#preparing;
-    const compiling = this.#pipelines?.progress('catmull-clark');
     if (cage && !this.#ccTables.has(cage)) setLoading(BUILDING);
-    else if (compiling) setLoading(`Compiling the exact surface's shaders (${compiling[0]} of ${compiling[1] || '…'})…`);
+    else if (this.#pipelines?.compiling('catmull-clark')) setLoading("Compiling the exact surface's shaders…");
     else setLoading(BUILDING);
   }
 
   /** The page's side of the controller. */
   #ports(): DemoPorts<LoadedModel, CcTables, Placement> {
     return {
-      // The surface data and the exact surface's pipelines, both before its first frame: the
-      // pipelines compile off the queue meanwhile (the flat cage is drawn), and once compiled
-      // they are kept for every later model.
+      // The surface data and the exact surface's pipelines, both before its first frame (the flat
+      // cage is drawn meanwhile); once compiled, the pipelines are kept for every later model.
       prepareSurface: (model) =>
         this.#hold.promise.then(() => {
           this.#preparing = model.cage;
-          const tables = this.#ccTables.get(model.cage);
-          void tables.then(
-            () => this.#sayWait(),
-            () => {},
-          );
-          const pipelines = this.#pipelines?.prepare('catmull-clark');
-          return pipelines ? Promise.all([tables, pipelines]).then(([t]) => t) : tables;
+          // The tables first (a refused cage compiles nothing), then the pipelines, said as awaited.
+          return this.#ccTables.get(model.cage).then((t) => {
+            const pipelines = this.#pipelines?.prepare('catmull-clark');
+            this.#sayWait();
+            return pipelines ? pipelines.then(() => t) : t;
+          });
         }),
       surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage) && !!this.#pipelines?.get('catmull-clark'),
       upload: (model, surface, data) => this.#upload(model, surface, data),
@@ -261,7 +258,7 @@ export abstract class DemoScene extends DemoBase {
     const device = this.gpu.device;
     this.#reportClamps();
     this.renderer = Renderer.create(device, { colorFormat: this.renderFormat, timestamps: this.gpu.timestamps });
-    this.#pipelines = new TessPipelineCache(device, () => this.#sayWait());
+    this.#pipelines = new TessPipelineCache(device);
     this.#flat = new CageGeometry(device);
     this.errors = new ErrorViews(device);
     this.#boundHeat = null;

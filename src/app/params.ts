@@ -111,7 +111,8 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   flat: true,
   lod: 1,
   factor: 8,
-  wire: true,
+  // Off: the surface is the showcase; the wireframe (the pattern's triangles) is one click away.
+  wire: false,
   cage: false,
   spin: false,
   t: null,

@@ -1,52 +1,43 @@
 /**
- * The compute tessellator's pipelines on the page's device, per surface: compiled asynchronously
- * (src/gpu/tess/pipelines.ts createTessPipelinesAsync) the first time a surface is asked for, and
- * kept, so a tessellator made for that surface again (a switch back, another model) waits for
- * nothing. Only what is asked for is compiled: the first view compiles the surface it shows.
+ * The compute tessellator's pipelines on the page's device, per surface: made the first time a
+ * surface is asked for, and kept, so a tessellator made for that surface again (a switch back,
+ * another model) compiles nothing. Only what is asked for is made: the first view makes the
+ * surface it shows. `prepare` resolves once the GPU has compiled them (the device processes its
+ * work in order: the queue's next "done" comes after the compiles), so the page can say that this
+ * is what it waits for.
  */
-import { createTessPipelinesAsync, type TessPipelines } from '../gpu/tess/pipelines.ts';
+import { createTessPipelines, type TessPipelines } from '../gpu/tess/pipelines.ts';
 import type { Surface } from '../gpu/tess/passes.ts';
 
 export class TessPipelineCache {
   readonly #pending = new Map<Surface, Promise<TessPipelines>>();
   readonly #ready = new Map<Surface, TessPipelines>();
-  /** Passes compiled so far, of how many, for the surfaces in flight (what the page says it waits for). */
-  #progress = new Map<Surface, [number, number]>();
 
-  constructor(
-    private readonly device: GPUDevice,
-    private readonly onProgress: () => void = () => {},
-  ) {}
+  constructor(private readonly device: GPUDevice) {}
 
   /** The set for `surface` if it is compiled. */
   get(surface: Surface): TessPipelines | undefined {
     return this.#ready.get(surface);
   }
 
-  /** `surface`'s set, compiled now if it is not yet (one compile per surface however often asked). */
+  /** `surface`'s set, made now if it is not yet (once per surface however often asked); resolves
+   * when the GPU has compiled it. */
   prepare(surface: Surface): Promise<TessPipelines> {
     let p = this.#pending.get(surface);
     if (!p) {
-      p = createTessPipelinesAsync(this.device, surface, (done, total) => {
-        this.#progress.set(surface, [done, total]);
-        this.onProgress();
-      }).then((set) => {
+      const set = createTessPipelines(this.device, surface);
+      p = this.device.queue.onSubmittedWorkDone().then(() => {
         this.#ready.set(surface, set);
-        this.#progress.delete(surface);
         return set;
       });
       this.#pending.set(surface, p);
-      p.catch(() => {
-        this.#pending.delete(surface);
-        this.#progress.delete(surface);
-      });
+      p.catch(() => this.#pending.delete(surface));
     }
     return p;
   }
 
-  /** [compiled, total] for `surface` while it compiles; null when it is not compiling. */
-  progress(surface: Surface): [number, number] | null {
-    if (this.#ready.has(surface) || !this.#pending.has(surface)) return null;
-    return this.#progress.get(surface) ?? [0, 0];
+  /** `surface`'s set is being compiled. */
+  compiling(surface: Surface): boolean {
+    return this.#pending.has(surface) && !this.#ready.has(surface);
   }
 }

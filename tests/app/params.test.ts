@@ -100,7 +100,7 @@ describe('URL parameters', () => {
     expect(formatParams(DEFAULT_PARAMS)).toBe('');
     const cases = [
       '?model=gear&mode=fixed&factor=7.5',
-      '?lod=0.25&wire=0&cage=1&surface=cage',
+      '?lod=0.25&wire=1&cage=1&surface=cage',
       '?model=sheet&up=z&t=0&yaw=12.5&pitch=20&dist=2.5',
       '?spin=1&ui=0&cap=16',
       '?surface=phong',

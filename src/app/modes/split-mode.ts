@@ -4,6 +4,8 @@
  * timing slot. An error view colours the left half's ACC surface.
  */
 import type { DrawOptions } from '../../gpu/render/renderer.ts';
+import { SideLabels } from '../side-labels.ts';
+import { SURFACE_NAMES } from '../surfaces.ts';
 import { errorViewOnAcc, surfacePatchLegend } from './compute-mode.ts';
 import { InstancedMode, instancedStats } from './instanced-mode.ts';
 import type { Builds, Frame, ModeStats } from './mode.ts';
@@ -42,4 +44,23 @@ export class SplitMode extends InstancedMode {
   override stats(): ModeStats {
     return { compare: null, instanced: instancedStats(this.host, true) };
   }
+
+  /** The labels over the halves (which tessellator draws which), updated with the legend. */
+  override legend(): string | null {
+    const host = this.host;
+    splitLabels.show(host.params.ui, () => {
+      const s = instancedStats(host, true);
+      const inst = s?.surface && s.surface in SURFACE_NAMES ? SURFACE_NAMES[s.surface as keyof typeof SURFACE_NAMES] : 'Phong';
+      return [`compute · ${SURFACE_NAMES[host.shown] ?? host.shown} · stored mesh`, `instanced · ${inst} · ${s?.setting ?? ''}`];
+    });
+    return super.legend();
+  }
+
+  override release(): void {
+    splitLabels.show(false, () => ['', '']);
+    super.release();
+  }
 }
+
+/** One pair for the page (the split view is one at a time). */
+const splitLabels = new SideLabels('split');

@@ -1,13 +1,15 @@
 /**
  * The compute tessellator's pipelines, built from the passes of passes.ts: one per pass, each
  * with the explicit layout of the bindings its entry point uses. A Tessellator (tessellator.ts)
- * creates them when it is made, unless it is handed a set made before (createTessPipelinesAsync).
+ * creates them when it is made, unless it is handed a set made before for its surface (the demo
+ * keeps one set per surface on its device: src/app/tess-pipelines.ts).
  *
- * Why an async path: on a software GPU the exact surface's passes take seconds to compile (about
- * 4 s of SwiftShader for Catmull-Clark's eleven, in Node), and created synchronously they hold up
- * whatever the GPU does next: the page's first frame waited for them behind a message that spoke
- * of the subdivision data. createComputePipelineAsync compiles them side by side, off the queue,
- * while the page draws the flat cage; the demo keeps the sets per surface (src/app/tess-pipelines.ts).
+ * Made with createComputePipeline, not createComputePipelineAsync: on a software GPU the exact
+ * surface's eleven passes take about 4 s to compile (SwiftShader, in Node), and compiled side by
+ * side through the async call in Chromium the page's first frame came no sooner (navigation to the
+ * first frame 6.3-7.6 s either way, cold) while pages that load the exact surface took about 15 %
+ * longer under a test runner's load (e2e/talk-models.spec.ts and e2e/displacement.spec.ts: 63 s
+ * against 54 s), the compiles contending with the page's own work on two cores.
  */
 import { type PassName, passBindings, type Surface, tessellatorPasses } from './passes.ts';
 import { TESS_GROUP } from '../contract/tess.ts';
@@ -59,23 +61,4 @@ export function createTessPipelines(device: GPUDevice, surface: Surface): TessPi
       binding: p.binding,
     };
   return { surface, pipelines };
-}
-
-/** The same, compiled side by side off the queue; `progress(done, total)` after each. */
-export async function createTessPipelinesAsync(
-  device: GPUDevice,
-  surface: Surface,
-  progress?: (done: number, total: number) => void,
-): Promise<TessPipelines> {
-  const passes = passDescriptors(device, surface);
-  let done = 0;
-  const made = await Promise.all(
-    passes.map((p) =>
-      device.createComputePipelineAsync(p.descriptor).then((pipeline) => {
-        progress?.(++done, passes.length);
-        return [p.name, { pipeline, layout: p.layout, bindings: p.bindings, binding: p.binding }] as const;
-      }),
-    ),
-  );
-  return { surface, pipelines: Object.fromEntries(made) };
 }

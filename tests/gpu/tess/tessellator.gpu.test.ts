@@ -8,7 +8,7 @@ import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.t
 import { checkTessellation } from '../../support/tess-checks.ts';
 import { cube, octahedron, torus, sheet } from '../../support/shapes.ts';
 import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
-import { createTessPipelinesAsync } from '../../../src/gpu/tess/pipelines.ts';
+import { createTessPipelines } from '../../../src/gpu/tess/pipelines.ts';
 import { prepareMesh, type PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
 import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
@@ -108,15 +108,15 @@ describe('compute tessellator', () => {
     }
   }
 
-  it('pipelines compiled asynchronously (as the demo makes them) build what pipelines made at once build, bit for bit', async () => {
+  it('a tessellator handed a set of pipelines made before (as the demo keeps them) builds what one that makes its own builds, bit for bit', async () => {
     const device = await getDevice();
-    const pipelines = await createTessPipelinesAsync(device, 'phong');
+    const pipelines = createTessPipelines(device, 'phong');
     const cage = torus();
     const { out: once } = await tessellate(cage, (m) => camera(m, 1.5 * m.size, undefined, 4));
     const tess = Tessellator.create(device, tables, { vertexCapacity: 1 << 20, triangleCapacity: 1 << 20, pipelines });
     const mesh = prepareMesh(cage);
     tess.setMesh(mesh);
-    const enc = device.createCommandEncoder({ label: 'rebuild with async pipelines' });
+    const enc = device.createCommandEncoder({ label: 'rebuild with pipelines made before' });
     tess.encode(enc, camera(mesh, 1.5 * mesh.size, undefined, 4));
     device.queue.submit([enc.finish()]);
     const made = await readMesh(device, tess.output);
