@@ -14,6 +14,9 @@ fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
   return false;
 }
 
+// Screen pixels per segment where a height map's detail is visible (adaptiveFactor).
+const DETAIL_PIXELS = 2.0;
+
 fn adaptiveFactor(e: u32) -> f32 {
   let a = edgeVert(e, 0u);
   let b = edgeVert(e, 1u);
@@ -48,7 +51,14 @@ fn adaptiveFactor(e: u32) -> f32 {
   if (unseen && inside == BULGE_OFF_SCREEN) { return 1.0; }
   let dist = max(length(bend.mid - params.eye.xyz), 1e-6);
   let surface = max(bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle), inside);
-  let detail = min(2.0 * texels, params.lodScale * amplitude / (dist * params.pixelAngle));
+  // The map resolved where it shows: once its heights span a pixel, the edge gets a segment per
+  // DETAIL_PIXELS pixels of its own screen length (a brick's mortar line is narrower than its
+  // height: counting the height alone left the brick box at ~10 segments an edge, bricks
+  // unreadable). Scaled by the heights' span below a pixel, so the factor stays continuous.
+  let heightPixels = params.lodScale * amplitude / (dist * params.pixelAngle);
+  let edgePixels = params.lodScale * length(p1 - p0) / (dist * params.pixelAngle);
+  let resolved = edgePixels / DETAIL_PIXELS * clamp(heightPixels, 0.0, 1.0);
+  let detail = min(2.0 * texels, max(heightPixels, resolved));
   return max(surface, detail);
 }
 

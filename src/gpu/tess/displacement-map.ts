@@ -27,9 +27,10 @@
  * vertex by index. src/subdiv/displace.ts names the same owners for the CPU reference.
  *
  * The factor rule (wgsl/tess/factors.wgsl, adaptive mode) counts the heights: an edge whose faces'
- * heights vary by A (world units) gets at least min(2·texels along it, A in pixels × lodScale)
- * segments, so detail of a pixel or more is sampled up to the talk's "1 texel = 2 triangles",
- * and the frustum test grows the edge's sphere by the largest |h|. The budget pass still scales
+ * heights vary by A (world units) gets at least min(2·texels along it, max(A in pixels, its own
+ * length in pixels / 2 · min(A in pixels, 1)) × lodScale) segments: once the heights span a pixel
+ * the map is sampled a segment per two pixels, up to two segments a texel (a mortar line is
+ * narrower than it is deep), and the frustum test grows the edge's sphere by the largest |h|. The budget pass still scales
  * every factor down when the output would not fit.
  */
 import type { Cage } from '../../mesh/types.ts';
