@@ -76,7 +76,15 @@ function wrapIndex(i: number, n: number, wrap: HeightWrap): number {
   return ((i % n) + n) % n;
 }
 
-/** Bilinear value and gradient at texture coordinates (u, v). */
+/**
+ * Value and gradient at texture coordinates (u, v). The value is bilinear between texel centres.
+ * The gradient is not the bilinear patch's (constant along each texel row, it jumps at every texel
+ * line): it blends the four texels' central differences with the same weights, so it is
+ * continuous, and on a linear ramp it is the ramp's slope. The displaced normal follows it
+ * (src/subdiv/displace.ts, wgsl/tess/displace.wgsl): with the patch gradient a bevel a few texels
+ * wide shaded as steps, and triangles that do not line up with the texels sampled the steps as
+ * saw teeth along every brick of the brick box.
+ */
 export function sampleHeight(map: HeightMap, u: number, v: number, wrap: HeightWrap = 'repeat'): HeightSample {
   if (!Number.isFinite(u) || !Number.isFinite(v)) throw new RangeError(`texture coordinate (${u}, ${v}) is not finite`);
   const W = map.width,
@@ -87,21 +95,16 @@ export function sampleHeight(map: HeightMap, u: number, v: number, wrap: HeightW
     y0 = Math.floor(y);
   const fx = x - x0,
     fy = y - y0;
-  const i0 = wrapIndex(x0, W, wrap),
-    i1 = wrapIndex(x0 + 1, W, wrap);
-  const j0 = wrapIndex(y0, H, wrap),
-    j1 = wrapIndex(y0 + 1, H, wrap);
   const inv = 1 / ((1 << map.bits) - 1);
   const d = map.data;
-  const t00 = d[j0 * W + i0] * inv,
-    t10 = d[j0 * W + i1] * inv,
-    t01 = d[j1 * W + i0] * inv,
-    t11 = d[j1 * W + i1] * inv;
-  const value = (1 - fy) * ((1 - fx) * t00 + fx * t10) + fy * ((1 - fx) * t01 + fx * t11);
-  // Gradient of the bilinear patch in texel units; on a texel line (fx or fy = 0) this is the
-  // one-sided derivative from the cell the point belongs to (the floor cell).
-  const gx = (1 - fy) * (t10 - t00) + fy * (t11 - t01);
-  const gy = (1 - fx) * (t01 - t00) + fx * (t11 - t10);
+  const t = (i: number, j: number): number => d[wrapIndex(j, H, wrap) * W + wrapIndex(i, W, wrap)] * inv;
+  const blend = (f: (i: number, j: number) => number): number =>
+    (1 - fy) * ((1 - fx) * f(x0, y0) + fx * f(x0 + 1, y0)) + fy * ((1 - fx) * f(x0, y0 + 1) + fx * f(x0 + 1, y0 + 1));
+  const value = blend(t);
+  // Central differences in texel units at the four texels (lattice indices, wrapped or clamped
+  // as the lookups are: far outside a clamped map both sides are the edge texel, the gradient 0).
+  const gx = blend((i, j) => 0.5 * (t(i + 1, j) - t(i - 1, j)));
+  const gy = blend((i, j) => 0.5 * (t(i, j + 1) - t(i, j - 1)));
   // ∂x/∂u = W, ∂y/∂v = −H.
   return { value, dU: gx * W, dV: -gy * H };
 }

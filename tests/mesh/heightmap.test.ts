@@ -18,17 +18,44 @@ describe('height map sampling', () => {
       }
   });
 
-  it('is bilinear between texel centres, and its gradient is the bilinear patch gradient', () => {
+  it('is bilinear between texel centres; its gradient blends the texels\' central differences bilinearly', () => {
     const u = (1 + 0.5 + 0.3) / 4,
       v = 1 - (1 + 0.5 + 0.6) / 3; // 30% from texel (1,1) to (2,1), 60% to row 2
     const want = 0.4 * (0.7 * texel(1, 1) + 0.3 * texel(2, 1)) + 0.6 * (0.7 * texel(1, 2) + 0.3 * texel(2, 2));
     const s = sampleHeight(map, u, v);
     expect(s.value).toBeCloseTo(want, 12);
-    const d = 1e-7;
-    expect(s.dU).toBeCloseTo((sampleHeight(map, u + d, v).value - sampleHeight(map, u - d, v).value) / (2 * d), 5);
-    expect(s.dV).toBeCloseTo((sampleHeight(map, u, v + d).value - sampleHeight(map, u, v - d).value) / (2 * d), 5);
-    expect(Math.abs(s.dU)).toBeGreaterThan(0.1);
-    expect(Math.abs(s.dV)).toBeGreaterThan(0.1);
+    // Per texel unit; repeat wrap. ∂x/∂u = W, ∂y/∂v = −H.
+    const t = (i: number, j: number) => texel((i + 4) % 4, (j + 3) % 3);
+    const gx = (i: number, j: number) => (t(i + 1, j) - t(i - 1, j)) / 2;
+    const gy = (i: number, j: number) => (t(i, j + 1) - t(i, j - 1)) / 2;
+    const blend = (g: (i: number, j: number) => number) => 0.4 * (0.7 * g(1, 1) + 0.3 * g(2, 1)) + 0.6 * (0.7 * g(1, 2) + 0.3 * g(2, 2));
+    expect(s.dU).toBeCloseTo(blend(gx) * 4, 12);
+    expect(s.dV).toBeCloseTo(-blend(gy) * 3, 12);
+  });
+
+  it('its gradient is continuous across texel borders (the bilinear patch gradient jumps there), and exact on a ramp', () => {
+    // The shading normal follows this gradient: a jump at every texel line, sampled by triangles that
+    // do not line up with the texels, drew saw teeth along the brick box's bevels.
+    for (const [u, v] of [
+      [2 / 4, 0.5],
+      [0.3, 1 - 1 / 3],
+    ]) {
+      const e = 1e-9;
+      const a = sampleHeight(map, u - e, v - e),
+        b = sampleHeight(map, u + e, v + e);
+      expect(Math.abs(a.dU - b.dU)).toBeLessThan(1e-6);
+      expect(Math.abs(a.dV - b.dV)).toBeLessThan(1e-6);
+    }
+    const ramp = heightMapFromFunction(64, 32, 16, (u, v) => 0.2 + 0.5 * u + 0.25 * v);
+    for (const [u, v] of [
+      [0.31, 0.47],
+      [0.5, 0.5],
+      [0.77, 0.2],
+    ]) {
+      const s = sampleHeight(ramp, u, v, 'clamp');
+      expect(s.dU).toBeCloseTo(0.5, 3);
+      expect(s.dV).toBeCloseTo(0.25, 3);
+    }
   });
 
   it('repeat wraps by whole tiles; clamp holds the edge texels', () => {

@@ -40,9 +40,15 @@ fn heightTexel(i: i32, j: i32) -> f32 {
 }
 
 // Bilinear sample at uv and its gradient d(sample)/d(u, v): src/mesh/heightmap.ts sampleHeight,
-// with its texel centres (v = 0 at the image's bottom) and the floor cell's one-sided derivative
-// on texel lines. The weights are f32 arithmetic, not the sampler's (whose weights are quantised).
+// with its texel centres (v = 0 at the image's bottom) and its gradient: the four texels' central
+// differences blended with the bilinear weights (continuous across texel lines; the patch
+// gradient's jumps there shaded as saw teeth). The weights are f32 arithmetic, not the sampler's
+// (whose weights are quantised).
 struct HeightSample { value: f32, grad: vec2<f32> }
+
+fn centralDifference(i: i32, j: i32) -> vec2<f32> {
+  return 0.5 * vec2<f32>(heightTexel(i + 1, j) - heightTexel(i - 1, j), heightTexel(i, j + 1) - heightTexel(i, j - 1));
+}
 
 fn sampleHeight(uv: vec2<f32>) -> HeightSample {
   let W = f32(params.dispWidth);
@@ -60,9 +66,9 @@ fn sampleHeight(uv: vec2<f32>) -> HeightSample {
   let t01 = heightTexel(i0, j0 + 1);
   let t11 = heightTexel(i0 + 1, j0 + 1);
   let value = (1.0 - fy) * ((1.0 - fx) * t00 + fx * t10) + fy * ((1.0 - fx) * t01 + fx * t11);
-  let gx = (1.0 - fy) * (t10 - t00) + fy * (t11 - t01);
-  let gy = (1.0 - fx) * (t01 - t00) + fx * (t11 - t10);
-  return HeightSample(value, vec2<f32>(gx * W, -gy * H));
+  let g = (1.0 - fy) * ((1.0 - fx) * centralDifference(i0, j0) + fx * centralDifference(i0 + 1, j0))
+    + fy * ((1.0 - fx) * centralDifference(i0, j0 + 1) + fx * centralDifference(i0 + 1, j0 + 1));
+  return HeightSample(value, vec2<f32>(g.x * W, -g.y * H));
 }
 
 // The uv at a point of triangle t and its derivatives along w1 and w2.
