@@ -6,6 +6,7 @@
  */
 import GUI, { type Controller } from 'lil-gui';
 import { BUILTIN_MODELS } from './models.ts';
+import { MATERIALS } from '../gpu/contract/render.ts';
 import {
   COMPARE_SURFACES,
   DSCALE_RANGE,
@@ -132,6 +133,13 @@ export const PANEL: readonly Folder[] = [
   {
     title: 'View',
     controls: [
+      {
+        label: 'material',
+        kind: 'choice',
+        options: Object.fromEntries(MATERIALS.map((m) => [m, m])),
+        param: 'material',
+        change: (demo) => demo.requestFrame(),
+      },
       {
         label: 'patch colours',
         kind: 'toggle',

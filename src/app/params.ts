@@ -5,6 +5,7 @@
  */
 import { MAX_FACTOR } from '../pattern/max-factor.ts';
 import { POW2_LEVELS } from '../pattern/pow2.ts';
+import { MATERIALS, type Material } from '../gpu/contract/render.ts';
 
 export type Mode = 'adaptive' | 'fixed';
 export type UpAxis = 'y' | 'z';
@@ -32,6 +33,8 @@ export interface DemoParams {
   surface: Surface;
   /** Tint the Catmull-Clark surface by the kind of patch under it (regular, irregular, ...). */
   patches: boolean;
+  /** The surface's material under the studio lights (`material=metal`): clay or metal. */
+  material: Material;
   /** Catmull-Clark: blend from the flat triangle to the surface at low tess factors (no pops). */
   flat: boolean;
   /** Adaptive mode's global LOD scale (1 = the default density). */
@@ -108,6 +111,7 @@ export const DEFAULT_PARAMS: Readonly<DemoParams> = Object.freeze({
   mode: 'adaptive',
   surface: 'catmull-clark',
   patches: false,
+  material: 'clay',
   flat: true,
   lod: 1,
   factor: 8,
@@ -167,6 +171,8 @@ export function parseParams(search: string): DemoParams {
   const named = surface ? (SURFACE_ALIASES[surface] ?? surface) : '';
   if ((SURFACES as readonly string[]).includes(named)) p.surface = named as Surface;
   p.patches = bool(q.get('patches')) ?? p.patches;
+  const material = q.get('material')?.trim().toLowerCase();
+  if ((MATERIALS as readonly string[]).includes(material ?? '')) p.material = material as Material;
   p.flat = bool(q.get('flat')) ?? p.flat;
   p.lod = num(q.get('lod'), LOD_RANGE.min, LOD_RANGE.max) ?? p.lod;
   p.factor = num(q.get('factor'), FACTOR_RANGE.min, FACTOR_RANGE.max) ?? p.factor;
@@ -209,6 +215,7 @@ export function formatParams(p: DemoParams): string {
   if (p.mode !== d.mode) q.set('mode', p.mode);
   if (p.surface !== d.surface) q.set('surface', p.surface);
   if (p.patches !== d.patches) q.set('patches', p.patches ? '1' : '0');
+  if (p.material !== d.material) q.set('material', p.material);
   if (p.flat !== d.flat) q.set('flat', p.flat ? '1' : '0');
   if (p.lod !== d.lod) q.set('lod', String(round(p.lod, 3)));
   if (p.factor !== d.factor) q.set('factor', String(round(p.factor, 3)));

@@ -214,7 +214,7 @@ export class TessellationDemo extends DemoScene {
       factors,
       plan,
       view: { viewProj, model: this.modelMatrix, eye: m.eye },
-      options: { wireframe: this.params.wire, cage: this.params.cage || this.params.seams, patchColours: mode.patchColours() },
+      options: { wireframe: this.params.wire, cage: this.params.cage || this.params.seams, patchColours: mode.patchColours(), material: this.params.material },
       heat: this.params.errorView === 'off' ? null : { view: this.params.errorView, range: this.errorRange },
       measure: (enc, measured, compareRebuilt) => this.#measure(enc, measured, compareRebuilt, factors),
       bindHeat: (pass) => this.bindHeat(renderer, pass),

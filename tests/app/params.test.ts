@@ -9,7 +9,7 @@ describe('URL parameters', () => {
 
   it('reads every tunable', () => {
     const p = parseParams(
-      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=z&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&errorview=normal&errrange=2&compare=pm-acc&disp=0&dscale=2.5&seams=1',
+      '?model=torus&mode=fixed&lod=2.5&factor=12&wire=0&cage=1&spin=1&t=1.5&up=z&yaw=30&pitch=-10&dist=3&ui=0&cap=0.5&surface=cage&tessellator=instanced&level=16&split=1&instsurface=gregory-acc&flatshade=1&errorview=normal&errrange=2&compare=pm-acc&disp=0&dscale=2.5&seams=1&material=metal',
     );
     expect(p).toEqual({
       model: 'torus',
@@ -17,6 +17,7 @@ describe('URL parameters', () => {
       mode: 'fixed',
       surface: 'cage',
       patches: false,
+      material: 'metal',
       flat: true,
       lod: 2.5,
       factor: 12,
@@ -41,6 +42,13 @@ describe('URL parameters', () => {
       dscale: 2.5,
       seams: true,
     });
+  });
+
+  it('reads the material (clay by default, unknown names ignored) and writes it back', () => {
+    expect(DEFAULT_PARAMS.material).toBe('clay');
+    expect(parseParams('material=gold').material).toBe('clay');
+    expect(formatParams(parseParams('material=METAL'))).toBe('?material=metal');
+    expect(formatParams(parseParams('material=clay'))).toBe('');
   });
 
   it('reads the displacement settings: on by default, scale clamped to [-4, 4], the seam view; and writes them back', () => {

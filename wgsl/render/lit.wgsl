@@ -54,7 +54,8 @@ fn litVertex(@builtin(vertex_index) index: u32, @location(0) position: vec3f, @l
   return out;
 }
 
-// The clay's colour at a point seen with normal `n` (towards the viewer's side) and `albedo`.
+// The surface's colour at a point seen with normal `n` (towards the viewer's side) and `albedo`,
+// under the studio rig (wgsl/render/shading.wgsl), as clay or as metal (scene.look.x).
 fn shade(world: vec3f, n: vec3f, toEye: vec3f, albedo: vec3f) -> vec3f {
   let l = scene.toLight.xyz;
   let ndl = max(dot(n, l), 0.0);
@@ -66,11 +67,20 @@ fn shade(world: vec3f, n: vec3f, toEye: vec3f, albedo: vec3f) -> vec3f {
   // adaptive Phong: one speckle there with the Phong α per edge; 0 now, and suzanne's adaptive
   // Phong 1 -> 0).
   let shadow = shadowFactor(world, n);
-  let h = normalize(l + toEye);
-  let specular = pow(max(dot(n, h), 0.0), 64.0) * 0.22 * ndl;
-  // A faint rim keeps the silhouette readable against the dark backdrop.
-  let rim = pow(1.0 - max(dot(n, toEye), 0.0), 4.0) * 0.18;
-  return albedo * (ambient(n) + SUN * ndl * shadow) + SUN * specular * shadow + vec3f(rim) * ambient(n);
+  let fill = fillDirection();
+  let back = backDirection();
+  let ndv = max(dot(n, toEye), 0.0);
+  if (scene.look.x > 0.5) {
+    // Metal: no diffuse; the studio reflected, by Schlick's Fresnel from the albedo as F0.
+    let f = albedo + (vec3f(1.0) - albedo) * pow(1.0 - ndv, 5.0);
+    let seen = studioRadiance(reflect(-toEye, n));
+    let keySpecular = KEY * pow(max(dot(n, normalize(l + toEye)), 0.0), 180.0) * 1.5 * ndl;
+    return f * (seen.sky + (seen.key + keySpecular) * shadow);
+  }
+  let diffuse = ambient(n) + KEY * ndl * shadow + FILL * max(dot(n, fill), 0.0) + BACK * max(dot(n, back), 0.0);
+  let specular = KEY * pow(max(dot(n, normalize(l + toEye)), 0.0), 64.0) * 0.22 * ndl * shadow
+    + BACK * pow(max(dot(n, normalize(back + toEye)), 0.0), 24.0) * 0.35 * max(dot(n, back), 0.0);
+  return albedo * diffuse + specular;
 }
 
 @fragment

@@ -19,7 +19,12 @@ export const SCENE_UNIFORMS = defineStruct('SceneUniforms', [
   ['toLight', 'vec4<f32>', 'xyz: unit vector towards the light; w: one shadow-map texel in uv units.'],
   ['center', 'vec4<f32>', "xyz: the bounding sphere's centre; w: the ground's height."],
   ['viewport', 'vec4<f32>', 'x, y: render target size in pixels; z: wireframe opacity; w: 1 for patch colours, else 0.'],
+  ['look', 'vec4<f32>', 'x: the material (MATERIALS index: 0 clay, 1 metal); yzw: unused.'],
 ] as const);
+
+/** The surface's materials under the studio rig (wgsl/render/lit.wgsl shade), by scene.look.x. */
+export const MATERIALS = ['clay', 'metal'] as const;
+export type Material = (typeof MATERIALS)[number];
 
 /** The per-frame uniforms (SCENE_UNIFORMS), group 0 of every render pipeline but wireArgs. */
 export const SCENE_GROUP = defineBindGroup(

@@ -22,7 +22,7 @@ import type { TessellatedMesh } from '../contract/tessellated-mesh.ts';
 import type { CageLines } from './cage-mesh.ts';
 import { MapStalled } from '../device/map-within.ts';
 import { boundingSphere, DEFAULT_LIGHT_DIR, lightViewProj, type Bounds, type Vec3 } from './camera.ts';
-import { SCENE_UNIFORMS } from '../contract/render.ts';
+import { MATERIALS, SCENE_UNIFORMS, type Material } from '../contract/render.ts';
 import { createRenderPipelines, DEPTH_FORMAT } from './pipelines.ts';
 import { createRenderTiming, type RenderTiming, TIMED_PASSES, TIMING_SLOTS } from './render-timing.ts';
 
@@ -50,6 +50,8 @@ export interface DrawOptions {
   patchColours?: boolean;
   /** Wireframe opacity, 0..1. */
   wireOpacity?: number;
+  /** The surface's material under the studio rig: clay (the default) or metal. */
+  material?: Material;
   /**
    * Split view: draw only the columns [x0, x1) of the target (fractions of its width), with the
    * same camera: the first region of a frame clears, a later one keeps what the earlier drew
@@ -355,7 +357,7 @@ export class Renderer {
   /** Encode the shadow and main passes, drawing into `target` (any size; attachments follow it). */
   render(encoder: GPUCommandEncoder, target: GPUTexture, view: View, options: DrawOptions): void {
     this.#ensureAttachments(target.width, target.height);
-    this.#writeScene(view, target.width, target.height, options.wireOpacity ?? 0.45, options.patchColours ?? false);
+    this.#writeScene(view, target.width, target.height, options);
     const drawer = this.#drawer;
     const mesh = drawer ? null : this.#mesh;
     // Once the timestamps' map stalled (mapWithin), no pass writes timestamps any more.
@@ -550,7 +552,7 @@ export class Renderer {
     });
   }
 
-  #writeScene(view: View, width: number, height: number, wireOpacity: number, patchColours: boolean): void {
+  #writeScene(view: View, width: number, height: number, options: DrawOptions): void {
     const sphere = boundingSphere(this.#bounds);
     SCENE_UNIFORMS.write(this.#sceneData, {
       viewProj: view.viewProj,
@@ -560,7 +562,8 @@ export class Renderer {
       toLight: [...DEFAULT_LIGHT_DIR, 1 / this.shadowMapSize],
       // The ground sits at the cage's lowest point, a hair lower so it never z-fights the surface.
       center: [...sphere.center, this.#bounds.min[1] - sphere.radius * 1e-3],
-      viewport: [width, height, wireOpacity, patchColours ? 1 : 0],
+      viewport: [width, height, options.wireOpacity ?? 0.45, options.patchColours ? 1 : 0],
+      look: [MATERIALS.indexOf(options.material ?? 'clay'), 0, 0, 0],
     });
     this.device.queue.writeBuffer(this.#sceneBuffer, 0, this.#sceneData.buffer);
   }
