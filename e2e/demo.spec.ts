@@ -264,6 +264,25 @@ test('a bad OBJ shows its error with line numbers and keeps the model; a good on
   );
 });
 
+test('on a wide window an error message covers neither the stats nor the panel; on a narrow one it lies above them', async ({ page }) => {
+  const overlap = (a: { x: number; y: number; width: number; height: number } | null, b: typeof a) =>
+    !!a && !!b && a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.goto('/?model=torus&t=0');
+  await ready(page);
+  await page.getByTestId('stats-toggle').click(); // the stats at their widest
+  await dropFile(page, 'broken.obj', 'f 1 2 3\n');
+  const toast = page.getByTestId('toast-error');
+  await expect(toast).toBeVisible();
+  const box = await toast.boundingBox();
+  expect(overlap(box, await page.locator('#stats').boundingBox())).toBe(false);
+  expect(overlap(box, await page.locator('.lil-gui.panel').boundingBox())).toBe(false);
+  // Narrow: over whatever it covers, and its button answers.
+  await page.setViewportSize({ width: 800, height: 600 });
+  await toast.getByRole('button', { name: 'Dismiss' }).click({ timeout: 5_000 });
+  await expect(toast).toBeHidden();
+});
+
 test('a missing model falls back to the default with a message', async ({ page }) => {
   await page.goto('/?model=no-such-model&t=0');
   await ready(page);

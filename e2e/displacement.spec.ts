@@ -3,6 +3,7 @@
 // picture; a file that is not a PNG, or a map for a model without uvs, gives a clear message
 // and keeps the map shown before.
 import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
 import { heightMapFromFunction } from '../src/mesh/heightmap.ts';
 import { encodeHeightPng } from '../src/mesh/heightmap-png.ts';
 import { collectErrors, ready } from './helpers.ts';
@@ -17,6 +18,76 @@ async function settled(page: Page): Promise<Buffer> {
     before = again;
   }
   return before;
+}
+
+/** Luminance (0..1) of a PNG screenshot's pixels. */
+function luminance(png: Buffer): { width: number; height: number; at: (x: number, y: number) => number } {
+  const im = PNG.sync.read(png);
+  const at = (x: number, y: number): number => {
+    const i = (y * im.width + x) * 4;
+    return (0.2126 * im.data[i] + 0.7152 * im.data[i + 1] + 0.0722 * im.data[i + 2]) / 255;
+  };
+  return { width: im.width, height: im.height, at };
+}
+
+// The brick box's front face in its default frame at 800 × 600 (read from the reference frame,
+// e2e/__screenshots__/displacement.spec.ts/brick-box-default.png): about 7 courses of bricks,
+// a course ~23 pixels high there.
+const FRONT = { x0: 250, x1: 460, y0: 262, y1: 428 };
+
+/**
+ * Mortar lines: down columns of the front face, the luminance's autocorrelation at a course's
+ * height (a peak at lags 15-35 px) and half a course (a trough at 5-14 px: bricks and mortar
+ * alternate), and its spread. A face whose bricks do not read (the earlier default: ~10 segments
+ * an edge, 0.17 / −0.20) or a flat one (no trough) has neither.
+ */
+function courses(png: Buffer): { peak: number; trough: number; spread: number } {
+  const l = luminance(png);
+  const acf = new Array<number>(36).fill(0);
+  let spread = 0,
+    n = 0;
+  for (let x = FRONT.x0; x < FRONT.x1; x += 6) {
+    const col: number[] = [];
+    for (let y = FRONT.y0; y < FRONT.y1; y++) col.push(l.at(x, y));
+    const mean = col.reduce((a, b) => a + b) / col.length;
+    const d = col.map((c) => c - mean);
+    const variance = Math.max(d.reduce((a, b) => a + b * b, 0) / d.length, 1e-9);
+    spread += Math.sqrt(variance);
+    n++;
+    for (let lag = 1; lag <= 35; lag++) {
+      let s = 0;
+      for (let i = 0; i + lag < d.length; i++) s += d[i] * d[i + lag];
+      acf[lag] += s / ((d.length - lag) * variance);
+    }
+  }
+  const at = (lag: number) => acf[lag] / n;
+  let peak = -1,
+    trough = 1;
+  for (let lag = 15; lag <= 35; lag++) peak = Math.max(peak, at(lag));
+  for (let lag = 5; lag < 15; lag++) trough = Math.min(trough, at(lag));
+  return { peak, trough, spread: spread / n };
+}
+
+/**
+ * Saw teeth: the share of the front face's pixels where the luminance turns up and down again
+ * from one pixel to the next (two steps over 0.04 of opposite sign), along rows and along
+ * columns together. An edge or a shadow's boundary is one step; teeth along a bevel, or combs
+ * at a joint, are many: the earlier default had 0.043, this frame 0.013 (fixed factor 32, 2.7
+ * texels a segment on this cage, under-samples the bevels: 0.046).
+ */
+function teeth(png: Buffer): number {
+  const l = luminance(png);
+  let turns = 0,
+    n = 0;
+  const turn = (a: number, b: number) => Math.abs(a) > 0.04 && Math.abs(b) > 0.04 && a * b < 0;
+  for (let y = FRONT.y0; y < FRONT.y1; y++)
+    for (let x = FRONT.x0; x < FRONT.x1; x++) {
+      const c = l.at(x, y);
+      if (turn(c - l.at(x - 1, y), l.at(x + 1, y) - c)) turns++;
+      if (turn(c - l.at(x, y - 1), l.at(x, y + 1) - c)) turns++;
+      n++;
+    }
+  return turns / n;
 }
 
 /** Drop bytes as a file named `name` on the page. */
@@ -47,6 +118,29 @@ test('the brick box draws displaced; disp=0 and the UV-seam view change the pict
   expect(Buffer.compare(displaced, flat)).not.toBe(0);
   expect(Buffer.compare(displaced, seams)).not.toBe(0);
   expect(errors).toEqual([]);
+});
+
+test('the brick box at its default view and LOD: the mortar lines read and no saw teeth, against its reference frame', async ({ page }) => {
+  test.setTimeout(180_000);
+  const errors = collectErrors(page);
+  await page.goto('/?model=brick-box&t=0&ui=0');
+  await ready(page);
+  const frame = await settled(page);
+  const { width, height } = luminance(frame);
+  expect([width, height]).toEqual([800, 600]);
+  const bricks = courses(frame);
+  const saw = teeth(frame);
+  await page.goto('/?model=brick-box&t=0&ui=0&disp=0');
+  await ready(page);
+  const flat = courses(await settled(page));
+  console.log('brick box default view', { bricks, flat, teeth: saw });
+  expect(bricks.peak).toBeGreaterThan(0.28);
+  expect(bricks.trough).toBeLessThan(-0.28);
+  expect(bricks.spread).toBeGreaterThan(2 * flat.spread);
+  expect(saw).toBeLessThan(0.022);
+  expect(errors).toEqual([]);
+  // The frame the face's coordinates were read from (3D on SwiftShader: a small tolerance).
+  expect(frame).toMatchSnapshot('brick-box-default.png', { maxDiffPixelRatio: 0.01 });
 });
 
 test('a dropped PNG height map changes the picture; a bad file and a model without uvs keep the map with a message', async ({ page }) => {
