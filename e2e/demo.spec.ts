@@ -3,6 +3,7 @@
 // patch colours, Phong), falls back to Phong where the Catmull-Clark preparation refuses a cage, survives a
 // bad OBJ and a lost device, and explains itself when WebGPU is missing.
 import { expect, test, type Page } from '@playwright/test';
+import { PNG } from 'pngjs';
 import { collectErrors, dropFile, ready } from './helpers.ts';
 
 /** What the panel's cage picker shows. */
@@ -281,6 +282,42 @@ test('on a wide window an error message covers neither the stats nor the panel; 
   await page.setViewportSize({ width: 800, height: 600 });
   await toast.getByRole('button', { name: 'Dismiss' }).click({ timeout: 5_000 });
   await expect(toast).toBeHidden();
+});
+
+test('the model is framed in the canvas the open panel leaves free, and centred once the panel closes', async ({ page }) => {
+  await page.setViewportSize({ width: 1000, height: 700 });
+  await page.goto('/?model=creature&t=0');
+  await ready(page);
+  const panel = (await page.locator('.lil-gui.panel').boundingBox())!;
+  // The model's pixels: brighter than the backdrop and the ground. The panel is hidden from the
+  // screenshot (visibility only: it still takes its room, and the frame is not redrawn).
+  const extent = async () => {
+    const hide = await page.addStyleTag({ content: '.lil-gui.panel, .hud, .title { visibility: hidden !important; }' });
+    const png = PNG.sync.read(await page.locator('#view').screenshot());
+    await hide.evaluate((e) => (e as Element).remove());
+    let x0 = png.width,
+      x1 = -1;
+    for (let y = 0; y < png.height; y++)
+      for (let x = 0; x < png.width; x++) {
+        const i = (y * png.width + x) * 4;
+        if (0.2126 * png.data[i] + 0.7152 * png.data[i + 1] + 0.0722 * png.data[i + 2] > 110) {
+          x0 = Math.min(x0, x);
+          x1 = Math.max(x1, x);
+        }
+      }
+    return { x0, x1 };
+  };
+  const open = await extent();
+  expect(open.x1).toBeGreaterThan(open.x0);
+  expect(open.x1).toBeLessThan(panel.x);
+  // Closed, the panel takes no room: the picture slides right by half the room it took.
+  await page.locator('.lil-gui.panel > .lil-title').click();
+  await expect
+    .poll(async () => {
+      const closed = await extent();
+      return closed.x0 + closed.x1 - (open.x0 + open.x1);
+    })
+    .toBeCloseTo(1000 - panel.x, -1);
 });
 
 test('a missing model falls back to the default with a message', async ({ page }) => {

@@ -120,7 +120,35 @@ export abstract class DemoBase {
   }
 
   frameBounds(bounds: Bounds): OrbitCamera {
-    return fitOrbit(bounds, this.aspect);
+    return fitOrbit(bounds, this.aspect * (1 - this.panelCover()));
+  }
+
+  /** Whether the model is framed in the part of the canvas the panel leaves free (a mode whose
+   * picture is centred on the canvas, as a split view's divider is, says no). */
+  protected framesAroundPanel(): boolean {
+    return true;
+  }
+
+  /**
+   * The fraction of the canvas's width that the control panel covers at its right: 0 where it
+   * covers nothing worth framing around (hidden, closed, a window under 900 px wide, where it
+   * lies across the top). At 1000 px the open panel hid a third of the creature.
+   */
+  panelCover(): number {
+    if (!this.framesAroundPanel()) return 0;
+    const panel = document.querySelector('.lil-gui.panel');
+    // Closed by its title: aria-expanded is set at the click (the lil-closed class a frame later).
+    if (!panel || panel.querySelector(':scope > .lil-title')?.getAttribute('aria-expanded') === 'false') return 0;
+    const canvas = this.canvas.getBoundingClientRect();
+    const r = panel.getBoundingClientRect();
+    if (canvas.width < 900 || r.width === 0 || r.left < canvas.left + canvas.width / 2) return 0;
+    return Math.min(0.5, Math.max(0, (canvas.right - r.left) / canvas.width));
+  }
+
+  /** The lens shift (clip units, camera.ts cameraMatrices) that centres the model in the canvas
+   * left of the panel: half the covered width. */
+  lensShift(): number {
+    return -this.panelCover();
   }
 
   async #initDevice(): Promise<void> {

@@ -298,6 +298,8 @@ export function buildPanel(demo: TessellationDemo, initialModel: string): Panel 
   }
   showAll();
   if (window.matchMedia('(max-width: 640px)').matches) gui.close();
+  // The model is framed left of the open panel (demo-base.ts panelCover): opening or closing it moves the picture.
+  gui.onOpenClose(() => demo.requestFrame());
   return {
     gui,
     showPicked(name: string) {

@@ -177,6 +177,11 @@ export class TessellationDemo extends DemoScene {
     this.requestFrame();
   }
 
+  /** The split and comparison views centre the model on their divider. */
+  protected override framesAroundPanel(): boolean {
+    return !this.params.split && this.params.compare === null;
+  }
+
   /** The camera as drawn at `time`: the user's, turned by the turntable. */
   viewCamera(time: number): OrbitCamera {
     const cam = this.camera!;
@@ -188,7 +193,7 @@ export class TessellationDemo extends DemoScene {
     const geometry = this.geometry;
     if (!renderer || !geometry) return;
     const cam = this.viewCamera(time);
-    const m = cameraMatrices(cam, target.width / Math.max(1, target.height));
+    const m = cameraMatrices(cam, target.width / Math.max(1, target.height), this.lensShift());
     const viewProj = m.viewProj as Float32Array;
 
     // The tessellator works in the cage's own space: hand it the camera in model space.
@@ -214,7 +219,12 @@ export class TessellationDemo extends DemoScene {
       factors,
       plan,
       view: { viewProj, model: this.modelMatrix, eye: m.eye },
-      options: { wireframe: this.params.wire, cage: this.params.cage || this.params.seams, patchColours: mode.patchColours(), material: this.params.material },
+      options: {
+        wireframe: this.params.wire,
+        cage: this.params.cage || this.params.seams,
+        patchColours: mode.patchColours(),
+        material: this.params.material,
+      },
       heat: this.params.errorView === 'off' ? null : { view: this.params.errorView, range: this.errorRange },
       measure: (enc, measured, compareRebuilt) => this.#measure(enc, measured, compareRebuilt, factors),
       bindHeat: (pass) => this.bindHeat(renderer, pass),

@@ -18,7 +18,7 @@ describe('height map sampling', () => {
       }
   });
 
-  it('is bilinear between texel centres; its gradient blends the texels\' central differences bilinearly', () => {
+  it("is bilinear between texel centres; its gradient blends the texels' central differences bilinearly", () => {
     const u = (1 + 0.5 + 0.3) / 4,
       v = 1 - (1 + 0.5 + 0.6) / 3; // 30% from texel (1,1) to (2,1), 60% to row 2
     const want = 0.4 * (0.7 * texel(1, 1) + 0.3 * texel(2, 1)) + 0.6 * (0.7 * texel(1, 2) + 0.3 * texel(2, 2));

@@ -84,7 +84,8 @@ function bilinearMap(W: number, H: number): HeightMap {
   const a = 28000 / W,
     b = 20000 / H,
     c = 16000 / (W * H);
-  for (let j = 0; j < H; j++) for (let i = 0; i < W; i++) data[j * W + i] = 1000 + Math.round(a) * i + Math.round(b) * j + Math.round(c) * i * j;
+  for (let j = 0; j < H; j++)
+    for (let i = 0; i < W; i++) data[j * W + i] = 1000 + Math.round(a) * i + Math.round(b) * j + Math.round(c) * i * j;
   return makeHeightMap(W, H, data, 16);
 }
 const bilinear16 = bilinearMap(64, 64);

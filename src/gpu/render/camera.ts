@@ -137,11 +137,18 @@ export function perspectiveZO(fovY: number, aspect: number, near: number, far: n
   return mat4.perspectiveZO(mat4.create(), fovY, aspect, near, far);
 }
 
-export function cameraMatrices(cam: OrbitCamera, aspect: number): CameraMatrices {
+/**
+ * The camera's matrices. `shiftX` is a lens shift in clip units (2 = the image's width): the
+ * picture slides sideways with its perspective unchanged, as a view camera's shifted lens, so a
+ * page can frame its subject in the part of the canvas its panels leave free.
+ */
+export function cameraMatrices(cam: OrbitCamera, aspect: number, shiftX = 0): CameraMatrices {
   const eye = eyePosition(cam);
   const view = mat4.lookAt(mat4.create(), eye, cam.target, [0, 1, 0]);
   const { near, far } = clipPlanes(cam);
   const proj = perspectiveZO(cam.fovY, aspect, near, far);
+  // x_clip += shiftX · w_clip: row 0 gains shiftX times row 3 (column-major).
+  for (let c = 0; c < 4; c++) proj[4 * c] += shiftX * proj[4 * c + 3];
   const viewProj = mat4.multiply(mat4.create(), proj, view);
   return { view, proj, viewProj, eye, near, far };
 }

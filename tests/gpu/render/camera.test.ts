@@ -79,6 +79,19 @@ describe('orbit camera', () => {
     expect(y / w).toBeCloseTo(0, 6);
   });
 
+  it('a lens shift slides the picture sideways by the shift (clip units), perspective and depth unchanged', () => {
+    const cam = { ...fitOrbit(box, 1.6), yaw: 0.4, pitch: 0.2 };
+    const plain = cameraMatrices(cam, 1.6);
+    const shifted = cameraMatrices(cam, 1.6, -0.27);
+    for (const p of [cam.target, [3, 2, 1], [-1, -2, -3], [0.5, 1.7, -2.2]] as Vec3[]) {
+      const [x, y, z, w] = clip(plain.viewProj, p);
+      const [xs, ys, zs, ws] = clip(shifted.viewProj, p);
+      expect(xs / ws).toBeCloseTo(x / w - 0.27, 5);
+      expect(ys / ws).toBeCloseTo(y / w, 6);
+      expect(zs / ws).toBeCloseTo(z / w, 6);
+    }
+  });
+
   it('yaw 0 and pitch 0 put the eye on +Z', () => {
     const cam = { ...fitOrbit(box, 1), yaw: 0, pitch: 0 };
     const eye = eyePosition(cam);
