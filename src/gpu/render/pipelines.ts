@@ -86,7 +86,9 @@ const MESH_BUFFERS: GPUVertexBufferLayout[] = [
 ];
 
 /** The renderer's bind group layouts (vertexStorage absent where the vertex stage reads no
- * storage) and its pipelines. */
+ * storage) and its pipelines. Those a first frame draws with (shadow, lit, ground, backdrop) are
+ * made at once; the others (the error views' heat, the wireframe, the cage overlay) the first time
+ * they are asked for: on a software GPU each one compiled before the first frame delayed it. */
 export interface RenderPipelines {
   layouts: Record<RenderBindGroup, GPUBindGroupLayout>;
   /** [open, closed] (Renderer.setMesh's `closed`). */
@@ -94,16 +96,22 @@ export interface RenderPipelines {
   /** [front faces, back faces]: a closed surface draws the first, an open one both (see the lit
    * pipelines below). */
   lit: GPURenderPipeline[];
-  /** The heat map (src/gpu/acc/heat.ts): [front faces, back faces] as the lit ones, empty without
-   * vertex-stage storage, as is its bind group layout (null). */
-  heat: GPURenderPipeline[];
+  /** The heat map (src/gpu/acc/heat.ts) for the front or the back faces, as the lit ones; null
+   * without vertex-stage storage, as is its bind group layout. */
+  heat: (back: boolean) => GPURenderPipeline | null;
   heatGroupLayout: GPUBindGroupLayout | null;
   ground: GPURenderPipeline;
   backdrop: GPURenderPipeline;
-  wire: GPURenderPipeline | null;
-  wireArgs: GPUComputePipeline;
-  cageHidden: GPURenderPipeline;
-  cageVisible: GPURenderPipeline;
+  wire: () => GPURenderPipeline | null;
+  wireArgs: () => GPUComputePipeline;
+  cageHidden: () => GPURenderPipeline;
+  cageVisible: () => GPURenderPipeline;
+}
+
+/** `make`, called the first time the result is asked for and kept. */
+function once<T>(make: () => T): () => T {
+  let made: { value: T } | null = null;
+  return () => (made ??= { value: make() }).value;
 }
 
 /** Creates the bind group layouts and every pipeline of a Renderer drawing into `colorFormat`
@@ -117,7 +125,6 @@ export function createRenderPipelines(
 ): RenderPipelines {
   const shadow: GPURenderPipeline[] = [];
   const lit: GPURenderPipeline[] = [];
-  const heat: GPURenderPipeline[] = [];
   const layouts = {} as Record<RenderBindGroup, GPUBindGroupLayout>;
   for (const [name, entries] of Object.entries(RENDER_BIND_GROUPS) as [RenderBindGroup, readonly GPUBindGroupLayoutEntry[]][]) {
     // A vertex-visible storage layout is itself invalid where the vertex stage has none.
@@ -137,9 +144,8 @@ export function createRenderPipelines(
   const litModule = module('lit');
   const groundModule = module('ground');
   const backdropModule = module('backdrop');
-  const wireModule = vertexStorage ? module('wireframe') : null;
-  const cageModule = module('cage');
-  const wireArgsModule = module('wireArgs');
+  const wireModule = once(() => module('wireframe'));
+  const cageModule = once(() => module('cage'));
 
   const heatGroupLayout = vertexStorage
     ? device.createBindGroupLayout({ label: 'heat bind group layout', entries: HEAT_RENDER_GROUP.layoutEntries() })
@@ -151,10 +157,7 @@ export function createRenderPipelines(
         bindGroupLayouts: [layouts.scene, layouts.shading, heatGroupLayout],
       })
     : null;
-  const heatModule = device.createShaderModule({
-    label: 'heat shader',
-    code: HEAT_SHADER.join('\n'),
-  });
+  const heatModule = once(() => device.createShaderModule({ label: 'heat shader', code: HEAT_SHADER.join('\n') }));
 
   const multisample = { count: sampleCount };
   const blend: GPUBlendState = {
@@ -204,17 +207,23 @@ export function createRenderPipelines(
       depthStencil,
       multisample,
     });
-    if (!heatLayout) continue;
-    heat[+back] = device.createRenderPipeline({
+  }
+  const heatPipeline = (back: boolean) => {
+    if (!heatLayout) return null;
+    const side = back ? 'back faces, depth-biased behind the front faces' : 'front faces';
+    const { primitive, depthStencil } = meshFaceStates(back, DEPTH_FORMAT);
+    return device.createRenderPipeline({
       label: `heat pipeline (${side})`,
       layout: heatLayout,
-      vertex: { module: heatModule, entryPoint: 'heatVertex', buffers: MESH_BUFFERS },
-      fragment: { module: heatModule, entryPoint: 'heatFragment', targets: opaqueTarget },
+      vertex: { module: heatModule(), entryPoint: 'heatVertex', buffers: MESH_BUFFERS },
+      fragment: { module: heatModule(), entryPoint: 'heatFragment', targets: opaqueTarget },
       primitive,
       depthStencil,
       multisample,
     });
-  }
+  };
+  const heatFront = once(() => heatPipeline(false));
+  const heatBack = once(() => heatPipeline(true));
   const ground = device.createRenderPipeline({
     label: 'ground pipeline',
     layout: pipelineLayout('ground'),
@@ -233,24 +242,26 @@ export function createRenderPipelines(
     depthStencil: overlayDepth('always'),
     multisample,
   });
-  const wire = wireModule
-    ? device.createRenderPipeline({
-        label: 'wireframe pipeline',
-        layout: pipelineLayout('wireframe'),
-        vertex: { module: wireModule, entryPoint: 'wireVertex' },
-        fragment: { module: wireModule, entryPoint: 'wireFragment', targets: blendedTarget },
-        primitive: { topology: 'line-list' },
-        depthStencil: overlayDepth('less-equal'),
-        multisample,
-      })
-    : null;
-  const cageLayout = pipelineLayout('cage');
+  const wire = once(() =>
+    vertexStorage
+      ? device.createRenderPipeline({
+          label: 'wireframe pipeline',
+          layout: pipelineLayout('wireframe'),
+          vertex: { module: wireModule(), entryPoint: 'wireVertex' },
+          fragment: { module: wireModule(), entryPoint: 'wireFragment', targets: blendedTarget },
+          primitive: { topology: 'line-list' },
+          depthStencil: overlayDepth('less-equal'),
+          multisample,
+        })
+      : null,
+  );
+  const cageLayout = once(() => pipelineLayout('cage'));
   const cagePipeline = (label: string, opacity: number, compare: GPUCompareFunction) =>
     device.createRenderPipeline({
       label,
-      layout: cageLayout,
+      layout: cageLayout(),
       vertex: {
-        module: cageModule,
+        module: cageModule(),
         entryPoint: 'cageVertex',
         buffers: [
           {
@@ -262,19 +273,22 @@ export function createRenderPipelines(
           },
         ],
       },
-      fragment: { module: cageModule, entryPoint: 'cageFragment', targets: blendedTarget, constants: { OPACITY: opacity } },
+      fragment: { module: cageModule(), entryPoint: 'cageFragment', targets: blendedTarget, constants: { OPACITY: opacity } },
       primitive: { topology: 'line-list' },
       depthStencil: overlayDepth(compare),
       multisample,
     });
   // The cage mostly floats outside the limit surface; where it dips behind, show it as a ghost.
-  const cageHidden = cagePipeline('cage overlay (hidden part) pipeline', 0.22, 'greater');
-  const cageVisible = cagePipeline('cage overlay pipeline', 1.0, 'less-equal');
-  const wireArgs = device.createComputePipeline({
-    label: 'wireframe args pipeline',
-    layout: pipelineLayout('wireArgs'),
-    compute: { module: wireArgsModule, entryPoint: 'wireArgsMain' },
-  });
+  const cageHidden = once(() => cagePipeline('cage overlay (hidden part) pipeline', 0.22, 'greater'));
+  const cageVisible = once(() => cagePipeline('cage overlay pipeline', 1.0, 'less-equal'));
+  const wireArgs = once(() =>
+    device.createComputePipeline({
+      label: 'wireframe args pipeline',
+      layout: pipelineLayout('wireArgs'),
+      compute: { module: module('wireArgs'), entryPoint: 'wireArgsMain' },
+    }),
+  );
+  const heat = (back: boolean) => (back ? heatBack() : heatFront());
 
   return { layouts, shadow, lit, heat, heatGroupLayout, ground, backdrop, wire, wireArgs, cageHidden, cageVisible };
 }

@@ -121,10 +121,11 @@ export class Renderer {
   #closed = false;
   #groundPipeline: GPURenderPipeline;
   #backdropPipeline: GPURenderPipeline;
-  #wirePipeline: GPURenderPipeline | null = null;
-  #wireArgsPipeline: GPUComputePipeline;
-  #cageHiddenPipeline: GPURenderPipeline;
-  #cageVisiblePipeline: GPURenderPipeline;
+  /** Made when first drawn with (pipelines.ts RenderPipelines). */
+  #wirePipeline: () => GPURenderPipeline | null;
+  #wireArgsPipeline: () => GPUComputePipeline;
+  #cageHiddenPipeline: () => GPURenderPipeline;
+  #cageVisiblePipeline: () => GPURenderPipeline;
   /** Two read-only storage buffers for the vertex stage: the wireframe's indices and positions,
    * and the patch colours' source triangles and kinds share it. */
   #vertexStorageLayout: GPUBindGroupLayout | null = null;
@@ -134,7 +135,7 @@ export class Renderer {
   #patchBindGroup: GPUBindGroup | null = null;
   /** The heat map (src/gpu/acc/heat.ts): [front faces, back faces] pipelines as the lit ones,
    * its layout, uniforms and the bind group of the values set (null: none). */
-  #heatPipelines: GPURenderPipeline[] = [];
+  #heatPipeline: (back: boolean) => GPURenderPipeline | null;
   #heatLayout: GPUBindGroupLayout | null = null;
   #heatUniforms: GPUBuffer;
   #heatData = new DataView(new ArrayBuffer(HEAT_UNIFORMS.size));
@@ -226,7 +227,7 @@ export class Renderer {
     this.#heatLayout = pipelines.heatGroupLayout;
     this.#shadowPipelines = pipelines.shadow;
     this.#litPipelines = pipelines.lit;
-    this.#heatPipelines = pipelines.heat;
+    this.#heatPipeline = pipelines.heat;
     this.#groundPipeline = pipelines.ground;
     this.#backdropPipeline = pipelines.backdrop;
     this.#wirePipeline = pipelines.wire;
@@ -366,7 +367,7 @@ export class Renderer {
     if (mesh && options.wireframe && this.#wireArgsBindGroup) {
       // Tracks whatever index count the tessellator last wrote, at the cost of one thread.
       const pass = encoder.beginComputePass({ label: 'wireframe args pass' });
-      pass.setPipeline(this.#wireArgsPipeline);
+      pass.setPipeline(this.#wireArgsPipeline());
       pass.setBindGroup(0, this.#wireArgsBindGroup);
       pass.dispatchWorkgroups(1);
       pass.end();
@@ -440,7 +441,9 @@ export class Renderer {
       pass.setVertexBuffer(1, mesh.normals);
       pass.setIndexBuffer(mesh.indices, 'uint32');
       for (const back of this.#closed ? [false] : [false, true]) {
-        pass.setPipeline(heat ? this.#heatPipelines[+back] : this.#litPipelines[+back]);
+        const pipeline = heat ? this.#heatPipeline(back) : this.#litPipelines[+back];
+        if (!pipeline) continue;
+        pass.setPipeline(pipeline);
         pass.drawIndexedIndirect(mesh.drawArgs, 0);
       }
     }
@@ -451,8 +454,9 @@ export class Renderer {
     }
     pass.setPipeline(this.#groundPipeline);
     pass.draw(4);
-    if (mesh && options.wireframe && this.#wireBindGroup && this.#wirePipeline) {
-      pass.setPipeline(this.#wirePipeline);
+    const wirePipeline = mesh && options.wireframe && this.#wireBindGroup ? this.#wirePipeline() : null;
+    if (wirePipeline) {
+      pass.setPipeline(wirePipeline);
       pass.setBindGroup(1, this.#wireBindGroup);
       pass.drawIndirect(this.#wireArgs, 0);
     }
@@ -463,9 +467,9 @@ export class Renderer {
     const cage = this.#cage;
     if (cage && options.cage && cage.vertexCount > 0) {
       pass.setVertexBuffer(0, cage.vertices);
-      pass.setPipeline(this.#cageHiddenPipeline);
+      pass.setPipeline(this.#cageHiddenPipeline());
       pass.draw(cage.vertexCount);
-      pass.setPipeline(this.#cageVisiblePipeline);
+      pass.setPipeline(this.#cageVisiblePipeline());
       pass.draw(cage.vertexCount);
     }
     pass.end();
