@@ -1,19 +1,40 @@
 /**
- * The Catmull-Clark data of each model (src/gpu/cc/build.ts: topology only, tens of
- * milliseconds on most cages, about half a second on a 9k-triangle cage), prepared once per cage
- * on the page's thread and cached: switching surfaces, going back to a model seen before, or
- * recovering from a lost device reuses it. No worker: the preparation is cheaper than shipping
- * the cage to one and its typed arrays back.
+ * The Catmull-Clark data of each model (src/gpu/cc/build.ts: topology only) and the tessellator's
+ * prepared mesh it is built from (src/app/surface-data.ts), prepared once per cage and cached:
+ * switching surfaces, going back to a model seen before, or recovering from a lost device reuses
+ * it. Small cages (tens of milliseconds) are prepared on the page's thread; from OFF_THREAD_FACES
+ * faces on, in a worker (src/app/prepare-worker.ts), where a 40,000-face cage's second of work
+ * no longer freezes the page.
  */
+import { faceCount } from '../mesh/types.ts';
 import type { Cage } from '../mesh/types.ts';
-import { prepareMesh } from '../gpu/tess/prepare.ts';
-import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
+import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { errorMessage } from './controller.ts';
+import type { PrepareReply } from './prepare-worker.ts';
+import { prepareSurfaceData, type SurfaceData } from './surface-data.ts';
 
-export interface CcTables {
-  data: CatmullClarkData;
-  /** Wall-clock milliseconds of the CPU preparation. */
-  ms: number;
+export type CcTables = SurfaceData;
+
+/** Faces from which a cage is prepared in a worker: below, the work (~0.1 s at 4,000 faces) costs
+ * less than starting one. */
+export const OFF_THREAD_FACES = 4096;
+
+/** `cage`'s surface data, prepared in a worker (or here, where there are no workers: Node). */
+function prepareOffThread(cage: Cage): Promise<SurfaceData> {
+  if (typeof Worker === 'undefined') return Promise.resolve().then(() => prepareSurfaceData(cage));
+  return new Promise((resolve, reject) => {
+    const worker = new Worker(new URL('./prepare-worker.ts', import.meta.url), { type: 'module', name: 'prepare the surface' });
+    worker.onmessage = (e: MessageEvent<PrepareReply>) => {
+      worker.terminate();
+      if ('prepared' in e.data) resolve(e.data.prepared);
+      else reject(new Error(e.data.error));
+    };
+    worker.onerror = (e) => {
+      worker.terminate();
+      reject(new Error(`the surface preparation stopped: ${e.message || 'worker error'}`));
+    };
+    worker.postMessage({ cage });
+  });
 }
 
 export class CcTableCache {
@@ -40,11 +61,10 @@ export class CcTableCache {
   }
 
   async #prepare(cage: Cage): Promise<CcTables> {
+    if (faceCount(cage) >= OFF_THREAD_FACES) return prepareOffThread(cage);
     // Let the page paint what it shows meanwhile (the cage and the "preparing" state) first.
     await new Promise((r) => setTimeout(r, 0));
-    const t0 = performance.now();
-    const data = buildCatmullClark(cage, prepareMesh(cage));
-    return { data, ms: performance.now() - t0 };
+    return prepareSurfaceData(cage);
   }
 }
 

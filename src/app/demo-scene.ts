@@ -68,6 +68,8 @@ export abstract class DemoScene extends DemoBase {
   #heights = new WeakMap<LoadedModel['cage'], HeightEntry>();
   #flat: CageGeometry | null = null;
   #cageLines: CageLines | null = null;
+  /** What #cageLines were built for (null: nothing, the overlay is off). */
+  #cageLinesKey: { cage: Cage; seams: boolean } | null = null;
   /** The instanced tessellator (`tessellator=instanced`, or the split view's right half). */
   protected readonly instanced = new InstancedDrawer();
 
@@ -272,6 +274,7 @@ export abstract class DemoScene extends DemoBase {
     this.tess = {};
     this.#flat = null;
     this.#cageLines = null;
+    this.#cageLinesKey = null;
     this.instanced.deviceLost();
     this.errors = null;
     this.#boundHeat = null;
@@ -477,15 +480,25 @@ export abstract class DemoScene extends DemoBase {
   }
 
   /** The cage overlay's lines: plain, or the UV-seam view. */
+  /** The cage overlay's lines (and the UV seams among them), built while the overlay is shown:
+   * 80-100 ms of the page's thread on a 40,000-face cage, for lines nobody had asked to see. */
   uploadCageOverlay(model = this.model): void {
     const renderer = this.renderer;
     if (!model || !renderer) return;
+    const key = this.params.cage || this.params.seams ? { cage: model.cage, seams: this.params.seams } : null;
+    const built = this.#cageLinesKey;
+    if (key?.cage === built?.cage && key?.seams === built?.seams) return;
+    this.#cageLines?.vertices.destroy();
+    this.#cageLines = null;
+    this.#cageLinesKey = key;
+    renderer.setCage(null);
+    this.requestFrame();
+    if (!key) return;
     let seam: ((a: number, b: number) => boolean) | undefined;
     if (this.params.seams && uvCoverage(model.cage) !== 'none') {
       const seams = uvSeams(model.cage, model.topology).edge;
       seam = (a, b) => seams[findEdge(model.topology, a, b)] === 1;
     }
-    this.#cageLines?.vertices.destroy();
     this.#cageLines = uploadCageLines(this.gpu.device, model.cage, seam);
     renderer.setCage(this.#cageLines);
     this.requestFrame();
@@ -512,9 +525,12 @@ export abstract class DemoScene extends DemoBase {
   #upload(model: LoadedModel, surface: Shown, data: CcTables | null): void {
     const renderer = this.renderer;
     if (!renderer || !this.#flat) return;
-    this.#flat.setCage(model.cage);
+    this.#flat.setCage(model.cage, model.flat);
     const height = this.#heights.get(model.cage)?.height ?? null;
-    if (surface !== 'cage') this.#tessellator(surface).setCage(model.cage, preparedAhead(surface) ? data?.data : undefined, height);
+    if (surface !== 'cage') {
+      const ahead = preparedAhead(surface) ? data : null;
+      this.#tessellator(surface).setCage(model.cage, ahead?.data, height, ahead?.mesh);
+    }
     this.closed = isClosed(model.cage, model.topology);
     renderer.setMesh(this.#geometryFor(surface)?.output ?? null, this.closed);
     // The mesh bound may be another one now: the error views bind their values again.

@@ -6,7 +6,7 @@
  */
 import type { Cage } from '../mesh/types.ts';
 import type { FactorParams, TessellatedMesh } from '../gpu/contract/tessellated-mesh.ts';
-import { destroyMesh, uploadCageMesh } from '../gpu/render/cage-mesh.ts';
+import { destroyMesh, uploadCageMesh, type TriangulatedCage } from '../gpu/render/cage-mesh.ts';
 import { prepareMesh, Tessellator } from '../gpu/tess/tessellator.ts';
 import type { TessPipelines } from '../gpu/tess/pipelines.ts';
 import { bakeTables } from '../pattern/tables.ts';
@@ -27,13 +27,12 @@ export interface CageHeightMap {
 
 export type TessSurface = Surface;
 
+/** What the renderer draws from: the flat cage or a tessellator (each takes a model by its own
+ * setCage, with what it needs). */
 export interface GeometrySource {
   readonly kind: 'cage' | 'tessellator';
   /** The buffers to draw (null before the first model). */
   readonly output: TessellatedMesh | null;
-  /** Upload a new model (with its Catmull-Clark tables for that surface). Throws (with a
-   * message fit to show) if it cannot be used. */
-  setCage(cage: Cage, cc?: CatmullClarkData): void;
   /** Encode a rebuild of `output` for these factors. */
   encode(encoder: GPUCommandEncoder, params: FactorParams): void;
   /** Whether `encode` depends on the camera (adaptive factors) or only on the factors. */
@@ -48,16 +47,29 @@ export interface GeometrySource {
 
 export class CageGeometry implements GeometrySource {
   readonly kind = 'cage';
-  output: TessellatedMesh | null = null;
   readonly #device: GPUDevice;
+  #cage: Cage | null = null;
+  /** The cage's triangulation where a worker made it (a file's, src/app/model-worker.ts). */
+  #triangulated: TriangulatedCage | undefined;
+  #output: TessellatedMesh | null = null;
 
   constructor(device: GPUDevice) {
     this.#device = device;
   }
 
-  setCage(cage: Cage): void {
-    if (this.output) destroyMesh(this.output);
-    this.output = uploadCageMesh(this.#device, cage);
+  /** The cage to draw; triangulated and uploaded when first drawn (a surface shown at once never
+   * needs it: on a 40,000-face cage that was 27 ms of the page's thread for nothing). */
+  setCage(cage: Cage, triangulated?: TriangulatedCage): void {
+    if (cage === this.#cage) return;
+    this.#cage = cage;
+    this.#triangulated = triangulated;
+    if (this.#output) destroyMesh(this.#output);
+    this.#output = null;
+  }
+
+  get output(): TessellatedMesh | null {
+    if (!this.#output && this.#cage) this.#output = uploadCageMesh(this.#device, this.#cage, this.#triangulated);
+    return this.#output;
   }
 
   encode(): void {
@@ -73,8 +85,9 @@ export class CageGeometry implements GeometrySource {
   }
 
   destroy(): void {
-    if (this.output) destroyMesh(this.output);
-    this.output = null;
+    if (this.#output) destroyMesh(this.#output);
+    this.#output = null;
+    this.#cage = null;
   }
 }
 
@@ -135,10 +148,12 @@ export class TessellatorGeometry implements GeometrySource {
 
   /** An ACC scheme throws AccError (a message fit to show) for a cage it does not take; the
    * cage shown before is then gone too, and the caller shows another surface. */
-  setCage(cage: Cage, cc?: CatmullClarkData, height: CageHeightMap | null = null): void {
+  setCage(cage: Cage, cc?: CatmullClarkData, height: CageHeightMap | null = null, mesh?: PreparedMesh): void {
     this.#hasMesh = false;
     this.#last = null;
-    const prepared = prepareMesh(cage);
+    // Prepared with the exact surface's tables (src/app/surface-data.ts, off the page's thread for
+    // a large cage), or here.
+    const prepared = mesh ?? prepareMesh(cage);
     const acc = isAccSurface(this.surface) ? prepareAccSurface(this.#device, cage, prepared, this.surface) : undefined;
     this.#acc?.patches.destroy();
     this.#acc = acc;

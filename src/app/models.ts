@@ -5,6 +5,7 @@
  * cage or throws a CageError with line numbers.
  */
 import { decodeText, loadCage, type LoadedCage } from '../mesh/index.ts';
+import type { TriangulatedCage } from '../gpu/render/cage-mesh.ts';
 import { errorMessage } from './controller.ts';
 import { parseFileOffThread } from './parse-off-thread.ts';
 import { checkFileSize, MAX_MODEL_FILE_BYTES } from './file-size.ts';
@@ -46,6 +47,8 @@ export interface LoadedModel extends LoadedCage {
   title: string;
   /** A file from the visitor's computer: no link can carry it (the URL and "copy link" say so). */
   localFile?: boolean;
+  /** Its flat triangulation, where the worker that read it made it (src/app/model-worker.ts). */
+  flat?: TriangulatedCage;
 }
 
 /** Fetch and parse an OBJ. Network and parse failures both come back as Errors with a message fit to show. */

@@ -194,7 +194,7 @@ export const PANEL: readonly Folder[] = [
         shown: (p) => accShown(p) || p.compare !== null,
       },
       { label: 'wireframe', kind: 'toggle', param: 'wire', change: redraw },
-      { label: 'cage overlay', kind: 'toggle', param: 'cage', change: redraw },
+      { label: 'cage overlay', kind: 'toggle', param: 'cage', change: (demo) => demo.uploadCageOverlay() },
       { label: 'turntable', kind: 'toggle', param: 'spin', change: redraw },
       { label: 'reset camera', kind: 'action', change: (demo) => demo.resetCamera() },
       { label: 'copy link to this view', kind: 'action', change: (demo) => shareLink(demo) },

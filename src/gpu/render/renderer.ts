@@ -280,12 +280,12 @@ export class Renderer {
       usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_DST,
     });
     // Kinds are offset by one on the GPU: 0 means "no kind", drawn in the usual colours.
-    if (kinds && n)
-      this.device.queue.writeBuffer(
-        this.#patchKinds,
-        0,
-        Uint32Array.from(kinds, (k) => k + 1),
-      );
+    if (kinds && n) {
+      // A plain loop: Uint32Array.from with a map function took 14 ms for 80,000 triangles.
+      const words = new Uint32Array(n);
+      for (let i = 0; i < n; i++) words[i] = kinds[i] + 1;
+      this.device.queue.writeBuffer(this.#patchKinds, 0, words);
+    }
     this.#bindPatches();
   }
 

@@ -1,0 +1,52 @@
+// The exact surface's CPU preparation as the page caches it (src/app/cc-tables.ts): a cage from
+// OFF_THREAD_FACES faces on goes to a worker in the browser (here, in Node, without workers, the
+// same function runs in place): the prepared mesh and the tables it hands back are the ones the
+// tessellator would have made itself, once per cage; a refused cage rejects with its reason.
+import { describe, expect, it } from 'vitest';
+import { CcTableCache, OFF_THREAD_FACES } from '../../src/app/cc-tables.ts';
+import { loadCage } from '../../src/mesh/index.ts';
+import { prepareMesh } from '../../src/gpu/tess/prepare.ts';
+import { buildCatmullClark } from '../../src/gpu/cc/build.ts';
+
+function grid(n: number): string {
+  const lines: string[] = [];
+  for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} ${Math.sin(i) * 0.1}`);
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++) {
+      const a = j * (n + 1) + i + 1;
+      lines.push(`f ${a} ${a + 1} ${a + n + 2} ${a + n + 1}`);
+    }
+  return lines.join('\n');
+}
+
+describe('CcTableCache', () => {
+  it('prepares a cage past OFF_THREAD_FACES once: the mesh and tables the tessellator would make', async () => {
+    const n = Math.ceil(Math.sqrt(OFF_THREAD_FACES)) + 1;
+    const { cage } = loadCage(grid(n));
+    expect(n * n).toBeGreaterThanOrEqual(OFF_THREAD_FACES);
+    const cache = new CcTableCache();
+    const first = cache.get(cage);
+    expect(cache.get(cage)).toBe(first);
+    const t = await first;
+    expect(cache.has(cage)).toBe(true);
+    const mesh = prepareMesh(cage);
+    expect(t.mesh.triangleCount).toBe(2 * n * n);
+    // Byte for byte (toEqual walks large arrays element by element, slowly).
+    const same = (a: ArrayBufferView, b: ArrayBufferView) =>
+      Buffer.from(a.buffer, a.byteOffset, a.byteLength).equals(Buffer.from(b.buffer, b.byteOffset, b.byteLength));
+    expect(same(t.mesh.triVerts, mesh.triVerts)).toBe(true);
+    expect(same(t.mesh.edgeOwner, mesh.edgeOwner)).toBe(true);
+    expect(same(t.data.words, buildCatmullClark(cage, mesh).words)).toBe(true);
+    expect(t.ms).toBeGreaterThan(0);
+  });
+
+  it('a cage the preparation refuses rejects with a message fit to show', async () => {
+    // A vertex of valence 600 (a fan of triangles): wider than a workgroup's threads.
+    const k = 600;
+    const lines = ['v 0 0 0'];
+    for (let i = 0; i < k; i++) lines.push(`v ${Math.cos((2 * Math.PI * i) / k)} ${Math.sin((2 * Math.PI * i) / k)} 0`);
+    for (let i = 0; i < k; i++) lines.push(`f 1 ${i + 2} ${((i + 1) % k) + 2}`);
+    const { cage } = loadCage(lines.join('\n'));
+    await expect(new CcTableCache().get(cage)).rejects.toThrow(/valence|fan|workgroup/i);
+  });
+});
