@@ -2,18 +2,15 @@
  * A user's OBJ file read, decoded, parsed and validated off the page's main thread (a 50 MB file
  * took 37 s there, the tab frozen, before it could be refused). One worker per file
  * (src/app/parse-off-thread.ts starts it and ends it). In: the File. Out: progress lines, then
- * the loaded cage (its typed arrays transferred, not copied) or the error: a CageError's issues
- * go back as data, so the page shows the same message with its line numbers.
+ * the loaded cage and its flat triangulation (src/app/parse-obj.ts; typed arrays transferred,
+ * not copied) or the error: a CageError's issues go back as data, so the page shows the same
+ * message with its line numbers.
  */
-import { type CageIssue, CageError, decodeText, type LoadedCage, loadCage } from '../mesh/index.ts';
-import { triangulateCage, type TriangulatedCage } from '../gpu/render/cage-mesh.ts';
+import { type CageIssue, CageError } from '../mesh/index.ts';
+import { parseObjBytes, type ParsedFile } from './parse-obj.ts';
 import { buffersOf } from './transfer.ts';
 
 export type ParseReply = { progress: string } | { loaded: ParsedFile } | { error: string; issues?: CageIssue[] };
-
-/** The cage, and its flat triangulation (the picture shown while the surface is prepared), made
- * here too: 40-60 ms of the page's thread on a 40,000-face cage. */
-export type ParsedFile = LoadedCage & { flat: TriangulatedCage };
 
 const post = (reply: ParseReply, transfer: Transferable[] = []) => (self as unknown as Worker).postMessage(reply, transfer);
 
@@ -23,8 +20,7 @@ self.onmessage = async (e: MessageEvent<{ file: File }>) => {
     post({ progress: `reading ${file.name}` });
     const bytes = new Uint8Array(await file.arrayBuffer());
     post({ progress: `parsing ${file.name}` });
-    const cage = loadCage(decodeText(bytes));
-    const loaded: ParsedFile = { ...cage, flat: triangulateCage(cage.cage) };
+    const loaded = parseObjBytes(bytes);
     post({ loaded }, [...buffersOf(loaded)]);
   } catch (err) {
     if (err instanceof CageError) post({ error: err.message, issues: err.issues });

@@ -3,11 +3,12 @@
  * however large the file: the main thread only receives the finished cage. Where workers are
  * missing (unit tests in Node), the same work runs here.
  */
-import { CageError, decodeText, type LoadedCage, loadCage } from '../mesh/index.ts';
-import type { ParsedFile, ParseReply } from './model-worker.ts';
+import { CageError } from '../mesh/index.ts';
+import type { ParseReply } from './model-worker.ts';
+import { parseObjBytes, type ParsedFile } from './parse-obj.ts';
 
-export function parseFileOffThread(file: File, progress: (line: string) => void = () => {}): Promise<LoadedCage | ParsedFile> {
-  if (typeof Worker === 'undefined') return file.arrayBuffer().then((b) => loadCage(decodeText(new Uint8Array(b))));
+export function parseFileOffThread(file: File, progress: (line: string) => void = () => {}): Promise<ParsedFile> {
+  if (typeof Worker === 'undefined') return file.arrayBuffer().then((b) => parseObjBytes(new Uint8Array(b)));
   return new Promise((resolve, reject) => {
     const worker = new Worker(new URL('./model-worker.ts', import.meta.url), { type: 'module', name: `parse ${file.name}` });
     const done = () => worker.terminate();
