@@ -41,8 +41,10 @@ export interface DemoPorts<M extends { title: string }, D, P = void> {
    * Throws, with a message fit to show, when it cannot. */
   upload(model: M, surface: Shown, data: D | null): void;
 
-  /** A wait the user should see ("Loading torus…"), or null when it is over. */
-  loading(message: string | null): void;
+  /** A wait the user should see ("Loading torus…"), or null when it is over. `surface`: the wait
+   * for the surface asked for (its data, or whatever else the page prepares for it: the page may
+   * say which, BUILDING being the controller's word for it). */
+  loading(message: string | null, surface?: boolean): void;
   /** Whether the surface data is being prepared (the stats say so). */
   preparing(busy: boolean): void;
   /** A request failed; what was shown stays. `kept` is the model still shown, if any. */
@@ -171,7 +173,7 @@ export class DemoController<M extends { title: string }, D, P = void> {
     let dataError: string | null = model === this.#model ? this.#dataError : null;
     if (preparedAhead(surface) && !data) {
       const ready = this.#ports.surfaceReady(model);
-      if (!ready) this.#ports.loading(BUILDING);
+      if (!ready) this.#ports.loading(BUILDING, true);
       this.#preparingFor = serial;
       this.#setPreparing(true);
       const prepared = Promise.resolve()
@@ -255,7 +257,7 @@ export class DemoController<M extends { title: string }, D, P = void> {
     this.#shown = 'cage';
     this.#ports.shown(model, previous, model !== previous ? placement : undefined);
     // The page ends a wait when a model is shown; this one goes on.
-    this.#ports.loading(BUILDING);
+    this.#ports.loading(BUILDING, true);
   }
 
   /** Upload for `surface`; where the Catmull-Clark upload (or an ACC scheme, which needs no data

@@ -165,7 +165,7 @@ export abstract class DemoScene extends DemoBase {
 
   /** The exact surface's pipelines on this device (made at init), compiled when first asked for. */
   #pipelines: TessPipelineCache | null = null;
-  /** The controller waits for a surface (its BUILDING message), and for which cage's data. */
+  /** The controller waits for a surface (loading's `surface`), and for which cage's data. */
   #waitingForSurface = false;
   #preparing: Cage | null = null;
 
@@ -195,8 +195,8 @@ export abstract class DemoScene extends DemoBase {
         }),
       surfaceReady: (model) => !this.#hold.held && this.#ccTables.has(model.cage) && !!this.#pipelines?.get('catmull-clark'),
       upload: (model, surface, data) => this.#upload(model, surface, data),
-      loading: (message) => {
-        this.#waitingForSurface = message === BUILDING;
+      loading: (message, surface = false) => {
+        this.#waitingForSurface = surface;
         if (this.#waitingForSurface) this.#sayWait();
         else setLoading(message);
       },

@@ -58,7 +58,7 @@ function harness(surface: Surface = 'catmull-clark', options: DemoControllerOpti
       expect(s === 'catmull-clark').toBe(data !== null);
       gpu = { model: model.title, surface: s, data: data?.of ?? null };
     },
-    loading: (m) => log.push(`loading ${m}`),
+    loading: (m, surface) => log.push(`loading ${m}${surface ? ' (the surface)' : ''}`),
     preparing: (b) => {
       busy = b;
     },
@@ -87,7 +87,7 @@ describe('DemoController', () => {
     expect(await done).toBe(true);
     expect(h.log).toEqual([
       'loading Loading torus…',
-      'loading Preparing subdivision data…',
+      'loading Preparing subdivision data… (the surface)',
       'prepare torus',
       'upload torus catmull-clark +torus',
       'shown torus (was none) place-torus',
@@ -243,7 +243,7 @@ describe('DemoController', () => {
     expect(h.c.shownSurface).toBe('cage');
     expect(h.c.preparing).toBe(true);
     expect(h.gpu()).toEqual({ model: 'pawn', surface: 'cage', data: null });
-    expect(h.log.at(-1)).toBe('loading Preparing subdivision data…');
+    expect(h.log.at(-1)).toBe('loading Preparing subdivision data… (the surface)');
     h.release('pawn');
     expect(await done).toBe(true);
     expect(h.gpu()).toEqual({ model: 'pawn', surface: 'catmull-clark', data: 'pawn' });
