@@ -63,8 +63,8 @@ export class TessellationDemo extends DemoScene {
   #countsFor = 0;
   #tessTimesFor = 0;
   /** A read of the build's (or the frames') timestamps is running: later ones are read after it. */
-  #tessReading = false;
-  #drawReading = false;
+  #tessRead = { reading: false };
+  #drawRead = { reading: false };
   /** The stats panel is redrawn at most every 250 ms (see updateStats). */
   readonly #statsThrottle = new TrailingThrottle(() => this.#renderStats(), 250, {
     now: () => performance.now(),
@@ -375,50 +375,50 @@ export class TessellationDemo extends DemoScene {
     }
   }
 
-  /**
-   * The newest build's timestamps, then again while a newer build's wait (one read at a time:
-   * builds submitted meanwhile are timed into the ring, src/gpu/device/timestamp-ring.ts, and read
-   * after it). The demo draws on demand: without the second read, a build landing during a read
-   * kept the older build's figures on screen until some later build.
-   */
-  async #readTessTimes(): Promise<void> {
-    if (this.#tessReading) return;
-    this.#tessReading = true;
-    try {
-      for (;;) {
-        const geometry = this.geometry;
-        if (!geometry) break;
-        const serial = this.#buildSerial;
-        const tess = await geometry.readTimings().catch(() => ({}) as Record<string, number>);
-        if (geometry !== this.geometry) break;
-        if (Object.keys(tess).length) {
-          this.#tessTimes = tess;
-          this.#tessTimesFor = serial;
-        }
-        this.updateStats();
-        if (!geometry.timingUnread) break;
+  /** The newest build's timestamps (kept with the build they time). */
+  #readTessTimes(): Promise<void> {
+    return this.#readNewest(this.#tessRead, () => this.geometry, (times, serial) => {
+      if (Object.keys(times).length) {
+        this.#tessTimes = times;
+        this.#tessTimesFor = serial;
       }
-    } finally {
-      this.#tessReading = false;
-    }
+    });
   }
 
-  /** The newest frame's draw timestamps, the same way (a frame drawn during a read is read next). */
-  async #readDrawTimes(): Promise<void> {
-    if (this.#drawReading) return;
-    this.#drawReading = true;
+  /** The newest frame's draw timestamps. */
+  #readDrawTimes(): Promise<void> {
+    return this.#readNewest(this.#drawRead, () => this.renderer, (times) => {
+      this.#drawTimes = times;
+    });
+  }
+
+  /**
+   * One read at a time per kind (`flag`): `current()`'s newest timestamps, handed to `take` with
+   * the build serial they were asked at, then again while a newer submission's wait (builds and
+   * frames submitted meanwhile are timed into the ring, src/gpu/device/timestamp-ring.ts, and
+   * read after it). The demo draws on demand: without the second read, a build landing during a
+   * read kept the older build's figures on screen until some later build.
+   */
+  async #readNewest<S extends { readTimings(): Promise<Record<string, number>>; readonly timingUnread?: boolean }>(
+    flag: { reading: boolean },
+    current: () => S | null,
+    take: (times: Record<string, number>, serial: number) => void,
+  ): Promise<void> {
+    if (flag.reading) return;
+    flag.reading = true;
     try {
       for (;;) {
-        const renderer = this.renderer;
-        if (!renderer) break;
-        const draw = await renderer.readTimings().catch(() => ({}) as Record<string, number>);
-        if (renderer !== this.renderer) break;
-        this.#drawTimes = draw;
+        const source = current();
+        if (!source) break;
+        const serial = this.#buildSerial;
+        const times = await source.readTimings().catch(() => ({}) as Record<string, number>);
+        if (source !== current()) break;
+        take(times, serial);
         this.updateStats();
-        if (!renderer.timingUnread) break;
+        if (!source.timingUnread) break;
       }
     } finally {
-      this.#drawReading = false;
+      flag.reading = false;
     }
   }
 
