@@ -50,7 +50,7 @@
 import { existsSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { CageError, escapeControl, LimitError } from '../src/mesh/index.ts';
-import { workBytesAtLeast } from '../src/gpu/tess/arenas.ts';
+import { cageTooLarge } from '../src/gpu/tess/arenas.ts';
 import { outputCapacity } from '../src/gpu/tess/factors.ts';
 import { MAX_FACTOR } from '../src/gpu/contract/constants.ts';
 import { EXIT_BAD_INPUT, EXIT_INTERNAL, EXIT_OK, guarded, InputError, isInputError } from '../src/cli/boundary.ts';
@@ -140,12 +140,8 @@ async function run(argv: string[], lent?: LentDevice): Promise<number> {
 async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, args: TessellateArgs): Promise<number> {
   // From the face sizes, before a preparation that grows with them: a cage whose scratch buffer
   // alone exceeds the device's binding limit is refused now, not after a minute and gigabytes.
-  const least = workBytesAtLeast(cage, MAX_FACTOR);
-  const bindingLimit = device.limits.maxStorageBufferBindingSize;
-  if (least > bindingLimit)
-    throw new LimitError(
-      `${args.model}: ${faceCount(cage)} faces need at least ${mib(least)} of GPU scratch memory, more than this device's ${mib(bindingLimit)} binding limit: the cage is too large for this GPU`,
-    );
+  const tooLarge = cageTooLarge(cage, MAX_FACTOR, device.limits.maxStorageBufferBindingSize);
+  if (tooLarge) throw new LimitError(`${args.model}: ${tooLarge}`);
   const mesh = prepareMesh(cage);
   const started = performance.now();
   let cc: CatmullClarkData | undefined;
@@ -226,10 +222,6 @@ async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, ar
     `tessellate: ${written.out.vertexCount} vertices, ${r.out.triangleCount} triangles (${r.mesh.triangleCount} cage triangles) on ${adapterName}${wrote ? `; wrote ${wrote}` : ''}`,
   );
   return EXIT_OK;
-}
-
-function mib(bytes: number): string {
-  return `${(bytes / 1024 / 1024).toFixed(0)} MiB`;
 }
 
 /** A refusal by a surface's build (AccError, LimitError), with the model's name; other errors as they are. */

@@ -5,8 +5,6 @@
  */
 import type { LimitName } from '../gpu/device/device.ts';
 import { outputCapacity } from '../gpu/tess/factors.ts';
-import { workBytesAtLeast } from '../gpu/tess/arenas.ts';
-import type { Cage } from '../mesh/types.ts';
 
 /** Bytes per output vertex in the largest buffer (positions, float32x3) and per triangle (indices). */
 const LARGEST_BYTES_PER_ELEMENT = 12;
@@ -40,18 +38,4 @@ export function clampMessages(
     );
   }
   return out;
-}
-
-/**
- * A cage the device cannot tessellate, refused from its counts alone (the lower bound of its
- * scratch buffer, src/gpu/tess/arenas.ts workBytesAtLeast) before any of the preparation that, for
- * a cage of a million quads, takes most of a minute: the sentence to show, or null when it may fit.
- */
-export function cageTooLarge(cage: Cage, maxFactor: number, bindingLimit: number): string | null {
-  const bytes = workBytesAtLeast(cage, maxFactor);
-  if (bytes <= bindingLimit) return null;
-  const faces = cage.faceOffsets.length - 1;
-  const n = (x: number) => Math.floor(x).toLocaleString('en-US');
-  // Its bytes grow with the faces (per triangle of the fan), so the faces that fit scale with it.
-  return `${n(faces)} faces: this device tessellates cages of up to about ${n((faces * bindingLimit) / bytes)} faces at factors up to ${maxFactor} (a storage buffer holds ${n(bindingLimit / 2 ** 20)} MiB; this cage needs ${n(bytes / 2 ** 20)} MiB).`;
 }

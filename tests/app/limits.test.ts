@@ -3,7 +3,8 @@
  * sentences the page shows when a device with WebGPU's default limits cannot hold it.
  */
 import { describe, expect, it } from 'vitest';
-import { cageTooLarge, clampMessages, wantedOutputLimits } from '../../src/app/limits.ts';
+import { clampMessages, wantedOutputLimits } from '../../src/app/limits.ts';
+import { cageTooLarge } from '../../src/gpu/tess/arenas.ts';
 import { workBytesAtLeast } from '../../src/gpu/tess/arenas.ts';
 import { makeCage } from '../../src/mesh/index.ts';
 

@@ -189,3 +189,18 @@ export function workBytesAtLeast(cage: Cage, maxFactor: number): number {
   };
   return 4 * TESS_WORK.layout(sizes).words;
 }
+
+/**
+ * A cage the device cannot tessellate, refused from its counts alone (the lower bound of its
+ * scratch buffer, workBytesAtLeast above) before any of the preparation that, for
+ * a cage of a million quads, takes most of a minute: the sentence to show (the demo's message, the
+ * CLI's error), or null when it may fit.
+ */
+export function cageTooLarge(cage: Cage, maxFactor: number, bindingLimit: number): string | null {
+  const bytes = workBytesAtLeast(cage, maxFactor);
+  if (bytes <= bindingLimit) return null;
+  const faces = cage.faceOffsets.length - 1;
+  const n = (x: number) => Math.floor(x).toLocaleString('en-US');
+  // Its bytes grow with the faces (per triangle of the fan), so the faces that fit scale with it.
+  return `${n(faces)} faces: this device tessellates cages of up to about ${n((faces * bindingLimit) / bytes)} faces at factors up to ${maxFactor} (a storage buffer holds ${n(bindingLimit / 2 ** 20)} MiB; this cage needs ${n(bytes / 2 ** 20)} MiB).`;
+}
