@@ -1,7 +1,7 @@
 // Generates tessellab's own subdivision cages into public/models/ (npm run models).
 // Every model is built here from scratch; see public/models/README.md.
 import { mkdirSync, writeFileSync } from 'node:fs';
-import { type Cage, loadCage, makeCage, uvCoverage, uvSeams, writeObj } from '../src/mesh/index.ts';
+import { type Cage, loadCage, makeCage, turnUpAxis, uvCoverage, uvSeams, writeObj } from '../src/mesh/index.ts';
 import { type HeightMap, type HeightWrap, heightMapFromFunction } from '../src/mesh/heightmap.ts';
 import { encodeHeightPng } from '../src/mesh/heightmap-png.ts';
 
@@ -642,13 +642,7 @@ const MODELS: [string, () => Builder, string][] = [
  * need no turning, and the CLI's views see them as the demo does.
  */
 function storedYUp(cage: Cage): Cage {
-  const p = cage.positions.slice();
-  for (let i = 0; i < p.length; i += 3) {
-    const y = p[i + 1];
-    p[i + 1] = p[i + 2];
-    p[i + 2] = y === 0 ? 0 : -y;
-  }
-  return { ...cage, positions: p };
+  return turnUpAxis(cage, 'y-up');
 }
 
 const outDir = process.argv[2] ?? 'public/models';

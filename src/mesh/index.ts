@@ -7,6 +7,7 @@ export * from './uv.ts';
 export * from './heightmap.ts';
 export * from './range.ts';
 export * from './text.ts';
+export * from './up-axis.ts';
 import { CageError, type CageIssue } from './errors.ts';
 import { parseObj } from './obj.ts';
 import { coordinateIssues, faceSizeIssues, zeroAreaFaces } from './range.ts';

@@ -32,7 +32,7 @@ import { demoCcTessellator } from '../../support/demo-tessellator.ts';
 import { FOLD_VIEWS, foldCameras } from '../../support/cpu-pipeline.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
-import { type Cage, loadCage } from '../../../src/mesh/index.ts';
+import { type Cage, loadCage, turnUpAxis } from '../../../src/mesh/index.ts';
 import type { MeshReadback } from '../../../src/gpu/device/readback.ts';
 
 const MODELS = new URL('../../../public/models/', import.meta.url);
@@ -60,13 +60,7 @@ function flagged(o: MeshReadback): number {
  * surface on other views, issue 34's open work, not a change of this check.
  */
 function asDrawnForTheseViews(cage: Cage): Cage {
-  const p = cage.positions.slice();
-  for (let i = 0; i < p.length; i += 3) {
-    const z = p[i + 2];
-    p[i + 2] = p[i + 1];
-    p[i + 1] = z === 0 ? 0 : -z;
-  }
-  return { ...cage, positions: p };
+  return turnUpAxis(cage, 'z-up');
 }
 
 let tess: Tessellator | undefined;
