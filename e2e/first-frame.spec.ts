@@ -44,10 +44,12 @@ test('the production build: navigation to the first lit pixel and to the first c
   expect(lit).toBeGreaterThan(0);
   await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 90_000 });
   const ready = Date.now() - start;
-  test.info().annotations.push(
-    { type: 'first lit pixel (ms, production build, cold)', description: String(lit) },
-    { type: 'first complete frame (ms, production build, cold)', description: String(ready) },
-  );
+  test
+    .info()
+    .annotations.push(
+      { type: 'first lit pixel (ms, production build, cold)', description: String(lit) },
+      { type: 'first complete frame (ms, production build, cold)', description: String(ready) },
+    );
   console.log(`production build: first lit pixel ${lit} ms, first complete frame ${ready} ms`);
   await context.close();
 });

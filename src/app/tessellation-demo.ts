@@ -377,19 +377,27 @@ export class TessellationDemo extends DemoScene {
 
   /** The newest build's timestamps (kept with the build they time). */
   #readTessTimes(): Promise<void> {
-    return this.#readNewest(this.#tessRead, () => this.geometry, (times, serial) => {
-      if (Object.keys(times).length) {
-        this.#tessTimes = times;
-        this.#tessTimesFor = serial;
-      }
-    });
+    return this.#readNewest(
+      this.#tessRead,
+      () => this.geometry,
+      (times, serial) => {
+        if (Object.keys(times).length) {
+          this.#tessTimes = times;
+          this.#tessTimesFor = serial;
+        }
+      },
+    );
   }
 
   /** The newest frame's draw timestamps. */
   #readDrawTimes(): Promise<void> {
-    return this.#readNewest(this.#drawRead, () => this.renderer, (times) => {
-      this.#drawTimes = times;
-    });
+    return this.#readNewest(
+      this.#drawRead,
+      () => this.renderer,
+      (times) => {
+        this.#drawTimes = times;
+      },
+    );
   }
 
   /**
