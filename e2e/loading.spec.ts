@@ -16,6 +16,40 @@ interface Hooks {
   tessellabHoldPreparation?: boolean;
 }
 
+interface TestWindow {
+  testFile: File;
+  longTasks: number[];
+}
+
+/** Watch the page's long tasks from the drop on, and drop window.testFile as a user's drag and
+ * drop does. */
+async function dropWatchingLongTasks(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const w = window as unknown as TestWindow;
+    w.longTasks = [];
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) w.longTasks.push(e.duration);
+    }).observe({ type: 'longtask' });
+  });
+  // Tasks of the file's making are over; only what the drop starts counts.
+  await page.waitForTimeout(500);
+  await page.evaluate(() => ((window as unknown as TestWindow).longTasks.length = 0));
+  const dataTransfer = await page.evaluateHandle(() => {
+    const dt = new DataTransfer();
+    dt.items.add((window as unknown as TestWindow).testFile);
+    return dt;
+  });
+  await page.dispatchEvent('body', 'dragenter', { dataTransfer });
+  await page.dispatchEvent('body', 'drop', { dataTransfer });
+}
+
+/** The page's long tasks since the drop (ms), reported with the test. */
+async function longTasks(page: Page): Promise<number[]> {
+  const long = await page.evaluate(() => (window as unknown as TestWindow).longTasks);
+  test.info().annotations.push({ type: 'main-thread long tasks (ms)', description: long.map(Math.round).join(', ') || 'none' });
+  return long;
+}
+
 /** The canvas, without the loading message drawn over it. */
 function canvas(page: Page): Promise<Buffer> {
   return page.locator('#view').screenshot({ style: '#loading { visibility: hidden !important; }' });
@@ -96,33 +130,18 @@ test('a 50 MB OBJ is read off the main thread: no task over 100 ms, a plain refu
   await page.route('**/big-test-file.obj', (route) => route.fulfill({ body, contentType: 'text/plain' }));
   const bytes = await page.evaluate(async () => {
     const blob = await (await fetch('/big-test-file.obj')).blob();
-    const w = window as unknown as { bigFile: File; longTasks: number[] };
-    w.bigFile = new File([blob], 'big.obj', { type: 'text/plain' });
-    w.longTasks = [];
-    new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) w.longTasks.push(e.duration);
-    }).observe({ type: 'longtask' });
-    return w.bigFile.size;
+    const w = window as unknown as TestWindow;
+    w.testFile = new File([blob], 'big.obj', { type: 'text/plain' });
+    return w.testFile.size;
   });
   expect(bytes).toBeGreaterThan(45e6);
-  // Tasks of the file's making are over; only what the drop starts counts.
-  await page.waitForTimeout(500);
-  await page.evaluate(() => ((window as unknown as { longTasks: number[] }).longTasks.length = 0));
-  const dataTransfer = await page.evaluateHandle(() => {
-    const dt = new DataTransfer();
-    dt.items.add((window as unknown as { bigFile: File }).bigFile);
-    return dt;
-  });
-  await page.dispatchEvent('body', 'dragenter', { dataTransfer });
-  await page.dispatchEvent('body', 'drop', { dataTransfer });
+  await dropWatchingLongTasks(page);
   const toast = page.getByTestId('toast-error');
   await expect(toast).toContainText('Could not load big.obj', { timeout: 150_000 });
   await expect(toast).toContainText('906,304 faces: this device tessellates cages of up to about');
   await expect(toast).toContainText('Still showing torus');
   await expect(page.getByTestId('stats-cage')).toContainText('torus');
-  const long = await page.evaluate(() => (window as unknown as { longTasks: number[] }).longTasks);
-  test.info().annotations.push({ type: 'main-thread long tasks (ms)', description: long.map(Math.round).join(', ') || 'none' });
-  expect(long.filter((ms) => ms > 100)).toEqual([]);
+  expect((await longTasks(page)).filter((ms) => ms > 100)).toEqual([]);
 });
 
 // The upload that follows the worker's preparation (the tessellator's arenas packed, 27 MB copied
@@ -144,29 +163,15 @@ test('a 40,000-face OBJ is prepared for the exact surface off the main thread: n
       parts.push(`f ${a} ${a + n + 1} ${a + n + 2} ${a + 1}\n`);
     }
   await page.evaluate((text) => {
-    const w = window as unknown as { gridFile: File; longTasks: number[] };
-    w.gridFile = new File([text], 'grid.obj', { type: 'text/plain' });
-    w.longTasks = [];
-    new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) w.longTasks.push(e.duration);
-    }).observe({ type: 'longtask' });
+    (window as unknown as TestWindow).testFile = new File([text], 'grid.obj', { type: 'text/plain' });
   }, parts.join(''));
-  await page.waitForTimeout(500);
-  await page.evaluate(() => ((window as unknown as { longTasks: number[] }).longTasks.length = 0));
-  const dataTransfer = await page.evaluateHandle(() => {
-    const dt = new DataTransfer();
-    dt.items.add((window as unknown as { gridFile: File }).gridFile);
-    return dt;
-  });
-  await page.dispatchEvent('body', 'dragenter', { dataTransfer });
-  await page.dispatchEvent('body', 'drop', { dataTransfer });
+  await dropWatchingLongTasks(page);
   await expect(page.getByTestId('stats-cage')).toContainText('grid.obj', { timeout: 120_000 });
   await page.waitForFunction(() => (window as unknown as Hooks).tessellab.demo.controller.shownSurface === 'catmull-clark', null, {
     timeout: 120_000,
   });
   await ready(page);
-  const long = await page.evaluate(() => (window as unknown as { longTasks: number[] }).longTasks);
-  test.info().annotations.push({ type: 'main-thread long tasks (ms)', description: long.map(Math.round).join(', ') || 'none' });
+  const long = await longTasks(page);
   console.log('40k-face grid: main-thread long tasks (ms)', long.map(Math.round));
   expect(long.filter((ms) => ms > 250)).toEqual([]);
 });
