@@ -527,6 +527,7 @@ export abstract class DemoScene extends DemoBase {
     const renderer = this.renderer;
     if (!renderer || !this.#flat) return;
     this.#flat.setCage(model.cage, model.flat);
+    if (surface !== 'cage') this.#flat.release();
     const height = this.#heights.get(model.cage)?.height ?? null;
     if (surface !== 'cage') {
       const ahead = preparedAhead(surface) ? data : null;

@@ -72,6 +72,13 @@ export class CageGeometry implements GeometrySource {
     return this.#output;
   }
 
+  /** Free the buffers while another surface is shown (the cage stays: drawn again, it is uploaded
+   * again). The interim picture of a first load held them for as long as the page lived. */
+  release(): void {
+    if (this.#output) destroyMesh(this.#output);
+    this.#output = null;
+  }
+
   encode(): void {
     // The cage's buffers were filled at upload; there is nothing to rebuild.
   }
