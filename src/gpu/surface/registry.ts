@@ -47,9 +47,12 @@ export interface SurfaceScheme {
   /** The exact Catmull-Clark limit surface: the reference every error view measures against, and
    * the only surface whose buffers the instanced tessellator borrows. */
   readonly exactLimit: boolean;
-  /** Normals split at infinitely sharp creases, because the surface has a crease there (Phong and
-   * the ACC schemes have one normal per cage vertex, so both sides would be the same). */
-  readonly splitsCreases: boolean;
+  /** Where its normals split, because the surface has a crease there: at infinitely sharp creases
+   * and corners (the limit surface), at those of sharpness ≥ 1 (the ACC schemes, which build them
+   * infinitely sharp: their patches meet there at an angle, and one output vertex per point gave
+   * the far side's triangles the near side's normal), or nowhere (Phong: one normal per cage vertex,
+   * so both sides would be the same). prepare.ts splitCreases makes both splits. */
+  readonly splitsCreases: false | 'infinitely-sharp' | 'sharpness-1';
   /** Its evaluator reads the tessellator's work arena (the patch build's output). */
   readonly readsWork: boolean;
   /** Its evaluator blends from the flat triangle of the corners' limit points where the tess
@@ -86,7 +89,7 @@ const catmullClark: SurfaceScheme = {
   tessWgsl: CC_SURFACE_WGSL,
   patchBuild: 'refinement',
   exactLimit: true,
-  splitsCreases: true,
+  splitsCreases: 'infinitely-sharp',
   readsWork: true,
   flatBaseline: true,
   instancedKind: 'lent-limit',
@@ -103,7 +106,7 @@ function accScheme(scheme: AccScheme): SurfaceScheme {
     tessWgsl: [ACC_SURFACE_WGSL, accTessWgsl].join('\n'),
     patchBuild: 'acc-patches',
     exactLimit: false,
-    splitsCreases: false,
+    splitsCreases: 'sharpness-1',
     readsWork: false,
     flatBaseline: false,
     instancedKind: 'acc',

@@ -11,7 +11,7 @@ import type { DisplacementData } from './displacement-map.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { CC_NO_WORDS, CC_STATIC } from '../contract/cc.ts';
 import { TESS_CAGE, type TESS_PARAMS, TESS_STATIC, TESS_WORK, type TessSizes } from '../contract/tess.ts';
-import { fannedRoundCentre, type PreparedMesh } from './prepare.ts';
+import { type CreaseSplit, fannedRoundCentre, type PreparedMesh } from './prepare.ts';
 import type { Cage } from '../../mesh/types.ts';
 
 export type WorkName = (typeof TESS_WORK.names)[number];
@@ -29,9 +29,9 @@ export interface PackInput {
   /** The pattern tables' words, and their largest factor. */
   tables: Uint32Array;
   maxFactor: number;
-  /** Whether normals split at infinitely sharp creases (the Catmull-Clark surface), and then the
-   * extra output vertices of crease and corner vertices (prepare.ts slotOwner). */
-  splitsCreases: boolean;
+  /** Where the surface's normals split (prepare.ts splitCreases; the Catmull-Clark surface's or the
+   * ACC schemes'), if anywhere, and then its extra output vertices of crease and corner vertices. */
+  split: CreaseSplit | undefined;
   extraSlots: number;
 }
 
@@ -49,7 +49,7 @@ export interface PackedArenas {
 /** Sizes every arena from the mesh and packs the static and cage words. */
 export function packArenas(input: PackInput): PackedArenas {
   const { prepared, cc, acc, disp } = input;
-  const split = input.splitsCreases;
+  const split = input.split;
   const sizes: TessSizes = {
     vertices: prepared.vertexCount,
     extraSlots: input.extraSlots,
@@ -79,9 +79,9 @@ export function packArenas(input: PackInput): PackedArenas {
     edgeOwner: prepared.edgeOwner,
     edgeTwin: prepared.edgeTwin,
     vertexOwner: prepared.vertexOwner,
-    cornerSlot: split ? prepared.cornerSlot : prepared.triVerts,
-    slotOwner: split ? prepared.slotOwner : undefined,
-    edgeSplit: split ? prepared.edgeSplit : undefined,
+    cornerSlot: split ? split.cornerSlot : prepared.triVerts,
+    slotOwner: split?.slotOwner,
+    edgeSplit: split?.edgeSplit,
     cc: cc?.words,
     accTri: acc?.triangles,
     accPatches: acc?.patches.topology.patches,

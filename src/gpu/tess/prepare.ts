@@ -85,6 +85,9 @@ export interface PreparedMesh {
   /** Per edge, 1 where its points are output twice, once per side (an infinitely sharp edge
    * with two triangles), else 0. */
   edgeSplit: Uint32Array;
+  /** The same three for the ACC schemes, which build every crease and corner of sharpness ≥ 1 as
+   * infinitely sharp (src/subdiv/acc.ts): their patches meet there with a normal per side too. */
+  accSplit: CreaseSplit;
   /** Bounding box diagonal length: the model's size for tolerances. */
   size: number;
   bboxMin: [number, number, number];
@@ -226,7 +229,8 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     }
   }
   const size = nT ? Math.hypot(bboxMax[0] - bboxMin[0], bboxMax[1] - bboxMin[1], bboxMax[2] - bboxMin[2]) : 0;
-  const split = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner);
+  const split = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner, SHARPNESS_INFINITE);
+  const accSplit = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner, ACC_SHARP);
 
   return {
     vertexCount: nVAll,
@@ -246,11 +250,23 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
     edgeTwin: Uint32Array.from(edgeTwin),
     vertexOwner,
     ...split,
+    accSplit,
     size,
     bboxMin,
     bboxMax,
   };
 }
+
+/** Where a surface's normals split (splitCreases): per triangle corner its output vertex, the
+ * extra sectors' owners, per edge whether its points are output once per side. */
+export interface CreaseSplit {
+  cornerSlot: Uint32Array;
+  slotOwner: Uint32Array;
+  edgeSplit: Uint32Array;
+}
+
+/** The sharpness from which the ACC schemes build a crease or corner infinitely sharp. */
+const ACC_SHARP = 1;
 
 /**
  * Split normals. Across an infinitely sharp crease the limit surface has a normal per side, and
@@ -278,13 +294,14 @@ function splitCreases(
   edgeOwner: readonly number[],
   edgeTwin: readonly number[],
   vertexOwner: Uint32Array,
-): { cornerSlot: Uint32Array; slotOwner: Uint32Array; edgeSplit: Uint32Array } {
+  sharpFrom: number,
+): CreaseSplit {
   const nT = tris.length / 3;
   const nE = edgeVerts.length / 2;
   const nVAll = vertexOwner.length;
   const key = (a: number, b: number) => (a < b ? `${a},${b}` : `${b},${a}`);
-  const sharp = new Set(cage.creases.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => key(c.v0, c.v1)));
-  const cornerTag = new Set(cage.corners.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => c.v));
+  const sharp = new Set(cage.creases.filter((c) => c.sharpness >= sharpFrom).map((c) => key(c.v0, c.v1)));
+  const cornerTag = new Set(cage.corners.filter((c) => c.sharpness >= sharpFrom).map((c) => c.v));
 
   const edgeSplit = new Uint32Array(nE);
   for (let e = 0; e < nE; e++) {

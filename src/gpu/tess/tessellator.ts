@@ -54,7 +54,7 @@ import { BUDGET_CANDIDATES, SCAN_BLOCK, SCANS, TESS_FIXED_WORDS, TESS_PARAMS, ty
 import { CC_RANGE, type CcBuildBinding } from '../contract/cc.ts';
 import { outputCapacity } from './factors.ts';
 import { phongTriAlphas } from '../surface/phong-alpha.ts';
-import type { PreparedMesh } from './prepare.ts';
+import type { CreaseSplit, PreparedMesh } from './prepare.ts';
 import type { FactorParams, TessellatedMesh } from '../contract/tessellated-mesh.ts';
 import { PatternTables } from '../../pattern/tables.ts';
 
@@ -215,7 +215,7 @@ export class Tessellator {
       disp,
       tables: this.tables,
       maxFactor: this.maxFactor,
-      splitsCreases: this.splitsCreases,
+      split: this.creaseSplit(prepared),
       extraSlots: this.extraSlots(prepared),
     };
     const packed = packArenas(input);
@@ -316,13 +316,14 @@ export class Tessellator {
 
   /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) where the
    * surface has a crease there (its SurfaceScheme says). */
-  private get splitsCreases(): boolean {
-    return surfaceScheme(this.surface).splitsCreases;
+  private creaseSplit(prepared: PreparedMesh): CreaseSplit | undefined {
+    const at = surfaceScheme(this.surface).splitsCreases;
+    return at === 'infinitely-sharp' ? prepared : at === 'sharpness-1' ? prepared.accSplit : undefined;
   }
 
   /** Output vertices of the extra sectors: after the vertices, before the edge points. */
   private extraSlots(prepared: PreparedMesh): number {
-    return this.splitsCreases ? prepared.slotOwner.length : 0;
+    return this.creaseSplit(prepared)?.slotOwner.length ?? 0;
   }
 
   /** Throws on a mesh this tessellator cannot take; the Catmull-Clark tables it will use. */

@@ -49,14 +49,11 @@ import { demoCcTessellator } from '../../support/demo-tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { loadCage } from '../../../src/mesh/index.ts';
-import type { MeshReadback } from '../../../src/gpu/device/readback.ts';
-import { decodeBary } from '../../../src/gpu/contract/tess.ts';
-import type { Cage } from '../../../src/mesh/types.ts';
-import type { PreparedMesh } from '../../../src/gpu/tess/prepare.ts';
 import { SHARPNESS_INFINITE } from '../../../src/mesh/types.ts';
 import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
 import { CCReference } from '../../support/cc-checks.ts';
 import { angleBetween } from '../../support/tess-checks.ts';
+import { creasePoints, creaseVertices, wrongSide } from '../../support/crease-points.ts';
 
 const MODELS = new URL('../../../public/models/', import.meta.url);
 
@@ -67,69 +64,6 @@ const CREASED = ['brick-box.obj', 'creased-box.obj', 'gear.obj', 'pawn.obj', 'sh
  * limit normal inside that face (measured 0.010° on the boxes, 0.001° on the gear and the pawn,
  * 0.000° on the sheet: f32 and the ring's depth). */
 const CORNER_NORMAL_DEG = 0.05;
-
-/** Which prepared vertices are where infinitely sharp creases meet (two or more such edges) or
- * carry an infinitely sharp corner tag (one such edge ending there is a dart: one normal), less
- * the cone points (see the header): a corner tag with an edge that is not infinitely sharp. */
-function creaseVertices(cage: Cage, mesh: PreparedMesh): (v: number) => boolean {
-  const incident = new Uint32Array(mesh.vertexCount);
-  const edges = new Uint32Array(mesh.vertexCount);
-  const sharp = sharpEdges(cage);
-  const nCage = cage.positions.length / 3;
-  for (let e = 0; e < mesh.edgeCount; e++) {
-    const ends = [mesh.edgeVerts[2 * e], mesh.edgeVerts[2 * e + 1]];
-    if (ends[0] >= nCage || ends[1] >= nCage) continue; // an edge to an n-gon's centre is no cage edge
-    for (const v of ends) {
-      edges[v]++;
-      if (sharp(ends[0], ends[1])) incident[v]++;
-    }
-  }
-  const cornerTag = new Set(cage.corners.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => c.v));
-  return (v) => (cornerTag.has(v) ? incident[v] === edges[v] : incident[v] >= 2);
-}
-
-function sharpEdges(cage: Cage): (a: number, b: number) => boolean {
-  const key = (a: number, b: number) => (a < b ? `${a},${b}` : `${b},${a}`);
-  const sharp = new Set(cage.creases.filter((c) => c.sharpness >= SHARPNESS_INFINITE).map((c) => key(c.v0, c.v1)));
-  return (a, b) => sharp.has(key(a, b));
-}
-
-/** Which output vertices lie on an infinitely sharp crease, from each vertex's source triangle
- * and weights (so whatever the output's vertex order): a point with two nonzero weights on such
- * an edge, or a crease vertex (creaseVertices). */
-function creasePoints(cage: Cage, mesh: PreparedMesh, out: MeshReadback): (v: number) => boolean {
-  const sharp = sharpEdges(cage);
-  const atVertex = creaseVertices(cage, mesh);
-  return (v) => {
-    const t = out.srcTri[v];
-    if (t >= mesh.triangleCount) return false;
-    const w = decodeBary(out.bary[v]);
-    const on = [0, 1, 2].filter((i) => w[i] !== 0).map((i) => mesh.triVerts[3 * t + i]);
-    if (on.length === 1) return atVertex(on[0]);
-    return on.length === 2 && sharp(on[0], on[1]);
-  };
-}
-
-/** Of the triangles with a vertex on an infinitely sharp crease: how many there are, and how
- * many have such a vertex whose normal is more than 45° from the triangle's geometric normal. */
-function wrongSide(o: MeshReadback, onCrease: (v: number) => boolean): { touching: number; wrong: number } {
-  const P = o.positions,
-    N = o.normals;
-  let n = 0;
-  let touching = 0;
-  for (let t = 0; t < o.triangleCount; t++) {
-    const [a, b, c] = [0, 1, 2].map((i) => o.indices[3 * t + i]);
-    const e1 = [0, 1, 2].map((k) => P[3 * b + k] - P[3 * a + k]);
-    const e2 = [0, 1, 2].map((k) => P[3 * c + k] - P[3 * a + k]);
-    const g = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]];
-    const gl = Math.hypot(g[0], g[1], g[2]);
-    if (gl === 0) continue;
-    if (onCrease(a) || onCrease(b) || onCrease(c)) touching++;
-    const off = (v: number) => onCrease(v) && N[3 * v] * g[0] + N[3 * v + 1] * g[1] + N[3 * v + 2] * g[2] < Math.SQRT1_2 * gl;
-    if (off(a) || off(b) || off(c)) n++;
-  }
-  return { touching, wrong: n };
-}
 
 let tess: Tessellator | undefined;
 afterAll(() => {

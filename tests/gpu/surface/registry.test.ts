@@ -46,12 +46,12 @@ describe('the surface registry', () => {
     expect(new Set(SURFACE_SCHEMES.map((s) => s.name)).size).toBe(SURFACE_SCHEMES.length);
   });
 
-  it('has one exact limit, the one surface that reads the work arena and splits creases', () => {
+  it('has one exact limit, the one surface that reads the work arena; normals split at its creases and at those the ACC schemes build sharp', () => {
     const exact = SURFACE_SCHEMES.filter((s) => s.exactLimit);
     expect(exact.map((s) => s.id)).toEqual(['catmull-clark']);
     for (const s of SURFACE_SCHEMES) {
       expect(s.readsWork, s.id).toBe(s.patchBuild === 'refinement');
-      expect(s.splitsCreases, s.id).toBe(s.exactLimit);
+      expect(s.splitsCreases, s.id).toBe(s.exactLimit ? 'infinitely-sharp' : isAccSurface(s.id) ? 'sharpness-1' : false);
     }
     expect(SURFACE_IDS.filter(isAccSurface)).toEqual(['bezier-acc', 'gregory-acc', 'pm-acc']);
   });
