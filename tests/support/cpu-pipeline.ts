@@ -41,7 +41,7 @@ export function cameraRule(
  * folds were the luck of the views). */
 export const FOLD_VIEWS = 24;
 
-/** The fold tests' views of a model (tests/gpu/tess/no-folds.test.ts, tests/gpu/cc/folds.node.test.ts): FOLD_VIEWS
+/** The fold tests' views of a model (tests/gpu/tess/no-folds.test.ts, tests/gpu/tess/folds.node.test.ts): FOLD_VIEWS
  * cameras round its centre from a seeded generator (an LCG, so every run sees the same ones), at
  * 0.6 to 2 times its size, LOD scales 0.5, 1 and 2 in turn. */
 export function foldCameras(mesh: PreparedMesh): { eye: Vec3; target: Vec3; lodScale: number }[] {

@@ -7,7 +7,7 @@ import { clampedTriangle, type Reverse } from '../../src/pattern/clamped.ts';
 import { phongPoint } from '../../src/gpu/surface/phong.ts';
 import { hableLine } from '../../src/pattern/hable-line.ts';
 import { NO_OWNER } from '../../src/gpu/tess/prepare.ts';
-import type { PreparedMesh } from '../../src/gpu/tess/prepare.ts';
+import type { CreaseSplit, PreparedMesh } from '../../src/gpu/tess/prepare.ts';
 import type { MeshReadback } from '../../src/gpu/device/readback.ts';
 import { decodeBary, OWNER_WORD } from '../../src/gpu/contract/tess.ts';
 
@@ -65,9 +65,10 @@ export function checkTessellation(
     /** The surface at (t, w), and the position error it is held to there (a fraction of the model
      * size; 1e-5 unless `bound` says otherwise, as in the Catmull-Clark surface's blended squares). */
     reference?: (t: number, w: [number, number, number]) => { pos: number[]; normal: number[]; bound?: number } | null;
-    /** The tessellator splits normals at infinitely sharp creases (the Catmull-Clark surface:
-     * prepare.ts splitCreases), so those points are output once per side or sector. */
-    split?: boolean;
+    /** The tessellator splits normals at creases (prepare.ts splitCreases), so those points are
+     * output once per side or sector: true for the Catmull-Clark surface's split (at infinitely
+     * sharp creases: the mesh's own), or the split used (the ACC schemes': mesh.accSplit). */
+    split?: boolean | CreaseSplit;
   },
 ): TessReport {
   const problems: string[] = [];
@@ -78,11 +79,12 @@ export function checkTessellation(
   let expectedTriangles = 0;
   let expectedVertices = mesh.vertexCount;
   // Interior points of each edge, once per side where the normals split; and the extra sectors.
-  let splitCopies = opts.split ? mesh.slotOwner.length : 0;
+  const split: CreaseSplit | undefined = opts.split === true ? mesh : opts.split || undefined;
+  let splitCopies = split ? split.slotOwner.length : 0;
   for (let e = 0; e < mesh.edgeCount; e++) {
     const interior = hableLine(edgeF[e] / ONE).x.length - 2;
     expectedVertices += interior;
-    if (opts.split && mesh.edgeSplit[e]) splitCopies += interior;
+    if (split?.edgeSplit[e]) splitCopies += interior;
   }
   expectedVertices += splitCopies;
   let triOut = 0;
@@ -118,7 +120,7 @@ export function checkTessellation(
 
   // The two sides of a split crease refer to two output vertices at one (bit-identical)
   // position; canonical[v] is the first vertex at v's position (v itself without splits).
-  const canonical = opts.split ? firstAtPosition(out) : Uint32Array.from({ length: out.vertexCount }, (_, v) => v);
+  const canonical = split ? firstAtPosition(out) : Uint32Array.from({ length: out.vertexCount }, (_, v) => v);
 
   // Surface: every vertex against the CPU's Phong evaluation (or opts.reference) at its barycentrics.
   // A split crease's second copy has the first's position (the owner side's, displaced along its
@@ -171,13 +173,13 @@ export function checkTessellation(
   // with extra sectors, exactly as many as laid out.
   const seen = new Map<string, number>();
   const hasSectors = new Set(
-    Array.from(mesh.slotOwner, (o) => {
+    Array.from(split?.slotOwner ?? [], (o) => {
       const { tri, corner } = OWNER_WORD.unpack(o);
       return mesh.triVerts[3 * tri + corner];
     }),
   );
   const sharpEdge = new Set<string>();
-  for (let e = 0; e < mesh.edgeCount; e++) if (mesh.edgeSplit[e]) sharpEdge.add(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`);
+  for (let e = 0; e < mesh.edgeCount; e++) if (split?.edgeSplit[e]) sharpEdge.add(`${mesh.edgeVerts[2 * e]},${mesh.edgeVerts[2 * e + 1]}`);
   let copies = 0;
   for (let v = 0; v < out.vertexCount; v++) {
     if (v < mesh.vertexCount && mesh.vertexOwner[v] === NO_OWNER) continue;
@@ -189,7 +191,7 @@ export function checkTessellation(
       const same = a.size === b.size && [...a].every(([x, w]) => b.get(x) === w);
       const at = [...b.keys()].sort((x, y) => x - y);
       const onCrease = (at.length === 1 && hasSectors.has(at[0])) || (at.length === 2 && sharpEdge.has(`${at[0]},${at[1]}`));
-      if (opts.split && same && onCrease) copies++;
+      if (split && same && onCrease) copies++;
       else add(`vertices ${other} and ${v} share the position ${k} but are not welded`);
     }
     seen.set(k, v);

@@ -26,3 +26,7 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
 // The surface without any display blend, which the factor rule looks at inside each triangle
 // (wgsl/tess/factor-bulge.wgsl): this surface has none, so it is evalSurface.
 fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint { return evalSurface(t, wFixed); }
+
+// Its normal can turn inside an edge faster than between its ends (a hairpin of the limit
+// surface): the factor rule samples it along each edge (wgsl/tess/factor-bulge.wgsl).
+const SURFACE_NORMAL_TURNS: bool = true;

@@ -365,3 +365,7 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let fv = factorPos(v2) - factorPos(v0);
   return SurfacePoint(mix(flat, sp.pos, k), select(sp.normal, normalize(nm), length(nm) > 1e-6), mix(fu, sp.du, k), mix(fv, sp.dv, k));
 }
+
+// Its normal can turn inside an edge faster than between its ends (a hairpin of the limit
+// surface): the factor rule samples it along each edge (wgsl/tess/factor-bulge.wgsl).
+const SURFACE_NORMAL_TURNS: bool = true;

@@ -40,3 +40,7 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
 // The surface without any display blend, which the factor rule looks at inside each triangle
 // (wgsl/tess/factor-bulge.wgsl): this surface has none, so it is evalSurface.
 fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint { return evalSurface(t, wFixed); }
+
+// Its normal is interpolated between the corners, so it turns along an edge no faster than between
+// its ends (which the edge term sees): no turn term (wgsl/tess/factor-bulge.wgsl).
+const SURFACE_NORMAL_TURNS: bool = false;

@@ -16,6 +16,8 @@ fn sphereOutsideFrustum(c: vec3<f32>, r: f32) -> bool {
 
 // Screen pixels per segment where a height map's detail is visible (adaptiveFactor).
 const DETAIL_PIXELS = 2.0;
+// Segments per screen pixel of an edge that its normal's turn may ask for at most.
+const TURN_PIXELS = 8.0;
 
 fn adaptiveFactor(e: u32) -> f32 {
   let a = edgeVert(e, 0u);
@@ -50,7 +52,11 @@ fn adaptiveFactor(e: u32) -> f32 {
   let unseen = bend.away || sphereOutsideFrustum(bend.mid, 0.5 * length(p1 - p0) + err + reach);
   if (unseen && inside == BULGE_OFF_SCREEN) { return 1.0; }
   let dist = max(length(bend.mid - params.eye.xyz), 1e-6);
-  let surface = max(bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle), inside);
+  // The normal's turn (wgsl/tess/factor-bulge.wgsl edgeTurnSegments), at most TURN_PIXELS segments
+  // per pixel of the edge's length: far away, a hairpin's rows stop at an eighth of a pixel.
+  let turnCap = TURN_PIXELS * length(p1 - p0) / (dist * params.pixelAngle);
+  let turn = min(bitcast<f32>(work[params.offEdgeTurn + e]), turnCap);
+  let surface = max(max(bendFactor(bend, params.eye.xyz, params.lodScale, params.pixelAngle), inside), turn);
   // The map resolved where it shows: once its heights span a pixel, the edge gets a segment per
   // DETAIL_PIXELS pixels of its own screen length (a brick's mortar line is narrower than its
   // height: counting the height alone left the brick box at ~10 segments an edge, bricks

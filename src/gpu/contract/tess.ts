@@ -244,7 +244,9 @@ export const TESS_CAGE = defineArena<
 
 /**
  * work (u32 scratch, rewritten every rebuild): the factor each triangle's bulge asks for (an f32's
- * bits, wgsl/tess/factor-bulge.wgsl); per edge its factor before the budget (edgeFactor, f32
+ * bits, wgsl/tess/factor-bulge.wgsl); per edge the segments its surface normal's turn asks for (f32
+ * bits, the same pass: the one array kept between rebuilds, rewritten when the surface changes,
+ * Params.turnRefresh); per edge its factor before the budget (edgeFactor, f32
  * bits), and at the chosen candidate its 16.16 factor, line state and segments (the scan's last
  * pass writes them, wgsl/tess/common.wgsl edgeAtCandidate: what the weld, plan and emit read);
  * per edge its interior points and per triangle its interior vertices, triangles and rows at
@@ -263,6 +265,7 @@ export const TESS_WORK = defineArena<
   | 'edgeInterior'
   | 'edgeBase'
   | 'triBulge'
+  | 'edgeTurn'
   | 'triVertCount'
   | 'triVertBase'
   | 'triTriCount'
@@ -282,6 +285,7 @@ export const TESS_WORK = defineArena<
   ['edgeInterior', (s) => BUDGET_CANDIDATES * s.edges],
   ['edgeBase', (s) => s.edges + 1],
   ['triBulge', (s) => s.triangles],
+  ['edgeTurn', (s) => s.edges],
   ['triVertCount', (s) => BUDGET_CANDIDATES * s.triangles],
   ['triVertBase', (s) => s.triangles + 1],
   ['triTriCount', (s) => BUDGET_CANDIDATES * s.triangles],
@@ -354,6 +358,7 @@ export const TESS_PARAMS = defineStruct('Params', [
   ['ccSliceGroups', 'u32'],
   ['ccMaxDepth', 'u32'],
   ['ccFlat', 'u32', 'Blend from the flat triangle by tess factor (TessellatorOptions.flatBaseline).'],
+  ['turnRefresh', 'u32', "1: the bulge pass recomputes each edge's turn term (work edgeTurn): the surface changed since."],
   // Displacement (src/gpu/tess/displacement-map.ts, wgsl/tess/displace.wgsl): h = (sample − dispMid)·dispScale
   // along the surface normal; the map is dispWidth × dispHeight texels of dispBits bits.
   ['dispOn', 'u32', '1: displace every output vertex (and count the heights in the factor rule).'],

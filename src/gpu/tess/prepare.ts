@@ -10,7 +10,7 @@
  *    sends long thin triangles across that point, and a straight row of the pattern in one of
  *    them bends on the surface by more than the sliver is wide: the pawn's 16-gon and the gear's
  *    7-gons folded 124 and 125 triangles at factor 8 that way. Round the centre every triangle
- *    has the singular point at a corner, and none folds (tests/gpu/cc/folds.node.test.ts). The
+ *    has the singular point at a corner, and none folds (tests/gpu/tess/folds.node.test.ts). The
  *    centre vertices come after the cage's (index ≥ cageVertexCount), one per such face in
  *    face order; a centre lies at the mean of the face's corners with the face's normal.
  *    Faces without a limit surface are dropped: tagged holes, and under boundary

@@ -123,6 +123,9 @@ export class Tessellator {
   private hasDisplacement = false;
   private displacement: DisplacementSettings = { scale: 0, midLevel: 0, enabled: true };
   private readonly timer?: PassTimer;
+  /** The edges' turn terms (work edgeTurn, wgsl/tess/factor-bulge.wgsl) depend on the surface
+   * alone: computed by the first adaptive rebuild after the mesh or the cage changed. */
+  private turnStale = true;
 
   static create(device: GPUDevice, tables: Uint32Array, opts: TessellatorOptions = {}): Tessellator {
     return new Tessellator(device, tables, opts);
@@ -198,6 +201,7 @@ export class Tessellator {
     const packed = this.pack(prepared, ccData, accData, displacement);
     this.releaseMesh();
     this.mesh = this.bind(prepared, ccData, packed, accData);
+    this.turnStale = true;
   }
 
   /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
@@ -351,6 +355,7 @@ export class Tessellator {
   /** New cage positions (and normals) for the same topology, e.g. an animated cage. */
   updateCage(positions: Float32Array, normals: Float32Array): void {
     const m = this.requireMesh();
+    this.turnStale = true;
     this.device.queue.writeBuffer(m.cageBuf, 0, positions);
     this.device.queue.writeBuffer(m.cageBuf, 4 * m.cageLayout.offset.normals, normals);
     // The Phong surface's α per edge follows the normals (phong.ts phongTriAlphas).
@@ -406,7 +411,9 @@ export class Tessellator {
       pixelAngle: p.fovY / Math.max(1, p.viewportHeight),
       eye: [p.eye[0], p.eye[1], p.eye[2], 0],
       ccFlat: this.flatBaseline ? 1 : 0,
+      turnRefresh: this.turnStale && p.mode === 'adaptive' ? 1 : 0,
     });
+    if (p.mode === 'adaptive') this.turnStale = false;
     this.device.queue.writeBuffer(this.params, 0, this.paramsBytes);
     this.record(encoder, m);
   }
