@@ -95,6 +95,8 @@ export class CageGeometry implements GeometrySource {
     if (this.#output) destroyMesh(this.#output);
     this.#output = null;
     this.#cage = null;
+    // A worker's triangulation of a large file is as large as the cage: let it go with it.
+    this.#triangulated = undefined;
   }
 }
 
