@@ -20,8 +20,11 @@
  * folded (against the sum), folded (against all three), triangles, and the views that fold.
  */
 import type { MeshReadback } from '../src/gpu/device/readback.ts';
-import type { HeadlessOptions } from '../src/gpu/tess/headless.ts';
+import { type HeadlessOptions, tessellateOnce } from '../src/gpu/tess/headless.ts';
 import type { PreparedMesh } from '../src/gpu/tess/prepare.ts';
+import type { Tessellator } from '../src/gpu/tess/tessellator.ts';
+import type { SurfaceData, SurfaceId } from '../src/gpu/surface/registry.ts';
+import type { Cage } from '../src/mesh/types.ts';
 import { foldCameras } from '../tests/support/cpu-pipeline.ts';
 import { demoView } from './limit-distance.ts';
 
@@ -77,17 +80,38 @@ export function foldViews(mesh: PreparedMesh): FoldView[] {
   return views;
 }
 
+/** One model on one surface over the given views (adaptive): the folded triangles summed, and
+ * the views that fold (the census below and tests/gpu/tess/folds.node.test.ts). */
+export async function foldsOverViews(
+  device: GPUDevice,
+  tess: Tessellator,
+  cage: Cage,
+  prepared: { mesh: PreparedMesh } & SurfaceData,
+  surface: SurfaceId,
+  flatBaseline: boolean,
+  views: FoldView[],
+): Promise<{ againstSum: number; againstAll: number; triangles: number; where: string[] }> {
+  const total = { againstSum: 0, againstAll: 0, triangles: 0, where: [] as string[] };
+  for (const v of views) {
+    const r = await tessellateOnce(device, cage, { mode: 'adaptive', surface, flatBaseline, ...v.options }, tess, prepared);
+    const f = foldedTriangles(r.out);
+    total.againstSum += f.againstSum;
+    total.againstAll += f.againstAll;
+    total.triangles += r.out.triangleCount;
+    if (f.againstSum) total.where.push(`${v.name}: ${f.againstSum}`);
+  }
+  return total;
+}
+
 /** `npm run folds` (through scripts/vite-run.mjs, which calls this). */
 export async function main(argv: string[]): Promise<number> {
   const { readFileSync, readdirSync, existsSync } = await import('node:fs');
   const { getDevice } = await import('../tests/support/gpu-device.ts');
-  const { tessellateOnce } = await import('../src/gpu/tess/headless.ts');
   const { Tessellator } = await import('../src/gpu/tess/tessellator.ts');
   const { bakeTables } = await import('../src/pattern/tables.ts');
   const { prepareMesh } = await import('../src/gpu/tess/prepare.ts');
   const { loadCage } = await import('../src/mesh/index.ts');
   const { surfaceScheme, releaseSurfaceData, isSurfaceId } = await import('../src/gpu/surface/registry.ts');
-  type SurfaceId = import('../src/gpu/surface/registry.ts').SurfaceId;
 
   const arg = (name: string) => {
     const i = argv.indexOf(`--${name}`);
@@ -123,20 +147,9 @@ export async function main(argv: string[]): Promise<number> {
       const baselines = surfaceScheme(surface).flatBaseline ? [true, false] : [false];
       for (const flatBaseline of baselines) {
         tess.flatBaseline = flatBaseline;
-        let sum = 0,
-          all = 0,
-          tris = 0;
-        const where: string[] = [];
-        for (const v of foldViews(mesh)) {
-          const r = await tessellateOnce(device, cage, { mode: 'adaptive', surface, flatBaseline, ...v.options }, tess, { mesh, ...data });
-          const f = foldedTriangles(r.out);
-          sum += f.againstSum;
-          all += f.againstAll;
-          tris += r.out.triangleCount;
-          if (f.againstSum) where.push(`${v.name}: ${f.againstSum}`);
-        }
+        const f = await foldsOverViews(device, tess, cage, { mesh, ...data }, surface, flatBaseline, foldViews(mesh));
         const label = baselines.length > 1 ? `${surface}${flatBaseline ? ' (flat baseline)' : ''}` : surface;
-        console.log(`| ${label} | ${name} | ${sum} | ${all} | ${tris} | ${where.join('; ')} |`);
+        console.log(`| ${label} | ${name} | ${f.againstSum} | ${f.againstAll} | ${f.triangles} | ${f.where.join('; ')} |`);
       }
       releaseSurfaceData(data);
     }

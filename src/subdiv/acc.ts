@@ -113,6 +113,10 @@ import {
 } from '../mesh/index.ts';
 import { creaseCrossMask } from './limit.ts';
 
+/** The sharpness from which the schemes build a crease or corner infinitely sharp (semiSharp
+ * 'sharp', the default): below it, smooth. The tessellator splits normals there too (prepare.ts). */
+export const ACC_SHARP_FROM = 1;
+
 export type AccScheme = 'bezier-acc' | 'gregory-acc' | 'pm-acc';
 export const ACC_SCHEMES: readonly AccScheme[] = ['bezier-acc', 'gregory-acc', 'pm-acc'];
 
@@ -349,7 +353,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
   if (problems.length) throw fail(problems);
   const warnings: string[] = [];
   const asSharp = options.semiSharp !== 'smooth';
-  const isInf = (x: number) => x >= SHARPNESS_INFINITE || (asSharp && x >= 1);
+  const isInf = (x: number) => x >= SHARPNESS_INFINITE || (asSharp && x >= ACC_SHARP_FROM);
   let semi = 0;
   for (const x of sharp.edge) if (x > 0 && x < SHARPNESS_INFINITE) semi++;
   for (const x of sharp.vertex) if (x > 0 && x < SHARPNESS_INFINITE) semi++;

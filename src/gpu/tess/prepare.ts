@@ -27,6 +27,7 @@
  *    reverse flags, packed in one u32.
  */
 import { type Cage, type SubdivOptions, SHARPNESS_INFINITE } from '../../mesh/types.ts';
+import { ACC_SHARP_FROM } from '../../subdiv/acc.ts';
 import { DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../../mesh/index.ts';
 import { chooseFrame, type Reverse } from '../../pattern/clamped.ts';
 import { NO_OWNER, OWNER_WORD, PATTERN_FRAME_WORD } from '../contract/tess.ts';
@@ -230,7 +231,7 @@ export function prepareMesh(cage: Cage, options: Partial<SubdivOptions> = cage.f
   }
   const size = nT ? Math.hypot(bboxMax[0] - bboxMin[0], bboxMax[1] - bboxMin[1], bboxMax[2] - bboxMin[2]) : 0;
   const split = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner, SHARPNESS_INFINITE);
-  const accSplit = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner, ACC_SHARP);
+  const accSplit = splitCreases(cage, tris, faces, edgeVerts, edgeOwner, edgeTwin, vertexOwner, ACC_SHARP_FROM);
 
   return {
     vertexCount: nVAll,
@@ -264,9 +265,6 @@ export interface CreaseSplit {
   slotOwner: Uint32Array;
   edgeSplit: Uint32Array;
 }
-
-/** The sharpness from which the ACC schemes build a crease or corner infinitely sharp. */
-const ACC_SHARP = 1;
 
 /**
  * Split normals. Across an infinitely sharp crease the limit surface has a normal per side, and

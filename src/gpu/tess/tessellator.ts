@@ -318,8 +318,8 @@ export class Tessellator {
     };
   }
 
-  /** Normals split per side at infinitely sharp creases (prepare.ts splitCreases) where the
-   * surface has a crease there (its SurfaceScheme says). */
+  /** Where normals split per side (prepare.ts splitCreases): at the creases the surface has (its
+   * SurfaceScheme says which: the limit's infinitely sharp ones, or the ACC schemes'). */
   private creaseSplit(prepared: PreparedMesh): CreaseSplit | undefined {
     const at = surfaceScheme(this.surface).splitsCreases;
     return at === 'infinitely-sharp' ? prepared : at === 'sharpness-1' ? prepared.accSplit : undefined;

@@ -23,10 +23,9 @@ import { loadCage } from '../../../src/mesh/index.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import { releaseSurfaceData, surfaceScheme } from '../../../src/gpu/surface/registry.ts';
 import { creasePoints, wrongSide } from '../../support/crease-points.ts';
+import { ACC_SHARP_FROM } from '../../../src/subdiv/acc.ts';
 
 const MODELS = new URL('../../../public/models/', import.meta.url);
-/** The sharpness from which the ACC schemes build a crease sharp. */
-const ACC_SHARP = 1;
 /** Bezier ACC's share left: 1 of 262, 8 of 1,126 and 8 of 939 crease triangles on the creased box
  * (before the split 148, 580 and 508), all at edge points next to its tagged corner (vertex 6),
  * up to 48° off: its shading normal comes from the tangent patches, not the geometry patch, and
@@ -58,7 +57,7 @@ describe('ACC shading normals at creases: each side its own', () => {
               // corner whose sector is one face (the creased box's corners, src/subdiv/acc.ts: no
               // tangent plane there), so there is no side to be wrong about (issue 31's work).
               const N = r.out.normals;
-              const sharp = creasePoints(cage, mesh, r.out, ACC_SHARP);
+              const sharp = creasePoints(cage, mesh, r.out, ACC_SHARP_FROM);
               const onCrease = (v: number) => sharp(v) && Math.hypot(N[3 * v], N[3 * v + 1], N[3 * v + 2]) > 0.5;
               const m = wrongSide(r.out, onCrease);
               // The measure can fail: with every normal turned over, every crease triangle counts.

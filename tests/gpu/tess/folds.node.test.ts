@@ -41,7 +41,7 @@ import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { loadCage } from '../../../src/mesh/index.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import { releaseSurfaceData, type SurfaceId, surfaceScheme } from '../../../src/gpu/surface/registry.ts';
-import { foldedTriangles, foldViews } from '../../../scripts/folds.ts';
+import { foldedTriangles, foldsOverViews, foldViews } from '../../../scripts/folds.ts';
 
 const MODELS = new URL('../../../public/models/', import.meta.url);
 const SHARED = new URL('../../../../shared/cages/', import.meta.url);
@@ -83,24 +83,13 @@ async function census(surface: SurfaceId, models: { name: string; path: URL }[],
       const data = surfaceScheme(surface).prepare(device, cage, mesh);
       try {
         const views = allViews ? foldViews(mesh) : defaultViews(foldViews(mesh));
-        let sum = 0;
-        let all = 0;
-        let tris = 0;
-        const where: string[] = [];
-        for (const v of views) {
-          const r = await tessellateOnce(device, cage, { mode: 'adaptive', surface, flatBaseline: true, ...v.options }, tess, {
-            mesh,
-            ...data,
-          });
-          const f = foldedTriangles(r.out);
-          sum += f.againstSum;
-          all += f.againstAll;
-          tris += r.out.triangleCount;
-          if (f.againstSum) where.push(`${v.name}: ${f.againstSum}`);
-        }
-        console.log(`${surface} ${name}, ${views.length} views: ${sum} folded (${all} against all three) of ${tris}; ${where.join('; ')}`);
-        expect(tris).toBeGreaterThan(0);
-        expect(sum, `${surface} ${name}: ${where.join('; ')}`).toBeLessThanOrEqual(FOLDS[surface]?.[name] ?? 0);
+        const f = await foldsOverViews(device, tess, cage, { mesh, ...data }, surface, true, views);
+        const where = f.where.join('; ');
+        console.log(
+          `${surface} ${name}, ${views.length} views: ${f.againstSum} folded (${f.againstAll} against all three) of ${f.triangles}; ${where}`,
+        );
+        expect(f.triangles).toBeGreaterThan(0);
+        expect(f.againstSum, `${surface} ${name}: ${where}`).toBeLessThanOrEqual(FOLDS[surface]?.[name] ?? 0);
         if (fixed8) {
           const r = await tessellateOnce(device, cage, { mode: 'fixed', fixedFactor: 8, surface, flatBaseline: true }, tess, {
             mesh,
