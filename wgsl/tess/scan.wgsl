@@ -1,16 +1,20 @@
-// The counts' exclusive prefix sums and the budget, in three dispatches whatever the camera
+// The counts' exclusive prefix sums and the budget, in two dispatches whatever the camera
 // (reduce-then-scan: WebGPU gives no forward-progress guarantee, so no single-pass lookback).
 // The factor and count passes have written every count at every budget candidate
 // (contract/tess.ts BUDGET_SCALES), SCANS lanes per candidate (TESS_SCANS, scanLane* below):
 //   scanReduce   every lane at once (workgroup y = lane): each workgroup sums one block of
 //                BLOCK = SCAN_WORKGROUP_SIZE × SCAN_ITEMS (128 × 32) values (32 consecutive ones
 //                per thread, summed serially, so a big count needs few workgroups and barriers)
-//   budget       one workgroup: scans each lane's block sums in place, totals each candidate's
-//                output vertices and triangles, takes the first candidate that fits the output
-//                buffers, and writes the draw and dispatch arguments from its totals
-//   scanDown     the chosen candidate's lanes only (workgroup y = lane kind): each block's own
-//                exclusive scan plus its block's offset, into the prefix-sum arrays; and the
-//                edges' factors, states and segments at the chosen candidate (common.wgsl)
+//   scanDown     the chosen candidate's lanes only (workgroup y = lane kind). Every workgroup
+//                first makes the budget's choice itself, from every lane's block sums: totals
+//                each candidate's output vertices and triangles and takes the first candidate
+//                that fits the output buffers. The block sums are few (one per 4096 counts) and
+//                every workgroup reads the same ones, so all choose alike, and the choice needs
+//                no dispatch of its own (a dispatch is a launch and a barrier on a GPU). One
+//                workgroup writes the draw and dispatch arguments from the chosen totals. Then
+//                each block's own exclusive scan plus its block's offset (the sum of its lane's
+//                earlier blocks), into the prefix-sum arrays; and the edges' factors, states
+//                and segments at the chosen candidate (common.wgsl)
 // Up to 65535 blocks of 4096 values a lane. Totals that do not fit in 32 bits (a large cage at
 // scale 1) saturate, so they read as "does not fit" rather than wrapping to a small number; the
 // chosen candidate's totals fit the output buffers, so its sums are exact.
@@ -60,31 +64,6 @@ fn scanReduce(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_i
   if (lid == THREADS - 1u) { work[laneSums(lane) + wid.x] = partial[lid]; }
 }
 
-// Scans one lane's block sums in place (exclusive) and returns its total (every thread).
-fn scanLaneSums(lane: u32, lid: u32) -> u32 {
-  let base = laneSums(lane);
-  let blocks = laneBlocks(lane % SCANS);
-  let per = (blocks + THREADS - 1u) / THREADS;
-  let first = lid * per;
-  var total = 0u;
-  for (var k = 0u; k < per; k++) {
-    if (first + k < blocks) { total = addSaturating(total, work[base + first + k]); }
-  }
-  partial[lid] = total;
-  scanPartial(lid);
-  var run = partial[lid] - total;
-  for (var k = 0u; k < per; k++) {
-    if (first + k < blocks) {
-      let s = work[base + first + k];
-      work[base + first + k] = run;
-      run = addSaturating(run, s);
-    }
-  }
-  let all = partial[THREADS - 1u];
-  workgroupBarrier(); // before the next lane reuses `partial`
-  return all;
-}
-
 // The emit pass's indirect dispatch arguments, folded into 2D.
 fn dispatchArgs(threads: u32) -> vec3<u32> {
   let groups = (threads + WORKGROUP_SIZE - 1u) / WORKGROUP_SIZE;
@@ -92,33 +71,60 @@ fn dispatchArgs(threads: u32) -> vec3<u32> {
   return vec3<u32>(min(groups, GRID_X), (groups + GRID_X - 1u) / GRID_X, 1u);
 }
 
-// One workgroup: the block sums of every lane scanned, then one decision over the candidates'
-// totals (thread 0). Nothing overflows and nothing is lost at any camera: the weld, plan and
-// emit passes only run when the chosen candidate fits.
-@compute @workgroup_size(THREADS)
-fn budget(@builtin(local_invocation_index) lid: u32) {
-  var totals: array<u32, SCANS * BUDGET_CANDIDATES>;
-  for (var lane = 0u; lane < SCANS * BUDGET_CANDIDATES; lane++) { totals[lane] = scanLaneSums(lane, lid); }
-  if (lid != 0u) { return; }
+// Every lane's total, by the whole workgroup: thread t sums every PER_LANE-th block sum of lane
+// t % LANES (from block t / LANES), then LANES threads add up their lane's PER_LANE partials.
+const LANES: u32 = SCANS * BUDGET_CANDIDATES;
+const PER_LANE: u32 = THREADS / LANES;
+const_assert THREADS % (SCANS * BUDGET_CANDIDATES) == 0u;
+var<workgroup> laneTotal: array<u32, SCANS * BUDGET_CANDIDATES>;
+
+fn laneTotals(lid: u32) {
+  let lane = lid % LANES;
+  let blocks = laneBlocks(lane % SCANS);
+  var sum = 0u;
+  for (var b = lid / LANES; b < blocks; b += PER_LANE) { sum = addSaturating(sum, work[laneSums(lane) + b]); }
+  partial[lid] = sum;
+  workgroupBarrier();
+  if (lid < LANES) {
+    var total = 0u;
+    for (var k = 0u; k < PER_LANE; k++) { total = addSaturating(total, partial[lid + k * LANES]); }
+    laneTotal[lid] = total;
+  }
+  workgroupBarrier();
+}
+
+// The budget's choice (thread 0, from laneTotal): the first candidate whose vertices and
+// triangles fit the output buffers, else the last (factor 1 everywhere, which setMesh checks
+// always fits).
+fn chooseCandidate() -> u32 {
   var c = 0u;
-  var vertices = 0u;
-  var triangles = 0u;
-  var fits = false;
   loop {
-    // Lanes of candidate c: edge points, interior vertices, triangles, rows (TESS_SCANS).
-    vertices = addSaturating(params.nSlots, addSaturating(totals[SCANS * c], totals[SCANS * c + 1u]));
-    triangles = totals[SCANS * c + 2u];
-    fits = vertices <= params.vertexCapacity && triangles <= params.triangleCapacity;
-    if (fits || c == BUDGET_CANDIDATES - 1u) { break; }
+    if (candidateFits(c) || c == BUDGET_CANDIDATES - 1u) { break; }
     c++;
   }
+  return c;
+}
+
+// Lanes of candidate c: edge points, interior vertices, triangles, rows (TESS_SCANS).
+fn candidateVertices(c: u32) -> u32 { return addSaturating(params.nSlots, addSaturating(laneTotal[SCANS * c], laneTotal[SCANS * c + 1u])); }
+fn candidateFits(c: u32) -> bool {
+  return candidateVertices(c) <= params.vertexCapacity && laneTotal[SCANS * c + 2u] <= params.triangleCapacity;
+}
+
+// The budget's outputs (one thread of one workgroup): its state, the chosen candidate's grand
+// totals (at n of each prefix-sum array; scanDown writes the rest), the draw arguments, the
+// counts the page reads, and the emit pass's indirect dispatch. Nothing overflows and nothing is
+// lost at any camera: the plan and emit passes only run when the chosen candidate fits.
+fn writeBudget(c: u32) {
+  let vertices = candidateVertices(c);
+  let triangles = laneTotal[SCANS * c + 2u];
+  let fits = candidateFits(c);
   let b = params.offBudget;
   work[b + BUDGET_ACCEPTED] = 1u;
   work[b + BUDGET_CANDIDATE] = c;
   work[b + BUDGET_FITS] = select(0u, 1u, fits);
   work[b + BUDGET_SCALE] = bitcast<u32>(BUDGET_SCALES[c]);
-  // The grand totals, at n of each prefix-sum array (scanDown writes the rest).
-  for (var kind = 0u; kind < SCANS; kind++) { work[scanLaneOut(kind) + scanLaneLength(kind)] = totals[SCANS * c + kind]; }
+  for (var kind = 0u; kind < SCANS; kind++) { work[scanLaneOut(kind) + scanLaneLength(kind)] = laneTotal[SCANS * c + kind]; }
   let shown = select(0u, triangles, fits);
   drawArgs = array(3u * shown, 1u, 0u, 0u, 0u);
   counts = array(select(0u, vertices, fits), shown, bitcast<u32>(BUDGET_SCALES[c]), c);
@@ -128,14 +134,30 @@ fn budget(@builtin(local_invocation_index) lid: u32) {
   emitArgs = array(v.x, v.y, v.z);
 }
 
+// The sum of lane `lane`'s block sums before block `block`, by the whole workgroup.
+fn blockOffset(lane: u32, block: u32, lid: u32) -> u32 {
+  var sum = 0u;
+  for (var b = lid; b < block; b += THREADS) { sum = addSaturating(sum, work[laneSums(lane) + b]); }
+  partial[lid] = sum;
+  scanPartial(lid);
+  let all = partial[THREADS - 1u];
+  workgroupBarrier(); // before the block's own scan reuses `partial`
+  return all;
+}
+
 @compute @workgroup_size(THREADS)
 fn scanDown(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
-  if (lid == 0u) { chosen = work[params.offBudget + BUDGET_CANDIDATE]; }
+  laneTotals(lid);
+  if (lid == 0u) {
+    chosen = chooseCandidate();
+    if (wid.x == 0u && wid.y == 0u) { writeBudget(chosen); }
+  }
   let c = workgroupUniformLoad(&chosen);
   let kind = wid.y;
   let n = scanLaneLength(kind);
   if (wid.x * BLOCK >= n) { return; } // uniform
   let lane = SCANS * c + kind;
+  let offset = blockOffset(lane, wid.x, lid);
   let input = scanLaneIn(kind) + c * n;
   let output = scanLaneOut(kind);
   let first = wid.x * BLOCK + lid * ITEMS;
@@ -145,7 +167,7 @@ fn scanDown(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
   }
   partial[lid] = sum;
   scanPartial(lid);
-  var run = addSaturating(work[laneSums(lane) + wid.x], partial[lid] - sum);
+  var run = addSaturating(offset, partial[lid] - sum);
   for (var k = 0u; k < ITEMS; k++) {
     let i = first + k;
     if (i < n) {

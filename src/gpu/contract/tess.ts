@@ -76,7 +76,7 @@ export const SCANS = 4;
 export { ONE };
 /** A cage vertex that no triangle uses (its OwnerWord). */
 export const NO_OWNER = 0xffffffff;
-/** The budget state words (work's `budget` array), by index: whether the budget pass has run, the
+/** The budget state words (work's `budget` array), by index: whether the budget was chosen, the
  * candidate it took, that candidate's scale (f32 bits), and whether it fits. */
 export const BUDGET = { ACCEPTED: 0, CANDIDATE: 1, SCALE: 2, FITS: 3 } as const;
 
@@ -397,7 +397,7 @@ export const TESS_GROUP = defineBindGroup(0, {
     binding: 9,
     space: 'read_write',
     type: `array<u32, ${TESS_FIXED_WORDS.drawArgs}>`,
-    doc: 'Written by the budget pass, as counts and emitArgs (TESS_FIXED_WORDS).',
+    doc: "Written with the budget's choice (wgsl/tess/scan.wgsl scanDown), as counts and emitArgs (TESS_FIXED_WORDS).",
   },
   counts: { binding: 10, space: 'read_write', type: `array<u32, ${TESS_FIXED_WORDS.counts}>` },
   emitArgs: { binding: 11, space: 'read_write', type: `array<u32, ${TESS_FIXED_WORDS.emitArgs}>` },

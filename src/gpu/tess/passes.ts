@@ -31,7 +31,6 @@ export type PassName =
   | 'bulge'
   | 'count'
   | 'scanReduce'
-  | 'budget'
   | 'scanDown'
   | 'plan'
   | 'emitVertices'
@@ -61,7 +60,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     // The bulge term evaluates the surface inside each triangle; the count pass computes each
     // triangle's edge factors (the edge term reads the bulge) and counts its pattern.
     factors: code(surfaceWgsl, factorRuleWgsl, factorBulgeWgsl, factorsWgsl, patternWgsl, countWgsl),
-    // The prefix sums and the budget between them (which lanes are what: TESS_SCANS).
+    // The prefix sums, the budget's choice made in the second of them (which lanes are what: TESS_SCANS).
     scan: code(scanLanesWgsl(), scanWgsl),
     plan: code(patternWgsl, planWgsl),
     // The surface, then the displacement over it (surfaceAt), then what writes the vertices, where
@@ -83,8 +82,7 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     pass('bulge', 'tess bulge', 'factors', 'bulge'),
     pass('count', 'tess factors + count', 'factors'),
     pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
-    pass('budget', 'tess budget', 'scan', 'budget'),
-    pass('scanDown', 'tess scan down', 'scan', 'scanDown'),
+    pass('scanDown', 'tess budget + scan down', 'scan', 'scanDown'),
     pass('plan', 'tess plan', 'plan'),
     pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
     pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),

@@ -4,7 +4,7 @@
  * never touches the DOM, so the same code runs in the browser, in headless tests and in Node.
  *
  * Passes, in one command encoder (direct dispatches, sizes known on the CPU, except emit's), the
- * same chain of eight dispatches whatever the camera and the budget:
+ * same chain of seven dispatches whatever the camera and the budget:
  *   bulge        one thread per triangle: the factor its surface's bulge    wgsl/tess/factor-bulge.wgsl
  *                asks for (the surface at four points against the flat triangle)
  *   count        one thread per triangle: its three edges' tess factor,     wgsl/tess/count.wgsl
@@ -12,9 +12,10 @@
  *                edge's owner stores them), its interior vertices and
  *                triangles, at every budget candidate (contract/tess.ts
  *                BUDGET_SCALES)
- *   scan         three dispatches: every lane summed by block; the budget   wgsl/tess/scan.wgsl
- *                takes the first candidate that fits and writes the draw
- *                and dispatch arguments; the chosen lanes' prefix sums
+ *   scan         two dispatches: every lane summed by block; then each      wgsl/tess/scan.wgsl
+ *                workgroup takes the first candidate that fits from the
+ *                block sums (one writes the draw and dispatch arguments)
+ *                and scans its block of the chosen lanes
  *   plan         one thread per triangle writes its pattern's rows         wgsl/tess/plan.wgsl
  *   emit         two indirect dispatches sized by the budget: one thread   wgsl/tess/emit.wgsl
  *                per output vertex (the weld's corner and edge vertices,    wgsl/tess/weld.wgsl
@@ -116,7 +117,7 @@ export class Tessellator {
   flatBaseline: boolean;
   private readonly params: GPUBuffer;
   private readonly paramsBytes: ArrayBuffer;
-  /** Indirect dispatch arguments of the emit passes, written by the budget pass. */
+  /** Indirect dispatch arguments of the emit passes, written with the budget's choice (wgsl/tess/scan.wgsl scanDown). */
   private readonly emitArgs: GPUBuffer;
   private readonly pipelines: Partial<Record<PassName, Pipeline>>;
   private mesh?: MeshState;
@@ -447,7 +448,6 @@ export class Tessellator {
       run(cp, 'count', groupsFor(nT));
       const blocks = Math.ceil(Math.max(nE, nT, 1) / SCAN_BLOCK);
       run(cp, 'scanReduce', [blocks, SCANS * BUDGET_CANDIDATES]);
-      run(cp, 'budget', [1, 1]);
       run(cp, 'scanDown', [blocks, SCANS]);
       cp.end();
     }

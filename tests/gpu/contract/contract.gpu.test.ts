@@ -186,9 +186,9 @@ describe("the tessellator's pipelines bind what the contract says", () => {
   }
 
   it('and it would notice: a binding short, one more, or a storage buffer bound read-only', async () => {
-    const budget = tessellatorPasses('phong').find((p) => p.name === 'budget')!;
-    const { entries } = passBindings(budget);
-    const run = (e: GPUBindGroupLayoutEntry[]) => check('budget (altered)', budget.code, budget.entry, e);
+    const scanDown = tessellatorPasses('phong').find((p) => p.name === 'scanDown')!;
+    const { entries } = passBindings(scanDown);
+    const run = (e: GPUBindGroupLayoutEntry[]) => check('scanDown (altered)', scanDown.code, scanDown.entry, e);
     expect(await run(entries.slice(0, -1))).not.toBeNull();
     expect(await run([...entries, { binding: 7, visibility: entries[0].visibility, buffer: { type: 'storage' } }])).not.toBeNull();
     expect(

@@ -825,8 +825,8 @@ describe("the tessellator's contract", () => {
     count: [0, 1, 2, 3],
     // (the scan's steps and the budget became tessellator passes with the one-chain rebuild)
     scanReduce: [0, 3],
-    budget: [0, 3, 9, 10, 11],
-    scanDown: [0, 1, 3], // the tables: the edges' lines at the chosen candidate
+    // (the budget: [0, 3, 9, 10, 11], folded into scanDown since)
+    scanDown: [0, 1, 3, 9, 10, 11], // the tables: the edges' lines at the chosen candidate
     plan: [0, 1, 3],
     // (the weld's corners and edges, in emit's vertices since)
     emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
@@ -838,7 +838,7 @@ describe("the tessellator's contract", () => {
   for (const surface of ['phong', 'catmull-clark'] as const) {
     it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
       const passes = tessellatorPasses(surface);
-      expect(passes.length).toBe(surface === 'phong' ? 8 : 11);
+      expect(passes.length).toBe(surface === 'phong' ? 7 : 10);
       for (const pass of passes) {
         const { names, entries } = passBindings(pass);
         expect(
