@@ -233,7 +233,7 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       P[6u * lid + 5u] = o[6];
       // Step k's slice (layout: src/gpu/cc/build.ts): the centre, and every sector's 12 points
       // (a, b), a ∈ 1..3, b ∈ 0..3, at 4(a − 1) + b: the evaluator's sub-patches A, B, C of
-      // step k read them as they are (wgsl/cc/surface.wgsl ccSubPatch).
+      // step k read them as they are (wgsl/cc/surface.wgsl ccEvalRegion).
       if (sec == 0u) {
         C[lid] = cNew;
         setPt(sliceBase + k - 1u, cNew);

@@ -28,7 +28,7 @@ fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
   return array<vec4<f32>, 2>(b, d);
 }
 
-// A bicubic B-spline patch of 16 points (row-major, row ~ y) is summed point by point as its
+// A bicubic B-spline patch of 16 points (row-major, row ~ y) is summed row by row as its
 // points are read, with no array of them: its weights (value and derivative, per column in x
 // and per row in y) carry the phantom points instead. Phantom mask bit j = side j (0: row 0,
 // 1: column 3, 2: row 3, 3: column 0) is OpenSubdiv's reflection, row 0 = 2·row 1 − row 2 and
@@ -40,7 +40,7 @@ fn ccFoldLow(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(0.0, w.y + 2.0 * w.x,
 fn ccFoldHigh(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(w.x, w.y - w.w, w.z + 2.0 * w.w, 0.0); }
 
 // The x weights are given (value, d/dx per column): ccBasis(x), or a single-crease patch's row
-// weights (ccRegularPatch).
+// weights (ccEvalRegion).
 fn ccWeights(bx: array<vec4<f32>, 2>, y: f32, mask: u32) -> CCWeights {
   let by = ccBasis(y);
   var w = CCWeights(bx[0], bx[1], by[0], by[1]);
@@ -54,14 +54,6 @@ fn ccWeights(bx: array<vec4<f32>, 2>, y: f32, mask: u32) -> CCWeights {
 // The running sum: position and the two derivatives, of points relative to point 5 (the
 // corner (0,0): f32 precision of small patches).
 struct CCSum { p: vec3<f32>, pu: vec3<f32>, pv: vec3<f32> }
-
-fn ccAdd(s: ptr<function, CCSum>, w: CCWeights, q: u32, P: vec3<f32>) {
-  let r = q / 4u;
-  let c = q % 4u;
-  (*s).p += (w.y[r] * w.x[c]) * P;
-  (*s).pu += (w.y[r] * w.dx[c]) * P;
-  (*s).pv += (w.dy[r] * w.x[c]) * P;
-}
 
 fn ccNormal(pu: vec3<f32>, pv: vec3<f32>) -> vec3<f32> {
   let n = cross(pu, pv);
@@ -90,29 +82,11 @@ fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
   }
 }
 
-// A patch region: its 16 point indices at word `base` of patchIdx. A bicubic B-spline patch, or
-// a single-crease patch (one semi-sharp crease σ on the frame's x = 0 side, σ's f32 bits after
-// the indices; Nießner, Loop, Greiner 2012): the closed-form crease row weights in x times the cubic B-spline in
-// y (wgsl/cc/crease-basis.wgsl), which also gives both derivatives for the normal.
-fn ccRegularPatch(w0: u32, base: u32, x: f32, y: f32) -> SurfacePoint {
-  let b = params.ccPatchIdx + base;
-  var bx = ccBasis(x);
-  if (ccRegionWord_crease(w0) == 1u) {
-    let cw = creaseRowWeights(bitcast<f32>(staticBuf[b + 16u]), x);
-    bx = array<vec4<f32>, 2>(cw.value, cw.du);
-  }
-  let w = ccWeights(bx, y, ccRegionWord_mask(w0));
-  let anchor = ccP(staticBuf[b + 5u]);
-  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
-  for (var q = 0u; q < 16u; q++) { ccAdd(&e, w, q, ccP(staticBuf[b + q]) - anchor); }
-  return SurfacePoint(anchor + e.p, ccNormal(e.pu, e.pv), e.pu, e.pv);
-}
-
 // The fans' slices (src/gpu/cc/build.ts, wgsl/cc/build.wgsl) hold per step k = 1..D the centre
 // and every sector's 12 points (a, b), a ∈ 1..3, b ∈ 0..3 of its frame, as offsets from the
 // fan's anchor: patch-major, so that a point of sector i at step L is one bicubic of 16 points
 // read as they are, whatever L (the slice kernel made them once per rebuild, not once per vertex).
-struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, anchor: vec3<f32>, D: u32 }
+struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, D: u32 }
 
 fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
 
@@ -144,78 +118,30 @@ fn ccSubPatchOf(f: CCFan, i: u32, L: u32, which: u32) -> CCSubPatch {
 fn ccSubPatchPoint(s: CCSubPatch, k: u32) -> u32 {
   let a = i32(k % 4u) + s.da;
   let b = i32(k / 4u) + s.db;
-  if (b < 0) { return s.prev + u32(a); }
-  if (a >= 1) { return s.own + u32(4 * (a - 1) + b); }
-  if (b == 0) { return select(s.next2, s.centre, a == 0); }
-  return s.next + u32(4 * (b - 1) - a);
+  // Selects, not early returns: one straight run of code per point (cheaper where a shader
+  // compiler runs every branch under a mask, as SwiftShader does).
+  var r = select(s.next2, s.centre, a == 0);
+  r = select(r, s.next + u32(4 * (b - 1) - a), b >= 1);
+  r = select(r, s.own + u32(4 * (a - 1) + b), a >= 1);
+  return select(r, s.prev + u32(a), b < 0);
 }
 
-// Sub-patch `which` of sector i after step L at its local (x, y): offsets from the fan's anchor.
-fn ccSubPatch(f: CCFan, i: u32, L: u32, which: u32, x: f32, y: f32) -> CCSum {
-  // Phantoms: A's bottom on axis i, C's left on axis i+1, when infinitely sharp.
-  var mask = 0u;
-  if (which == 0u && staticBuf[f.sectors + 7u * i] == 1u) { mask = 1u; }
-  if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, i, 1)] == 1u) { mask = 8u; }
-  let w = ccWeights(ccBasis(x), y, mask);
-  let sp = ccSubPatchOf(f, i, L, which);
-  // Summed relative to the patch's corner (0,0) too.
-  let o = ccP(ccSubPatchPoint(sp, 5u));
-  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
-  for (var q = 0u; q < 16u; q++) { ccAdd(&e, w, q, ccP(ccSubPatchPoint(sp, q)) - o); }
-  e.p += o;
-  return e;
+// Every region is evaluated as ONE bicubic B-spline patch of 16 points, whatever its kind:
+//   PATCH   its 16 point indices at word w1 of patchIdx (phantom mask and single crease in w0);
+//   SECTOR  sub-patch A, B or C of its sector at step L, the indices computed from the slices'
+//           layout (ccSubPatchPoint).
+// The kinds differ only in where the points are and in the frame, so each kind sets up its
+// (x, y), weights and point source, and the 16-point sum is written once: a vertex costs one
+// gather and one sum, and a workgroup whose threads fall in both kinds runs the sum once.
+struct CCRegionEval {
+  regular: bool,
+  base: u32,         // PATCH: word of its 16 indices in staticBuf
+  sub: CCSubPatch,   // SECTOR: where its sub-patch's points are
+  origin: vec3<f32>, // what the points are offsets from (a fan's anchor; 0 for cage/refined points)
 }
 
-fn ccSector(w0: u32, fan: u32, x: f32, y: f32) -> SurfacePoint {
-  let sec = ccRegionWord_sector(w0);
-  let off = ccRegionWord_offset(w0);
-  let ab = ccRot(ccRegionWord_rot(w0), x, y) * exp2(-f32(off));
-  let fw = ccFanWord(fan, 0u);
-  let anchor = ccP(ccFanWord(fan, 1u));
-  let D = ccFanWord_depth(fw);
-  let f = CCFan(ccFanWord_sectors(fw), ccFanWord_valence(fw), ccFanWord_boundary(fw) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), anchor, D);
-  let lb = ccFanWord(fan, 5u);
-  // The limit tangents of this face's sector: the fan's own at a smooth centre, else face sec's
-  // (build.ts "fan limits": a sharp crease or corner has a tangent plane per sector).
-  let lt = select(lb + 1u, lb + 3u + 2u * sec, ccFanWord_rule(fw) != 0u);
-  let m = max(ab.x, ab.y);
-  // Step L: the first with max(a, b)·2^L ≥ 1, at most D: for m in [2^(e−1), 2^e), 1 − e
-  // (frexp's exponent e; exact, as the powers of two are).
-  let L = select(u32(clamp(1 - frexp(m).exp, 1, i32(D))), D, m <= 0.0);
-  var a = ab.x * exp2(f32(L));
-  var b = ab.y * exp2(f32(L));
-  let t = max(a, b);
-  var blend = 1.0;
-  if (t < 1.0) {
-    // Inside the last square: the exact ring point on the ray, then the radial blend.
-    if (t <= 0.0) {
-      // The vertex itself: its limit tangents stand in for the parametric ones (which vanish
-      // or blow up there), the CPU reference's convention (src/subdiv/displace.ts).
-      return SurfacePoint(ccP(lb), ccNormal(ccP(lt), ccP(lt + 1u)), ccP(lt), ccP(lt + 1u));
-    }
-    blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
-    if (a >= b) { b = b / t; a = 1.0; } else { a = a / t; b = 1.0; }
-  }
-  // Which sub-patch holds (a, b): A, B or C; one call site (see ccSubPatch).
-  var which = 2u;
-  var lx = a;
-  var ly = b - 1.0;
-  if (a >= 1.0) {
-    lx = a - 1.0;
-    if (b < 1.0) { which = 0u; ly = b; } else { which = 1u; }
-  }
-  let s = ccSubPatch(f, sec, L, which, lx, ly);
-  let e = array<vec3<f32>, 3>(s.p, s.pu, s.pv);
-  // Tangents along the region's (x, y): the sub-patch's along (a, b) are 2^L times its own, and
-  // (a, b) = rot(x, y)·2^(L − off). Inside the last square the blend's tangents are taken as
-  // the ring point's (the radial blend has no useful parametric derivative at that scale).
-  let tg = ccRotTangents(ccRegionWord_rot(w0), e[1], e[2]);
-  let sc = exp2(f32(L) - f32(off));
-  let q = SurfacePoint(anchor + e[0], ccNormal(e[1], e[2]), sc * tg[0], sc * tg[1]);
-  if (blend >= 1.0) { return q; }
-  let p0 = ccP(lb);
-  let n0 = ccNormal(ccP(lt), ccP(lt + 1u));
-  return SurfacePoint(p0 + blend * (q.pos - p0), normalize(mix(n0, q.normal, blend)), q.du, q.dv);
+fn ccRegionPoint(r: CCRegionEval, q: u32) -> u32 {
+  return select(ccSubPatchPoint(r.sub, q), staticBuf[r.base + q], r.regular);
 }
 
 fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
@@ -228,20 +154,108 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   let w1 = staticBuf[params.ccRegions + 2u * reg + 1u];
   let x = x0 * fs - f32(i);
   let y = y0 * fs - f32(j);
-  // Tangents come back along the region's (x, y); the face's are fs times those.
-  var sp: SurfacePoint;
-  if (ccRegionWord_kind(w0) == 1u) {
-    let l = ccRot(ccRegionWord_rot(w0), x, y);
-    sp = ccRegularPatch(w0, w1, l.x, l.y);
-    let tg = ccRotTangents(ccRegionWord_rot(w0), sp.du, sp.dv);
-    sp.du = tg[0];
-    sp.dv = tg[1];
-  } else {
-    sp = ccSector(w0, w1, x, y);
+  let rot = ccRegionWord_rot(w0);
+  let regular = ccRegionWord_kind(w0) == 1u;
+
+  // PATCH: the region's frame is rot(x, y); a single-crease patch's row weights in x.
+  var px = ccRot(rot, x, y);
+  var mask = ccRegionWord_mask(w0);
+  var src = CCRegionEval(regular, params.ccPatchIdx + w1, CCSubPatch(0u, 0u, 0u, 0u, 0u, 0, 0), vec3<f32>(0.0));
+  var sc = 1.0; // tangents along the region's (x, y) per tangent along the patch's own
+  // SECTOR (w1 = its fan): after L = ceil(log2(1/max(a,b))) steps the point lies on one of the
+  // regular sub-patches A, B, C of the fan's slice at step L; inside the last square a radial
+  // blend from the vertex's limit to the exact ring point on the ray.
+  var blend = 1.0;
+  var atVertex = false;
+  var lb = 0u; // the fan's limit point, then its tangents at lt
+  var lt = 0u;
+  if (!regular) {
+    let fan = w1;
+    let sec = ccRegionWord_sector(w0);
+    let off = ccRegionWord_offset(w0);
+    let ab = px * exp2(-f32(off));
+    let fw = ccFanWord(fan, 0u);
+    let D = ccFanWord_depth(fw);
+    let f = CCFan(ccFanWord_sectors(fw), ccFanWord_valence(fw), ccFanWord_boundary(fw) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), D);
+    lb = ccFanWord(fan, 5u);
+    // The limit tangents of this face's sector: the fan's own at a smooth centre, else face
+    // sec's (build.ts "fan limits": a sharp crease or corner has a tangent plane per sector).
+    lt = select(lb + 1u, lb + 3u + 2u * sec, ccFanWord_rule(fw) != 0u);
+    let m = max(ab.x, ab.y);
+    // Step L: the first with max(a, b)·2^L ≥ 1, at most D: for m in [2^(e−1), 2^e), 1 − e
+    // (frexp's exponent e; exact, as the powers of two are).
+    let L = select(u32(clamp(1 - frexp(m).exp, 1, i32(D))), D, m <= 0.0);
+    var a = ab.x * exp2(f32(L));
+    var b = ab.y * exp2(f32(L));
+    let t = max(a, b);
+    // The vertex itself: its limit tangents stand in for the parametric ones (which vanish or
+    // blow up there), the CPU reference's convention (src/subdiv/displace.ts).
+    atVertex = t <= 0.0;
+    if (t < 1.0) {
+      blend = pow(t, bitcast<f32>(ccFanWord(fan, 4u)));
+      let tt = max(t, 1e-30);
+      if (a >= b) { b = b / tt; a = 1.0; } else { a = a / tt; b = 1.0; }
+    }
+    // Which sub-patch holds (a, b): A, B or C.
+    var which = 2u;
+    px = vec2<f32>(a, b - 1.0);
+    if (a >= 1.0) {
+      px.x = a - 1.0;
+      if (b < 1.0) { which = 0u; px.y = b; } else { which = 1u; }
+    }
+    // Phantoms: A's bottom on axis sec, C's left on axis sec + 1, when infinitely sharp.
+    mask = 0u;
+    if (which == 0u && staticBuf[f.sectors + 7u * sec] == 1u) { mask = 1u; }
+    if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == 1u) { mask = 8u; }
+    src.sub = ccSubPatchOf(f, sec, L, which);
+    src.origin = ccP(ccFanWord(fan, 1u));
+    // The sub-patch's tangents along (a, b) are 2^L times its own, and (a, b) = rot(x, y)·2^(L − off).
+    sc = exp2(f32(L) - f32(off));
   }
-  sp.du *= fs;
-  sp.dv *= fs;
-  return sp;
+
+  var bx = ccBasis(px.x);
+  if (regular && ccRegionWord_crease(w0) == 1u) {
+    // A single-crease patch: one semi-sharp crease σ on the frame's x = 0 side, σ's f32 bits
+    // after the indices (Nießner, Loop, Greiner 2012): the closed-form crease row weights in x
+    // times the cubic B-spline in y (wgsl/cc/crease-basis.wgsl).
+    let cw = creaseRowWeights(bitcast<f32>(staticBuf[src.base + 16u]), px.x);
+    bx = array<vec4<f32>, 2>(cw.value, cw.du);
+  }
+  let w = ccWeights(bx, px.y, mask);
+  // Summed relative to the patch's corner (0,0), point 5: f32 precision of small patches.
+  let o = ccP(ccRegionPoint(src, 5u));
+  // Row by row: a row's four points weighted in x (value and d/dx), then the row's weight in y
+  // (value and d/dy). Every weight is read at a constant lane (the y weights rotate a lane per
+  // row): an index into a vector that varies per iteration is slow on some compilers.
+  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  var wy = w.y;
+  var wdy = w.dy;
+  for (var r = 0u; r < 16u; r += 4u) {
+    let P0 = ccP(ccRegionPoint(src, r)) - o;
+    let P1 = ccP(ccRegionPoint(src, r + 1u)) - o;
+    let P2 = ccP(ccRegionPoint(src, r + 2u)) - o;
+    let P3 = ccP(ccRegionPoint(src, r + 3u)) - o;
+    let row = w.x.x * P0 + w.x.y * P1 + w.x.z * P2 + w.x.w * P3;
+    let rowDx = w.dx.x * P0 + w.dx.y * P1 + w.dx.z * P2 + w.dx.w * P3;
+    e.p += wy.x * row;
+    e.pu += wy.x * rowDx;
+    e.pv += wdy.x * row;
+    wy = wy.yzwx;
+    wdy = wdy.yzwx;
+  }
+  // Tangents along the region's (x, y), then the face's (fs per region side). Inside a fan's
+  // last square the blend's tangents are taken as the ring point's (the radial blend has no
+  // useful parametric derivative at that scale).
+  let tg = ccRotTangents(rot, e.pu, e.pv);
+  let du = (sc * fs) * tg[0];
+  let dv = (sc * fs) * tg[1];
+  let pos = src.origin + o + e.p;
+  let normal = ccNormal(e.pu, e.pv);
+  if (blend >= 1.0) { return SurfacePoint(pos, normal, du, dv); }
+  let p0 = ccP(lb);
+  let n0 = ccNormal(ccP(lt), ccP(lt + 1u));
+  if (atVertex) { return SurfacePoint(p0, n0, fs * ccP(lt), fs * ccP(lt + 1u)); }
+  return SurfacePoint(p0 + blend * (pos - p0), normalize(mix(n0, normal, blend)), du, dv);
 }
 
 // Corner k of the regular n-gon whose table starts at `poly` (computed on the CPU in f64).

@@ -71,7 +71,7 @@
  *                 pseudo-sector has its axis points 0, 4, 8 only).
  *     Why all of them (patch-major): a point of the surface near the EV lies on sub-patch A, B
  *     or C of one sector at one step L, and those 16 points are this sector's 12 and a few of
- *     its neighbours' (wgsl/cc/surface.wgsl ccSubPatch). The slice kernel computes them anyway
+ *     its neighbours' (wgsl/cc/surface.wgsl ccEvalRegion). The slice kernel computes them anyway
  *     (in workgroup memory, once per rebuild); storing them costs 12 points per sector and step
  *     (GPU subdivision data in all: imrod 6.6 KB per face, suzanne 2.1, monsterfrog 1.4, bigguy 1.0) where keeping only the centre
  *     and the ring made every vertex redo up to L local steps of three sectors from the start

@@ -126,7 +126,7 @@ describe('single-crease patches', () => {
     expect(n).toBe(2 * 24); // every vertex of both loops (on the cube's vertical edges too: valence 4)
   });
 
-  it('the region word: kind and rot where the evaluator and regionOf read them, offset and sector where ccSector shifts them by hand', () => {
+  it('the region word: kind and rot where the evaluator and regionOf read them, offset and sector where ccEvalRegion shifts them by hand', () => {
     const w = CC_REGION_WORD.pack({ kind: 2, rot: 3, mask: 0, offset: 9, sector: 37, crease: 1, patchKind: 3 });
     expect(w & 3).toBe(2);
     expect((w >> 2) & 3).toBe(3);
