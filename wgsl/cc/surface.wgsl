@@ -140,8 +140,11 @@ struct CCRegionEval {
   origin: vec3<f32>, // what the points are offsets from (a fan's anchor; 0 for cage/refined points)
 }
 
-fn ccRegionPoint(r: CCRegionEval, q: u32) -> u32 {
-  return select(ccSubPatchPoint(r.sub, q), staticBuf[r.base + q], r.regular);
+// Point indices q..q+3 (a row) of the region's patch. A branch, not a select: a patch's row is
+// four loads, and only a sector's thread pays for the sub-patch's index arithmetic.
+fn ccRegionRow(r: CCRegionEval, q: u32) -> vec4<u32> {
+  if (r.regular) { return vec4<u32>(staticBuf[r.base + q], staticBuf[r.base + q + 1u], staticBuf[r.base + q + 2u], staticBuf[r.base + q + 3u]); }
+  return vec4<u32>(ccSubPatchPoint(r.sub, q), ccSubPatchPoint(r.sub, q + 1u), ccSubPatchPoint(r.sub, q + 2u), ccSubPatchPoint(r.sub, q + 3u));
 }
 
 fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
@@ -223,7 +226,7 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   }
   let w = ccWeights(bx, px.y, mask);
   // Summed relative to the patch's corner (0,0), point 5: f32 precision of small patches.
-  let o = ccP(ccRegionPoint(src, 5u));
+  let o = ccP(ccRegionRow(src, 4u).y);
   // Row by row: a row's four points weighted in x (value and d/dx), then the row's weight in y
   // (value and d/dy). Every weight is read at a constant lane (the y weights rotate a lane per
   // row): an index into a vector that varies per iteration is slow on some compilers.
@@ -231,10 +234,11 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   var wy = w.y;
   var wdy = w.dy;
   for (var r = 0u; r < 16u; r += 4u) {
-    let P0 = ccP(ccRegionPoint(src, r)) - o;
-    let P1 = ccP(ccRegionPoint(src, r + 1u)) - o;
-    let P2 = ccP(ccRegionPoint(src, r + 2u)) - o;
-    let P3 = ccP(ccRegionPoint(src, r + 3u)) - o;
+    let idx = ccRegionRow(src, r);
+    let P0 = ccP(idx.x) - o;
+    let P1 = ccP(idx.y) - o;
+    let P2 = ccP(idx.z) - o;
+    let P3 = ccP(idx.w) - o;
     let row = w.x.x * P0 + w.x.y * P1 + w.x.z * P2 + w.x.w * P3;
     let rowDx = w.dx.x * P0 + w.dx.y * P1 + w.dx.z * P2 + w.dx.w * P3;
     e.p += wy.x * row;
@@ -351,11 +355,6 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a
   // tess factor interpolated from the three edges (on an edge: that edge's factor, so both
   // triangles of the edge agree; at the corners flat and surface coincide).
-  let v0 = triVert(t, 0u);
-  let v1 = triVert(t, 1u);
-  let v2 = triVert(t, 2u);
-  let flat = w.x * factorPos(v0) + w.y * factorPos(v1) + w.z * factorPos(v2);
-  let fn0 = w.x * factorNormal(v0) + w.y * factorNormal(v1) + w.z * factorNormal(v2);
   let e01 = w.x * w.y;
   let e12 = w.y * w.z;
   let e20 = w.z * w.x;
@@ -364,6 +363,14 @@ fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   if (sum > 0.0) {
     F = (e01 * f32(edgeF(triEdge(t, 0u))) + e12 * f32(edgeF(triEdge(t, 1u))) + e20 * f32(edgeF(triEdge(t, 2u)))) / (65536.0 * sum);
   }
+  // From F = 4 the blend weight k below is 1 whatever the distance term: the surface itself,
+  // and the flat triangle is not read (most vertices of a close or fixed-factor view).
+  if (F >= 4.0) { return sp; }
+  let v0 = triVert(t, 0u);
+  let v1 = triVert(t, 1u);
+  let v2 = triVert(t, 2u);
+  let flat = w.x * factorPos(v0) + w.y * factorPos(v1) + w.z * factorPos(v2);
+  let fn0 = w.x * factorNormal(v0) + w.y * factorNormal(v1) + w.z * factorNormal(v2);
   // The blend weight: linear in F from 0 at F = 1 to the surface at F = 4, but never leaving
   // the point more than 1/lodScale pixels from the limit surface (issue 13's smooth default):
   // the point shown is flat + k·(S − flat), (1 − k)·|S − flat| from S, so k is raised to at
