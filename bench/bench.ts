@@ -404,7 +404,7 @@ The same fixed-factor rebuilds as the talk's table, stage by stage (GPU ms, medi
 tessellation's time goes once the surface is the exact limit (emit evaluates it per vertex, the
 weld's corner and edge vertices included; the bulge evaluates it at four points a triangle; the
 factors read the vertex limits). The rebuild is one chain of dispatches whatever the budget:
-bulge, factors + count + scan (three), plan, emit (two), after the patch build's.
+bulge, factors + count + scan (two: the budget is chosen in the second), plan, emit (two), after the patch build's.
 
 | model | out tris | subdivision | bulge | factors + count + scan | plan | emit (weld included) |
 |---|---:|---:|---:|---:|---:|---:|

@@ -12,6 +12,7 @@ import type { CatmullClarkData } from '../gpu/cc/build.ts';
 import { errorMessage } from './controller.ts';
 import type { PrepareReply } from './prepare-worker.ts';
 import { prepareSurfaceData, type SurfaceData } from './surface-data.ts';
+import { runWorkerOnce } from './worker-once.ts';
 
 export type CcTables = SurfaceData;
 
@@ -22,19 +23,15 @@ export const OFF_THREAD_FACES = 4096;
 /** `cage`'s surface data, prepared in a worker (or here, where there are no workers: Node). */
 function prepareOffThread(cage: Cage): Promise<SurfaceData> {
   if (typeof Worker === 'undefined') return Promise.resolve().then(() => prepareSurfaceData(cage));
-  return new Promise((resolve, reject) => {
-    const worker = new Worker(new URL('./prepare-worker.ts', import.meta.url), { type: 'module', name: 'prepare the surface' });
-    worker.onmessage = (e: MessageEvent<PrepareReply>) => {
-      worker.terminate();
-      if ('prepared' in e.data) resolve(e.data.prepared);
-      else reject(new Error(e.data.error));
-    };
-    worker.onerror = (e) => {
-      worker.terminate();
-      reject(new Error(`the surface preparation stopped: ${e.message || 'worker error'}`));
-    };
-    worker.postMessage({ cage });
-  });
+  return runWorkerOnce(
+    () => new Worker(new URL('./prepare-worker.ts', import.meta.url), { type: 'module', name: 'prepare the surface' }),
+    { cage },
+    (r: PrepareReply) => {
+      if ('prepared' in r) return r.prepared;
+      throw new Error(r.error);
+    },
+    (message) => new Error(`the surface preparation stopped: ${message || 'worker error'}`),
+  );
 }
 
 export class CcTableCache {

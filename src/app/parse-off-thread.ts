@@ -6,27 +6,21 @@
 import { CageError } from '../mesh/index.ts';
 import type { ParseReply } from './model-worker.ts';
 import { parseObjBytes, type ParsedFile } from './parse-obj.ts';
+import { runWorkerOnce } from './worker-once.ts';
 
 export function parseFileOffThread(file: File, progress: (line: string) => void = () => {}): Promise<ParsedFile> {
   if (typeof Worker === 'undefined') return file.arrayBuffer().then((b) => parseObjBytes(new Uint8Array(b)));
-  return new Promise((resolve, reject) => {
-    const worker = new Worker(new URL('./model-worker.ts', import.meta.url), { type: 'module', name: `parse ${file.name}` });
-    const done = () => worker.terminate();
-    worker.onmessage = (e: MessageEvent<ParseReply>) => {
-      const r = e.data;
-      if ('progress' in r) progress(r.progress);
-      else if ('loaded' in r) {
-        done();
-        resolve(r.loaded);
-      } else {
-        done();
-        reject(r.issues ? new CageError(r.issues) : new Error(r.error));
+  return runWorkerOnce(
+    () => new Worker(new URL('./model-worker.ts', import.meta.url), { type: 'module', name: `parse ${file.name}` }),
+    { file },
+    (r: ParseReply) => {
+      if ('progress' in r) {
+        progress(r.progress);
+        return undefined;
       }
-    };
-    worker.onerror = (e) => {
-      done();
-      reject(new Error(`could not read ${file.name}: ${e.message || 'the parser stopped'}`));
-    };
-    worker.postMessage({ file });
-  });
+      if ('loaded' in r) return r.loaded;
+      throw r.issues ? new CageError(r.issues) : new Error(r.error);
+    },
+    (message) => new Error(`could not read ${file.name}: ${message || 'the parser stopped'}`),
+  );
 }
