@@ -34,6 +34,7 @@ export type PassName =
   | 'scanDown'
   | 'plan'
   | 'emitVertices'
+  | 'emitVerticesDisplaced'
   | 'emitTriangles'
   | 'ccPoints'
   | 'ccSlices'
@@ -48,6 +49,11 @@ export interface PassSpec {
   code: string;
   entry: string;
   group: 'tess' | 'ccBuild';
+  /** Values of the code's override constants for this pipeline (a specialisation of the code). */
+  constants?: Record<string, number>;
+  /** Made when first needed, on the bind group layout of the pass named (same code and bindings),
+   * so that the bind groups made for that pass serve it too. */
+  variantOf?: PassName;
 }
 
 /** The passes of a tessellator over `surface`, with their code: what the constructor builds, and
@@ -70,13 +76,14 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     ccBuild: ccBuildWgsl,
   };
   type Module = keyof typeof modules;
-  const pass = (name: PassName, label: string, module: Module, entry = 'main'): PassSpec => ({
+  const pass = (name: PassName, label: string, module: Module, entry = 'main', more: Partial<PassSpec> = {}): PassSpec => ({
     name,
     label,
     module,
     code: modules[module],
     entry,
     group: module === 'ccBuild' ? 'ccBuild' : 'tess',
+    ...more,
   });
   const passes = [
     pass('bulge', 'tess bulge', 'factors', 'bulge'),
@@ -84,7 +91,12 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
     pass('scanDown', 'tess budget + scan down', 'scan', 'scanDown'),
     pass('plan', 'tess plan', 'plan'),
-    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices'),
+    // The vertices with the displacement compiled out, and with it (wgsl/tess/outputs.wgsl DISPLACED).
+    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices', { constants: { DISPLACED: 0 } }),
+    pass('emitVerticesDisplaced', 'tess emit displaced vertices', 'emit', 'vertices', {
+      constants: { DISPLACED: 1 },
+      variantOf: 'emitVertices',
+    }),
     pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
   ];
   // The Catmull-Clark patch build is the tessellator's own (into its work arena); AccPatches

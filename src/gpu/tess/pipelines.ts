@@ -43,22 +43,40 @@ function passDescriptors(device: GPUDevice, surface: Surface) {
     const descriptor: GPUComputePipelineDescriptor = {
       label: pass.label,
       layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
-      compute: { module, entryPoint: pass.entry },
+      compute: { module, entryPoint: pass.entry, constants: pass.constants },
     };
     const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
-    return { name: pass.name, descriptor, layout, bindings: names, binding };
+    return { name: pass.name, variantOf: pass.variantOf, descriptor, layout, bindings: names, binding };
   });
 }
 
-/** Every pipeline of a tessellator of `surface`, made now (each compiles before the next call). */
+/** Every pipeline of a tessellator of `surface` but the variants (passes.ts variantOf), made now
+ * (each compiles before the next call). */
 export function createTessPipelines(device: GPUDevice, surface: Surface): TessPipelines {
   const pipelines: Partial<Record<PassName, Pipeline>> = {};
   for (const p of passDescriptors(device, surface))
-    pipelines[p.name] = {
-      pipeline: device.createComputePipeline(p.descriptor),
-      layout: p.layout,
-      bindings: p.bindings,
-      binding: p.binding,
-    };
+    if (!p.variantOf)
+      pipelines[p.name] = {
+        pipeline: device.createComputePipeline(p.descriptor),
+        layout: p.layout,
+        bindings: p.bindings,
+        binding: p.binding,
+      };
   return { surface, pipelines };
+}
+
+/** The pipeline of variant `name` of a set (passes.ts variantOf), made and kept in the set the
+ * first time it is asked for (a set is shared by the tessellators of its surface). It binds with
+ * the layout of the pass it is a variant of, so that pass's bind groups serve it. */
+export function variantPipeline(device: GPUDevice, set: TessPipelines, name: PassName): Pipeline {
+  const made = set.pipelines[name];
+  if (made) return made;
+  const p = passDescriptors(device, set.surface).find((d) => d.name === name);
+  const base = p?.variantOf && set.pipelines[p.variantOf];
+  if (!p || !base) throw new Error(`${name} is not a variant of a pass of the ${set.surface} tessellator`);
+  const pipeline = device.createComputePipeline({
+    ...p.descriptor,
+    layout: device.createPipelineLayout({ label: p.descriptor.label, bindGroupLayouts: [base.layout] }),
+  });
+  return (set.pipelines[name] = { ...base, pipeline });
 }

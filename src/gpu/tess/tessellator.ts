@@ -46,7 +46,7 @@ import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
 import type { PassName, Surface } from './passes.ts';
 import { surfaceScheme } from '../surface/registry.ts';
-import { createTessPipelines, type Pipeline, type TessPipelines } from './pipelines.ts';
+import { createTessPipelines, type Pipeline, type TessPipelines, variantPipeline } from './pipelines.ts';
 import { type CageName, meshParams, type PackInput, packArenas, type WorkName } from './arenas.ts';
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
@@ -119,6 +119,7 @@ export class Tessellator {
   private readonly paramsBytes: ArrayBuffer;
   /** Indirect dispatch arguments of the emit passes, written with the budget's choice (wgsl/tess/scan.wgsl scanDown). */
   private readonly emitArgs: GPUBuffer;
+  private readonly pipelineSet: TessPipelines;
   private readonly pipelines: Partial<Record<PassName, Pipeline>>;
   private mesh?: MeshState;
   private hasDisplacement = false;
@@ -164,7 +165,8 @@ export class Tessellator {
 
     if (opts.pipelines && opts.pipelines.surface !== this.surface)
       throw new Error(`pipelines for ${opts.pipelines.surface} handed to a ${this.surface} tessellator`);
-    ({ pipelines: this.pipelines } = opts.pipelines ?? createTessPipelines(device, this.surface));
+    this.pipelineSet = opts.pipelines ?? createTessPipelines(device, this.surface);
+    this.pipelines = this.pipelineSet.pipelines;
 
     if (device.features.has('timestamp-query')) this.timer = new PassTimer(device, 'tess', TIMED_PASSES);
   }
@@ -461,7 +463,12 @@ export class Tessellator {
       // vertices: an indirect dispatch sized by the budget), then every output triangle (a
       // workgroup per cage triangle).
       const cp = pass('tess emit', 'tessellate');
-      cp.setPipeline(this.pipelines.emitVertices!.pipeline);
+      // Displacement compiled in only when it is on (wgsl/tess/outputs.wgsl DISPLACED); both bind
+      // with the same layout, so the same group.
+      const vertices = this.displaced
+        ? variantPipeline(this.device, this.pipelineSet, 'emitVerticesDisplaced')
+        : this.pipelines.emitVertices!;
+      cp.setPipeline(vertices.pipeline);
       cp.setBindGroup(0, m.groups.emitVertices!);
       cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
       cp.setPipeline(this.pipelines.emitTriangles!.pipeline);
