@@ -35,7 +35,7 @@ fn interiorPlace(q: u32) -> VertexPlace {
   let u = select(rowEnd(L, j), framed(L.bottom, col), col < rowKept(first, j));
   let v = framed(L.left, j);
   let w = patternToCorners(L.f, ONE - u - v, u, v);
-  return VertexPlace(t, w, t, w, false);
+  return VertexPlace(params.nSlots + edgeTotal() + q, t, w, VERTEX_POSITION | VERTEX_SHADING, NO_OWNER, false);
 }
 
 struct Tri { t: u32, L: TriLines, first: u32, k0: u32, vertexBase: u32 }
@@ -182,9 +182,13 @@ fn vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
   let i = flatIndex(wid, lid);
   let edgePoints = edgeTotal();
   let welded = params.nSlots + edgePoints;
-  if (i >= welded + work[params.offTriVertBase + params.nTris] || !emitEnabled()) { return; }
+  let all = welded + work[params.offTriVertBase + params.nTris];
+  // After the vertices, a thread per extra sector slot for its position (weld.wgsl).
+  if (i >= all + params.nSlots - params.nVerts || !emitEnabled()) { return; }
   var P: VertexPlace;
-  if (i < params.nSlots) {
+  if (i >= all) {
+    P = extraSlotPosition(i - all);
+  } else if (i < params.nSlots) {
     P = cornerPlace(i);
   } else if (i < welded) {
     P = edgePlace(i - params.nSlots);
@@ -195,7 +199,7 @@ fn vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
     writeUnusedVertex(i, i); // a cage vertex no face with a surface uses
     return;
   }
-  writeSplitVertex(i, P.tPos, P.wPos, P.tN, P.wN);
+  writeVertex(P);
 }
 
 // Apart from the vertices: an entry point without the surface's evaluator, so that a compiler

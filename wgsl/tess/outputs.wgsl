@@ -14,34 +14,30 @@ fn surfaceAt(t: u32, w: vec3<u32>) -> SurfacePoint {
   return displacePoint(t, w, s);
 }
 
-// A point where the surface's normal splits (an infinitely sharp crease): the position of the
-// point as (tPos, wPos) gives it, the owner side's, so that both sides' output vertices lie at
-// bit-identical places (one evaluation, repeated exactly), and the normal as triangle tN sees it.
-// Where (tN, wN) is (tPos, wPos) (every vertex but a split one) the point is evaluated once.
-//
-// The surface is called from ONE place, in a loop of one or two turns, not once per side: a
-// shader compiler that inlines every call (SwiftShader's, which CI and headless runs use) builds
-// the exact surface's evaluator once per call site, and three sites per weld entry point made the
+// One output vertex (wgsl/tess/weld.wgsl VertexPlace): the surface at (P.t, P.w), evaluated
+// once, and what of it this thread writes. The surface is called from ONE place: a shader
+// compiler that inlines every call (SwiftShader's, which CI and headless runs use) builds the
+// exact surface's evaluator once per call site, and three sites per weld entry point made the
 // weld most of a page's pipeline build (4.2 + 4.5 s of 16 s on 2 CPU cores). Every kind of
-// vertex comes through writeSplitVertex for the same reason (wgsl/tess/emit.wgsl `output`).
-fn writeSplitVertex(index: u32, tPos: u32, wPos: vec3<u32>, tN: u32, wN: vec3<u32>) {
-  if (index >= params.vertexCapacity) { return; }
-  let turns = select(1u, 2u, tN != tPos || any(wN != wPos));
-  var p = vec3<f32>(0.0);
-  var n = vec3<f32>(0.0);
-  for (var k = 0u; k < turns; k++) {
-    let s = surfaceAt(select(tPos, tN, k == 1u), select(wPos, wN, k == 1u)); // displaced when on (wgsl/tess/displace.wgsl)
-    if (k == 0u) { p = s.pos; }
-    n = s.normal;
+// vertex comes through here for the same reason (wgsl/tess/emit.wgsl `vertices`).
+fn writeVertex(P: VertexPlace) {
+  let s = surfaceAt(P.t, P.w); // displaced when on (wgsl/tess/displace.wgsl)
+  if ((P.writes & VERTEX_POSITION) != 0u) {
+    for (var k = 0u; k < 2u; k++) {
+      let index = select(P.index, P.posAlso, k == 1u);
+      if (index >= params.vertexCapacity) { continue; } // NO_OWNER too
+      outPositions[3u * index] = s.pos.x;
+      outPositions[3u * index + 1u] = s.pos.y;
+      outPositions[3u * index + 2u] = s.pos.z;
+    }
   }
-  outPositions[3u * index] = p.x;
-  outPositions[3u * index + 1u] = p.y;
-  outPositions[3u * index + 2u] = p.z;
-  outNormals[3u * index] = n.x;
-  outNormals[3u * index + 1u] = n.y;
-  outNormals[3u * index + 2u] = n.z;
-  outBary[index] = packBary(wN);
-  outSrcTri[index] = tN;
+  if ((P.writes & VERTEX_SHADING) == 0u || P.index >= params.vertexCapacity) { return; }
+  let index = P.index;
+  outNormals[3u * index] = s.normal.x;
+  outNormals[3u * index + 1u] = s.normal.y;
+  outNormals[3u * index + 2u] = s.normal.z;
+  outBary[index] = packBary(P.w);
+  outSrcTri[index] = P.t;
 }
 
 // A cage vertex no face with a surface uses (a bare vertex, or one of holes only) still has its

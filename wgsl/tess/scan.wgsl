@@ -130,7 +130,8 @@ fn writeBudget(c: u32) {
   counts = array(select(0u, vertices, fits), shown, bitcast<u32>(BUDGET_SCALES[c]), c);
   // One emit thread per output vertex (the welded ones included); the triangles' emit is a
   // workgroup per cage triangle (wgsl/tess/emit.wgsl `triangles`), sized on the CPU.
-  let v = dispatchArgs(select(0u, vertices, fits));
+  // (and a thread per extra sector slot for its position: wgsl/tess/weld.wgsl)
+  let v = dispatchArgs(select(0u, vertices + params.nSlots - params.nVerts, fits));
   emitArgs = array(v.x, v.y, v.z);
 }
 

@@ -13,37 +13,48 @@
 //            factor 16); each is evaluated through one triangle of the edge, whose barycentrics
 //            are stored. An edge whose normals split has its points twice: the owner's, then
 //            the twin's (same positions).
-// Both are threads of the one output dispatch (wgsl/tess/emit.wgsl `output`), which asks here
+// Both are threads of the one output dispatch (wgsl/tess/emit.wgsl `vertices`), which asks here
 // where its vertex lies (a VertexPlace) and evaluates every kind of vertex at one call site.
+//
+// Where normals split, a point's copies share one position: the copy on the owner's side
+// evaluates it and writes it, into its twin's slot too where it knows it (an edge's second copy
+// lies interior − 1 slots on), and each other copy evaluates only its own side for its normal. An
+// extra sector's position (several sectors of a vertex, found from the sector alone) gets a
+// thread of its own after all the vertices (extraSlotPosition). So each thread evaluates the
+// surface once, with no loop round the evaluator (a loop of one or two evaluations per thread
+// cost the exact surface's emit about an eighth of its time on SwiftShader).
 
-// Where an output vertex lies: its position through (tPos, wPos), its normal through (tN, wN)
-// (the same but where normals split: outputs.wgsl writeSplitVertex); `unused` marks a cage
-// vertex that no face with a surface uses (cage: outputs.wgsl writeUnusedVertex).
-struct VertexPlace { tPos: u32, wPos: vec3<u32>, tN: u32, wN: vec3<u32>, unused: bool }
+// What an output vertex's thread evaluates and writes: the surface at (t, w), into output vertex
+// `index`: its position (VERTEX_POSITION, and at `posAlso` unless NO_OWNER), its normal,
+// barycentrics and source triangle (VERTEX_SHADING); `unused` marks a cage vertex that no face
+// with a surface uses (cage: outputs.wgsl writeUnusedVertex).
+const VERTEX_POSITION: u32 = 1u;
+const VERTEX_SHADING: u32 = 2u;
+struct VertexPlace { index: u32, t: u32, w: vec3<u32>, writes: u32, posAlso: u32, unused: bool }
 
-// Output vertex v < nSlots: a cage vertex, or an extra sector of one.
+fn cornerWeights(corner: u32) -> vec3<u32> {
+  var w = vec3<u32>(0u);
+  w[corner] = ONE;
+  return w;
+}
+
+// Output vertex v < nSlots: a cage vertex (through its owner), or an extra sector of one (its
+// normal through its own triangle; its position is extraSlotPosition's).
 fn cornerPlace(v: u32) -> VertexPlace {
-  var P = VertexPlace(0u, vec3<u32>(0u), 0u, vec3<u32>(0u), false);
   if (v >= params.nVerts) {
-    // An extra sector: the normal through its own triangle, the position through the vertex's owner.
     let sector = staticBuf[params.offSlotOwner + v - params.nVerts];
-    let ts = ownerWord_tri(sector);
-    let cv = triVert(ts, ownerWord_corner(sector));
-    let owner = staticBuf[params.offVertexOwner + cv];
-    P.tPos = ownerWord_tri(owner);
-    P.wPos[ownerWord_corner(owner)] = ONE;
-    P.tN = ts;
-    P.wN[ownerWord_corner(sector)] = ONE;
-    return P;
+    return VertexPlace(v, ownerWord_tri(sector), cornerWeights(ownerWord_corner(sector)), VERTEX_SHADING, NO_OWNER, false);
   }
   let owner = staticBuf[params.offVertexOwner + v];
-  P.unused = owner == NO_OWNER;
-  if (P.unused) { return P; }
-  P.tPos = ownerWord_tri(owner);
-  P.wPos[ownerWord_corner(owner)] = ONE;
-  P.tN = P.tPos;
-  P.wN = P.wPos;
-  return P;
+  return VertexPlace(v, ownerWord_tri(owner), cornerWeights(ownerWord_corner(owner)), VERTEX_POSITION | VERTEX_SHADING, NO_OWNER, owner == NO_OWNER);
+}
+
+// The position of extra sector slot nVerts + j: its vertex's, through the vertex's owner (the
+// same evaluation as the vertex's own slot, so bit-identical).
+fn extraSlotPosition(j: u32) -> VertexPlace {
+  let sector = staticBuf[params.offSlotOwner + j];
+  let owner = staticBuf[params.offVertexOwner + triVert(ownerWord_tri(sector), ownerWord_corner(sector))];
+  return VertexPlace(params.nVerts + j, ownerWord_tri(owner), cornerWeights(ownerWord_corner(owner)), VERTEX_POSITION, NO_OWNER, false);
 }
 
 // The q-th interior edge point of the whole mesh (output vertex nSlots + q).
@@ -54,17 +65,15 @@ fn edgePlace(q: u32) -> VertexPlace {
   let twinSide = j >= interior; // only where the edge splits: its second copy
   let k = select(j, j - interior, twinSide) + 1u; // point k of the edge's line, 1..n−1
   let x = linePoint(edgeState(e), edgeF(e), k);
-  let owner = staticBuf[params.offEdgeOwner + e];
-  let t = ownerWord_tri(owner);
-  let w = edgeWeights(e, owner, x);
-  // The normal's side: the owner's, or on an edge's second copy its twin's.
-  var P = VertexPlace(t, w, t, w, false);
+  let index = params.nSlots + q;
   if (twinSide) {
+    // The second copy: its normal through the twin; its position is the first copy's.
     let twin = staticBuf[params.offEdgeTwin + e];
-    P.tN = ownerWord_tri(twin);
-    P.wN = edgeWeights(e, twin, x);
+    return VertexPlace(index, ownerWord_tri(twin), edgeWeights(e, twin, x), VERTEX_SHADING, NO_OWNER, false);
   }
-  return P;
+  let owner = staticBuf[params.offEdgeOwner + e];
+  let also = select(NO_OWNER, index + interior, edgeSplit(e));
+  return VertexPlace(index, ownerWord_tri(owner), edgeWeights(e, owner, x), VERTEX_POSITION | VERTEX_SHADING, also, false);
 }
 
 // The weights of edge e's point x (a line coordinate along the edge's canonical direction) in
