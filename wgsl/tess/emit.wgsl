@@ -16,8 +16,8 @@ fn findTriangle(sums: u32, x: u32) -> u32 { return lastAtMost(sums, params.nTris
 
 fn edgeTotal() -> u32 { return work[params.offEdgeBase + params.nEdges]; }
 
-// The q-th interior vertex of the cage triangles (output vertex nSlots + edge points + q).
-fn interiorPlace(q: u32) -> VertexPlace {
+// The q-th interior vertex of the cage triangles, output vertex `index` (nSlots + edge points + q).
+fn interiorPlace(q: u32, index: u32) -> VertexPlace {
   let t = findTriangle(params.offTriVertBase, q);
   let local = q - work[params.offTriVertBase + t];
   let L = triLines(t);
@@ -35,7 +35,7 @@ fn interiorPlace(q: u32) -> VertexPlace {
   let u = select(rowEnd(L, j), framed(L.bottom, col), col < rowKept(first, j));
   let v = framed(L.left, j);
   let w = patternToCorners(L.f, ONE - u - v, u, v);
-  return VertexPlace(params.nSlots + edgeTotal() + q, t, w, VERTEX_POSITION | VERTEX_SHADING, NO_OWNER, false);
+  return VertexPlace(index, t, w, VERTEX_POSITION | VERTEX_SHADING, NO_OWNER, false);
 }
 
 struct Tri { t: u32, L: TriLines, first: u32, k0: u32, vertexBase: u32 }
@@ -193,7 +193,7 @@ fn vertices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_ind
   } else if (i < welded) {
     P = edgePlace(i - params.nSlots);
   } else {
-    P = interiorPlace(i - welded);
+    P = interiorPlace(i - welded, i);
   }
   if (P.unused) {
     writeUnusedVertex(i, i); // a cage vertex no face with a surface uses

@@ -23,13 +23,8 @@ fn surfaceAt(t: u32, w: vec3<u32>) -> SurfacePoint {
 fn writeVertex(P: VertexPlace) {
   let s = surfaceAt(P.t, P.w); // displaced when on (wgsl/tess/displace.wgsl)
   if ((P.writes & VERTEX_POSITION) != 0u) {
-    for (var k = 0u; k < 2u; k++) {
-      let index = select(P.index, P.posAlso, k == 1u);
-      if (index >= params.vertexCapacity) { continue; } // NO_OWNER too
-      outPositions[3u * index] = s.pos.x;
-      outPositions[3u * index + 1u] = s.pos.y;
-      outPositions[3u * index + 2u] = s.pos.z;
-    }
+    writePosition(P.index, s.pos);
+    writePosition(P.posAlso, s.pos);
   }
   if ((P.writes & VERTEX_SHADING) == 0u || P.index >= params.vertexCapacity) { return; }
   let index = P.index;
@@ -40,15 +35,20 @@ fn writeVertex(P: VertexPlace) {
   outSrcTri[index] = P.t;
 }
 
+// Output vertex `index`'s position (none for NO_OWNER, or past the output buffers).
+fn writePosition(index: u32, p: vec3<f32>) {
+  if (index >= params.vertexCapacity) { return; }
+  outPositions[3u * index] = p.x;
+  outPositions[3u * index + 1u] = p.y;
+  outPositions[3u * index + 2u] = p.z;
+}
+
 // A cage vertex no face with a surface uses (a bare vertex, or one of holes only) still has its
 // output slot: it gets the cage position, no normal and no source triangle (NO_OWNER), so the
 // output buffers never hold what a previous mesh left there. No triangle refers to it.
 fn writeUnusedVertex(index: u32, v: u32) {
   if (index >= params.vertexCapacity) { return; }
-  let p = cagePos(v);
-  outPositions[3u * index] = p.x;
-  outPositions[3u * index + 1u] = p.y;
-  outPositions[3u * index + 2u] = p.z;
+  writePosition(index, cagePos(v));
   outNormals[3u * index] = 0.0;
   outNormals[3u * index + 1u] = 0.0;
   outNormals[3u * index + 2u] = 0.0;

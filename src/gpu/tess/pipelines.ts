@@ -30,24 +30,27 @@ export interface TessPipelines {
   pipelines: Partial<Record<PassName, Pipeline>>;
 }
 
-/** Every pass of a tessellator of `surface`: its pipeline's descriptor and the rest of its Pipeline. */
+/** Every pass of a tessellator of `surface` but the variants (passes.ts variantOf, made on
+ * demand by variantPipeline): its pipeline's descriptor and the rest of its Pipeline. */
 function passDescriptors(device: GPUDevice, surface: Surface) {
   // Explicit layouts: each pass binds what its entry point uses, so a shared helper that starts
   // reading one more buffer changes only the layouts of the passes that call it.
   const modules = new Map<string, GPUShaderModule>();
-  return tessellatorPasses(surface).map((pass) => {
-    let module = modules.get(pass.module);
-    if (!module) modules.set(pass.module, (module = device.createShaderModule({ label: `tess ${pass.module}`, code: pass.code })));
-    const { names, entries } = passBindings(pass);
-    const layout = device.createBindGroupLayout({ label: pass.label, entries });
-    const descriptor: GPUComputePipelineDescriptor = {
-      label: pass.label,
-      layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
-      compute: { module, entryPoint: pass.entry, constants: pass.constants },
-    };
-    const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
-    return { name: pass.name, variantOf: pass.variantOf, descriptor, layout, bindings: names, binding };
-  });
+  return tessellatorPasses(surface)
+    .filter((pass) => !pass.variantOf)
+    .map((pass) => {
+      let module = modules.get(pass.module);
+      if (!module) modules.set(pass.module, (module = device.createShaderModule({ label: `tess ${pass.module}`, code: pass.code })));
+      const { names, entries } = passBindings(pass);
+      const layout = device.createBindGroupLayout({ label: pass.label, entries });
+      const descriptor: GPUComputePipelineDescriptor = {
+        label: pass.label,
+        layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [layout] }),
+        compute: { module, entryPoint: pass.entry, constants: pass.constants },
+      };
+      const binding = pass.group === 'ccBuild' ? CC_BUILD_GROUP.binding : TESS_GROUP.binding;
+      return { name: pass.name, descriptor, layout, bindings: names, binding };
+    });
 }
 
 /** Every pipeline of a tessellator of `surface` but the variants (passes.ts variantOf), made now
@@ -55,13 +58,12 @@ function passDescriptors(device: GPUDevice, surface: Surface) {
 export function createTessPipelines(device: GPUDevice, surface: Surface): TessPipelines {
   const pipelines: Partial<Record<PassName, Pipeline>> = {};
   for (const p of passDescriptors(device, surface))
-    if (!p.variantOf)
-      pipelines[p.name] = {
-        pipeline: device.createComputePipeline(p.descriptor),
-        layout: p.layout,
-        bindings: p.bindings,
-        binding: p.binding,
-      };
+    pipelines[p.name] = {
+      pipeline: device.createComputePipeline(p.descriptor),
+      layout: p.layout,
+      bindings: p.bindings,
+      binding: p.binding,
+    };
   return { surface, pipelines };
 }
 
@@ -71,12 +73,18 @@ export function createTessPipelines(device: GPUDevice, surface: Surface): TessPi
 export function variantPipeline(device: GPUDevice, set: TessPipelines, name: PassName): Pipeline {
   const made = set.pipelines[name];
   if (made) return made;
-  const p = passDescriptors(device, set.surface).find((d) => d.name === name);
-  const base = p?.variantOf && set.pipelines[p.variantOf];
-  if (!p || !base) throw new Error(`${name} is not a variant of a pass of the ${set.surface} tessellator`);
+  // Only this pass's module and pipeline are made (not every pass's descriptor).
+  const pass = tessellatorPasses(set.surface).find((p) => p.name === name);
+  const base = pass?.variantOf && set.pipelines[pass.variantOf];
+  if (!pass || !base) throw new Error(`${name} is not a variant of a pass of the ${set.surface} tessellator`);
   const pipeline = device.createComputePipeline({
-    ...p.descriptor,
-    layout: device.createPipelineLayout({ label: p.descriptor.label, bindGroupLayouts: [base.layout] }),
+    label: pass.label,
+    layout: device.createPipelineLayout({ label: pass.label, bindGroupLayouts: [base.layout] }),
+    compute: {
+      module: device.createShaderModule({ label: `tess ${pass.module} (${pass.name})`, code: pass.code }),
+      entryPoint: pass.entry,
+      constants: pass.constants,
+    },
   });
   return (set.pipelines[name] = { ...base, pipeline });
 }
