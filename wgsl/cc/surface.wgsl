@@ -10,9 +10,22 @@
 //          the point lies on one of the regular sub-patches A, B, C of the fan's slice at step
 //          L (src/gpu/cc/build.ts, "2. Fans"); inside the last square (2^-7 of the face) a radial blend from the
 //          vertex's limit to the exact ring round it.
-// Optionally (params.ccFlat) blends from the flat triangle of the corners' limit positions to
+// Optionally (FLAT_BASELINE) blends from the flat triangle of the corners' limit positions to
 // the surface as the tess factor rises from 1 to 4.
 
+//
+// What a cage's surface has, as override constants (SurfaceScheme.specialise,
+// src/gpu/surface/registry.ts): a pipeline made for a cage of quads alone carries no n-gon
+// parametrisation, one without single-crease patches no crease basis, one without boundaries or
+// infinitely sharp edges no phantom points; FLAT_BASELINE is the compute tessellator's
+// flatBaseline option (off by default: the exact limit, as the instanced tessellator and the
+// error views take this code). Not a uniform: a shader
+// pays for the code it carries as well as for the code it runs (registers, occupancy; on a
+// software GPU the compiled size is most of the cost). The case defaults take every cage.
+override CC_NGONS: bool = true;
+override CC_CREASE_PATCHES: bool = true;
+override CC_PHANTOMS: bool = true;
+override FLAT_BASELINE: bool = false;
 
 fn ccP(p: u32) -> vec3<f32> {
   let o = select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts);
@@ -44,6 +57,7 @@ fn ccFoldHigh(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(w.x, w.y - w.w, w.z 
 fn ccWeights(bx: array<vec4<f32>, 2>, y: f32, mask: u32) -> CCWeights {
   let by = ccBasis(y);
   var w = CCWeights(bx[0], bx[1], by[0], by[1]);
+  if (!CC_PHANTOMS) { return w; }
   if ((mask & 1u) != 0u) { w.y = ccFoldLow(w.y); w.dy = ccFoldLow(w.dy); }
   if ((mask & 4u) != 0u) { w.y = ccFoldHigh(w.y); w.dy = ccFoldHigh(w.dy); }
   if ((mask & 8u) != 0u) { w.x = ccFoldLow(w.x); w.dx = ccFoldLow(w.dx); }
@@ -208,8 +222,8 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     }
     // Phantoms: A's bottom on axis sec, C's left on axis sec + 1, when infinitely sharp.
     mask = 0u;
-    if (which == 0u && staticBuf[f.sectors + 7u * sec] == 1u) { mask = 1u; }
-    if (which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == 1u) { mask = 8u; }
+    if (CC_PHANTOMS && which == 0u && staticBuf[f.sectors + 7u * sec] == 1u) { mask = 1u; }
+    if (CC_PHANTOMS && which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == 1u) { mask = 8u; }
     src.sub = ccSubPatchOf(f, sec, L, which);
     src.origin = ccP(ccFanWord(fan, 1u));
     // The sub-patch's tangents along (a, b) are 2^L times its own, and (a, b) = rot(x, y)·2^(L − off).
@@ -217,7 +231,7 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   }
 
   var bx = ccBasis(px.x);
-  if (regular && ccRegionWord_crease(w0) == 1u) {
+  if (CC_CREASE_PATCHES && regular && ccRegionWord_crease(w0) == 1u) {
     // A single-crease patch: one semi-sharp crease σ on the frame's x = 0 side, σ's f32 bits
     // after the indices (Nießner, Loop, Greiner 2012): the closed-form crease row weights in x
     // times the cubic B-spline in y (wgsl/cc/crease-basis.wgsl).
@@ -330,7 +344,7 @@ fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   var kxy: vec3<f32>;
   var d1: vec2<f32>;
   var d2: vec2<f32>;
-  if (n == 4u) {
+  if (!CC_NGONS || n == 4u) {
     let first = fan == 1u;
     kxy = select(vec3<f32>(0.0, w.y, w.y + w.z), vec3<f32>(0.0, w.y + w.z, w.z), first);
     d1 = select(vec2<f32>(1.0, 1.0), vec2<f32>(1.0, 0.0), first);
@@ -350,7 +364,7 @@ fn unblendedSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
 
 fn evalSurface(t: u32, wFixed: vec3<u32>) -> SurfacePoint {
   let sp = unblendedSurface(t, wFixed);
-  if (params.ccFlat == 0u) { return sp; }
+  if (!FLAT_BASELINE) { return sp; }
   let w = vec3<f32>(wFixed) / 65536.0;
   // Flat baseline: the triangle of the corners' limit positions, blended to the surface by a
   // tess factor interpolated from the three edges (on an edge: that edge's factor, so both

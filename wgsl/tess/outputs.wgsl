@@ -1,10 +1,11 @@
 // Writing one vertex of the output mesh (src/gpu/contract/tessellated-mesh.ts), for the emit pass.
 
-// The emit's vertices are built twice from this code (src/gpu/tess/passes.ts): emitVertices with
-// DISPLACED false, which has none of the displacement's code, and emitVerticesDisplaced, made when
-// a mesh is first displaced. A path a shader never runs is not free: on a GPU it takes registers
-// from every thread; on SwiftShader (CI, headless runs) the displacement compiled in but switched
-// off made the vertices' emit of bigguy at fixed 16 about 40 % slower on either surface.
+// The emit's vertices are compiled per mesh (src/gpu/tess/tessellator.ts pipelineOf): with
+// DISPLACED false, none of the displacement's code, until a mesh is displaced. A path a shader
+// never runs is not free: on a GPU it takes registers from every thread; on SwiftShader (CI,
+// headless runs) the displacement compiled in but switched off made the vertices' emit of bigguy
+// at fixed 16 about 40 % slower on either surface. The surface's own cases are compiled out the
+// same way (wgsl/cc/surface.wgsl).
 override DISPLACED: bool = true;
 
 // The surface point of triangle t at weights w, displaced when params.dispOn (wgsl/tess/displace.wgsl).

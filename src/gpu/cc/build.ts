@@ -161,6 +161,10 @@ export interface CatmullClarkData {
   levels: number;
   /** Per prepared triangle: the face's patch kind (for colours). */
   triKind: Uint8Array;
+  /** Some face is not a quad (the evaluator's n-gon parametrisation is needed). */
+  hasNgons: boolean;
+  /** Some region takes phantom points (a boundary, an infinitely sharp edge or axis). */
+  hasPhantoms: boolean;
   /** Per cage face: region depth (quads) or depth inside its sub-faces + 1 (n-gons); -1 holes. */
   faceDepth: Int8Array;
   /** Per cage face: its first region (-1 holes); the face has 4^d regions (n·4^(d−1) for n-gons). */
@@ -216,7 +220,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const ft = fanTable(lv.level);
   const regions = buildRegions(topo, sharp, cls, lv, ft);
   const vertexFan = vertexLimits(prepared, topo, lv, ft, regions.patchIdx);
-  const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint } = packFans(ft.fans, lv.levels);
+  const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms } = packFans(ft.fans, lv.levels);
   const threadWords = packThreads(ft.fans, sliceFans);
   const { triRegion, poly, triKind } = triangleRegions(cage, prepared, nV0, regions);
   const { levels, rules, inputs, levelRanges } = lv;
@@ -255,6 +259,8 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     sectorRegionCount,
     levels: levels.length - 1,
     triKind,
+    hasNgons: poly.length > 0,
+    hasPhantoms: axisPhantoms || regionMasks(regionWords.view),
     faceDepth,
     faceRegion,
     regions: regionWords.view.slice(),
@@ -263,6 +269,12 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     cageVertexCount: nV0,
     gpuBytes: 4 * total + 12 * pointCount,
   };
+}
+
+/** Whether some region word has a phantom mask (a patch at a boundary or infinitely sharp edge). */
+function regionMasks(regions: Uint32Array): boolean {
+  for (let r = 0; r < regions.length; r += 2) if (CC_REGION_WORD.get(regions[r], 'mask') !== 0) return true;
+  return false;
 }
 
 /**

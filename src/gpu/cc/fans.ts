@@ -299,6 +299,8 @@ export interface PackedFans {
   sliceFans: number[];
   /** One past the last point (global index): the levels', the slices' and the limits'. */
   nextPoint: number;
+  /** Some fan has an infinitely sharp axis (its sub-patches take phantom points there). */
+  axisPhantoms: boolean;
 }
 
 /**
@@ -315,6 +317,7 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
     cosWords = new U32();
   const cosAt = new Map<number, number>();
   let maxDepth = 0;
+  let axisPhantoms = false;
   const sliceFans: number[] = [];
   fans.forEach((F, id) => {
     // Creases, corners, darts, boundaries: the radial blend's one exponent is a rougher model
@@ -347,8 +350,9 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
     fanWords.push(cosBase);
     for (const s of F.sectors) for (const w of s) sectorWords.push(w);
     if (F.D > 0) sliceFans.push(id);
+    if (F.D > 0 && F.sectors.some((q) => q[0] === 1)) axisPhantoms = true;
   });
-  return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint };
+  return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms };
 }
 
 /** The slice kernel's thread words: one thread per sector of each sliced fan. */

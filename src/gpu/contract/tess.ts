@@ -357,7 +357,6 @@ export const TESS_PARAMS = defineStruct('Params', [
   ['nFans', 'u32'],
   ['ccSliceGroups', 'u32'],
   ['ccMaxDepth', 'u32'],
-  ['ccFlat', 'u32', 'Blend from the flat triangle by tess factor (TessellatorOptions.flatBaseline).'],
   ['turnRefresh', 'u32', "1: the bulge pass recomputes each edge's turn term (work edgeTurn): the surface changed since."],
   // Displacement (src/gpu/tess/displacement-map.ts, wgsl/tess/displace.wgsl): h = (sample − dispMid)·dispScale
   // along the surface normal; the map is dispWidth × dispHeight texels of dispBits bits.

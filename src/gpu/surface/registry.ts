@@ -61,6 +61,10 @@ export interface SurfaceScheme {
   /** How the instanced tessellator's vertex stage evaluates it: its own cage buffer (evalSurface),
    * AccPatches' control points, or the buffers of a compute tessellator on the exact limit. */
   readonly instancedKind: InstancedSurfaceKind;
+  /** The values of its evaluator's override constants for this data: which of the surface's cases
+   * the cage has, so that the passes that evaluate it are compiled without the others (the
+   * tessellator makes them per mesh: src/gpu/tess/pipelines.ts). {} for the general evaluator. */
+  specialise(data: SurfaceData): Record<string, number>;
   /** Whether the data has what this surface's evaluator reads. */
   hasData(data: SurfaceData): boolean;
   /** The tables or patches for a prepared cage. Throws, with the reason, on a cage the surface
@@ -79,6 +83,7 @@ const phong: SurfaceScheme = {
   readsWork: false,
   flatBaseline: false,
   instancedKind: 'evalSurface',
+  specialise: () => ({}),
   hasData: () => true,
   prepare: () => ({}),
 };
@@ -93,6 +98,10 @@ const catmullClark: SurfaceScheme = {
   readsWork: true,
   flatBaseline: true,
   instancedKind: 'lent-limit',
+  // wgsl/cc/surface.wgsl: n-gons (their kite parametrisation), single-crease patches (their
+  // basis), phantom points (boundaries and infinitely sharp edges).
+  specialise: ({ cc }): Record<string, number> =>
+    cc ? { CC_NGONS: +cc.hasNgons, CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0), CC_PHANTOMS: +cc.hasPhantoms } : {},
   hasData: (data) => data.cc !== undefined,
   prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),
 };
@@ -110,6 +119,7 @@ function accScheme(scheme: AccScheme): SurfaceScheme {
     readsWork: false,
     flatBaseline: false,
     instancedKind: 'acc',
+    specialise: () => ({}),
     hasData: (data) => data.acc?.patches.scheme === scheme,
     prepare: (device, cage, mesh) => ({ acc: prepareAccSurface(device, cage, mesh, scheme) }),
   };

@@ -34,7 +34,6 @@ export type PassName =
   | 'scanDown'
   | 'plan'
   | 'emitVertices'
-  | 'emitVerticesDisplaced'
   | 'emitTriangles'
   | 'ccPoints'
   | 'ccSlices'
@@ -51,9 +50,9 @@ export interface PassSpec {
   group: 'tess' | 'ccBuild';
   /** Values of the code's override constants for this pipeline (a specialisation of the code). */
   constants?: Record<string, number>;
-  /** Made when first needed, on the bind group layout of the pass named (same code and bindings),
-   * so that the bind groups made for that pass serve it too. */
-  variantOf?: PassName;
+  /** It evaluates the surface, so its pipeline takes the override values that say what a mesh's
+   * surface has (SurfaceScheme.specialise): made once a mesh is set, not with the others. */
+  specialised?: boolean;
 }
 
 /** The passes of a tessellator over `surface`, with their code: what the constructor builds, and
@@ -86,17 +85,13 @@ export function tessellatorPasses(surface: Surface): PassSpec[] {
     ...more,
   });
   const passes = [
-    pass('bulge', 'tess bulge', 'factors', 'bulge'),
-    pass('count', 'tess factors + count', 'factors'),
+    pass('bulge', 'tess bulge', 'factors', 'bulge', { specialised: true }),
+    pass('count', 'tess factors + count', 'factors', 'main', { specialised: true }),
     pass('scanReduce', 'tess scan reduce', 'scan', 'scanReduce'),
     pass('scanDown', 'tess budget + scan down', 'scan', 'scanDown'),
     pass('plan', 'tess plan', 'plan'),
-    // The vertices with the displacement compiled out, and with it (wgsl/tess/outputs.wgsl DISPLACED).
-    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices', { constants: { DISPLACED: 0 } }),
-    pass('emitVerticesDisplaced', 'tess emit displaced vertices', 'emit', 'vertices', {
-      constants: { DISPLACED: 1 },
-      variantOf: 'emitVertices',
-    }),
+    // The vertices, with the displacement compiled out unless a mesh has it on (wgsl/tess/outputs.wgsl DISPLACED).
+    pass('emitVertices', 'tess emit vertices', 'emit', 'vertices', { constants: { DISPLACED: 0 }, specialised: true }),
     pass('emitTriangles', 'tess emit triangles', 'emit', 'triangles'),
   ];
   // The Catmull-Clark patch build is the tessellator's own (into its work arena); AccPatches

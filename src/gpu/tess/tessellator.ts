@@ -46,7 +46,7 @@ import type { AccSurface } from '../acc/surface.ts';
 import type { DisplacementData, DisplacementSettings } from './displacement-map.ts';
 import type { PassName, Surface } from './passes.ts';
 import { surfaceScheme } from '../surface/registry.ts';
-import { createTessPipelines, type Pipeline, type TessPipelines, variantPipeline } from './pipelines.ts';
+import { createTessPipelines, type Pipeline, type TessPipelines } from './pipelines.ts';
 import { type CageName, meshParams, type PackInput, packArenas, type WorkName } from './arenas.ts';
 import { PassTimer } from '../device/pass-timer.ts';
 import type { ArenaLayout } from '../contract/define.ts';
@@ -79,6 +79,9 @@ export interface TessellatorOptions {
   /** Catmull-Clark: blend from the flat triangle (corner limit positions) to the surface as the
    * tess factor rises from 1 to 4, so nothing pops (default true; off for exact checks). */
   flatBaseline?: boolean;
+  /** Compile the passes that evaluate the surface for what each mesh has (SurfaceScheme.specialise;
+   * default true); false: the general evaluator, which the specialised ones must equal. */
+  specialise?: boolean;
   /** The pipelines, made before for this device and surface (pipelines.ts createTessPipelinesAsync);
    * made now when absent. */
   pipelines?: TessPipelines;
@@ -107,6 +110,9 @@ interface MeshState {
    * of their control points at cageLayout's accPoints). */
   acc?: AccSurface;
   uniforms: GPUBuffer[];
+  /** The surface's override values for this mesh (SurfaceScheme.specialise): what the passes
+   * that evaluate it run with. */
+  constants: Record<string, number>;
 }
 
 export class Tessellator {
@@ -115,6 +121,7 @@ export class Tessellator {
   readonly surface: Surface;
   /** Catmull-Clark flat-baseline blend by tess factor (see TessellatorOptions.flatBaseline). */
   flatBaseline: boolean;
+  private readonly specialise: boolean;
   private readonly params: GPUBuffer;
   private readonly paramsBytes: ArrayBuffer;
   /** Indirect dispatch arguments of the emit passes, written with the budget's choice (wgsl/tess/scan.wgsl scanDown). */
@@ -141,6 +148,7 @@ export class Tessellator {
     this.maxFactor = new PatternTables(tables).maxFactor;
     this.surface = opts.surface ?? 'phong';
     this.flatBaseline = opts.flatBaseline ?? true;
+    this.specialise = opts.specialise ?? true;
     const cap = outputCapacity(device.limits, opts);
     const buffer = (label: string, size: number, usage: number) => device.createBuffer({ label, size: Math.max(16, size), usage });
     const S = GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST;
@@ -205,6 +213,21 @@ export class Tessellator {
     this.releaseMesh();
     this.mesh = this.bind(prepared, ccData, packed, accData);
     this.turnStale = true;
+    // The passes that evaluate the surface, compiled now for this mesh (not at its first frame).
+    for (const name of Object.keys(this.pipelines) as PassName[]) if (this.pipelines[name]!.specialised) this.pipelineOf(name, this.mesh);
+  }
+
+  /** A pass's pipeline for the mesh: the surface's override values where the pass evaluates it,
+   * the flat baseline and the displacement compiled in only when they are on (the surface's
+   * FLAT_BASELINE, wgsl/tess/outputs.wgsl DISPLACED); every
+   * variant binds with its pass's layout, so the mesh's bind group serves it. */
+  private pipelineOf(name: PassName, m: MeshState): GPUComputePipeline {
+    const p = this.pipelines[name]!;
+    if (!p.specialised) return p.pipeline();
+    const constants: Record<string, number> = { ...m.constants };
+    if (surfaceScheme(this.surface).flatBaseline) constants.FLAT_BASELINE = +this.flatBaseline;
+    if (name === 'emitVertices') constants.DISPLACED = +this.displaced;
+    return p.pipeline(constants);
   }
 
   /** The three arenas' contents, their layouts, and the Params that say where their arrays lie
@@ -292,7 +315,7 @@ export class Tessellator {
       const p = this.pipelines[name]!;
       const byName: Record<string, GPUBuffer> = { ...resources, ...extra };
       return device.createBindGroup({
-        label: p.pipeline.label,
+        label: p.label,
         layout: p.layout,
         entries: p.bindings.map((n) => ({ binding: p.binding[n], resource: { buffer: byName[n] } })),
       });
@@ -318,6 +341,7 @@ export class Tessellator {
       ccRanges,
       uniforms,
       acc,
+      constants: this.specialise ? surfaceScheme(this.surface).specialise({ cc, acc }) : {},
     };
   }
 
@@ -413,7 +437,6 @@ export class Tessellator {
       lodScale: p.lodScale,
       pixelAngle: p.fovY / Math.max(1, p.viewportHeight),
       eye: [p.eye[0], p.eye[1], p.eye[2], 0],
-      ccFlat: this.flatBaseline ? 1 : 0,
       turnRefresh: this.turnStale && p.mode === 'adaptive' ? 1 : 0,
     });
     if (p.mode === 'adaptive') this.turnStale = false;
@@ -427,7 +450,7 @@ export class Tessellator {
     const pass = (label: string, stage: string) => this.timer?.beginPass(encoder, label, stage) ?? encoder.beginComputePass({ label });
     const { edgeCount: nE, triangleCount: nT } = m.prepared;
     const run = (cp: GPUComputePassEncoder, name: PassName, groups: [number, number]) => {
-      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.setPipeline(this.pipelineOf(name, m));
       cp.setBindGroup(0, m.groups[name]!);
       cp.dispatchWorkgroups(...groups);
     };
@@ -463,15 +486,10 @@ export class Tessellator {
       // vertices: an indirect dispatch sized by the budget), then every output triangle (a
       // workgroup per cage triangle).
       const cp = pass('tess emit', 'tessellate');
-      // Displacement compiled in only when it is on (wgsl/tess/outputs.wgsl DISPLACED); both bind
-      // with the same layout, so the same group.
-      const vertices = this.displaced
-        ? variantPipeline(this.device, this.pipelineSet, 'emitVerticesDisplaced')
-        : this.pipelines.emitVertices!;
-      cp.setPipeline(vertices.pipeline);
+      cp.setPipeline(this.pipelineOf('emitVertices', m));
       cp.setBindGroup(0, m.groups.emitVertices!);
       cp.dispatchWorkgroupsIndirect(this.emitArgs, 0);
-      cp.setPipeline(this.pipelines.emitTriangles!.pipeline);
+      cp.setPipeline(this.pipelineOf('emitTriangles', m));
       cp.setBindGroup(0, m.groups.emitTriangles!);
       cp.dispatchWorkgroups(...grid2d(nT));
       cp.end();
@@ -491,7 +509,7 @@ export class Tessellator {
 
   private recordPatchBuild(cp: GPUComputePassEncoder, m: MeshState): void {
     const cc = m.cc!;
-    cp.setPipeline(this.pipelines.ccPoints!.pipeline);
+    cp.setPipeline(this.pipelineOf('ccPoints', m));
     for (const r of m.ccRanges) {
       if (!r.count) continue;
       cp.setBindGroup(0, r.group);
@@ -499,7 +517,7 @@ export class Tessellator {
     }
     const run = (name: PassName, groups: [number, number]) => {
       cp.setBindGroup(0, m.groups[name]!);
-      cp.setPipeline(this.pipelines[name]!.pipeline);
+      cp.setPipeline(this.pipelineOf(name, m));
       cp.dispatchWorkgroups(...groups);
     };
     if (cc.sliceWorkgroups) run('ccSlices', grid2d(cc.sliceWorkgroups));

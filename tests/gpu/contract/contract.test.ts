@@ -830,7 +830,6 @@ describe("the tessellator's contract", () => {
     plan: [0, 1, 3],
     // (the weld's corners and edges, in emit's vertices since)
     emitVertices: [0, 1, 2, 3, 4, 5, 6, 7],
-    emitVerticesDisplaced: [0, 1, 2, 3, 4, 5, 6, 7], // the same code, displacement compiled in
     emitTriangles: [0, 1, 3, 8],
     ccPoints: [0, 1, 2, 3],
     ccSlices: [0, 1, 2],
@@ -839,7 +838,7 @@ describe("the tessellator's contract", () => {
   for (const surface of ['phong', 'catmull-clark'] as const) {
     it(`${surface}: each pass binds what its entry point uses, as the hand table did, from the contract's group`, () => {
       const passes = tessellatorPasses(surface);
-      expect(passes.length).toBe(surface === 'phong' ? 8 : 11);
+      expect(passes.length).toBe(surface === 'phong' ? 7 : 10);
       for (const pass of passes) {
         const { names, entries } = passBindings(pass);
         expect(

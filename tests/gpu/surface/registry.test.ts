@@ -14,6 +14,9 @@ import {
   type SurfaceId,
 } from '../../../src/gpu/surface/registry.ts';
 import { tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
+import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
+import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
+import { buildTopology, computeSharpness, DEFAULT_OPTIONS, loadCage, SHARPNESS_INFINITE } from '../../../src/mesh/index.ts';
 
 const ROOT = new URL('../../../', import.meta.url).pathname;
 
@@ -77,6 +80,32 @@ describe('the surface registry', () => {
     expect(isSurfaceId('loop')).toBe(false);
     expect(isSurfaceId('pm-acc')).toBe(true);
     expect(() => surfaceScheme('loop' as SurfaceId)).toThrow(/unknown surface 'loop' \(one of catmull-clark, phong/);
+  });
+});
+
+describe("the exact surface's specialisation says what each cage has", () => {
+  // Each value is 1 exactly when the cage has what its code is for (wgsl/cc/surface.wgsl), found
+  // here from the cage rather than from the build's tables: a face that is not a quad; a boundary
+  // or an infinitely sharp edge (phantom points); a single-crease patch (the build's own count:
+  // which creases qualify is the build's decision, tests/gpu/cc/single-crease*.test.ts).
+  const dir = join(ROOT, 'public/models');
+  for (const file of readdirSync(dir).filter((f) => f.endsWith('.obj'))) {
+    it(file, () => {
+      const cage = loadCage(readFileSync(join(dir, file), 'utf8')).cage;
+      const cc = buildCatmullClark(cage, prepareMesh(cage));
+      const topo = buildTopology(cage);
+      const sharp = computeSharpness(cage, topo, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
+      const ngons = cage.faceOffsets.some((o, f) => f > 0 && o - cage.faceOffsets[f - 1] !== 4);
+      const phantoms = topo.vertBoundary.some((b) => b === 1) || sharp.edge.some((s) => s >= SHARPNESS_INFINITE);
+      expect(surfaceScheme('catmull-clark').specialise({ cc })).toEqual({
+        CC_NGONS: +ngons,
+        CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0),
+        CC_PHANTOMS: +phantoms,
+      });
+    });
+  }
+  it('the other surfaces have none', () => {
+    for (const s of SURFACE_SCHEMES) if (!s.exactLimit) expect(s.specialise({})).toEqual({});
   });
 });
 
