@@ -159,7 +159,8 @@ test('a cage the Catmull-Clark preparation refuses falls back to Phong with a me
   const errors = collectErrors(page);
   await page.goto('/?model=torus&t=0');
   await ready(page);
-  // Chaikin creasing is refused by the GPU path's preparation (src/gpu/cc/build.ts).
+  // A semi-sharp crease of sharpness 8 that ends at the cube's corners needs 8 uniform levels:
+  // refused by the GPU path's preparation (src/gpu/cc/levels.ts MAX_LEVEL).
   const cube = [
     'v -1 -1 -1',
     'v 1 -1 -1',
@@ -175,16 +176,17 @@ test('a cage the Catmull-Clark preparation refuses falls back to Phong with a me
     'f 2 3 7 6',
     'f 3 4 8 7',
     'f 4 1 5 8',
-    't creasemethod 0/0/1 chaikin',
-    't crease 2/1/0 4 5 2.5',
+    't crease 2/1/0 4 5 8',
   ].join('\n');
-  await dropFile(page, 'chaikin-cube.obj', `${cube}\n`);
-  const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for chaikin-cube.obj' });
-  await expect(toast).toContainText('Chaikin creasing is not supported');
+  await dropFile(page, 'sharp-cube.obj', `${cube}\n`);
+  const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for sharp-cube.obj' });
+  await expect(toast).toContainText('needs more than 6 levels of refinement');
   await expect(toast).toContainText('Showing the Phong surface instead');
-  await expect(page.getByTestId('stats-cage')).toContainText('chaikin-cube.obj');
+  await expect(page.getByTestId('stats-cage')).toContainText('sharp-cube.obj');
   await expect(page.getByTestId('stats-surface')).toContainText('Phong');
-  await expect(page.getByTestId('stats-surface')).toContainText('Catmull-Clark unavailable: Chaikin creasing is not supported');
+  await expect(page.getByTestId('stats-surface')).toContainText(
+    'Catmull-Clark unavailable: Catmull-Clark: a face needs more than 6 levels',
+  );
   await expect(page.getByTestId('stats-output')).toContainText('tris');
   expect(errors).toEqual([]);
 });

@@ -326,6 +326,50 @@ export function computeSharpness(cage: Cage, topo: Topology, options: SubdivOpti
   return { edge, vertex, hole };
 }
 
+export const isInf = (s: number): boolean => s >= SHARPNESS_INFINITE;
+export const isSemi = (s: number): boolean => s > 0 && s < SHARPNESS_INFINITE;
+
+/** OpenSubdiv's decrementSharpness (f32). */
+export function decSharp(s: number): number {
+  if (!(s > 0)) return 0;
+  if (s >= SHARPNESS_INFINITE) return SHARPNESS_INFINITE;
+  if (s > 1) return Math.fround(s - 1);
+  return 0;
+}
+
+/**
+ * Child sharpness of every edge incident to v, at v (uniform or Chaikin: OpenSubdiv's Sdc
+ * Crease::SubdivideEdgeSharpnessesAroundVertex). `parent` holds the edges' sharpness in the
+ * vertex's edge order; under Chaikin a semi-sharp edge's child averages it with the other
+ * semi-sharp edges at v (3/4 and 1/4) before the decrement.
+ */
+export function childEdgeSharpAtVertex(parent: number[], chaikin: boolean, out: number[]): void {
+  out.length = parent.length;
+  if (!chaikin || parent.length < 2) {
+    for (let i = 0; i < parent.length; i++) out[i] = decSharp(parent[i]);
+    return;
+  }
+  let sum = 0,
+    count = 0;
+  for (const s of parent)
+    if (isSemi(s)) {
+      count++;
+      sum = Math.fround(sum + s);
+    }
+  for (let i = 0; i < parent.length; i++) {
+    const p = parent[i];
+    if (count === 0) out[i] = p;
+    else if (!(p > 0)) out[i] = 0;
+    else if (isInf(p)) out[i] = SHARPNESS_INFINITE;
+    else if (count === 1) out[i] = decSharp(p);
+    else {
+      const avg = Math.fround(Math.fround(sum - p) / (count - 1));
+      const c = Math.fround(Math.fround(Math.fround(0.75 * p) + Math.fround(0.25 * avg)) - 1);
+      out[i] = Math.max(c, 0);
+    }
+  }
+}
+
 /** Is vertex v a regular corner of a B-spline patch (OpenSubdiv's isRegular test)? */
 export function isRegularVertex(
   m: HalfEdges,

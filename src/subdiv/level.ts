@@ -7,11 +7,14 @@ import {
   type SubdivOptions,
   type Topology,
   DEFAULT_OPTIONS,
-  SHARPNESS_INFINITE,
   buildHalfEdges,
   buildTopology,
+  childEdgeSharpAtVertex,
   computeSharpness,
+  decSharp,
 } from '../mesh/index.ts';
+
+export { decSharp, isInf, isSemi } from '../mesh/index.ts';
 
 export interface Level {
   he: HalfEdges;
@@ -29,17 +32,6 @@ export interface Level {
   faceCorner?: Int32Array;
 }
 
-export const isInf = (s: number): boolean => s >= SHARPNESS_INFINITE;
-export const isSemi = (s: number): boolean => s > 0 && s < SHARPNESS_INFINITE;
-
-/** OpenSubdiv's decrementSharpness (f32). */
-export function decSharp(s: number): number {
-  if (!(s > 0)) return 0;
-  if (s >= SHARPNESS_INFINITE) return SHARPNESS_INFINITE;
-  if (s > 1) return Math.fround(s - 1);
-  return 0;
-}
-
 /** Level 0 of a validated cage, with boundary sharpening applied. */
 export function levelFromCage(cage: Cage, topo?: Topology, options: SubdivOptions = DEFAULT_OPTIONS): Level {
   const t = topo ?? buildTopology(cage);
@@ -48,34 +40,6 @@ export function levelFromCage(cage: Cage, topo?: Topology, options: SubdivOption
 }
 
 const F = Math.fround;
-
-/** Child sharpness of every edge incident to v, at v (uniform or Chaikin). */
-function childEdgeSharpAtVertex(parent: number[], chaikin: boolean, out: number[]): void {
-  out.length = parent.length;
-  if (!chaikin || parent.length < 2) {
-    for (let i = 0; i < parent.length; i++) out[i] = decSharp(parent[i]);
-    return;
-  }
-  let sum = 0,
-    count = 0;
-  for (const s of parent)
-    if (isSemi(s)) {
-      count++;
-      sum = F(sum + s);
-    }
-  for (let i = 0; i < parent.length; i++) {
-    const p = parent[i];
-    if (count === 0) out[i] = p;
-    else if (!(p > 0)) out[i] = 0;
-    else if (isInf(p)) out[i] = SHARPNESS_INFINITE;
-    else if (count === 1) out[i] = decSharp(p);
-    else {
-      const avg = F(F(sum - p) / (count - 1));
-      const c = F(F(F(0.75 * p) + F(0.25 * avg)) - 1);
-      out[i] = Math.max(c, 0);
-    }
-  }
-}
 
 const enum Rule {
   Smooth = 1,

@@ -53,7 +53,9 @@
  * a boundary, meets another crease or a corner, or runs into an extraordinary vertex) its
  * sharpness still decays by UNIFORM levels of the whole cage, ceil(σ) of them (sharpness ≥ 7
  * needs more than MAX_LEVEL = 6 and is refused with a message, as are vertices of valence > 64,
- * more than a workgroup, and Chaikin creasing). catmark_pawn's crease loops are all single-crease
+ * more than a workgroup). Chaikin's creasing rule (a crease's child sharpness averaged with its
+ * neighbours') decays in the levels as OpenSubdiv does, without the single-crease closed form.
+ * catmark_pawn's crease loops are all single-crease
  * (1 level, ~0.5 KB per face), but catmark_bishop and _car have σ ≈ 5 creases through valence-5
  * vertices and still take 6 levels (hundreds of KB per face), and the project's creased-box's
  * creases all end at the cube's corners (3 levels). The rest of the issue's design is what fixes
@@ -210,13 +212,12 @@ function refuseWideVertices(topo: Topology): void {
  */
 export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: CatmullClarkOptions = {}): CatmullClarkData {
   const options: SubdivOptions = opts.subdiv ?? { ...DEFAULT_OPTIONS, ...cage.fileOptions };
-  if (options.creasing === 'chaikin') throw new LimitError('Chaikin creasing is not supported by the GPU path');
   const topo = buildTopology(cage);
   const sharp = computeSharpness(cage, topo, options);
   const cls = classify(topo, sharp);
   refuseWideVertices(topo);
   const nV0 = topo.nVerts;
-  const lv = levelStack(topo, sharp);
+  const lv = levelStack(topo, sharp, options.creasing === 'chaikin');
   const ft = fanTable(lv.level);
   const regions = buildRegions(topo, sharp, cls, lv, ft);
   const vertexFan = vertexLimits(prepared, topo, lv, ft, regions.patchIdx);

@@ -5,7 +5,14 @@
  * from these rules (wgsl/cc/build.wgsl).
  */
 import { LimitError } from '../../mesh/errors.ts';
-import { type HalfEdges, type Sharpness, SHARPNESS_INFINITE, isRegularVertex, vertexAdjacency } from '../../mesh/index.ts';
+import {
+  type HalfEdges,
+  type Sharpness,
+  SHARPNESS_INFINITE,
+  childEdgeSharpAtVertex,
+  isRegularVertex,
+  vertexAdjacency,
+} from '../../mesh/index.ts';
 import { CC_PAIR_WORD, CC_RULE_WORD } from './words.ts';
 import { U32, f32bits } from './word-list.ts';
 
@@ -28,12 +35,21 @@ export interface Level {
   base: number;
   regular: Int8Array; // -1 unknown
   eligible: Int8Array; // -1 unknown
+  /** Chaikin's creasing rule (refineLevel): its sharpness decays by each edge's neighbours too. */
+  chaikin: boolean;
 }
 
 const dec = (s: number): number => (s <= 1 ? 0 : s >= SHARPNESS_INFINITE ? SHARPNESS_INFINITE : Math.fround(s - 1));
 const INF = SHARPNESS_INFINITE;
 
-function makeLevel(he: HalfEdges, edgeSharp: Float64Array, vertSharp: Float64Array, hole: Uint8Array, base: number): Level {
+function makeLevel(
+  he: HalfEdges,
+  edgeSharp: Float64Array,
+  vertSharp: Float64Array,
+  hole: Uint8Array,
+  base: number,
+  chaikin: boolean,
+): Level {
   const boundary = new Uint8Array(he.nVerts);
   for (let e = 0; e < he.nEdges; e++)
     if (he.edgeFaceCount[e] === 1) {
@@ -49,6 +65,7 @@ function makeLevel(he: HalfEdges, edgeSharp: Float64Array, vertSharp: Float64Arr
     base,
     regular: new Int8Array(he.nVerts).fill(-1),
     eligible: new Int8Array(he.nVerts).fill(-1),
+    chaikin,
   };
 }
 
@@ -57,8 +74,13 @@ export function vertexRuleOf(nSharp: number, vs: number): number {
   return nSharp === 2 ? VRULE_CREASE : VRULE_SMOOTH; // 0: smooth, 1: dart (smooth mask)
 }
 
-/** Refine level L's topology once: the rules of level L+1's points, and level L+1. */
-function refineLevel(L: Level, rules: U32, inputs: U32): Level {
+/**
+ * Refine level L's topology once: the rules of level L+1's points, and level L+1. Each new edge
+ * (v, E(e)) takes the sharpness of e's child at v: e's less one (uniform creasing), or under
+ * Chaikin's rule (`chaikin`) also averaged with the other semi-sharp edges at v
+ * (childEdgeSharpAtVertex), so the two halves of an edge may differ.
+ */
+function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level {
   const m = L.he;
   const nV = m.nVerts,
     nE = m.nEdges,
@@ -66,6 +88,10 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
   const base1 = L.base + nV;
   const fBase = base1 + nV + nE,
     vBase = L.base;
+  // The child sharpness of each edge at each of its ends, in the vertices' edge order (vertEdges).
+  const childAt = new Float64Array(m.vertEdges.length);
+  const ps: number[] = [],
+    cs: number[] = [];
   // Vertex points.
   for (let v = 0; v < nV; v++) {
     const e0 = m.vertEdgeOffsets[v],
@@ -87,21 +113,28 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       tSum = Math.fround(vs);
       tCount = 1;
     }
+    ps.length = 0;
+    for (let k = e0; k < e1; k++) ps.push(L.edgeSharp[m.vertEdges[k]]);
+    childEdgeSharpAtVertex(ps, chaikin, cs);
     for (let k = e0; k < e1; k++) {
       const e = m.vertEdges[k];
       inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
-      const s = L.edgeSharp[e];
+      const s = ps[k - e0],
+        c = cs[k - e0];
+      childAt[k] = c;
       if (s > 0) {
         if (nSharp === 0) ia = k - e0;
         else if (nSharp === 1) ib = k - e0;
         nSharp++;
       }
-      if (dec(s) > 0) {
+      if (c > 0) {
         if (nSharpChild === 0) ca = k - e0;
         else if (nSharpChild === 1) cb = k - e0;
         nSharpChild++;
       }
-      if (s > 0 && dec(s) === 0) {
+      // The edges whose sharpness ends at this step, for the transition's weight (OpenSubdiv's
+      // fractional weight: under Chaikin, the semi-sharp edges whose child at v is smooth).
+      if (s > 0 && !(c > 0)) {
         tSum = Math.fround(tSum + s);
         tCount++;
       }
@@ -181,11 +214,14 @@ function refineLevel(L: Level, rules: U32, inputs: U32): Level {
       b = he.edgeVerts[2 * e + 1];
     const lo = Math.min(a, b),
       hi = Math.max(a, b);
-    if (lo < nV && hi >= nV && hi < nV + nE) edgeSharp[e] = dec(L.edgeSharp[hi - nV]);
+    if (lo < nV && hi >= nV && hi < nV + nE) {
+      const parent = hi - nV;
+      for (let k = m.vertEdgeOffsets[lo]; k < m.vertEdgeOffsets[lo + 1]; k++) if (m.vertEdges[k] === parent) edgeSharp[e] = childAt[k];
+    }
   }
   const vertSharp = new Float64Array(nV1);
   for (let v = 0; v < nV; v++) vertSharp[v] = dec(L.vertSharp[v]);
-  return makeLevel(he, edgeSharp, vertSharp, hole, base1);
+  return makeLevel(he, edgeSharp, vertSharp, hole, base1, chaikin);
 }
 
 /**
@@ -282,8 +318,8 @@ export interface LevelStack {
 }
 
 /** Level 0 (the cage) and the means to refine further; refuses levels past MAX_LEVEL with the cage's sharpest crease. */
-export function levelStack(topo: HalfEdges, sharp: Sharpness): LevelStack {
-  const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0)];
+export function levelStack(topo: HalfEdges, sharp: Sharpness, chaikin = false): LevelStack {
+  const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0, chaikin)];
   const rules = new U32(),
     inputs = new U32();
   const levelRanges: [number, number, number, number][] = [];
@@ -301,7 +337,7 @@ export function levelStack(topo: HalfEdges, sharp: Sharpness): LevelStack {
       );
     while (levels.length <= l) {
       const L = levels[levels.length - 1];
-      const N = refineLevel(L, rules, inputs);
+      const N = refineLevel(L, rules, inputs, chaikin);
       const nV = L.he.nVerts,
         nE = L.he.nEdges,
         nF = L.he.nFaces;

@@ -35,8 +35,13 @@ const turnHe = (m: HalfEdges, h: number): number => m.heTwin[m.hePrev[h]];
  * 4 corners and of the edges at them reach the sub-patches, and they stay of this kind as σ
  * decays. Returns the corner to start the patch's frame at (B: the crease AB becomes the frame's
  * x = 0 side, grid column 1) and σ; null if g is not such a face.
+ *
+ * Not under Chaikin's rule: there an edge's child is averaged with the semi-sharp edges at its
+ * ends, so the crease's sharpness inside the patch's support depends on edges beyond it (the
+ * crease's continuation past A' and B') and no longer decays as σ − 1 a level. Such faces refine.
  */
 export function singleCrease(L: Level, g: number): { start: number; sigma: number } | null {
+  if (L.chaikin) return null;
   const m = L.he;
   const a0 = m.faceOffsets[g];
   if (m.faceOffsets[g + 1] - a0 !== 4) return null;
@@ -73,9 +78,10 @@ export function singleCrease(L: Level, g: number): { start: number; sigma: numbe
  * the corner of the single-crease patches round it, in closed form (wgsl/cc/build.wgsl
  * vertexLimit). Its 3×3 neighbourhood at 3a + b (global indices), a across the crease, b along it,
  * oriented as the faces (a toward the first ring neighbour, b toward the next: cross(∂a, ∂b) is
- * the surface normal); null if v is not such a vertex.
+ * the surface normal); null if v is not such a vertex (and under Chaikin's rule, as singleCrease).
  */
 export function creaseVertexGrid(L: Level, v: number): { idx: number[]; sigma: number } | null {
+  if (L.chaikin) return null;
   const m = L.he;
   if (!plainValence4(L, v)) return null;
   let h = m.vertHe[m.vertHeOffsets[v]];

@@ -24,6 +24,26 @@ const DIR = '../shared/cages';
 const TALK = new Set(['suzanne', 'bigguy', 'monsterfrog', 'imrod']); // tests/gpu/cc/talk-models.node.test.ts
 const MAX_BOUND = 1e-6;
 const SAMPLE = 400;
+/** The cages refused today, and why (issue 31): non-manifold cages and faces that repeat a vertex
+ * at load; sharpness beyond the
+ * build's uniform levels; a vertex of more faces than a workgroup has threads. Any other refusal
+ * fails, and so does taking one of these without this list following. */
+const REFUSED: Record<string, RegExp> = {
+  catmark_fan: /non-manifold/,
+  catmark_gregory_test4: /non-manifold/,
+  catmark_nonman_edge100: /non-manifold/,
+  catmark_nonman_edges: /appears more than once/,
+  catmark_nonman_quadpole8: /appears more than once/,
+  catmark_nonman_quadpole64: /appears more than once/,
+  catmark_nonman_quadpole360: /appears more than once/,
+  catmark_nonman_verts: /non-manifold/,
+  catmark_val2_nonman: /non-manifold/,
+  catmark_gregory_test7: /levels of refinement/,
+  catmark_helmet: /levels of refinement/,
+  catmark_hole_test2: /levels of refinement/,
+  catmark_rook: /levels of refinement/,
+  catmark_pole360: /faces round it|valence/,
+};
 
 let tess: Tessellator | undefined;
 afterAll(() => {
@@ -56,7 +76,9 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
       try {
         loaded = loadCage(readFileSync(`${DIR}/${name}.obj`, 'utf8'));
       } catch (e) {
-        rows.push(`${name}: cage refused (${(e as Error).message.split('\n')[0]})`);
+        const msg = (e as Error).message;
+        rows.push(`${name}: cage refused (${msg.split('\n')[0]})`);
+        if (!REFUSED[name]?.test(msg)) failures.push(`${name}: refused at load (${msg.split('\n')[0]})`);
         continue;
       }
       const cage = loaded.cage;
@@ -67,11 +89,13 @@ describe.skipIf(!present)("Catmull-Clark GPU path on OpenSubdiv's regression cag
       } catch (e) {
         const msg = (e as Error).message;
         rows.push(`${name}: refused (${msg})`);
+        if (!REFUSED[name]?.test(msg)) failures.push(`${name}: refused (${msg})`);
         // A refusal must say what is unsupported or which limit the cage passes (a LimitError,
         // in the user's terms), never be an internal error.
         if (!(e instanceof LimitError) && !/not supported|unsupported/i.test(msg)) failures.push(`${name}: ${msg}`);
         continue;
       }
+      if (name in REFUSED) failures.push(`${name}: taken now; REFUSED must follow`);
       let out: MeshReadback;
       try {
         out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 3));

@@ -9,7 +9,9 @@ import { REGION_PATCH, REGION_SECTOR } from '../../../src/gpu/cc/regions.ts';
 import { TOTAL_DEPTH } from '../../../src/gpu/cc/fans.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { CC_FAN_WORD } from '../../../src/gpu/cc/words.ts';
-import type { Cage } from '../../../src/mesh/index.ts';
+import { type Cage, DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../../../src/mesh/index.ts';
+import { levelStack } from '../../../src/gpu/cc/levels.ts';
+import { levelFromCage, refine } from '../../../src/subdiv/level.ts';
 import { cube, tetra, triPrism, ringCrease, quadTorus } from '../../support/subdiv-fixtures.ts';
 
 function prep(cage: Cage): CatmullClarkData {
@@ -97,5 +99,55 @@ describe('Catmull-Clark preparation (topology only)', () => {
     expect(regionOf(cc, 0, 0, eps, eps).blended).toBe(true);
     expect(regionOf(cc, 0, 0, 4 * eps, eps).blended).toBe(false);
     expect(regionOf(cc, 0, 0, 0.3, 0.2)).toEqual({ blended: false, sector: true });
+  });
+});
+
+describe("the levels' sharpness under Chaikin's rule", () => {
+  // Creases of four sharpnesses meeting at cube corners: each child edge's sharpness depends on
+  // its neighbours at its end (src/mesh/topology.ts childEdgeSharpAtVertex), so the two halves
+  // of an edge differ. The GPU build's levels must carry what the CPU reference refines (which
+  // the CI's OpenSubdiv check holds to OpenSubdiv), edge for edge by its two end points.
+  const tags = {
+    creases: [
+      [0, 1, 3],
+      [1, 2, 1.5],
+      [2, 3, 4.2],
+      [4, 5, 2.5],
+      [1, 5, 0.7],
+    ] as [number, number, number][],
+  };
+  const byEnds = (he: { nEdges: number; edgeVerts: Int32Array }, sharp: Float64Array) => {
+    const out = new Map<string, number>();
+    for (let e = 0; e < he.nEdges; e++) {
+      const a = he.edgeVerts[2 * e],
+        b = he.edgeVerts[2 * e + 1];
+      out.set(`${Math.min(a, b)} ${Math.max(a, b)}`, sharp[e]);
+    }
+    return out;
+  };
+  for (const creasing of ['chaikin', 'uniform'] as const) {
+    it(`${creasing}: levels 1-3 have the CPU reference's edge and vertex sharpness`, () => {
+      const cage = cube(tags);
+      const options = { ...DEFAULT_OPTIONS, creasing };
+      const topo = buildTopology(cage);
+      const stack = levelStack(topo, computeSharpness(cage, topo, options), creasing === 'chaikin');
+      let ref = levelFromCage(cage, topo, options);
+      for (let l = 1; l <= 3; l++) {
+        ref = refine(ref);
+        const L = stack.level(l);
+        expect(byEnds(L.he, L.edgeSharp), `level ${l}`).toEqual(byEnds(ref.he, ref.edgeSharp));
+        expect(Array.from(L.vertSharp)).toEqual(Array.from(ref.vertSharp));
+      }
+    });
+  }
+  it('and the two rules differ on this cage (so the comparison above can fail)', () => {
+    const cage = cube(tags);
+    const topo = buildTopology(cage);
+    const level1 = (chaikin: boolean) => {
+      const sharp = computeSharpness(cage, topo, { ...DEFAULT_OPTIONS, creasing: chaikin ? 'chaikin' : 'uniform' });
+      const L = levelStack(topo, sharp, chaikin).level(1);
+      return byEnds(L.he, L.edgeSharp);
+    };
+    expect(level1(true)).not.toEqual(level1(false));
   });
 });
