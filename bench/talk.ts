@@ -58,6 +58,8 @@ const TALK_PER_PASS = {
 const CAGES = '../shared/cages';
 /** The fixed factor of table (d). */
 const PHONG_FACTOR = 16;
+/** Rounds of the exact-against-Phong table (d), each surface's fastest kept. */
+const AGAINST_PHONG_ROUNDS = 3;
 
 function option(argv: string[], name: string): string | undefined {
   const i = argv.indexOf(name);
@@ -109,12 +111,21 @@ export async function talkTables(argv: string[]): Promise<number> {
     );
     uniform.push(`| ${t.name} | ${t.edgeFriend.toFixed(2)} | ${talkRate.toFixed(2)} | ${t.dv21.toFixed(2)} | ${rate.toPrecision(3)} |`);
     console.log(compute[compute.length - 1]);
-    // (d): tessellation only (the exact surface's patch build is its own column above).
-    const exact16 = await timeRebuild(device, cc, mesh, { mode: 'fixed', fixedFactor: PHONG_FACTOR }, repeats, data);
-    const phong16 = await timeRebuild(device, phong, mesh, { mode: 'fixed', fixedFactor: PHONG_FACTOR }, repeats);
-    const exactTess = exact16.total - (exact16.stages.subdivision ?? 0);
+    // (d): tessellation only (the exact surface's patch build is its own column above). The two
+    // surfaces in turn, AGAINST_PHONG_ROUNDS times, each surface's fastest round: on SwiftShader a
+    // round's median moves by 5-8 % with the machine's other work, and in turn both see the same.
+    let exactTess = Infinity,
+      phongTess = Infinity,
+      tris = 0;
+    for (let round = 0; round < AGAINST_PHONG_ROUNDS; round++) {
+      const exact16 = await timeRebuild(device, cc, mesh, { mode: 'fixed', fixedFactor: PHONG_FACTOR }, repeats, data);
+      const phong16 = await timeRebuild(device, phong, mesh, { mode: 'fixed', fixedFactor: PHONG_FACTOR }, repeats);
+      exactTess = Math.min(exactTess, exact16.total - (exact16.stages.subdivision ?? 0));
+      phongTess = Math.min(phongTess, phong16.total);
+      tris = exact16.triangles;
+    }
     againstPhong.push(
-      `| ${t.name} | ${(exact16.triangles / 1e6).toFixed(2)} M | ${exactTess.toFixed(3)} | ${phong16.total.toFixed(3)} | ${(exactTess / phong16.total).toFixed(2)} |`,
+      `| ${t.name} | ${(tris / 1e6).toFixed(2)} M | ${exactTess.toFixed(3)} | ${phongTess.toFixed(3)} | ${(exactTess / phongTess).toFixed(2)} |`,
     );
     console.log(againstPhong[againstPhong.length - 1]);
     const talkPass = TALK_PER_PASS[t.name as keyof typeof TALK_PER_PASS];
@@ -188,7 +199,9 @@ ${uniform.join('\n')}
 
 Tessellation only (factors, counts, budget, plan, emit; not the exact surface's patch build),
 the same pipeline on both surfaces, measured in this run: the exact limit's evaluation is the
-difference (the throughput issue asks for at most 1.2 on bigguy).
+difference (the throughput issue asks for at most 1.2 on bigguy). The two in turn, ${AGAINST_PHONG_ROUNDS}
+rounds, each one's fastest (a round's median moves by 5-8 % on SwiftShader); the exact surface's
+passes compiled for the cage (no n-gon, crease or phantom code where it has none).
 
 | model | tris | exact Catmull-Clark ms | Phong ms | exact ÷ Phong |
 |---|---:|---:|---:|---:|
