@@ -1,7 +1,8 @@
 // Uniform bicubic B-spline patches: basis, 16-point gathering with boundary /
 // infinite-crease phantoms, closed-form evaluation.
 import { type HalfEdges, isRegularVertex, vertexRing } from '../mesh/index.ts';
-import { type Level, isInf } from './level.ts';
+import { isInf } from '../mesh/index.ts';
+import type { Level } from './level.ts';
 
 /** Cubic B-spline basis and derivative at t. */
 export function bsplineBasis(t: number, b: Float64Array | number[], d: Float64Array | number[]): void {

@@ -14,8 +14,6 @@ import {
   decSharp,
 } from '../mesh/index.ts';
 
-export { decSharp, isInf, isSemi } from '../mesh/index.ts';
-
 export interface Level {
   he: HalfEdges;
   /** xyz per vertex. */

@@ -2,7 +2,8 @@
 // semi-sharpness is refined away first, and where a mask is not exact (darts,
 // interior valence 2) the vertex's ring is refined until the mask converges.
 import { type HalfEdges, vertexRing } from '../mesh/index.ts';
-import { type Level, extractFaces, isInf, isSemi, refine, vertexFaces } from './level.ts';
+import { isInf, isSemi } from '../mesh/index.ts';
+import { type Level, extractFaces, refine, vertexFaces } from './level.ts';
 
 export interface VertexLimit {
   /** Limit position. */

@@ -12,16 +12,15 @@
 //          vertex's limit to the exact ring round it.
 // Optionally (FLAT_BASELINE) blends from the flat triangle of the corners' limit positions to
 // the surface as the tess factor rises from 1 to 4.
-
 //
 // What a cage's surface has, as override constants (SurfaceScheme.specialise,
 // src/gpu/surface/registry.ts): a pipeline made for a cage of quads alone carries no n-gon
 // parametrisation, one without single-crease patches no crease basis, one without boundaries or
 // infinitely sharp edges no phantom points; FLAT_BASELINE is the compute tessellator's
 // flatBaseline option (off by default: the exact limit, as the instanced tessellator and the
-// error views take this code). Not a uniform: a shader
-// pays for the code it carries as well as for the code it runs (registers, occupancy; on a
-// software GPU the compiled size is most of the cost). The case defaults take every cage.
+// error views take this code). Not a uniform: a shader pays for the code it carries as well as
+// for the code it runs (registers, occupancy; on a software GPU the compiled size is most of the
+// cost). The case defaults take every cage.
 override CC_NGONS: bool = true;
 override CC_CREASE_PATCHES: bool = true;
 override CC_PHANTOMS: bool = true;

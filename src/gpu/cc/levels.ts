@@ -10,6 +10,7 @@ import {
   type Sharpness,
   SHARPNESS_INFINITE,
   childEdgeSharpAtVertex,
+  decSharp,
   isRegularVertex,
   vertexAdjacency,
 } from '../../mesh/index.ts';
@@ -39,7 +40,6 @@ export interface Level {
   chaikin: boolean;
 }
 
-const dec = (s: number): number => (s <= 1 ? 0 : s >= SHARPNESS_INFINITE ? SHARPNESS_INFINITE : Math.fround(s - 1));
 const INF = SHARPNESS_INFINITE;
 
 function makeLevel(
@@ -109,7 +109,7 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
     let tSum = 0,
       tCount = 0;
     const vs = L.vertSharp[v];
-    if (vs > 0 && dec(vs) === 0) {
+    if (vs > 0 && decSharp(vs) === 0) {
       tSum = Math.fround(vs);
       tCount = 1;
     }
@@ -141,7 +141,7 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
     }
     for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
     const pr = vertexRuleOf(nSharp, vs);
-    let cr = vertexRuleOf(nSharpChild, dec(vs));
+    let cr = vertexRuleOf(nSharpChild, decSharp(vs));
     let W = 1;
     if ((pr === VRULE_CREASE || pr === VRULE_CORNER) && cr !== pr) {
       W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
@@ -220,7 +220,7 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
     }
   }
   const vertSharp = new Float64Array(nV1);
-  for (let v = 0; v < nV; v++) vertSharp[v] = dec(L.vertSharp[v]);
+  for (let v = 0; v < nV; v++) vertSharp[v] = decSharp(L.vertSharp[v]);
   return makeLevel(he, edgeSharp, vertSharp, hole, base1, chaikin);
 }
 
