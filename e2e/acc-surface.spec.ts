@@ -1,10 +1,13 @@
 // The ACC schemes as the compute tessellator's surface in the demo (`?surface=bezier-acc` …):
-// drawn with no console errors and named in the stats; a cage a scheme refuses (an n-gon) is
-// drawn as Phong with the reason, and the picture differs from the exact surface's.
+// drawn with no console errors and named in the stats; a cage with n-gons is refined once first
+// (src/subdiv/acc.ts accCage), which the stats say; a cage a scheme refuses (a hole) is drawn as
+// Phong with the reason.
 import { expect, test } from '@playwright/test';
-import { collectErrors, ready } from './helpers.ts';
+import { HOLED_CUBE, collectErrors, dropFile, ready } from './helpers.ts';
 
-test('each ACC scheme draws the creature; the icosphere (a pentagon) falls back to Phong with the reason', async ({ page }) => {
+test('each ACC scheme draws the creature; the icosphere (pentagons) is refined once and says so; a holed cube falls back to Phong with the reason', async ({
+  page,
+}) => {
   test.setTimeout(240_000);
   const errors = collectErrors(page);
   for (const [scheme, name] of [
@@ -16,12 +19,20 @@ test('each ACC scheme draws the creature; the icosphere (a pentagon) falls back 
     await ready(page);
     await expect(page.getByTestId('stats-surface')).toContainText(name, { timeout: 10_000 });
     await expect(page.getByTestId('stats-surface')).not.toContainText('unavailable');
+    await expect(page.getByTestId('stats-surface')).not.toContainText('Catmull-Clark step');
   }
   await page.goto('/?model=icosphere&surface=pm-acc&mode=fixed&factor=4&t=0');
   await ready(page);
-  await expect(page.getByTestId('stats-surface')).toContainText('Phong', { timeout: 10_000 });
-  await expect(page.getByTestId('stats-surface')).toContainText('Pm ACC unavailable');
-  await expect(page.getByText('5 corners').first()).toBeVisible();
+  const surface = page.getByTestId('stats-surface');
+  await expect(surface).toContainText('Pm ACC', { timeout: 10_000 });
+  await expect(surface).not.toContainText('unavailable');
+  await expect(surface).toContainText('one Catmull-Clark step first (the cage has n-gons): 230 patches');
+  await expect(page.getByTestId('stats-output')).toContainText('tris');
+  await dropFile(page, 'holed-cube.obj', HOLED_CUBE);
+  await expect(page.getByTestId('stats-cage')).toContainText('holed-cube.obj', { timeout: 10_000 });
+  await expect(surface).toContainText('Phong', { timeout: 10_000 });
+  await expect(surface).toContainText('Pm ACC unavailable');
+  await expect(surface).toContainText('is a hole');
   expect(errors).toEqual([]);
 });
 

@@ -32,3 +32,23 @@ export async function dropFile(page: Page, name: string, text: string): Promise<
   await page.dispatchEvent('body', 'dragenter', { dataTransfer });
   await page.dispatchEvent('body', 'drop', { dataTransfer });
 }
+
+/** A cube with one face tagged as a hole: the ACC schemes refuse holes. */
+export const HOLED_CUBE = [
+  'v -1 -1 -1',
+  'v 1 -1 -1',
+  'v 1 1 -1',
+  'v -1 1 -1',
+  'v -1 -1 1',
+  'v 1 -1 1',
+  'v 1 1 1',
+  'v -1 1 1',
+  'f 1 4 3 2',
+  'f 5 6 7 8',
+  'f 1 2 6 5',
+  'f 2 3 7 6',
+  'f 3 4 8 7',
+  'f 4 1 5 8',
+  't hole 1/0/0 0',
+  '',
+].join('\n');

@@ -4,7 +4,7 @@
 // what it draws per pass, and switching tessellators keeps the page working.
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
-import { collectErrors, ready } from './helpers.ts';
+import { HOLED_CUBE, collectErrors, dropFile, ready } from './helpers.ts';
 
 interface Records {
   gpu: number[];
@@ -136,12 +136,18 @@ test('ACC surfaces: the instanced tessellator draws Gregory ACC; a cage the sche
   await expect(page.getByTestId('stats-output')).toContainText(`${int(256 * 64)} tris`, { timeout: 5_000 });
   const r = await records(page);
   expect(r!.gpu).toEqual(r!.cpu);
-  // The icosphere has a pentagon: no ACC patches; Phong instead, with the reason.
+  // The icosphere has pentagons: refined once (the same limit), its 230 quads are the patches.
   await page.goto('/?model=icosphere&tessellator=instanced&instsurface=pm-acc&mode=fixed&level=4&t=0');
   await ready(page);
+  await expect(page.getByTestId('stats-surface')).toContainText('Pm ACC', { timeout: 5_000 });
+  await expect(page.getByTestId('stats-surface')).not.toContainText('unavailable');
+  await expect(page.getByTestId('stats-output')).toContainText(`${int(230 * 16 * 2)} tris`, { timeout: 5_000 });
+  // A cube with a hole: no ACC patches; Phong instead, with the reason.
+  await dropFile(page, 'holed-cube.obj', HOLED_CUBE);
+  await expect(page.getByTestId('stats-cage')).toContainText('holed-cube.obj', { timeout: 10_000 });
   await expect(page.getByTestId('stats-surface')).toContainText('Phong', { timeout: 5_000 });
   await expect(page.getByTestId('stats-surface')).toContainText('Pm ACC unavailable'); // the scheme asked for, by name
-  await expect(page.getByText('5 corners').first()).toBeVisible();
+  await expect(page.getByText('is a hole').first()).toBeVisible();
   expect(errors).toEqual([]);
 });
 

@@ -135,7 +135,8 @@ export async function main(argv: string[]): Promise<number> {
     const tess = Tessellator.create(device, bakeTables(64), { surface, vertexCapacity: 1 << 22, triangleCapacity: 1 << 22 });
     for (const [name, path] of models) {
       if (only && !only.includes(name)) continue;
-      const cage = loadCage(readFileSync(path, 'utf8')).cage;
+      // The cage the surface tessellates (an ACC scheme refines a cage with n-gons once).
+      const cage = surfaceScheme(surface).surfaceCage(loadCage(readFileSync(path, 'utf8')).cage).cage;
       const mesh = prepareMesh(cage);
       let data: ReturnType<ReturnType<typeof surfaceScheme>['prepare']>;
       try {

@@ -69,7 +69,7 @@ import { AccPatches } from '../src/gpu/acc/patches.ts';
 import { ccSourceBytes, ccSurfaceTessellator } from '../src/gpu/instanced/surface-cc.ts';
 import { displacementLender } from '../src/gpu/instanced/displace-vertex.ts';
 import { prepareDisplacement } from '../src/gpu/tess/displacement-map.ts';
-import { isAccSurface, surfaceScheme } from '../src/gpu/surface/registry.ts';
+import { isAccSurface, type SurfaceId, surfaceScheme } from '../src/gpu/surface/registry.ts';
 import { prepareAccSurface, type AccSurface } from '../src/gpu/acc/surface.ts';
 import { demoView, displayedDistancePx, limitDistancePx } from './limit-distance.ts';
 
@@ -136,8 +136,18 @@ async function run(argv: string[], lent?: LentDevice): Promise<number> {
   }
 }
 
+/** The cage `surface` tessellates in place of `cage` (SurfaceScheme.surfaceCage), and, when it is
+ * another one, why, on stderr. */
+function surfaceCageSaid(cage: Cage, surface: SurfaceId, model: string): Cage {
+  const sc = surfaceScheme(surface).surfaceCage(cage);
+  if (sc.note) console.error(`tessellate: ${model}: ${surfaceScheme(surface).name}: ${sc.note}`);
+  return sc.cage;
+}
+
 /** The compute tessellator: the surface's preparation, one rebuild, the readback, the outputs. */
 async function runCompute(device: GPUDevice, adapterName: string, cage: Cage, args: TessellateArgs): Promise<number> {
+  // The cage the surface tessellates: an ACC scheme refines a cage with n-gons once (said here).
+  cage = surfaceCageSaid(cage, args.o.surface ?? 'catmull-clark', args.model);
   // From the face sizes, before a preparation that grows with them: a cage whose scratch buffer
   // alone exceeds the device's binding limit is refused now, not after a minute and gigabytes.
   const tooLarge = cageTooLarge(cage, MAX_FACTOR, device.limits.maxStorageBufferBindingSize);
@@ -257,6 +267,7 @@ function writeParams(path: string, p: ReturnType<typeof vertexParams>): void {
 
 /** `--tessellator instanced`: levels, the draw's vertex function in compute, the weld. */
 async function runInstanced(device: GPUDevice, adapterName: string, cage: Cage, args: TessellateArgs): Promise<number> {
+  if (args.acc) cage = surfaceCageSaid(cage, args.acc, args.model);
   // From the face sizes (and --level), before the preparation, as runCompute does: a cage whose
   // patch records, level lists or static-level output exceed the binding limit is refused now.
   try {

@@ -6,7 +6,7 @@
  * patch build and uniforms, at factor 1 and with a tiny output). No DOM.
  */
 import type { Cage } from '../mesh/types.ts';
-import type { CatmullClarkData } from '../gpu/cc/build.ts';
+import { buildCatmullClark, type CatmullClarkData } from '../gpu/cc/build.ts';
 import { AccHeatPass, type HeatTotals } from '../gpu/acc/heat.ts';
 import type { AccPatches } from '../gpu/acc/patches.ts';
 import { Tessellator } from '../gpu/tess/tessellator.ts';
@@ -34,13 +34,20 @@ export class ErrorViews {
   /**
    * The pass of `geometry` (an ACC surface showing `cage`), made on first use for its current
    * patches; null when it has none (not an ACC surface, no mesh yet). `cc`: the cage's
-   * Catmull-Clark tables (the exact reference).
+   * Catmull-Clark tables (the exact reference). Where the scheme tessellates another cage in its
+   * place (one Catmull-Clark step of a cage with n-gons: the same limit), the reference is built on
+   * that cage here, from its topology (tens of ms on the demo's models).
    */
   passFor(geometry: TessellatorGeometry, cage: Cage, cc: CatmullClarkData): AccHeatPass | null {
     const acc = geometry.accPatches,
       prepared = geometry.prepared,
-      output = geometry.output;
-    if (!acc || !prepared || !output) return null;
+      output = geometry.output,
+      tessellated = geometry.tessellatedCage?.cage;
+    if (!acc || !prepared || !output || !tessellated) return null;
+    if (tessellated !== cage) {
+      if (this.#reference?.cage !== tessellated) cc = buildCatmullClark(tessellated, prepared);
+      cage = tessellated;
+    }
     let state = this.#passes.find((s) => s.geometry === geometry);
     if (state && state.acc === acc) return state.pass;
     if (state) this.#drop(state);

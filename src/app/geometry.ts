@@ -12,7 +12,7 @@ import type { TessPipelines } from '../gpu/tess/pipelines.ts';
 import { bakeTables } from '../pattern/tables.ts';
 import { MAX_FACTOR } from '../pattern/max-factor.ts';
 import type { CatmullClarkData } from '../gpu/cc/build.ts';
-import { isAccSurface, type SurfaceId as Surface } from '../gpu/surface/registry.ts';
+import { isAccSurface, type SurfaceCage, type SurfaceId as Surface, surfaceScheme } from '../gpu/surface/registry.ts';
 import { accPatchKinds, prepareAccSurface, type AccSurface } from '../gpu/acc/surface.ts';
 import type { AccPatches } from '../gpu/acc/patches.ts';
 import { prepareDisplacement, type DisplacementSettings } from '../gpu/tess/displacement-map.ts';
@@ -117,7 +117,10 @@ export class TessellatorGeometry implements GeometrySource {
   #acc: AccSurface | undefined;
   #hasMesh = false;
   /** What the cage shown was set with, so a height map can be added to it (setHeightMap). */
-  #last: { cage: Cage; prepared: PreparedMesh; cc?: CatmullClarkData; height: CageHeightMap | null } | null = null;
+  /** `cage` as given; `tessellated`, the cage the surface tessellates in its place (the same one,
+   * or an ACC scheme's refinement of a cage with n-gons): `prepared` is that cage's. */
+  #last: { cage: Cage; tessellated: SurfaceCage; prepared: PreparedMesh; cc?: CatmullClarkData; height: CageHeightMap | null } | null =
+    null;
 
   /** `pipelines`: the surface's, compiled before (src/app/tess-pipelines.ts); made now if absent. */
   constructor(device: GPUDevice, capacity: number, surface: TessSurface = 'phong', pipelines?: TessPipelines) {
@@ -146,7 +149,13 @@ export class TessellatorGeometry implements GeometrySource {
     return this.#hasMesh ? this.#acc?.patches : undefined;
   }
 
-  /** The cage shown, prepared (its triangles are the output's srcTri). */
+  /** The cage the surface tessellates (the cage shown, or the surface's in its place: an ACC
+   * scheme refines a cage with n-gons once), and why it is another, for the stats. */
+  get tessellatedCage(): SurfaceCage | undefined {
+    return this.#hasMesh ? this.#last?.tessellated : undefined;
+  }
+
+  /** The cage tessellated (tessellatedCage), prepared (its triangles are the output's srcTri). */
   get prepared(): PreparedMesh | undefined {
     return this.#hasMesh ? this.#tessellator.prepared : undefined;
   }
@@ -160,14 +169,20 @@ export class TessellatorGeometry implements GeometrySource {
   setCage(cage: Cage, cc?: CatmullClarkData, height: CageHeightMap | null = null, mesh?: PreparedMesh): void {
     this.#hasMesh = false;
     this.#last = null;
+    // The cage the surface tessellates (an ACC scheme refines a cage with n-gons once: the mesh
+    // and tables prepared for the cage itself are not that cage's then).
+    const tessellated = surfaceScheme(this.surface).surfaceCage(cage);
+    const own = tessellated.cage !== cage;
+    if (own) cc = undefined;
     // Prepared with the exact surface's tables (src/app/surface-data.ts, off the page's thread for
     // a large cage), or here.
-    const prepared = mesh ?? prepareMesh(cage);
-    const acc = isAccSurface(this.surface) ? prepareAccSurface(this.#device, cage, prepared, this.surface) : undefined;
+    const prepared = (!own && mesh) || prepareMesh(tessellated.cage);
+    const acc = isAccSurface(this.surface) ? prepareAccSurface(this.#device, tessellated.cage, prepared, this.surface) : undefined;
     this.#acc?.patches.destroy();
     this.#acc = acc;
-    this.#tessellator.setMesh(prepared, cc, acc, height ? prepareDisplacement(cage, prepared, height.map, height.wrap) : undefined);
-    this.#last = { cage, prepared, cc, height };
+    const disp = height ? prepareDisplacement(tessellated.cage, prepared, height.map, height.wrap) : undefined;
+    this.#tessellator.setMesh(prepared, cc, acc, disp);
+    this.#last = { cage, tessellated, prepared, cc, height };
     this.#hasMesh = true;
   }
 
@@ -176,7 +191,7 @@ export class TessellatorGeometry implements GeometrySource {
   setHeightMap(cage: Cage, height: CageHeightMap | null): void {
     const last = this.#last;
     if (!last || last.cage !== cage || last.height === height) return;
-    const disp = height ? prepareDisplacement(cage, last.prepared, height.map, height.wrap) : undefined;
+    const disp = height ? prepareDisplacement(last.tessellated.cage, last.prepared, height.map, height.wrap) : undefined;
     this.#tessellator.setMesh(last.prepared, last.cc, this.#acc, disp);
     last.height = height;
   }

@@ -66,6 +66,7 @@ export function countsFromRecords(records: Uint32Array, patterns: PackedPatterns
 export class InstancedView {
   readonly tess: InstancedTessellator;
   #mesh: InstancedMesh | null = null;
+  /** The cage given (the model's; an ACC scheme tessellates its refinement of a cage with n-gons). */
   #cage: Cage | null = null;
   #staging: GPUBuffer;
   #state: 'idle' | 'copied' | 'mapping' = 'idle';
@@ -148,6 +149,10 @@ export class InstancedView {
    * throws src/subdiv/acc.ts AccError, with a message fit to show, for a cage the scheme refuses).
    * `height`: its height map (a `displaced` view draws it; the settings: setDisplacement). */
   setCage(cage: Cage, height: CageHeightMap | null = null): void {
+    // The cage the surface tessellates: an ACC scheme refines a cage with n-gons once (the same
+    // limit); the patches, the mesh and the map's uvs are that cage's.
+    const given = cage;
+    if (isAcc(this.surface)) cage = surfaceScheme(this.surface).surfaceCage(cage).cage;
     const prepared = prepareMesh(cage);
     // Without a map (or uvs) a displaced view's lender still gives the owners (dispOn off).
     let disp: DisplacementData | undefined;
@@ -177,7 +182,7 @@ export class InstancedView {
     this.#height = height;
     this.#hasMap = disp !== undefined;
     this.#mesh = mesh;
-    this.#cage = cage;
+    this.#cage = given;
     this.tess.setMesh(mesh, acc ?? cc?.tess, lender ?? undefined);
   }
 

@@ -35,6 +35,9 @@ export interface SurfaceStats {
   kinds?: [number, number, number, number];
   /** Wall-clock ms of the CPU preparation (topology only). */
   tablesMs?: number;
+  /** Why the surface tessellates another cage than the model's (an ACC scheme refines a cage with
+   * n-gons once: src/subdiv/acc.ts accCage), or null. */
+  note?: string | null;
 }
 
 /** The other factor mode's output, counted by an occasional extra build. */
@@ -167,6 +170,7 @@ export function renderStats(s: StatsInput): string {
     let text = `<b>${SURFACE_NAMES[sf.shown]}</b>`;
     if (sf.building) text += ' <span class="muted">preparing subdivision data…</span>';
     if (sf.fallback) text += ` <span class="warn">${SURFACE_NAMES[sf.asked ?? 'catmull-clark']} unavailable: ${esc(sf.fallback)}</span>`;
+    else if (sf.note) text += ` <span class="muted">· ${esc(sf.note)}</span>`;
     if (isExact(sf.shown) && sf.kinds) {
       const [reg, irr, tri, crease] = sf.kinds;
       text += ` <span class="muted detail">· tris: ${int.format(reg)} regular, ${int.format(irr)} irregular, ${int.format(tri)} triangle, ${int.format(crease)} crease`;

@@ -465,6 +465,7 @@ export class TessellationDemo extends DemoScene {
         building: this.controller.preparing,
         kinds: this.cc ? kindCounts(this.cc.data.triKind) : undefined,
         tablesMs: this.cc?.ms,
+        note: this.geometry instanceof TessellatorGeometry ? (this.geometry.tessellatedCage?.note ?? null) : null,
       },
       other: this.#otherMode.counts,
       mode: this.params.mode,

@@ -6,6 +6,8 @@
  */
 import type { Cage, Topology } from '../mesh/index.ts';
 import {
+  ACC_DEGENERATE_SIN,
+  ACC_DEGENERATE_STEP,
   type AccOptions,
   type AccScheme,
   type AccTopology,
@@ -241,29 +243,32 @@ export function pmTriSector(u: number, v: number): { k: number; stw: V3; du: V3;
 
 const dirDeriv = (e: { Da: V3; Db: V3; Dc: V3 }, d: V3): V3 => comb([d[0], e.Da], [d[1], e.Db], [d[2], e.Dc]);
 
-/** Position, ∂/∂u, ∂/∂v and the shading-normal direction of one patch (q = its control points). */
-export function evalPatchPoints(kind: number, q: V3[], u: number, v: number): { P: V3; Pu: V3; Pv: V3; n: V3 } {
+const dot3 = (a: V3, b: V3): number => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+
+/** Position, ∂/∂u, ∂/∂v and the shading-normal direction of one patch (q = its control points), and
+ * the two tangents whose cross product it is (∂/∂u, ∂/∂v but for Bezier ACC's tangent patches). */
+export function evalPatchPoints(kind: number, q: V3[], u: number, v: number): { P: V3; Pu: V3; Pv: V3; n: V3; tangents: [V3, V3] } {
   switch (kind) {
     case KIND_REGULAR: {
       const r = evalBicubic(q, u, v);
-      return { ...r, n: cross3(r.Pu, r.Pv) };
+      return { ...r, n: cross3(r.Pu, r.Pv), tangents: [r.Pu, r.Pv] };
     }
     case KIND_BEZIER: {
       const r = evalBicubic(q, u, v);
       const t = evalTangentPatches(q, u, v);
-      return { ...r, n: cross3(t.Tu, t.Tv) };
+      return { ...r, n: cross3(t.Tu, t.Tv), tangents: [t.Tu, t.Tv] };
     }
     case KIND_GREGORY_QUAD: {
       // Derivatives of the frozen Bézier (blend weights' derivatives ignored, as the sample and OpenSubdiv).
       const r = evalBicubic(gregoryQuadBezier(q, u, v), u, v);
-      return { ...r, n: cross3(r.Pu, r.Pv) };
+      return { ...r, n: cross3(r.Pu, r.Pv), tangents: [r.Pu, r.Pv] };
     }
     case KIND_GREGORY_TRI: {
       const l: V3 = [1 - u - v, u, v];
       const e = evalQuartic(gregoryTriQuartic(q, l), l[0], l[1], l[2]);
       const Pu = subv(e.Db, e.Da),
         Pv = subv(e.Dc, e.Da);
-      return { P: e.P, Pu, Pv, n: cross3(Pu, Pv) };
+      return { P: e.P, Pu, Pv, n: cross3(Pu, Pv), tangents: [Pu, Pv] };
     }
     case KIND_PM_QUAD:
     case KIND_PM_TRI:
@@ -273,7 +278,7 @@ export function evalPatchPoints(kind: number, q: V3[], u: number, v: number): { 
       const e = evalQuartic(pmSectorQuartic(q, m, s.k), s.stw[0], s.stw[1], s.stw[2]);
       const Pu = dirDeriv(e, s.du),
         Pv = dirDeriv(e, s.dv);
-      return { P: e.P, Pu, Pv, n: cross3(Pu, Pv) };
+      return { P: e.P, Pu, Pv, n: cross3(Pu, Pv), tangents: [Pu, Pv] };
     }
     default:
       throw new AccError(`unknown patch kind ${kind}`);
@@ -313,9 +318,27 @@ export class AccSurface {
     return out;
   }
 
-  /** Position, derivatives and unit shading normal at (face, u, v) (triangles: (u, v) = (w1, w2)). */
+  /** Position, derivatives and unit shading normal at (face, u, v) (triangles: (u, v) = (w1, w2)).
+   * Where the two tangents whose cross product is the normal are parallel (the corner of a crease
+   * sector of one face, θ = π; a corner sector's degenerate corner) the normal is the patch's
+   * own approached from inside, as wgsl/acc/surface.wgsl evalAccPatch says why: evaluated
+   * ACC_DEGENERATE_STEP of the way toward the centroid of (corner, next corner, centre). */
   evaluate(face: number, u: number, v: number): AccPoint & { Pu: V3; Pv: V3 } {
-    const r = evalPatchPoints(this.kind(face), this.patch(face), u, v);
-    return { P: r.P, Pu: r.Pu, Pv: r.Pv, N: normalize3(r.n) };
+    const kind = this.kind(face),
+      q = this.patch(face);
+    const r = evalPatchPoints(kind, q, u, v);
+    let n = r.n;
+    const [a, b] = r.tangents;
+    if (dot3(n, n) <= ACC_DEGENERATE_SIN ** 2 * dot3(a, a) * dot3(b, b)) {
+      // Toward the centroid of (corner, next corner counter-clockwise, centre): off the diagonal,
+      // where a Pm patch's sectors meet.
+      const tri = this.topology.faceSize[face] === 3;
+      const c = tri ? 1 / 3 : 0.5;
+      const [nu, nv] = tri ? [1 - u - v, u] : [1 - v, u];
+      const du = (u + nu + c) / 3 - u,
+        dv = (v + nv + c) / 3 - v;
+      n = evalPatchPoints(kind, q, u + ACC_DEGENERATE_STEP * du, v + ACC_DEGENERATE_STEP * dv).n;
+    }
+    return { P: r.P, Pu: r.Pu, Pv: r.Pv, N: normalize3(n) };
   }
 }

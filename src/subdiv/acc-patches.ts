@@ -40,7 +40,8 @@ export const comb = (...terms: [number, V3][]): V3 => {
   return r;
 };
 export const cross3 = (a: V3, b: V3): V3 => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-/** As the GPU's accNormal: a zero vector stays zero (a degenerate corner, where CC has no normal either). */
+/** As the GPU's accNormal: a zero vector stays zero (AccSurface.evaluate gives a patch corner
+ * without a normal of its own the normal just inside first). */
 export const normalize3 = (a: V3): V3 => {
   const l = Math.hypot(a[0], a[1], a[2]);
   return l > 0 ? mul(a, 1 / l) : [0, 0, 0];

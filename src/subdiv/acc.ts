@@ -54,13 +54,15 @@
  *     warning; the error table shows what that costs (sharp is the closer of the two everywhere
  *     we measured). A sharp vertex with fewer than 2 sharp edges (a cone
  *     point) is built as a smooth vertex pinned at v (its limit; the tangents are the smooth masks',
- *     the cone is not modelled). A crease sector of one face is built (its corner has no tangent
- *     plane, as in Catmull-Clark; its normal there is degenerate).
+ *     the cone is not modelled). A crease sector of one face is built (the patch's two tangents
+ *     at that corner are parallel: the corner has no normal of its own; the evaluators take the
+ *     patch's normal just inside, ACC_DEGENERATE_STEP below).
  *   - Interior vertices of valence 2 are built with the n = 2 masks and a warning (Catmull-Clark's
  *     own limit there needs refinement, and has no tangent plane at the vertex; Bezier ACC's
- *     tangent-patch normal is degenerate exactly there).
- *   - Faces with more than 4 corners: refused. The sample only has quads and triangles; a split would
- *     change the neighbours' rings and is not the schemes' own construction. Holes: refused.
+ *     tangent-patch normal is degenerate exactly there: the same rule gives it one).
+ *   - Faces with more than 4 corners: refused here (the sample only has quads and triangles; a split
+ *     of those faces alone would change the neighbours' rings). accCage gives such a cage one
+ *     Catmull-Clark step first, as the papers propose: the same limit, all quads. Holes: refused.
  *
  * ---------------------------------------------------------------------------------------------------
  * ONE LAYOUT FOR ALL SCHEMES (the GPU build wgsl/acc/build.wgsl writes it, wgsl/acc/surface.wgsl reads it)
@@ -112,10 +114,18 @@ import {
   vertexRing,
 } from '../mesh/index.ts';
 import { creaseCrossMask } from './limit.ts';
+import { hasNgons, refineCage } from './refine-cage.ts';
 
 /** The sharpness from which the schemes build a crease or corner infinitely sharp (semiSharp
  * 'sharp', the default): below it, smooth. The tessellator splits normals there too (prepare.ts). */
 export const ACC_SHARP_FROM = 1;
+
+/** A patch point whose two tangents make a normal shorter than ACC_DEGENERATE_SIN × their lengths
+ * (parallel, or one zero) has no normal of its own: it takes the patch's normal ACC_DEGENERATE_STEP
+ * of the way into the patch (src/subdiv/acc-evaluate.ts AccSurface.evaluate and
+ * wgsl/acc/surface.wgsl evalAccPatch, which says why). */
+export const ACC_DEGENERATE_SIN = 1e-4;
+export const ACC_DEGENERATE_STEP = 1e-2;
 
 export type AccScheme = 'bezier-acc' | 'gregory-acc' | 'pm-acc';
 export const ACC_SCHEMES: readonly AccScheme[] = ['bezier-acc', 'gregory-acc', 'pm-acc'];
@@ -331,6 +341,39 @@ export interface AccOptions {
   semiSharp?: 'smooth' | 'sharp';
 }
 
+/** The cage an ACC scheme builds its patches on, and why it is not the cage given. */
+export interface AccCage {
+  cage: Cage;
+  /** Set when the cage was refined: what the stats and the CLI say. */
+  note: string | null;
+}
+
+const accCages = new WeakMap<Cage, AccCage>();
+
+/**
+ * The cage the ACC schemes take in place of `cage`: the cage itself, or, where it has n-gons (faces
+ * of 5 corners or more: the schemes' patches are quads and triangles), one Catmull-Clark step of
+ * the whole cage first, as the papers propose (src/subdiv/refine-cage.ts: the same limit surface;
+ * every face becomes quads, so the patches are 4 per quad, 3 per triangle and n per n-gon of the
+ * cage). The whole cage, not only its n-gons: a patch's edges are built from both sides' points,
+ * and only a step of both sides keeps them watertight. Kept per cage (one object for every scheme
+ * and view). A cage with holes is returned as it is (the schemes refuse holes, with its own face
+ * numbers).
+ */
+export function accCage(cage: Cage): AccCage {
+  let r = accCages.get(cage);
+  if (!r) {
+    if (!hasNgons(cage) || cage.holes.length) r = { cage, note: null };
+    else {
+      const refined = refineCage(cage).cage;
+      const faces = refined.faceOffsets.length - 1;
+      r = { cage: refined, note: `one Catmull-Clark step first (the cage has n-gons): ${faces.toLocaleString('en-US')} patches` };
+    }
+    accCages.set(cage, r);
+  }
+  return r;
+}
+
 /**
  * Derive everything the construction needs from the cage's connectivity (once per topology, linear
  * time). Throws AccError for faces with more than 4 corners, holes and the sharp configurations
@@ -343,7 +386,7 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
   const problems: string[] = [];
   for (let f = 0; f < nF; f++) {
     const n = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
-    if (n > 4) problems.push(`face ${f + 1} has ${n} corners (ACC patches are quads and triangles only)`);
+    if (n > 4) problems.push(`face ${f + 1} has ${n} corners (ACC patches are quads and triangles only: accCage refines such a cage once)`);
   }
   const sharp = computeSharpness(cage, topo, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
   if (cage.holes.length) problems.push(`face ${cage.holes[0] + 1} is a hole (not supported)`);

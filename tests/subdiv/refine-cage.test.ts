@@ -37,7 +37,7 @@ function quadParam(j: number, s: number, t: number): [number, number] {
 }
 
 function size(cage: Cage): number {
-  let lo = [Infinity, Infinity, Infinity],
+  const lo = [Infinity, Infinity, Infinity],
     hi = [-Infinity, -Infinity, -Infinity];
   for (let i = 0; i < cage.positions.length; i += 3)
     for (let c = 0; c < 3; c++) {
@@ -142,10 +142,7 @@ describe('refineCage: one Catmull-Clark step as a cage', () => {
   });
 
   it('a cage without uvs gives none; hasNgons tells pentagons from quads and triangles', () => {
-    const c = makeCage(
-      [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0],
-      [[0, 1, 2, 3]],
-    );
+    const c = makeCage([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0], [[0, 1, 2, 3]]);
     const child = refineCage(c).cage;
     expect(child.uvs.length).toBe(0);
     expect([...child.faceUvIndices].every((i) => i === -1)).toBe(true);

@@ -185,7 +185,43 @@ fn accNormal(n: vec3<f32>) -> vec3<f32> {
   return n;
 }
 
+// Where the two tangents are parallel (or one vanishes) the patch has no normal of its own: at the
+// corner of a crease sector of one face (the face spans the half-disk on its side of the crease, so
+// its two edges at the vertex leave it in opposite directions, θ = π) and at a corner sector's
+// degenerate corner. The normal there is the patch's own, approached from inside: evaluated
+// ACC_DEGENERATE_STEP of the way toward the centroid of the triangle (corner, next corner, patch
+// centre), (the same rule as src/subdiv/acc-evaluate.ts AccSurface.evaluate, so the two agree;
+// both at f32/f64 noise level there, where the position's own normal would be the noise's
+// direction). Not along the diagonal: a Pm patch's sectors meet there (its quads' diagonals, its
+// triangles' medians), and f32 rounding would pick either side's normal.
+// ACC_DEGENERATE_SIN and ACC_DEGENERATE_STEP (f32) are prepended from src/subdiv/acc.ts
+// (src/gpu/acc/patches.ts ACC_SURFACE_WGSL).
+
 fn evalAccPatch(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
+  let tri = accPatchWord(2u * patchId) == 3u || accPatchWord(2u * patchId) >= 5u;
+  var at = vec2<f32>(u, v);
+  // The next corner counter-clockwise, from a corner (quads (0,0) → (1,0) → (1,1) → (0,1);
+  // triangles (0,0) → (1,0) → (0,1)).
+  let next = select(vec2<f32>(1.0 - v, u), vec2<f32>(1.0 - u - v, u), tri);
+  let centre = select(vec2<f32>(0.5), vec2<f32>(1.0 / 3.0), tri);
+  let inward = (at + next + centre) / 3.0 - at;
+  var r: AccSurfacePoint;
+  // One call site (the evaluator is inlined per call), run a second time only at such a corner.
+  for (var i = 0u; i < 2u; i++) {
+    let e = accPatchPoint(patchId, at.x, at.y);
+    if (i == 0u) {
+      r = e;
+      let c = cross(e.du, e.dv);
+      if (dot(c, c) > ACC_DEGENERATE_SIN * ACC_DEGENERATE_SIN * dot(e.du, e.du) * dot(e.dv, e.dv)) { break; }
+      at += ACC_DEGENERATE_STEP * inward;
+    } else {
+      r.normal = e.normal;
+    }
+  }
+  return r;
+}
+
+fn accPatchPoint(patchId: u32, u: f32, v: f32) -> AccSurfacePoint {
   let kind = accPatchWord(2u * patchId);
   let o = accPatchWord(2u * patchId + 1u);
   if (kind <= 2u) {

@@ -27,6 +27,8 @@ import buildWgsl from '../../../wgsl/acc/build.wgsl?raw';
 import surfaceWgsl from '../../../wgsl/acc/surface.wgsl?raw';
 import type { Cage, Topology } from '../../mesh/index.ts';
 import {
+  ACC_DEGENERATE_SIN,
+  ACC_DEGENERATE_STEP,
   type AccOptions,
   type AccScheme,
   type AccTopology,
@@ -39,6 +41,7 @@ import { readBuffer } from '../device/readback.ts';
 import { constantsWgsl, groupsFor } from '../contract/constants.ts';
 import { ACC_BUILD_GROUP, ACC_BUILD_PARAMS, ACC_SAMPLE_GROUP, ACC_STATIC, accSurfaceGroup, type AccSection } from '../contract/acc.ts';
 import { accBuildPrelude } from '../contract/contract.ts';
+import { wgslF32 } from '../contract/define.ts';
 import { faceParam } from '../tess/face-params.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 
@@ -56,7 +59,11 @@ fn accPt(i: u32) -> vec3<f32> { return accPoints[i].xyz; }
 `;
 
 /** The evaluator's WGSL (append after accBindingsWgsl). */
-export const ACC_SURFACE_WGSL: string = surfaceWgsl;
+export const ACC_SURFACE_WGSL: string = [
+  `const ACC_DEGENERATE_SIN: f32 = ${wgslF32(ACC_DEGENERATE_SIN)};`,
+  `const ACC_DEGENERATE_STEP: f32 = ${wgslF32(ACC_DEGENERATE_STEP)};`,
+  surfaceWgsl,
+].join('\n');
 
 /**
  * The ACC parameter (face, u, v) of the tessellator's point (triangle t, weights w): quads as

@@ -16,7 +16,7 @@
 import phongSurfaceWgsl from '../../../wgsl/surface/phong.wgsl?raw';
 import accTessWgsl from '../../../wgsl/acc/surface-tess.wgsl?raw';
 import type { Cage } from '../../mesh/types.ts';
-import { ACC_SCHEMES, type AccScheme } from '../../subdiv/acc.ts';
+import { ACC_SCHEMES, type AccScheme, accCage } from '../../subdiv/acc.ts';
 import { CC_SURFACE_WGSL } from '../cc/shaders.ts';
 import { buildCatmullClark, type CatmullClarkData } from '../cc/build.ts';
 import { ACC_SURFACE_WGSL } from '../acc/patches.ts';
@@ -32,6 +32,15 @@ export interface SurfaceData {
   cc?: CatmullClarkData;
   acc?: AccSurface;
 }
+
+/** The cage a surface tessellates (SurfaceScheme.surfaceCage). */
+export interface SurfaceCage {
+  cage: Cage;
+  /** Why it is not the cage given (what the stats and the CLI say), or null when it is. */
+  note: string | null;
+}
+
+const sameCage = (cage: Cage): SurfaceCage => ({ cage, note: null });
 
 export interface SurfaceScheme {
   readonly id: SurfaceId;
@@ -65,10 +74,15 @@ export interface SurfaceScheme {
    * the cage has, so that the passes that evaluate it are compiled without the others (the
    * tessellator makes them per mesh: src/gpu/tess/pipelines.ts). {} for the general evaluator. */
   specialise(data: SurfaceData): Record<string, number>;
+  /** The cage its tessellation is made on, from the cage given: the same cage, or one that the
+   * surface takes in its place with the same limit (the ACC schemes refine a cage with n-gons
+   * once: src/subdiv/acc.ts accCage). A tessellator prepares (prepareMesh, prepare) the cage this
+   * returns; its output's triangles and faces are that cage's. */
+  surfaceCage(cage: Cage): SurfaceCage;
   /** Whether the data has what this surface's evaluator reads. */
   hasData(data: SurfaceData): boolean;
-  /** The tables or patches for a prepared cage. Throws, with the reason, on a cage the surface
-   * refuses (an ACC scheme: faces other than quads and triangles, non-manifold vertices; the
+  /** The tables or patches for a prepared cage (one that surfaceCage returned). Throws, with the
+   * reason, on a cage the surface refuses (an ACC scheme: n-gons not refined, holes; the
    * Catmull-Clark build: sharpness beyond its levels). */
   prepare(device: GPUDevice, cage: Cage, mesh: PreparedMesh): SurfaceData;
 }
@@ -84,6 +98,7 @@ const phong: SurfaceScheme = {
   flatBaseline: false,
   instancedKind: 'evalSurface',
   specialise: () => ({}),
+  surfaceCage: sameCage,
   hasData: () => true,
   prepare: () => ({}),
 };
@@ -102,6 +117,7 @@ const catmullClark: SurfaceScheme = {
   // basis), phantom points (boundaries and infinitely sharp edges).
   specialise: ({ cc }): Record<string, number> =>
     cc ? { CC_NGONS: +cc.hasNgons, CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0), CC_PHANTOMS: +cc.hasPhantoms } : {},
+  surfaceCage: sameCage,
   hasData: (data) => data.cc !== undefined,
   prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),
 };
@@ -120,6 +136,7 @@ function accScheme(scheme: AccScheme): SurfaceScheme {
     flatBaseline: false,
     instancedKind: 'acc',
     specialise: () => ({}),
+    surfaceCage: accCage,
     hasData: (data) => data.acc?.patches.scheme === scheme,
     prepare: (device, cage, mesh) => ({ acc: prepareAccSurface(device, cage, mesh, scheme) }),
   };

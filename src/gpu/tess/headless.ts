@@ -59,6 +59,8 @@ export function headlessCamera(mesh: PreparedMesh, o: HeadlessOptions): FactorPa
 }
 
 export interface HeadlessResult {
+  /** The cage tessellated: the one given, or the surface's in its place (SurfaceScheme.surfaceCage). */
+  cage: Cage;
   mesh: PreparedMesh;
   out: MeshReadback;
   edgeF: Uint32Array;
@@ -75,8 +77,11 @@ export async function tessellateOnce(
   tess?: Tessellator,
   prepared?: { mesh: PreparedMesh } & SurfaceData,
 ): Promise<HeadlessResult> {
+  const surface = tess?.surface ?? o.surface ?? 'catmull-clark';
+  // The cage the surface tessellates (an ACC scheme refines a cage with n-gons once); a caller
+  // that prepared the mesh prepared it from that cage.
+  if (!prepared) cage = surfaceScheme(surface).surfaceCage(cage).cage;
   const mesh = prepared?.mesh ?? prepareMesh(cage);
-  const surface = o.surface ?? 'catmull-clark';
   const own = !tess;
   const t =
     tess ??
@@ -104,7 +109,7 @@ export async function tessellateOnce(
     const out = await readMesh(device, t.output);
     const edgeF = new Uint32Array(await readBuffer(device, t.workBuffer, 4 * mesh.edgeCount, 4 * t.workLayout.edgeF));
     const timings = await t.readTimings();
-    return { mesh, out, edgeF, timings };
+    return { cage, mesh, out, edgeF, timings };
   } finally {
     if (own) t.destroy();
     if (ownData) releaseSurfaceData(ownData);

@@ -53,12 +53,14 @@ describe('ACC shading normals at creases: each side its own', () => {
               { mode: 'adaptive', lodScale: 1 },
             ] as const) {
               const r = await tessellateOnce(device, cage, { ...o, surface: scheme }, tess, { mesh, ...data });
-              // Less the crease vertices whose normal is zero: Bezier and Pm ACC have none at a
-              // corner whose sector is one face (the creased box's corners, src/subdiv/acc.ts: no
-              // tangent plane there), so there is no side to be wrong about (issue 31's work).
+              // Every crease vertex, the corners whose sector is one face among them (the creased
+              // box's cube corners: no tangent plane of the patch there, their normal the patch's
+              // approached from inside, src/subdiv/acc-evaluate.ts; it was zero before).
               const N = r.out.normals;
               const sharp = creasePoints(cage, mesh, r.out, ACC_SHARP_FROM);
-              const onCrease = (v: number) => sharp(v) && Math.hypot(N[3 * v], N[3 * v + 1], N[3 * v + 2]) > 0.5;
+              const onCrease = sharp;
+              for (let v = 0; v < r.out.vertexCount; v++)
+                if (sharp(v)) expect(Math.hypot(N[3 * v], N[3 * v + 1], N[3 * v + 2]), `${file} vertex ${v}`).toBeCloseTo(1, 4);
               const m = wrongSide(r.out, onCrease);
               // The measure can fail: with every normal turned over, every crease triangle counts.
               const flipped = { ...r.out, normals: r.out.normals.map((x) => -x) };

@@ -1,7 +1,7 @@
 /**
  * The ACC schemes as the compute tessellator's surface (Tessellator surface 'bezier-acc' |
  * 'gregory-acc' | 'pm-acc', src/gpu/acc/surface.ts, wgsl/acc/surface-tess.wgsl): on every
- * project model the schemes take, each output vertex against the f64 ACC yardstick
+ * project model (those with n-gons after one Catmull-Clark step: src/subdiv/acc.ts accCage), each output vertex against the f64 ACC yardstick
  * (src/subdiv/acc.ts AccSurface) at the same (face, u, v) (src/gpu/acc/patches.ts accFaceParam): within
  * 2e-6 of the diagonal (f32, as tests/gpu/acc/acc.gpu.test.ts), and the tessellator's own checks (the
  * CPU pattern's counts, watertight after the weld on closed cages, no NaN).
@@ -14,7 +14,7 @@ import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { prepareAccSurface } from '../../../src/gpu/acc/surface.ts';
 import { accFaceParam } from '../../../src/gpu/acc/patches.ts';
-import { ACC_SCHEMES } from '../../../src/subdiv/acc.ts';
+import { ACC_SCHEMES, accCage } from '../../../src/subdiv/acc.ts';
 import { AccSurface } from '../../../src/subdiv/acc-evaluate.ts';
 import { bakeTables } from '../../../src/pattern/tables.ts';
 import { loadCage } from '../../../src/mesh/index.ts';
@@ -22,6 +22,8 @@ import creature from '../../../public/models/creature.obj?raw';
 import torus from '../../../public/models/torus.obj?raw';
 import creasedBox from '../../../public/models/creased-box.obj?raw';
 import sheet from '../../../public/models/sheet.obj?raw';
+import icosphere from '../../../public/models/icosphere.obj?raw';
+import gear from '../../../public/models/gear.obj?raw';
 
 const POSITION_TOL = 2e-6; // × the model size (bbox diagonal)
 const NORMAL_TOL_RAD = (0.05 * Math.PI) / 180;
@@ -38,6 +40,9 @@ const models: [string, string, boolean][] = [
   ['torus', torus, true],
   ['creased-box', creasedBox, true],
   ['sheet', sheet, false],
+  // n-gons: refined once first (accCage); the patches and the reference are the refined cage's.
+  ['icosphere', icosphere, true],
+  ['gear', gear, true],
 ];
 
 describe('ACC surfaces in the compute tessellator', () => {
@@ -47,7 +52,7 @@ describe('ACC surfaces in the compute tessellator', () => {
       const tess = Tessellator.create(device, tables, { surface: scheme, vertexCapacity: 1 << 19, triangleCapacity: 1 << 19 });
       made.push(tess);
       for (const [name, text, closed] of models) {
-        const cage = loadCage(text).cage;
+        const cage = accCage(loadCage(text).cage).cage;
         const mesh = prepareMesh(cage);
         const acc = prepareAccSurface(device, cage, mesh, scheme);
         const cpu = new AccSurface(cage, scheme);
