@@ -33,7 +33,7 @@ export async function dropFile(page: Page, name: string, text: string): Promise<
   await page.dispatchEvent('body', 'drop', { dataTransfer });
 }
 
-/** A cube with one face tagged as a hole: the ACC schemes refuse holes. */
+/** A cube with one face tagged as a hole (5 faces drawn). */
 export const HOLED_CUBE = [
   'v -1 -1 -1',
   'v 1 -1 -1',

@@ -62,7 +62,8 @@
  *     tangent-patch normal is degenerate exactly there: the same rule gives it one).
  *   - Faces with more than 4 corners: refused here (the sample only has quads and triangles; a split
  *     of those faces alone would change the neighbours' rings). accCage gives such a cage one
- *     Catmull-Clark step first, as the papers propose: the same limit, all quads. Holes: refused.
+ *     Catmull-Clark step first, as the papers propose: the same limit, all quads. Holes: their
+ *     patches are built (the ring points are there) and never drawn.
  *
  * ---------------------------------------------------------------------------------------------------
  * ONE LAYOUT FOR ALL SCHEMES (the GPU build wgsl/acc/build.wgsl writes it, wgsl/acc/surface.wgsl reads it)
@@ -357,13 +358,12 @@ const accCages = new WeakMap<Cage, AccCage>();
  * every face becomes quads, so the patches are 4 per quad, 3 per triangle and n per n-gon of the
  * cage). The whole cage, not only its n-gons: a patch's edges are built from both sides' points,
  * and only a step of both sides keeps them watertight. Kept per cage (one object for every scheme
- * and view). A cage with holes is returned as it is (the schemes refuse holes, with its own face
- * numbers).
+ * and view).
  */
 export function accCage(cage: Cage): AccCage {
   let r = accCages.get(cage);
   if (!r) {
-    if (!hasNgons(cage) || cage.holes.length) r = { cage, note: null };
+    if (!hasNgons(cage)) r = { cage, note: null };
     else {
       const refined = refineCage(cage).cage;
       const faces = refined.faceOffsets.length - 1;
@@ -376,7 +376,7 @@ export function accCage(cage: Cage): AccCage {
 
 /**
  * Derive everything the construction needs from the cage's connectivity (once per topology, linear
- * time). Throws AccError for faces with more than 4 corners, holes and the sharp configurations
+ * time). Throws AccError for faces with more than 4 corners and the sharp configurations
  * listed at the top (creases and boundaries are built).
  */
 export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topology, options: AccOptions = {}): AccTopology {
@@ -388,9 +388,10 @@ export function buildAccTopology(cage: Cage, scheme: AccScheme, topology?: Topol
     const n = topo.faceOffsets[f + 1] - topo.faceOffsets[f];
     if (n > 4) problems.push(`face ${f + 1} has ${n} corners (ACC patches are quads and triangles only: accCage refines such a cage once)`);
   }
+  // Holes (tagged, or made by boundary mode 'none') keep their patches: their corners are the
+  // neighbours' ring points as in Catmull-Clark (a hole removes a face's surface, not its points),
+  // and the tessellators never evaluate them (src/gpu/tess/prepare.ts drops their triangles).
   const sharp = computeSharpness(cage, topo, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
-  if (cage.holes.length) problems.push(`face ${cage.holes[0] + 1} is a hole (not supported)`);
-  else if (sharp.hole.some((h) => h)) problems.push(`boundary mode 'none' makes holes (not supported)`);
   const fail = (list: string[]) =>
     new AccError(`${scheme}: ${list.slice(0, 3).join('; ')}${list.length > 3 ? `; … (${list.length - 3} more)` : ''}`);
   if (problems.length) throw fail(problems);

@@ -41,17 +41,18 @@ export function patchCanonical(m: InstancedMesh, p: number): boolean[] {
 
 /** Patches and their edges from a cage and its prepared triangulation (src/gpu/tess/prepare.ts). */
 export function prepareInstanced(cage: Cage, prepared: PreparedMesh): InstancedMesh {
-  const holes = new Set(cage.holes);
   const quads: { tri: number; face: number; c: number[] }[] = [];
   const tris: { tri: number; face: number; c: number[] }[] = [];
   // A quad is one patch (its first prepared triangle's id); every other face gives its prepared
   // triangles (a triangle itself, or the fan round an n-gon's centre) as triangle patches.
   let t = 0;
   for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
-    if (holes.has(f)) continue;
     const s = cage.faceOffsets[f],
       n = cage.faceOffsets[f + 1] - s;
     if (n < 3) continue;
+    // A face without triangles: one the prepared mesh dropped (a hole, tagged or made by boundary
+    // mode 'none': its triangles are in face order, so the next one is a later face's).
+    if (t >= prepared.triangleCount || prepared.triFace[t] > f) continue;
     if (prepared.triFace[t] !== f) throw new Error('prepareInstanced: the cage does not match its prepared mesh');
     const first = t;
     while (t < prepared.triangleCount && prepared.triFace[t] === f) t++;

@@ -25,6 +25,22 @@ const models: [string, string][] = [
 ];
 
 describe('instanced patches, levels and snap on the CPU', () => {
+  it("a cage whose boundary mode 'none' makes holes: one patch per face the prepared mesh keeps (was an internal error)", () => {
+    // A 3 × 3 grid of quads: under 'none' every face at the boundary has no surface; the centre one stays.
+    const v: string[] = [];
+    for (let j = 0; j < 4; j++) for (let i = 0; i < 4; i++) v.push(`v ${i} ${j} 0`);
+    const f: string[] = [];
+    for (let j = 0; j < 3; j++)
+      for (let i = 0; i < 3; i++) {
+        const a = 4 * j + i + 1;
+        f.push(`f ${a} ${a + 1} ${a + 5} ${a + 4}`);
+      }
+    const cage = loadCage([...v, ...f, 't interpolateboundary 1/0/0 0', ''].join('\n')).cage;
+    const prepared = prepareMesh(cage);
+    expect(new Set(prepared.triFace).size).toBe(1);
+    const m = prepareInstanced(cage, prepared);
+    expect(m.patches.length / PATCH_WORDS).toBe(1);
+  });
   for (const [name, text] of models) {
     it(`${name}: patches, edges, opposite walks; random levels close every edge`, () => {
       const cage = loadCage(text).cage;
