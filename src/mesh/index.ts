@@ -8,10 +8,12 @@ export * from './heightmap.ts';
 export * from './range.ts';
 export * from './text.ts';
 export * from './up-axis.ts';
+export * from './manifold.ts';
 import { CageError, type CageIssue } from './errors.ts';
 import { parseObj } from './obj.ts';
 import { coordinateIssues, faceSizeIssues, zeroAreaFaces } from './range.ts';
 import { buildTopology, type Topology } from './topology.ts';
+import { splitNonManifold } from './manifold.ts';
 import type { Cage } from './types.ts';
 import { uvCoverage } from './uv.ts';
 
@@ -22,14 +24,21 @@ export interface LoadedCage {
 }
 
 /**
- * Parse and validate an OBJ cage. Throws `CageError` (with line numbers) for any
- * malformed, degenerate or non-manifold input; never throws anything else.
+ * Parse and validate an OBJ cage. Throws `CageError` (with line numbers) for any malformed or
+ * degenerate input; never throws anything else. Non-manifold vertices and edges are split apart
+ * (src/mesh/manifold.ts), with a warning each.
  */
 export function loadCage(text: string): LoadedCage {
   try {
-    const { cage, warnings } = parseObj(text);
-    const range = [...faceSizeIssues(cage), ...coordinateIssues(cage)];
+    const parsed = parseObj(text);
+    const warnings = parsed.warnings;
+    const range = [...faceSizeIssues(parsed.cage), ...coordinateIssues(parsed.cage)];
     if (range.length) throw new CageError(range);
+    // Non-manifold vertices and edges are kept as OpenSubdiv keeps them (sharp), split so that each
+    // fan and each face side stands alone (src/mesh/manifold.ts); the warnings say where.
+    const split = splitNonManifold(parsed.cage);
+    const cage = split.cage;
+    warnings.push(...split.warnings);
     const topology = buildTopology(cage);
     const flat = zeroAreaFaces(cage);
     if (flat.length)

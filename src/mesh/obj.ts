@@ -259,14 +259,9 @@ export function parseObj(text: string): ParseResult {
       if (f.vt[j] >= nt) err(f.line, `texture coordinate index ${f.vt[j] + 1} is out of range (${nt} defined)`);
       if (f.vn[j] >= nn) err(f.line, `normal index ${f.vn[j] + 1} is out of range (${nn} defined)`);
     }
-    const seen = new Set<number>();
-    for (const v of f.v) {
-      if (seen.has(v)) {
-        err(f.line, `degenerate face: vertex ${v + 1} appears more than once`);
-        break;
-      }
-      seen.add(v);
-    }
+    // A face may repeat a vertex (OpenSubdiv's "quad pole" and pinched faces, even a quad of one
+    // vertex): src/mesh/manifold.ts splits such corners apart where OpenSubdiv's rules keep them
+    // apart (sharp), and refuses the face where they are joined.
   }
   for (const c of creases) {
     if (c.v0 >= nv || c.v1 >= nv) err(c.line, `crease vertex index out of range (0-based, ${nv} vertices)`);

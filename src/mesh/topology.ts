@@ -310,10 +310,11 @@ export function computeSharpness(cage: Cage, topo: Topology, options: SubdivOpti
   for (const c of cage.corners) vertex[c.v] = c.sharpness;
   for (const f of cage.holes) hole[f] = 1;
   for (let e = 0; e < topo.nEdges; e++) if (topo.edgeFaceCount[e] === 1) edge[e] = SHARPNESS_INFINITE;
+  const exempt = new Set(cage.cornerExempt ?? []);
   for (let v = 0; v < topo.nVerts; v++) {
     if (!topo.vertBoundary[v]) continue;
     const nf = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
-    if (options.boundary === 'edge-and-corner' && nf === 1) vertex[v] = SHARPNESS_INFINITE;
+    if (options.boundary === 'edge-and-corner' && nf === 1 && !exempt.has(v)) vertex[v] = SHARPNESS_INFINITE;
     if (options.boundary === 'none') {
       let unsharpBoundary = false;
       for (let k = topo.vertEdgeOffsets[v]; k < topo.vertEdgeOffsets[v + 1]; k++) {

@@ -59,6 +59,10 @@ export interface Cage {
   faceNormalIndices: Int32Array;
   creases: CreaseTag[];
   corners: CornerTag[];
+  /** Vertices that the 'edge-and-corner' boundary rule leaves unsharpened although they have one
+   * face (src/mesh/manifold.ts: the copies of a non-manifold crease vertex, which OpenSubdiv does
+   * not sharpen). Absent in a cage read from a file. */
+  cornerExempt?: readonly number[];
   /** Face ids tagged `t hole`. */
   holes: number[];
   holeLines: number[];

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
   CageError,
+  formatIssue,
   FaceKind,
   FACE_FLAG_BOUNDARY,
   FACE_FLAG_CREASED,
@@ -126,11 +127,27 @@ describe('errors name the line and the problem', () => {
     expectError('# nothing\n\n', 0, /empty/);
     expectError(head, 0, /no faces/);
   });
-  it('non-manifold edges and vertices, inconsistent winding', () => {
-    expectError(head + 'v 0 0 1\nv 1 0 -1\nf 1 2 3\nf 2 1 5\nf 1 2 6\n', 9, /non-manifold edge/);
-    expectError(head + 'f 1 2 3\nf 1 3 4\nf 1 2 4\n', 7, /inconsistent winding/);
-    // Two triangles touching at one vertex (bow tie).
-    expectError('v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n', 1, /non-manifold vertex 1/);
+  it('non-manifold edges and vertices, inconsistent winding: kept apart, sharp, as OpenSubdiv does, with a warning each', () => {
+    const cases: [string, number, RegExp][] = [
+      // Three faces on edge 1-2: each keeps its side (vertices 1 and 2 split in 3).
+      [head + 'v 0 0 1\nv 1 0 -1\nf 1 2 3\nf 2 1 5\nf 1 2 6\n', 6 + 4, /line 9: non-manifold edge 1-2: shared by 3 faces/],
+      // Edges 1-2 and 1-4 run the same way in two faces: vertices 1, 2 and 4 split in 2.
+      [head + 'f 1 2 3\nf 1 3 4\nf 1 2 4\n', 4 + 3, /edge 1-2 runs the same way in faces 1 and 3/],
+      // Two triangles touching at one vertex (bow tie).
+      ['v 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n', 5 + 1, /line 1: non-manifold vertex 1: its faces form 2 fans/],
+    ];
+    for (const [text, verts, warning] of cases) {
+      const { cage, warnings } = loadCage(text);
+      expect(cage.positions.length / 3).toBe(verts);
+      expect(warnings.map(formatIssue).join('\n')).toMatch(warning);
+      expect(cage.corners.length).toBeGreaterThan(0); // the non-manifold vertices: corners
+    }
+  });
+  it('a face folded onto itself at a repeated vertex is refused; a zero-length edge is taken', () => {
+    expectError(head + 'f 1 2 1 3\n', 5, /degenerate face: vertex 1 appears more than once/);
+    const { cage, warnings } = loadCage(head + 'v 0.5 2 0\nf 1 2 3 3\nf 3 2 5\n');
+    expect(warnings.map(formatIssue).join('\n')).toMatch(/repeats a vertex in a row: a zero-length edge/);
+    expect(cage.positions.length / 3).toBe(6);
   });
   it('tags', () => {
     expectError(head + 'f 1 2 3 4\nt crease 2/1/0 0 2 1\n', 6, /not an edge/);

@@ -4,7 +4,8 @@
 # Builds tools/osd-check/osd_eval.cpp with g++, then compares `npm run subdiv --
 # --uniform 8` with OpenSubdiv's limit surface on every cage in CAGE_DIR and on
 # public/models. Exits non-zero if any accepted cage is off by more than 1e-7 of
-# its bounding-box diagonal (outside the named OpenSubdiv-approximate vertices).
+# its bounding-box diagonal (outside the named OpenSubdiv-approximate vertices). Also checks
+# public/models and tools/osd-check/cages (the project's own cases OpenSubdiv's set lacks).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 CAGES="${1:-$ROOT/../shared/cages}"
@@ -18,7 +19,7 @@ status=0
 
 targets=()
 if [ -d "$CAGES" ]; then targets+=("$CAGES"); else echo "note: cage directory $CAGES not found; checking the project's models only"; fi
-targets+=(public/models)
+targets+=(public/models tools/osd-check/cages)
 
 echo "== pass 1: OpenSubdiv default options (edge-and-corner, uniform creasing, Catmark triangles), vs Bfr =="
 "$TSX" tools/osd-check/check.ts --osd "$OSD" --json "$BUILD/pass1.json" "${targets[@]}" || status=1

@@ -513,12 +513,15 @@ describe("the tessellator's (triangle, weights) → ACC (face, u, v)", () => {
 });
 
 describe('what the schemes refuse or ignore', () => {
-  it('n-gons and holes are refused with a clear error; semi-sharp creases are built sharp (σ ≥ 1) or smooth, with a warning', () => {
+  it('n-gons are refused with a clear error (accCage refines them first); holes keep their patches; semi-sharp creases are built sharp (σ ≥ 1) or smooth, with a warning', () => {
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(AccError);
     expect(() => new AccSurface(loadCage(icosphere).cage, 'gregory-acc')).toThrow(/5 corners/);
     const holed = loadCage(torus).cage;
     holed.holes.push(3);
-    expect(() => new AccSurface(holed, 'pm-acc')).toThrow(/hole/);
+    // The hole's patch is built from the same ring points: the patches round it are unchanged.
+    const withHole = new AccSurface(holed, 'pm-acc');
+    const without = new AccSurface(loadCage(torus).cage, 'pm-acc');
+    expect(withHole.points).toEqual(without.points);
     expect(new AccSurface(loadCage(sheet).cage, 'pm-acc').topology.warnings.join()).toMatch(/semi-sharp/);
     const S = new AccSurface(loadCage(creasedBox).cage, 'bezier-acc');
     expect(S.topology.warnings.join()).toMatch(/semi-sharp/);
