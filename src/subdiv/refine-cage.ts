@@ -105,6 +105,8 @@ export function refineCage(cage: Cage, topology?: Topology, options: SubdivOptio
       rawTags: cage.rawTags.slice(),
       faceLines,
       vertexLines,
+      // Vertex points keep their numbers: a copy exempt from the corner rule stays exempt.
+      ...(cage.cornerExempt ? { cornerExempt: cage.cornerExempt.slice() } : {}),
     },
     faceParent,
     faceCorner,
