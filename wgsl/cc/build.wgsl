@@ -116,16 +116,73 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 // when the axis is infinitely sharp (boundaries, creases into the EV, darts).
 
 var<workgroup> P: array<vec3<f32>, 6u * WORKGROUP_SIZE>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
-var<workgroup> F: array<vec3<f32>, 4u * WORKGROUP_SIZE>;   // 4 new face points per thread: cells 00, 10, 01, 11
 var<workgroup> C: array<vec3<f32>, WORKGROUP_SIZE>;    // the centre, at the fan's first thread
+var<workgroup> wideFanOf: u32;                          // the workgroup's wide fan, or CC_NONE
 
 fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
+
+// One step of one sector: its 12 new points (a, b), a ∈ 1..3, b ∈ 0..3, at 4(a − 1) + b, from
+// its 6 old points p, the old centre c, the next sector's (1,0), (2,0) (n10, n20) and the
+// previous one's (1,0), (1,1), (1,2) (q10, q11, q12). The face points of the cells
+// are made here from those (the previous sector's two cells along this sector's axis too), so
+// a sector needs no other thread's results, only their old points. inf: this sector's axis is
+// infinitely sharp; pseudo: a boundary's pseudo-sector (its axis points only).
+fn sliceStep(p: array<vec3<f32>, 6>, c: vec3<f32>, n10: vec3<f32>, n20: vec3<f32>, q10: vec3<f32>, q11: vec3<f32>, q12: vec3<f32>,
+             inf: bool, pseudo: bool) -> array<vec3<f32>, 12> {
+  let p10 = p[0];
+  let p20 = p[1];
+  let p11 = p[2];
+  let p21 = p[3];
+  let p12 = p[4];
+  let p22 = p[5];
+  let f00 = 0.25 * (c + p10 + p11 + n10);
+  let f10 = 0.25 * (p10 + p20 + p21 + p11);
+  let f01 = 0.25 * (n10 + p11 + p12 + n20);
+  let f11 = 0.25 * (p11 + p21 + p22 + p12);
+  // The previous sector's cells 00 and 01: this sector's [0,1]×[−1,0] and [1,2]×[−1,0].
+  let g00 = 0.25 * (c + q10 + q11 + p10);
+  let g01 = 0.25 * (p10 + q11 + q12 + p20);
+  var o: array<vec3<f32>, 12>;
+  // Axis i: crease rules when infinitely sharp.
+  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
+  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
+  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+  if (!pseudo) {
+    o[1] = f00;
+    o[9] = f10;
+    o[3] = f01;
+    o[11] = f11;
+    o[5] = 0.25 * (p10 + p11 + f00 + f10);   // (2,1)
+    o[2] = 0.25 * (n10 + p11 + f00 + f01);   // (1,2)
+    o[10] = 0.25 * (p11 + p21 + f10 + f11);  // (3,2)
+    o[7] = 0.25 * (p11 + p12 + f01 + f11);   // (2,3)
+    o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11); // (2,2)
+  }
+  return o;
+}
+
+// The centre after a step: smooth (and dart) from every sector's (1,0) and its cell-00 face
+// point (p10 of sector j, p11 of sector j and p10 of sector j + 1), crease along axes ia, ib,
+// or corner (it stays).
+fn centreSmoothTerm(c: vec3<f32>, p10: vec3<f32>, p11: vec3<f32>, n10: vec3<f32>) -> vec3<f32> {
+  return p10 + 0.25 * (c + p10 + p11 + n10);
+}
 
 @compute @workgroup_size(WORKGROUP_SIZE)
 fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index) lid: u32) {
   let wg = wid.y * GRID_X + wid.x;
   // (Workgroups past the last one exist when the dispatch is folded into 2D.)
   let th = select(CC_NONE, staticBuf[params.ccThreads + wg * WORKGROUP_SIZE + lid], wg < params.ccSliceGroups);
+  // A fan wider than a workgroup has one of its own, marked in its first word (src/gpu/cc/fans.ts
+  // packThreads); the whole workgroup takes that path (a uniform branch: barriers inside).
+  if (lid == 0u) {
+    wideFanOf = select(CC_NONE, ccThreadWord_fan(th), th != CC_NONE && ccThreadWord_sector(th) == CC_WIDE_FAN);
+  }
+  let wide = workgroupUniformLoad(&wideFanOf);
+  if (wide != CC_NONE) {
+    wideSlices(wide, lid);
+    return;
+  }
   let valid = th != CC_NONE;
   var fan = 0u;
   var sec = 0u;
@@ -170,54 +227,18 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   workgroupBarrier();
   for (var k = 1u; k <= params.ccMaxDepth; k++) {
     let live = valid && k <= D;
-    let p10 = P[6u * lid];
-    let p20 = P[6u * lid + 1u];
-    let p11 = P[6u * lid + 2u];
-    let p21 = P[6u * lid + 3u];
-    let p12 = P[6u * lid + 4u];
-    let p22 = P[6u * lid + 5u];
-    let c = C[first];
-    let n10 = P[6u * next];
-    let n20 = P[6u * next + 1u];
-    let q11 = P[6u * prev + 2u];
-    if (live && !pseudo) {
-      F[4u * lid] = 0.25 * (c + p10 + p11 + n10);
-      F[4u * lid + 1u] = 0.25 * (p10 + p20 + p21 + p11);
-      F[4u * lid + 2u] = 0.25 * (n10 + p11 + p12 + n20);
-      F[4u * lid + 3u] = 0.25 * (p11 + p21 + p22 + p12);
-    }
-    workgroupBarrier();
     var o: array<vec3<f32>, 12>;
+    let c = C[first];
     var cNew = c;
     if (live) {
-      let f00 = F[4u * lid];
-      let f10 = F[4u * lid + 1u];
-      let f01 = F[4u * lid + 2u];
-      let f11 = F[4u * lid + 3u];
-      let g00 = F[4u * prev];       // the cell [0,1]×[−1,0]
-      let g01 = F[4u * prev + 2u];  // the cell [1,2]×[−1,0]
-      // Axis i: crease rules when infinitely sharp.
-      o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
-      o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
-      o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
-      if (!pseudo) {
-        o[1] = f00;
-        o[9] = f10;
-        o[3] = f01;
-        o[11] = f11;
-        o[5] = 0.25 * (p10 + p11 + f00 + f10);   // (2,1)
-        o[2] = 0.25 * (n10 + p11 + f00 + f01);   // (1,2)
-        o[10] = 0.25 * (p11 + p21 + f10 + f11);  // (3,2)
-        o[7] = 0.25 * (p11 + p12 + f01 + f11);   // (2,3)
-        o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11); // (2,2)
-      }
+      let p = array<vec3<f32>, 6>(P[6u * lid], P[6u * lid + 1u], P[6u * lid + 2u], P[6u * lid + 3u], P[6u * lid + 4u], P[6u * lid + 5u]);
+      o = sliceStep(p, c, P[6u * next], P[6u * next + 1u], P[6u * prev], P[6u * prev + 2u], P[6u * prev + 4u], inf, pseudo);
       if (sec == 0u) {
-        // The centre: smooth (and dart), crease along axes ia, ib, or corner.
         if (rule == 1u) {
           cNew = 0.75 * c + 0.125 * (P[6u * (first + ia)] + P[6u * (first + ib)]);
         } else if (rule == 0u) {
           var s = vec3<f32>(0.0);
-          for (var j = 0u; j < n; j++) { s += P[6u * (first + j)] + F[4u * (first + j)]; }
+          for (var j = 0u; j < n; j++) { s += centreSmoothTerm(c, P[6u * (first + j)], P[6u * (first + j) + 2u], P[6u * (first + (j + 1u) % n)]); }
           let nf = f32(n);
           cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
         }
@@ -242,6 +263,69 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
     }
     workgroupBarrier();
+  }
+}
+
+// Old point j (in P's order: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)) of sector `sec` of a wide fan
+// before step k: the start level's (its sector words, as offsets from the anchor) at k = 1, else
+// step k − 1's slice.
+fn wideOld(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, k: u32, sec: u32, j: u32) -> vec3<f32> {
+  if (k == 1u) { return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec + 1u + j]) - anchor; }
+  let at = array<u32, 6>(0u, 4u, 1u, 5u, 2u, 6u);
+  return pt(fanWord(fan, 2u) + D + 12u * ((k - 2u) * ns + sec) + at[j]);
+}
+
+// A fan with more sectors than a workgroup has threads (any valence up to the fan word's field):
+// the same steps, its threads taking sectors lid, lid + WORKGROUP_SIZE, …, reading the step
+// before from its stored slice (global memory) instead of workgroup memory, the centre made by
+// thread 0; a storage barrier between steps.
+fn wideSlices(fan: u32, lid: u32) {
+  let w0 = fanWord(fan, 0u);
+  let ns = ccFanWord_sectors(w0);
+  let n = ccFanWord_valence(w0);
+  let boundary = ccFanWord_boundary(w0) == 1u;
+  let rule = ccFanWord_rule(w0);
+  let D = ccFanWord_depth(w0);
+  let anchor = pt(fanWord(fan, 1u));
+  let sliceBase = fanWord(fan, 2u);
+  let pair = fanWord(fan, 6u);
+  let ia = ccPairWord_a(pair);
+  let ib = ccPairWord_b(pair);
+  for (var k = 1u; k <= params.ccMaxDepth; k++) {
+    if (k <= D) {
+      let c = select(pt(sliceBase + k - 2u), vec3<f32>(0.0), k == 1u);
+      for (var sec = lid; sec < ns; sec += WORKGROUP_SIZE) {
+        let pseudo = boundary && sec == n;
+        var prev = select(sec - 1u, n - 1u, sec == 0u);
+        if (boundary && sec == 0u) { prev = sec; }
+        var next = select(sec + 1u, 0u, !boundary && sec == n - 1u);
+        if (pseudo) { next = sec; }
+        var p: array<vec3<f32>, 6>;
+        for (var j = 0u; j < 6u; j++) { p[j] = wideOld(fan, D, ns, anchor, k, sec, j); }
+        let inf = staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec] == 1u;
+        let o = sliceStep(p, c, wideOld(fan, D, ns, anchor, k, next, 0u), wideOld(fan, D, ns, anchor, k, next, 1u),
+                          wideOld(fan, D, ns, anchor, k, prev, 0u), wideOld(fan, D, ns, anchor, k, prev, 2u),
+                          wideOld(fan, D, ns, anchor, k, prev, 4u), inf, pseudo);
+        let sb = sliceBase + D + 12u * ((k - 1u) * ns + sec);
+        for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
+      }
+      if (lid == 0u) {
+        var cNew = c;
+        if (rule == 1u) {
+          cNew = 0.75 * c + 0.125 * (wideOld(fan, D, ns, anchor, k, ia, 0u) + wideOld(fan, D, ns, anchor, k, ib, 0u));
+        } else if (rule == 0u) {
+          var s = vec3<f32>(0.0);
+          for (var j = 0u; j < n; j++) {
+            s += centreSmoothTerm(c, wideOld(fan, D, ns, anchor, k, j, 0u), wideOld(fan, D, ns, anchor, k, j, 2u),
+                                  wideOld(fan, D, ns, anchor, k, (j + 1u) % n, 0u));
+          }
+          let nf = f32(n);
+          cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
+        }
+        setPt(sliceBase + k - 1u, cNew);
+      }
+    }
+    storageBarrier();
   }
 }
 

@@ -52,8 +52,8 @@
  * Limits (honest): where a semi-sharp crease fails the single-crease test (it ends at a dart or
  * a boundary, meets another crease or a corner, or runs into an extraordinary vertex) its
  * sharpness still decays by UNIFORM levels of the whole cage, ceil(σ) of them (sharpness ≥ 7
- * needs more than MAX_LEVEL = 6 and is refused with a message, as are vertices of valence > 64,
- * more than a workgroup). Chaikin's creasing rule (a crease's child sharpness averaged with its
+ * needs more than MAX_LEVEL = 6 and is refused with a message, as are vertices of valence > 4,094,
+ * the fan word's field, and faces of more than 64 corners). Chaikin's creasing rule (a crease's child sharpness averaged with its
  * neighbours') decays in the levels as OpenSubdiv does, without the single-crease closed form.
  * catmark_pawn's crease loops are all single-crease
  * (1 level, ~0.5 KB per face), but catmark_bishop and _car have σ ≈ 5 creases through valence-5
@@ -134,7 +134,7 @@ import type { PreparedMesh } from '../tess/prepare.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
 import { CC_STATIC, type CcSection } from '../contract/cc.ts';
 import type { ArenaLayout } from '../contract/define.ts';
-import { CC_FAN_WORD, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
+import { CC_FAN_WORD, CC_MAX_FAN_SECTORS, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
 import { levelStack } from './levels.ts';
 import { fanTable, packFans, packThreads, vertexLimits } from './fans.ts';
 import { REGION_SECTOR, buildRegions, triangleRegions } from './regions.ts';
@@ -182,8 +182,10 @@ export interface CatmullClarkData {
 }
 
 /**
- * A vertex's valence never changes under refinement, so one whose fan needs more threads than a
- * workgroup can never be a fan centre: say so now rather than "too many levels" later. Faces too.
+ * A vertex's valence never changes under refinement, so one whose fan has more sectors than its
+ * word holds can never be a fan centre: say so now rather than "too many levels" later. Faces
+ * wider than a workgroup too (their centre's fan would be wide; the n-gon evaluator's tables are
+ * sized for a workgroup).
  */
 function refuseWideVertices(topo: Topology): void {
   // A face's centre is a vertex of valence n after one step: an n-gon wider than a workgroup has
@@ -197,9 +199,9 @@ function refuseWideVertices(topo: Topology): void {
   }
   for (let v = 0; v < topo.nVerts; v++) {
     const faces = topo.vertHeOffsets[v + 1] - topo.vertHeOffsets[v];
-    if (faces + (topo.vertBoundary[v] ? 1 : 0) > WORKGROUP_SIZE)
+    if (faces + (topo.vertBoundary[v] ? 1 : 0) > CC_MAX_FAN_SECTORS)
       throw new LimitError(
-        `vertex ${v + 1} has ${faces} faces round it; the Catmull-Clark surface's GPU build takes at most ${WORKGROUP_SIZE - (topo.vertBoundary[v] ? 1 : 0)} (one workgroup's threads per vertex)`,
+        `vertex ${v + 1} has ${faces} faces round it; the Catmull-Clark surface's GPU build takes at most ${CC_MAX_FAN_SECTORS - (topo.vertBoundary[v] ? 1 : 0)} (its fan word's sector field)`,
       );
   }
 }

@@ -9,7 +9,7 @@ import type { PreparedMesh } from '../tess/prepare.ts';
 import { CC_NONE } from '../contract/cc.ts';
 import { NO_OWNER, OWNER_WORD } from '../contract/tess.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
-import { CC_FAN_WORD, CC_PAIR_WORD, CC_THREAD_WORD, CC_VERTEX_LIMIT_WORD } from './words.ts';
+import { CC_FAN_WORD, CC_MAX_FAN_SECTORS, CC_PAIR_WORD, CC_THREAD_WORD, CC_VERTEX_LIMIT_WORD, CC_WIDE_FAN } from './words.ts';
 import { U32, f32bits } from './word-list.ts';
 import { type Level, type LevelStack, MAX_LEVEL, VRULE_CREASE, VRULE_SMOOTH, isQuadHe, isRegular, vertexRuleOf } from './levels.ts';
 import { creaseVertexGrid } from './single-crease.ts';
@@ -66,7 +66,7 @@ function eligible(L: Level, x: number): boolean {
   const ring = vertexRing(m, x);
   if (!ring || ring.he.length === 0) return false;
   const n = ring.he.length;
-  if (n + (ring.boundary ? 1 : 0) > WORKGROUP_SIZE) return false;
+  if (n + (ring.boundary ? 1 : 0) > CC_MAX_FAN_SECTORS) return false;
   // Axis neighbours: the edges x→e_i (and the trailing boundary edge).
   for (const h of ring.he) {
     if (!axisOk(L, m.faceIndices[m.heNext[h]], L.edgeSharp[m.heEdge[h]])) return false;
@@ -355,13 +355,21 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
   return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms };
 }
 
-/** The slice kernel's thread words: one thread per sector of each sliced fan. */
+/** The slice kernel's thread words: one thread per sector of each sliced fan; a fan wider than a
+ * workgroup gets one of its own (CC_WIDE_FAN in its first word: its threads loop over its sectors). */
 export function packThreads(fans: FanRec[], sliceFans: number[]): U32 {
   // Pack the sliced fans into workgroups of 64 threads (a fan never straddles two).
   const threadWords = new U32();
   let used = WORKGROUP_SIZE;
   for (const id of sliceFans) {
     const ns = fans[id].sectors.length;
+    if (ns > WORKGROUP_SIZE) {
+      while (threadWords.n % WORKGROUP_SIZE) threadWords.push(CC_NONE);
+      threadWords.push(CC_THREAD_WORD.pack({ fan: id, sector: CC_WIDE_FAN }));
+      while (threadWords.n % WORKGROUP_SIZE) threadWords.push(CC_NONE);
+      used = WORKGROUP_SIZE;
+      continue;
+    }
     if (used + ns > WORKGROUP_SIZE) {
       while (threadWords.n % WORKGROUP_SIZE) threadWords.push(CC_NONE);
       used = 0;

@@ -3,7 +3,7 @@
  * getters (words.ts), wgsl/cc/crease-basis.wgsl for single-crease patches, wgsl/cc/surface.wgsl
  * (after the tessellator's prelude). The patch build: its own prelude (Params, the shared
  * constants, CC_BUILD_GROUP's bindings and the level range struct: contract/contract.ts
- * ccBuildPrelude), the getters, wgsl/cc/build.wgsl.
+ * ccBuildPrelude), the wide-fan mark of the slice kernel's thread words, the getters, wgsl/cc/build.wgsl.
  */
 import creaseBasisWgsl from '../../../wgsl/cc/crease-basis.wgsl?raw';
 import surfaceWgsl from '../../../wgsl/cc/surface.wgsl?raw';
@@ -11,9 +11,9 @@ import buildWgsl from '../../../wgsl/cc/build.wgsl?raw';
 import { wgslConstants } from '../contract/define.ts';
 import { CC_NONE } from '../contract/cc.ts';
 import { ccBuildPrelude } from '../contract/contract.ts';
-import { CC_WORDS } from './words.ts';
+import { CC_WIDE_FAN, CC_WORDS } from './words.ts';
 
 const wordsWgsl = CC_WORDS.map((w) => w.wgsl).join('\n');
 
 export const CC_SURFACE_WGSL = [wgslConstants({ CC_NONE }), wordsWgsl, creaseBasisWgsl, surfaceWgsl].join('\n');
-export const CC_BUILD_WGSL = [ccBuildPrelude(), wordsWgsl, buildWgsl].join('\n');
+export const CC_BUILD_WGSL = [ccBuildPrelude(), wgslConstants({ CC_WIDE_FAN }), wordsWgsl, buildWgsl].join('\n');

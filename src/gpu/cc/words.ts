@@ -17,9 +17,9 @@ export const CC_REGION_WORD = defineBits('CcRegionWord', {
   rot: [2, 2],
   mask: [4, 4],
   offset: [8, 4],
-  sector: [12, 6],
-  crease: [18, 1],
+  sector: [12, 12],
   patchKind: [24, 2],
+  crease: [26, 1],
 });
 
 /**
@@ -52,15 +52,23 @@ export const CC_PAIR_WORD = defineBits('CcPairWord', { a: [0, 16], b: [16, 16] }
  * boundary; rule: the centre's (0 smooth or dart, 1 crease, 2 corner); depth: its steps D.
  */
 export const CC_FAN_WORD = defineBits('CcFanWord', {
-  sectors: [0, 8],
-  valence: [8, 8],
-  boundary: [16, 1],
-  rule: [17, 2],
-  depth: [20, 4],
+  sectors: [0, 12],
+  valence: [12, 12],
+  boundary: [24, 1],
+  rule: [25, 2],
+  depth: [27, 4],
 });
 
-/** One slice-kernel thread: its fan and its sector (all ones: idle). */
+/** The most sectors a fan has (its word's field): the widest vertex the build takes. */
+export const CC_MAX_FAN_SECTORS = 2 ** CC_FAN_WORD.fields.sectors[1] - 1;
+
+/**
+ * One slice-kernel thread: its fan and its sector (all ones: idle). A fan wider than a workgroup
+ * has a workgroup of its own, whose first word has sector CC_WIDE_FAN (and the rest idle): its
+ * threads take its sectors in turn (wgsl/cc/build.wgsl wideSlices).
+ */
 export const CC_THREAD_WORD = defineBits('CcThreadWord', { fan: [0, 24], sector: [24, 8] });
+export const CC_WIDE_FAN = 2 ** CC_THREAD_WORD.fields.sector[1] - 1;
 
 /**
  * Word 1 of a prepared triangle. corners: its face's (4: a quad); fan: which triangle of the face

@@ -32,7 +32,7 @@ const TALK = new Set(['suzanne', 'bigguy', 'monsterfrog', 'imrod']); // tests/gp
 const MAX_BOUND = 1e-6;
 const SAMPLE = 400;
 /** The cages the exact surface refuses today, and why (issue 31): sharpness beyond the build's
- * uniform levels; a vertex of more faces than a workgroup has threads. Any other refusal fails,
+ * uniform levels. Any other refusal fails,
  * and so does taking one of these without this list following. (Non-manifold cages load split
  * apart as OpenSubdiv makes them sharp: src/mesh/manifold.ts.) */
 const REFUSED: Record<string, RegExp> = {
@@ -40,7 +40,6 @@ const REFUSED: Record<string, RegExp> = {
   catmark_helmet: /levels of refinement/,
   catmark_hole_test2: /levels of refinement/,
   catmark_rook: /levels of refinement/,
-  catmark_pole360: /faces round it|valence/,
 };
 
 /** Cages whose surface meets itself (faces glued back to back, folded over onto each other, and
