@@ -351,23 +351,56 @@ export interface AccCage {
 
 const accCages = new WeakMap<Cage, AccCage>();
 
+/** The most Catmull-Clark steps accCage takes for semi-sharp creases, and the most patches they may
+ * make (each step makes 4 of a quad); creases still semi-sharp after them are built as
+ * AccOptions.semiSharp says. */
+export const ACC_MAX_STEPS = 4;
+export const ACC_MAX_PATCHES = 1 << 15;
+
 /**
- * The cage the ACC schemes take in place of `cage`: the cage itself, or, where it has n-gons (faces
- * of 5 corners or more: the schemes' patches are quads and triangles), one Catmull-Clark step of
- * the whole cage first, as the papers propose (src/subdiv/refine-cage.ts: the same limit surface;
- * every face becomes quads, so the patches are 4 per quad, 3 per triangle and n per n-gon of the
- * cage). The whole cage, not only its n-gons: a patch's edges are built from both sides' points,
- * and only a step of both sides keeps them watertight. Kept per cage (one object for every scheme
- * and view).
+ * The cage the ACC schemes take in place of `cage`: the cage itself, or k Catmull-Clark steps of
+ * the whole cage first (src/subdiv/refine-cage.ts: the same limit surface, every face a quad):
+ *   - one where it has n-gons (faces of 5 corners or more: the schemes' patches are quads and
+ *     triangles), as the papers propose;
+ *   - ceil(σ) where its sharpest semi-sharp crease or corner has sharpness σ (0 < σ < 10): each
+ *     step decays every sharpness by one (OpenSubdiv's uniform or Chaikin rule), so after them
+ *     none is left, and the schemes, which model only smooth and infinitely sharp features, build
+ *     the semi-sharp surface from its exact refinement instead of rounding σ to 0 or ∞ (the error
+ *     views show the difference: tests/subdiv/acc-cage.test.ts);
+ * at most ACC_MAX_STEPS and ACC_MAX_PATCHES patches (the n-gon step always), the rest built
+ * sharp or smooth as before, which the note says. The whole cage, not only where it is needed: a
+ * patch's edges are built from both sides' points, and only a step of both sides keeps them
+ * watertight. Kept per cage (one object for every scheme and view).
  */
 export function accCage(cage: Cage): AccCage {
   let r = accCages.get(cage);
   if (!r) {
-    if (!hasNgons(cage)) r = { cage, note: null };
+    const ngons = hasNgons(cage);
+    let sigma = 0;
+    for (const t of [...cage.creases, ...cage.corners])
+      if (t.sharpness > 0 && t.sharpness < SHARPNESS_INFINITE) sigma = Math.max(sigma, t.sharpness);
+    const want = Math.max(ngons ? 1 : 0, Math.ceil(sigma));
+    // Patches after k steps: the cage's face corners after the first (a face of n corners makes n
+    // quads), 4 times as many after each next.
+    let patches = cage.faceIndices.length;
+    let steps = 0;
+    while (steps < want && (steps === 0 ? ngons || patches <= ACC_MAX_PATCHES : steps < ACC_MAX_STEPS && 4 * patches <= ACC_MAX_PATCHES)) {
+      if (steps > 0) patches *= 4;
+      steps++;
+    }
+    let refined = cage;
+    for (let k = 0; k < steps; k++) refined = refineCage(refined).cage;
+    if (steps === 0) r = { cage, note: null };
     else {
-      const refined = refineCage(cage).cage;
-      const faces = refined.faceOffsets.length - 1;
-      r = { cage: refined, note: `one Catmull-Clark step first (the cage has n-gons): ${faces.toLocaleString('en-US')} patches` };
+      const why = [ngons ? 'the cage has n-gons' : '', sigma > 0 ? `semi-sharp creases up to ${+sigma.toPrecision(3)} decay` : '']
+        .filter(Boolean)
+        .join('; ');
+      const left = steps < Math.ceil(sigma) ? `; what is left of sharper creases is built sharp (≥ ${ACC_SHARP_FROM}) or smooth` : '';
+      const faces = (refined.faceOffsets.length - 1).toLocaleString('en-US');
+      r = {
+        cage: refined,
+        note: `${steps === 1 ? 'one Catmull-Clark step' : `${steps} Catmull-Clark steps`} first (${why}): ${faces} patches${left}`,
+      };
     }
     accCages.set(cage, r);
   }

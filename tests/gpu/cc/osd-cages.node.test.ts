@@ -169,7 +169,9 @@ describe.skipIf(!present)("Catmull-Clark GPU path and the ACC schemes on OpenSub
           t.setMesh(mesh, undefined, data.acc);
           device.pushErrorScope('validation');
           const enc = device.createCommandEncoder();
-          t.encode(enc, testCamera(mesh, 1.5 * mesh.size, 3));
+          // Factor 3, or 1 on the cages refined into tens of thousands of patches (car, bishop:
+          // their semi-sharp creases decay in accCage's steps): CI time, the same paths.
+          t.encode(enc, testCamera(mesh, 1.5 * mesh.size, cage.faceOffsets.length > 8192 ? 1 : 3));
           device.queue.submit([enc.finish()]);
           const out = await readMesh(device, t.output);
           const edgeF = new Uint32Array(await readBuffer(device, t.workBuffer, 4 * mesh.edgeCount, 4 * t.workLayout.edgeF));
