@@ -41,12 +41,10 @@ describe('CcTableCache', () => {
   });
 
   it('a cage the preparation refuses rejects with a message fit to show', async () => {
-    // A vertex of valence 600 (a fan of triangles): wider than a workgroup's threads.
-    const k = 600;
-    const lines = ['v 0 0 0'];
-    for (let i = 0; i < k; i++) lines.push(`v ${Math.cos((2 * Math.PI * i) / k)} ${Math.sin((2 * Math.PI * i) / k)} 0`);
-    for (let i = 0; i < k; i++) lines.push(`f 1 ${i + 2} ${((i + 1) % k) + 2}`);
-    const { cage } = loadCage(lines.join('\n'));
-    await expect(new CcTableCache().get(cage)).rejects.toThrow(/valence|fan|workgroup/i);
+    // A cube with a crease of sharpness 8: more uniform levels than the build makes.
+    const cube = ['v -1 -1 -1', 'v 1 -1 -1', 'v 1 1 -1', 'v -1 1 -1', 'v -1 -1 1', 'v 1 -1 1', 'v 1 1 1', 'v -1 1 1'];
+    const faces = ['f 1 4 3 2', 'f 5 6 7 8', 'f 1 2 6 5', 'f 2 3 7 6', 'f 3 4 8 7', 'f 4 1 5 8'];
+    const { cage } = loadCage([...cube, ...faces, 't crease 2/1/0 4 5 8'].join('\n'));
+    await expect(new CcTableCache().get(cage)).rejects.toThrow(/more than 6 levels of refinement/);
   });
 });
