@@ -224,7 +224,7 @@ describe('npm run tessellate', () => {
     expect(p.vertexCount).toBe(v.length);
   });
 
-  it('--tessellator instanced --surface bezier-acc: the ACC surface, welded closed across mixed levels; an n-gon cage refused', async () => {
+  it('--tessellator instanced --surface bezier-acc: the ACC surface, welded closed across mixed levels; an n-gon cage refined once, said', async () => {
     const out = join(dir, 'creature-acc.obj');
     const r = await run(
       'public/models/creature.obj',
@@ -247,19 +247,23 @@ describe('npm run tessellate', () => {
     console.log(`instanced bezier-acc creature: ${f.length} triangles, weld gap ${stats.weldGap} of the size`);
     expect(stats.weldGap).toBeLessThan(1e-6);
     expect(closedEverywhere(f).open).toBe(0);
-    const bad = await run('public/models/icosphere.obj', '--tessellator', 'instanced', '--surface', 'pm-acc', '--level', '2', '--stats');
-    expect(bad.status).toBe(2);
-    expect(bad.stderr).toMatch(/5 corners/);
+    const ico = await run('public/models/icosphere.obj', '--tessellator', 'instanced', '--surface', 'pm-acc', '--level', '2', '--stats');
+    expect(ico.status, ico.stderr).toBe(0);
+    expect(ico.stderr).toMatch(/Pm ACC: one Catmull-Clark step first \(the cage has n-gons\): 230 patches/);
+    expect(statsLine(ico.stdout).patches).toBe(230);
   });
 
-  it('--surface gregory-acc on the compute tessellator: a closed OBJ; an n-gon cage refused with exit code 2', async () => {
+  it('--surface gregory-acc on the compute tessellator: a closed OBJ; the gear (n-gons, σ = 2 creases) refined twice, said', async () => {
     const out = join(dir, 'creature-gregory.obj');
     const r = await run('public/models/creature.obj', '--fixed', '3', '--surface', 'gregory-acc', '--out', out);
     expect(r.status, r.stderr).toBe(0);
     expect(closedEverywhere(objOf(out).f).open).toBe(0);
-    const gear = await run('public/models/gear.obj', '--fixed', '3', '--surface', 'pm-acc', '--out', join(dir, 'x.obj'));
-    expect(gear.status).toBe(2);
-    expect(gear.stderr).toMatch(/corners/);
+    const gearOut = join(dir, 'gear-pm.obj');
+    const gear = await run('public/models/gear.obj', '--fixed', '3', '--surface', 'pm-acc', '--out', gearOut);
+    expect(gear.status, gear.stderr).toBe(0);
+    expect(gear.stderr).toMatch(/2 Catmull-Clark steps first \(the cage has n-gons; semi-sharp creases up to 2 decay\)/);
+    // (Open along its infinitely sharp creases, where each side has its own normals.)
+    expect(objOf(gearOut).f.length).toBeGreaterThan(1000);
   });
 
   it('--demo-view --limit-px: the demo’s first view (adaptive, flat baseline) within a pixel of the exact limit', async () => {
