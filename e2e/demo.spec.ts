@@ -4,7 +4,7 @@
 // bad OBJ and a lost device, and explains itself when WebGPU is missing.
 import { expect, test, type Page } from '@playwright/test';
 import { PNG } from 'pngjs';
-import { collectErrors, dropFile, ready } from './helpers.ts';
+import { CUBE_LINES, collectErrors, dropFile, ready } from './helpers.ts';
 
 /** What the panel's cage picker shows. */
 function picked(page: Page) {
@@ -161,23 +161,7 @@ test('a cage the Catmull-Clark preparation refuses falls back to Phong with a me
   await ready(page);
   // A semi-sharp crease of sharpness 8 that ends at the cube's corners needs 8 uniform levels:
   // refused by the GPU path's preparation (src/gpu/cc/levels.ts MAX_LEVEL).
-  const cube = [
-    'v -1 -1 -1',
-    'v 1 -1 -1',
-    'v 1 1 -1',
-    'v -1 1 -1',
-    'v -1 -1 1',
-    'v 1 -1 1',
-    'v 1 1 1',
-    'v -1 1 1',
-    'f 5 6 7 8',
-    'f 1 4 3 2',
-    'f 1 2 6 5',
-    'f 2 3 7 6',
-    'f 3 4 8 7',
-    'f 4 1 5 8',
-    't crease 2/1/0 4 5 8',
-  ].join('\n');
+  const cube = [...CUBE_LINES, 't crease 2/1/0 4 5 8'].join('\n');
   await dropFile(page, 'sharp-cube.obj', `${cube}\n`);
   const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for sharp-cube.obj' });
   await expect(toast).toContainText('needs more than 6 levels of refinement');

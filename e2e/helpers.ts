@@ -33,8 +33,8 @@ export async function dropFile(page: Page, name: string, text: string): Promise<
   await page.dispatchEvent('body', 'drop', { dataTransfer });
 }
 
-/** A cube with one face tagged as a hole (5 faces drawn). */
-export const HOLED_CUBE = [
+/** A cube's OBJ lines (8 vertices, 6 outward quads), for the specs that drop a tagged cube. */
+export const CUBE_LINES = [
   'v -1 -1 -1',
   'v 1 -1 -1',
   'v 1 1 -1',
@@ -43,12 +43,13 @@ export const HOLED_CUBE = [
   'v 1 -1 1',
   'v 1 1 1',
   'v -1 1 1',
-  'f 1 4 3 2',
   'f 5 6 7 8',
+  'f 1 4 3 2',
   'f 1 2 6 5',
   'f 2 3 7 6',
   'f 3 4 8 7',
   'f 4 1 5 8',
-  't hole 1/0/0 0',
-  '',
-].join('\n');
+];
+
+/** A cube with one face tagged as a hole (5 faces drawn). */
+export const HOLED_CUBE = [...CUBE_LINES, 't hole 1/0/0 0', ''].join('\n');

@@ -121,3 +121,14 @@ export function faceSizeIssues(cage: Cage): CageIssue[] {
   }
   return issues;
 }
+
+/** The bounding-box diagonal of a cage's positions. */
+export function cageDiagonal(positions: ArrayLike<number>): number {
+  const lo = [Infinity, Infinity, Infinity],
+    hi = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < positions.length; i++) {
+    lo[i % 3] = Math.min(lo[i % 3], positions[i]);
+    hi[i % 3] = Math.max(hi[i % 3], positions[i]);
+  }
+  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
+}

@@ -3,7 +3,7 @@
 // the steps buy: each scheme's distance from the exact limit surface at the same parameter, the
 // error views' measure, before (σ rounded to 0 or ∞) and after (the exact refinement of σ).
 import { describe, expect, it } from 'vitest';
-import { loadCage, makeCage } from '../../src/mesh/index.ts';
+import { cageDiagonal, loadCage, makeCage } from '../../src/mesh/index.ts';
 import { ACC_MAX_STEPS, ACC_SCHEMES, accCage } from '../../src/subdiv/acc.ts';
 import { AccSurface } from '../../src/subdiv/acc-evaluate.ts';
 import { Surface, cageOptions } from '../../src/subdiv/index.ts';
@@ -26,14 +26,7 @@ function accError(cage: ReturnType<typeof loadCage>['cage'], scheme: (typeof ACC
   const acc = new AccSurface(cage, scheme);
   const exact = new Surface(cage, undefined, cageOptions(cage));
   const r = rng(5);
-  const lo = [Infinity, Infinity, Infinity],
-    hi = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < cage.positions.length; i += 3)
-    for (let c = 0; c < 3; c++) {
-      lo[c] = Math.min(lo[c], cage.positions[i + c]);
-      hi[c] = Math.max(hi[c], cage.positions[i + c]);
-    }
-  const size = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+  const size = cageDiagonal(cage.positions);
   let max = 0;
   const nf = cage.faceOffsets.length - 1;
   for (let i = 0; i < samples; i++) {

@@ -4,7 +4,7 @@
 // the cage's size, on cages with semi-sharp and infinitely sharp creases, corners, boundaries,
 // holes, n-gons and Chaikin creasing; and the new cage's uvs interpolate the cage's.
 import { describe, expect, it } from 'vitest';
-import { type Cage, loadCage, makeCage, uvAtSubFace } from '../../src/mesh/index.ts';
+import { type Cage, cageDiagonal, loadCage, makeCage, uvAtSubFace } from '../../src/mesh/index.ts';
 import { Surface, cageOptions, hasNgons, refineCage } from '../../src/subdiv/index.ts';
 import { cube, grid3, pentPrism, triPrism } from '../support/subdiv-fixtures.ts';
 import gear from '../../public/models/gear.obj?raw';
@@ -34,17 +34,6 @@ function quadParam(j: number, s: number, t: number): [number, number] {
     next = QUAD_CORNER[(j + 1) % 4],
     prev = QUAD_CORNER[(j + 3) % 4];
   return [0, 1].map((i) => c[i] + (s * (next[i] - c[i])) / 2 + (t * (prev[i] - c[i])) / 2) as [number, number];
-}
-
-function size(cage: Cage): number {
-  const lo = [Infinity, Infinity, Infinity],
-    hi = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < cage.positions.length; i += 3)
-    for (let c = 0; c < 3; c++) {
-      lo[c] = Math.min(lo[c], cage.positions[i + c]);
-      hi[c] = Math.max(hi[c], cage.positions[i + c]);
-    }
-  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
 }
 
 const chaikinCube = (): Cage => {
@@ -91,7 +80,7 @@ describe('refineCage: one Catmull-Clark step as a cage', () => {
       expect(hasNgons(child)).toBe(false);
       const S = new Surface(cage, undefined, options);
       const C = new Surface(child, undefined, cageOptions(child));
-      const tol = 1e-12 * size(cage);
+      const tol = 1e-12 * cageDiagonal(cage.positions);
       const r = rng(7);
       let compared = 0;
       for (let h = 0; h < child.faceOffsets.length - 1; h++) {

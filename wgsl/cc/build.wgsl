@@ -121,6 +121,17 @@ var<workgroup> wideFanOf: u32;                          // the workgroup's wide 
 
 fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
 
+// A fan's words unpacked (src/gpu/cc/build.ts "fans"): sectors, valence, boundary, rule, depth D,
+// its anchor point, its slices' base and its crease pair (ia, ib).
+struct FanHead { ns: u32, n: u32, boundary: bool, rule: u32, D: u32, anchor: vec3<f32>, sliceBase: u32, ia: u32, ib: u32 }
+
+fn fanHead(fan: u32) -> FanHead {
+  let w0 = fanWord(fan, 0u);
+  let pair = fanWord(fan, 6u);
+  return FanHead(ccFanWord_sectors(w0), ccFanWord_valence(w0), ccFanWord_boundary(w0) == 1u, ccFanWord_rule(w0), ccFanWord_depth(w0),
+                 pt(fanWord(fan, 1u)), fanWord(fan, 2u), ccPairWord_a(pair), ccPairWord_b(pair));
+}
+
 // One step of one sector: its 12 new points (a, b), a ∈ 1..3, b ∈ 0..3, at 4(a − 1) + b, from
 // its 6 old points p, the old centre c, the next sector's (1,0), (2,0) (n10, n20) and the
 // previous one's (1,0), (1,1), (1,2) (q10, q11, q12). The face points of the cells
@@ -200,20 +211,19 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   if (valid) {
     fan = ccThreadWord_fan(th);
     sec = ccThreadWord_sector(th);
-    let w0 = fanWord(fan, 0u);
-    ns = ccFanWord_sectors(w0);
-    n = ccFanWord_valence(w0);
-    boundary = ccFanWord_boundary(w0) == 1u;
-    rule = ccFanWord_rule(w0);
-    D = ccFanWord_depth(w0);
-    anchor = pt(fanWord(fan, 1u));
-    sliceBase = fanWord(fan, 2u);
+    let h = fanHead(fan);
+    ns = h.ns;
+    n = h.n;
+    boundary = h.boundary;
+    rule = h.rule;
+    D = h.D;
+    anchor = h.anchor;
+    sliceBase = h.sliceBase;
+    ia = h.ia;
+    ib = h.ib;
     let sb = fanWord(fan, 3u) + 7u * sec;
     inf = staticBuf[params.ccSectors + sb] == 1u;
     pseudo = boundary && sec == n;
-    let pair = fanWord(fan, 6u);
-    ia = ccPairWord_a(pair);
-    ib = ccPairWord_b(pair);
     for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = pt(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
     if (sec == 0u) { C[lid] = vec3<f32>(0.0); }
   }
@@ -269,10 +279,10 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 // Old point j (in P's order: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)) of sector `sec` of a wide fan
 // before step k: the start level's (its sector words, as offsets from the anchor) at k = 1, else
 // step k − 1's slice.
-fn wideOld(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, k: u32, sec: u32, j: u32) -> vec3<f32> {
-  if (k == 1u) { return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec + 1u + j]) - anchor; }
+fn wideOld(fan: u32, h: FanHead, k: u32, sec: u32, j: u32) -> vec3<f32> {
+  if (k == 1u) { return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec + 1u + j]) - h.anchor; }
   let at = array<u32, 6>(0u, 4u, 1u, 5u, 2u, 6u);
-  return pt(fanWord(fan, 2u) + D + 12u * ((k - 2u) * ns + sec) + at[j]);
+  return pt(h.sliceBase + h.D + 12u * ((k - 2u) * h.ns + sec) + at[j]);
 }
 
 // A fan with more sectors than a workgroup has threads (any valence up to the fan word's field):
@@ -280,49 +290,39 @@ fn wideOld(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, k: u32, sec: u32, j: u3
 // before from its stored slice (global memory) instead of workgroup memory, the centre made by
 // thread 0; a storage barrier between steps.
 fn wideSlices(fan: u32, lid: u32) {
-  let w0 = fanWord(fan, 0u);
-  let ns = ccFanWord_sectors(w0);
-  let n = ccFanWord_valence(w0);
-  let boundary = ccFanWord_boundary(w0) == 1u;
-  let rule = ccFanWord_rule(w0);
-  let D = ccFanWord_depth(w0);
-  let anchor = pt(fanWord(fan, 1u));
-  let sliceBase = fanWord(fan, 2u);
-  let pair = fanWord(fan, 6u);
-  let ia = ccPairWord_a(pair);
-  let ib = ccPairWord_b(pair);
+  let h = fanHead(fan);
   for (var k = 1u; k <= params.ccMaxDepth; k++) {
-    if (k <= D) {
-      let c = select(pt(sliceBase + k - 2u), vec3<f32>(0.0), k == 1u);
-      for (var sec = lid; sec < ns; sec += WORKGROUP_SIZE) {
-        let pseudo = boundary && sec == n;
-        var prev = select(sec - 1u, n - 1u, sec == 0u);
-        if (boundary && sec == 0u) { prev = sec; }
-        var next = select(sec + 1u, 0u, !boundary && sec == n - 1u);
+    if (k <= h.D) {
+      let c = select(pt(h.sliceBase + k - 2u), vec3<f32>(0.0), k == 1u);
+      for (var sec = lid; sec < h.ns; sec += WORKGROUP_SIZE) {
+        let pseudo = h.boundary && sec == h.n;
+        var prev = select(sec - 1u, h.n - 1u, sec == 0u);
+        if (h.boundary && sec == 0u) { prev = sec; }
+        var next = select(sec + 1u, 0u, !h.boundary && sec == h.n - 1u);
         if (pseudo) { next = sec; }
         var p: array<vec3<f32>, 6>;
-        for (var j = 0u; j < 6u; j++) { p[j] = wideOld(fan, D, ns, anchor, k, sec, j); }
+        for (var j = 0u; j < 6u; j++) { p[j] = wideOld(fan, h, k, sec, j); }
         let inf = staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec] == 1u;
-        let o = sliceStep(p, c, wideOld(fan, D, ns, anchor, k, next, 0u), wideOld(fan, D, ns, anchor, k, next, 1u),
-                          wideOld(fan, D, ns, anchor, k, prev, 0u), wideOld(fan, D, ns, anchor, k, prev, 2u),
-                          wideOld(fan, D, ns, anchor, k, prev, 4u), inf, pseudo);
-        let sb = sliceBase + D + 12u * ((k - 1u) * ns + sec);
+        let o = sliceStep(p, c, wideOld(fan, h, k, next, 0u), wideOld(fan, h, k, next, 1u),
+                          wideOld(fan, h, k, prev, 0u), wideOld(fan, h, k, prev, 2u),
+                          wideOld(fan, h, k, prev, 4u), inf, pseudo);
+        let sb = h.sliceBase + h.D + 12u * ((k - 1u) * h.ns + sec);
         for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
       }
       if (lid == 0u) {
         var cNew = c;
-        if (rule == 1u) {
-          cNew = 0.75 * c + 0.125 * (wideOld(fan, D, ns, anchor, k, ia, 0u) + wideOld(fan, D, ns, anchor, k, ib, 0u));
-        } else if (rule == 0u) {
+        if (h.rule == 1u) {
+          cNew = 0.75 * c + 0.125 * (wideOld(fan, h, k, h.ia, 0u) + wideOld(fan, h, k, h.ib, 0u));
+        } else if (h.rule == 0u) {
           var s = vec3<f32>(0.0);
-          for (var j = 0u; j < n; j++) {
-            s += centreSmoothTerm(c, wideOld(fan, D, ns, anchor, k, j, 0u), wideOld(fan, D, ns, anchor, k, j, 2u),
-                                  wideOld(fan, D, ns, anchor, k, (j + 1u) % n, 0u));
+          for (var j = 0u; j < h.n; j++) {
+            s += centreSmoothTerm(c, wideOld(fan, h, k, j, 0u), wideOld(fan, h, k, j, 2u),
+                                  wideOld(fan, h, k, (j + 1u) % h.n, 0u));
           }
-          let nf = f32(n);
+          let nf = f32(h.n);
           cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
         }
-        setPt(sliceBase + k - 1u, cNew);
+        setPt(h.sliceBase + k - 1u, cNew);
       }
     }
     storageBarrier();
@@ -385,18 +385,17 @@ fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec
 struct FanCentre { pos: vec3<f32>, P0: vec3<f32>, T1: vec3<f32>, T2: vec3<f32>, c: vec3<f32>, anchor: vec3<f32> }
 
 fn fanCentre(fan: u32) -> FanCentre {
-  let w0 = fanWord(fan, 0u);
-  let ns = ccFanWord_sectors(w0);
-  let n = ccFanWord_valence(w0);
-  let boundary = ccFanWord_boundary(w0) == 1u;
-  let rule = ccFanWord_rule(w0);
-  let D = ccFanWord_depth(w0);
-  let anchor = pt(fanWord(fan, 1u));
+  let h = fanHead(fan);
+  let ns = h.ns;
+  let n = h.n;
+  let boundary = h.boundary;
+  let rule = h.rule;
+  let D = h.D;
+  let anchor = h.anchor;
   var c = vec3<f32>(0.0);
-  if (D > 0u) { c = pt(fanWord(fan, 2u) + D - 1u); }
-  let pair = fanWord(fan, 6u);
-  let ia = ccPairWord_a(pair);
-  let ib = ccPairWord_b(pair);
+  if (D > 0u) { c = pt(h.sliceBase + D - 1u); }
+  let ia = h.ia;
+  let ib = h.ib;
   var P0 = c;
   var T1 = vec3<f32>(0.0);
   var T2 = vec3<f32>(0.0);
@@ -453,15 +452,14 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     vertexLimit(v, fan != CC_NONE, C);
     return;
   }
-  let w0 = fanWord(fan, 0u);
-  let ns = ccFanWord_sectors(w0);
-  let n = ccFanWord_valence(w0);
-  let boundary = ccFanWord_boundary(w0) == 1u;
-  let rule = ccFanWord_rule(w0);
-  let D = ccFanWord_depth(w0);
-  let pair = fanWord(fan, 6u);
-  let ia = ccPairWord_a(pair);
-  let ib = ccPairWord_b(pair);
+  let h = fanHead(fan);
+  let ns = h.ns;
+  let n = h.n;
+  let boundary = h.boundary;
+  let rule = h.rule;
+  let D = h.D;
+  let ia = h.ia;
+  let ib = h.ib;
   let anchor = C.anchor;
   let c = C.c;
   let P0 = C.P0;

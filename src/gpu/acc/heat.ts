@@ -16,6 +16,7 @@
  * Bindings: 8 storage buffers in the error pass (WebGPU's default per-stage limit), so the
  * per-triangle table, the partials, the totals and the per-vertex values share one buffer (aux).
  */
+import { cageDiagonal } from '../../mesh/range.ts';
 import commonWgsl from '../../../wgsl/tess/common.wgsl?raw';
 import heatWgsl from '../../../wgsl/acc/heat.wgsl?raw';
 import type { Cage } from '../../mesh/index.ts';
@@ -106,17 +107,6 @@ export interface HeatTotals {
   rmsAngle: number;
   /** Output vertices counted (those of a cage triangle). */
   vertices: number;
-}
-
-/** The bounding-box diagonal of a cage's positions. */
-export function cageDiagonal(positions: ArrayLike<number>): number {
-  const lo = [Infinity, Infinity, Infinity],
-    hi = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < positions.length; i++) {
-    lo[i % 3] = Math.min(lo[i % 3], positions[i]);
-    hi[i % 3] = Math.max(hi[i % 3], positions[i]);
-  }
-  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) || 1;
 }
 
 /** The error pass's WGSL: the reference's inputs and exact surface, the ACC evaluator (group 1), its
