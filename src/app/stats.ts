@@ -3,6 +3,7 @@
  * buffers are, and where the GPU time goes. A pure function from numbers to HTML (escaped).
  */
 import type { LoadedModel } from './models.ts';
+import { formatIssue } from '../mesh/errors.ts';
 import type { MeshCounts } from './counts.ts';
 import type { GpuMemoryCounts } from '../gpu/device/tracked-device.ts';
 import type { InstancedCounts } from './instanced-view.ts';
@@ -163,7 +164,13 @@ export function renderStats(s: StatsInput): string {
   if (s.model) {
     const nv = s.model.cage.positions.length / 3;
     const nf = s.model.cage.faceOffsets.length - 1;
-    rows.push(row('cage', `<b>${esc(s.model.title)}</b> · ${int.format(nv)} verts · ${int.format(nf)} faces`, 'stats-cage'));
+    // What the loader changed or ignored (non-manifold vertices and edges split apart, unused
+    // vertices, …): the first said here, all of them on hover.
+    const w = s.model.warnings;
+    const said = w.length
+      ? ` <span class="warn" title="${esc(w.map(formatIssue).join('\n'))}">· ${w.length === 1 ? '' : `${int.format(w.length)} notes, the first: `}${esc(formatIssue(w[0]))}</span>`
+      : '';
+    rows.push(row('cage', `<b>${esc(s.model.title)}</b> · ${int.format(nv)} verts · ${int.format(nf)} faces${said}`, 'stats-cage'));
   }
   if (s.surface) {
     const sf = s.surface;

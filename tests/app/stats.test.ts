@@ -1,6 +1,7 @@
 /** The stats panel's text (src/app/stats.ts): every figure current or marked as an older one's. */
 import { describe, expect, it } from 'vitest';
 import { ratio, renderStats, type StatsInput } from '../../src/app/stats.ts';
+import { loadCage } from '../../src/mesh/index.ts';
 
 const base: StatsInput = {
   model: null,
@@ -34,6 +35,15 @@ describe('stats', () => {
     expect(idle).toMatch(/lit 2\.00 <span class="muted">last frame<\/span>/);
     expect(idle).toContain('idle');
     expect(renderStats(base)).not.toContain('last frame');
+  });
+
+  it("says what the loader changed: a non-manifold cage's splits, the first in the row and all on hover", () => {
+    const text = ['v 0 0 0', 'v 1 0 0', 'v 1 1 0', 'v -1 0 0', 'v -1 -1 0', 'f 1 2 3', 'f 1 4 5'].join('\n');
+    const model = { ...loadCage(text), title: 'bowtie.obj' } as unknown as StatsInput['model'];
+    const html = renderStats({ ...base, model });
+    expect(html).toContain('non-manifold vertex 1: its faces form 2 fans');
+    const clean = { ...loadCage('v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3'), title: 'x' } as unknown as StatsInput['model'];
+    expect(renderStats({ ...base, model: clean })).not.toContain('class="warn"');
   });
 
   it('writes ratios with two significant digits, never 0.01× for a few hundredths', () => {
