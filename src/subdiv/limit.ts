@@ -142,6 +142,9 @@ function smoothTangents(m: HalfEdges, P: Float64Array, ring: number[]): [V3, V3]
 }
 
 const MAX_LIMIT_LEVELS = 120;
+/** Levels of a crease sector of one face's ring before its diagonal gives the normal: the GPU
+ * fans' depth from the cage (src/gpu/cc/fans.ts TOTAL_DEPTH), so that the two conventions agree. */
+const K1_LEVELS = 8;
 
 /**
  * Limit position and tangents of vertex v of level L, for the sector of face
@@ -171,7 +174,9 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
   let prev: V3 | null = null;
   let scale0 = 0;
   for (let i = 0; i < cur.pos.length; i++) scale0 = Math.max(scale0, Math.abs(cur.pos[i]));
+  let k1Lead: V3 | null = null;
   for (let level = 0; ; level++) {
+    let refineMore = false;
     const m = cur.he,
       P = cur.pos;
     let secHe = -1;
@@ -247,10 +252,24 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
         const T1: V3 = [0, 0, 0],
           T2: V3 = [0, 0, 0];
         for (let c = 0; c < 3; c++) T1[c] = 0.5 * (P[3 * E(a) + c] - P[3 * E(b) + c]);
-        let nd = true;
+        const nd = true;
         if (k === 1) {
-          for (let c = 0; c < 3; c++) T2[c] = 3 * (P[3 * E(a) + c] + P[3 * E(b) + c]) - 6 * P[3 * lv + c];
-          nd = false;
+          // A crease sector of one face: its two sharp edges leave the vertex in opposite
+          // directions (θ = π), so the face's derivatives there are parallel and its normal
+          // depends on the direction of approach; OpenSubdiv's single-face mask (3(e_a + e_b) −
+          // 6v, along the crease curve's own curvature) gives it either sign (a concave rim: turned
+          // over). Convention, as the GPU's fans (wgsl/cc/build.wgsl creaseTangents): the normal
+          // approached along the face's diagonal, T2 = its opposite vertex − the limit point after
+          // K1_LEVELS levels of the ring (refined on below until then).
+          // T1 stays the input level's (tangents are per the level the call was given); T2 is
+          // scaled back to it as well.
+          if (level === 0) k1Lead = [T1[0], T1[1], T1[2]];
+          if (level < K1_LEVELS) {
+            refineMore = true;
+          } else {
+            if (k1Lead) for (let c = 0; c < 3; c++) T1[c] = k1Lead[c];
+            for (let c = 0; c < 3; c++) T2[c] = 2 ** level * (P[3 * D(a) + c] - p[c]);
+          }
         } else if (k === 2) {
           for (let c = 0; c < 3; c++) {
             T2[c] =
@@ -267,16 +286,18 @@ export function vertexLimit(L: Level, v: number, sector: number): VertexLimit {
           }
         }
         void nE;
-        return done(p, T1, T2, nd, level);
+        if (!refineMore) return done(p, T1, T2, nd, level);
       }
-      if (!ring.boundary && R.length >= 3 && nInf === 0) {
+      if (refineMore) {
+        // (a crease sector of one face, below K1_LEVELS: refine on)
+      } else if (!ring.boundary && R.length >= 3 && nInf === 0) {
         const p = smoothLimit(m, P, lv, R);
         const [T1, T2] = smoothTangents(m, P, R);
         return done(p, T1, T2, true, level);
       }
       // Dart (one infinitely sharp edge) or interior valence 2: the smooth mask is
       // not exact; refine until it converges.
-      if (!ring.boundary && R.length >= 2) {
+      else if (!ring.boundary && R.length >= 2) {
         const p = smoothLimit(m, P, lv, R);
         if (prev && (Math.hypot(p[0] - prev[0], p[1] - prev[1], p[2] - prev[2]) <= 2.3e-16 * scale0 || last)) {
           if (R.length >= 3) {

@@ -78,6 +78,9 @@ const models: [string, string, boolean][] = [
   ['creature', creature, true],
   ['icosphere', icosphere, true],
   ['gear', gear, true],
+  // Its rims infinitely sharp: crease vertices whose sector on the cap is one face (θ = π), whose
+  // normal is the face's along its diagonal on both sides (src/subdiv/limit.ts K1_LEVELS).
+  ['gear, rims infinitely sharp', gear.replace(/^(t crease 2\/1\/0 \d+ \d+) 2$/gm, '$1 10'), true],
 ];
 
 describe('Catmull-Clark surface against the CPU reference', () => {
