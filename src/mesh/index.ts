@@ -13,7 +13,7 @@ import { CageError, type CageIssue } from './errors.ts';
 import { parseObj } from './obj.ts';
 import { coordinateIssues, faceSizeIssues, zeroAreaFaces } from './range.ts';
 import { buildTopology, type Topology } from './topology.ts';
-import { splitNonManifold } from './manifold.ts';
+import { repeatedVertices, splitNonManifold } from './manifold.ts';
 import type { Cage } from './types.ts';
 import { uvCoverage } from './uv.ts';
 
@@ -28,17 +28,6 @@ export interface LoadedCage {
  * degenerate input; never throws anything else. Non-manifold vertices and edges are split apart
  * (src/mesh/manifold.ts), with a warning each.
  */
-/** Whether some face names a vertex twice (cheap: the common cage needs no split). */
-function repeatsAVertex(cage: Cage): boolean {
-  const idx = cage.faceIndices;
-  for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
-    const a = cage.faceOffsets[f],
-      b = cage.faceOffsets[f + 1];
-    for (let i = a; i < b; i++) for (let j = i + 1; j < b; j++) if (idx[i] === idx[j]) return true;
-  }
-  return false;
-}
-
 export function loadCage(text: string): LoadedCage {
   try {
     const parsed = parseObj(text);
@@ -56,7 +45,7 @@ export function loadCage(text: string): LoadedCage {
       cage = r.cage;
       warnings.push(...r.warnings);
     };
-    if (repeatsAVertex(cage)) split();
+    if (repeatedVertices(cage).size) split();
     try {
       topology = buildTopology(cage);
     } catch (e) {

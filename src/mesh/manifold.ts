@@ -146,16 +146,15 @@ export function splitNonManifold(cage: Cage): ManifoldSplit {
   const exempt: number[] = [];
   const cornerAt = new Map<number, CornerTag>();
   for (const c of cage.corners) for (const v of copies(c.v)) cornerAt.set(v, { ...c, v });
-  const vertEdges = new Map<number, Set<number>>();
+  // Distinct edges and boundary edges per vertex (byEdge holds each edge once; a zero-length one
+  // is one edge of its vertex).
+  const edgesAt = new Int32Array(nv);
   const boundaryEdges = new Int32Array(nv);
-  for (const [k, list] of byEdge) {
+  for (const list of byEdge.values()) {
     const a = idx[list[0]],
       b = idx[next[list[0]]];
-    for (const v of [a, b]) {
-      let s = vertEdges.get(v);
-      if (!s) vertEdges.set(v, (s = new Set()));
-      s.add(k);
-    }
+    edgesAt[a]++;
+    if (b !== a) edgesAt[b]++;
     if (list.length === 1) {
       boundaryEdges[a]++;
       boundaryEdges[b]++;
@@ -165,18 +164,11 @@ export function splitNonManifold(cage: Cage): ManifoldSplit {
   for (let h = 0; h < nc; h++) facesAt[idx[h]]++;
   // Vertices some face repeats (a zero-length edge, a pinched face): always sharpened (measured
   // against OpenSubdiv 3.5 on its catmark_nonman_edges cage).
-  const repeated = new Set<number>();
-  for (let f = 0; f < nf; f++) {
-    const seen = new Set<number>();
-    for (let h = cage.faceOffsets[f]; h < cage.faceOffsets[f + 1]; h++) {
-      if (seen.has(idx[h])) repeated.add(idx[h]);
-      seen.add(idx[h]);
-    }
-  }
+  const repeated = repeatedVertices(cage);
   for (let v = 0; v < nv; v++) {
     const fans = fanRoots[v].length;
     if (fans <= 1 && nmEdgeCount[v] === 0) continue;
-    const edges = vertEdges.get(v)?.size ?? 0;
+    const edges = edgesAt[v];
     const nmCrease = nmEdgeCount[v] === 2 && boundaryEdges[v] === 0 && facesAt[v] > edges && !repeated.has(v);
     if (!nmCrease) for (const c of copies(v)) cornerAt.set(c, { v: c, sharpness: SHARPNESS_INFINITE, line: cage.vertexLines[v] ?? 0 });
     // A copy with one face (a fan of one face between the two edges) would be sharpened by the
@@ -243,4 +235,17 @@ export function splitNonManifold(cage: Cage): ManifoldSplit {
     warnings,
     vertexOrigin: Int32Array.from(origin),
   };
+}
+
+/** The vertices some face names twice (none in a common cage; no allocation per face: the loader
+ * asks this of every cage before deciding whether to split it). */
+export function repeatedVertices(cage: Cage): Set<number> {
+  const idx = cage.faceIndices;
+  const out = new Set<number>();
+  for (let f = 0; f + 1 < cage.faceOffsets.length; f++) {
+    const a = cage.faceOffsets[f],
+      b = cage.faceOffsets[f + 1];
+    for (let i = a; i < b; i++) for (let j = i + 1; j < b; j++) if (idx[i] === idx[j]) out.add(idx[i]);
+  }
+  return out;
 }

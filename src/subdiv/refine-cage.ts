@@ -134,7 +134,7 @@ function refinedUvs(cage: Cage, faceParent: Int32Array, faceCorner: Int32Array):
     for (let i = 0; i < n; i++) if (!(cage.faceUvIndices[a + i] >= 0)) complete = false;
     if (!complete) continue;
     const at = (i: number) => a + ((((j + i) % n) + n) % n);
-    for (let c = 0 as 0 | 1; c < 2; c = (c + 1) as 0 | 1) {
+    for (const c of [0, 1] as const) {
       let centre = 0;
       for (let i = 0; i < n; i++) centre += uvOf(a + i, c) / n;
       const here = uvOf(at(0), c);

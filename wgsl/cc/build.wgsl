@@ -382,7 +382,7 @@ fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec
 // A fan's centre: its limit position (anchor + P0) and tangents (T1, T2), and what the per-face
 // tangents of a crease or corner fan need besides. Its one call site is `limits`, for a fan's
 // own thread and for a vertex's alike, so the two agree bit for bit.
-struct FanCentre { pos: vec3<f32>, P0: vec3<f32>, T1: vec3<f32>, T2: vec3<f32>, c: vec3<f32>, anchor: vec3<f32> }
+struct FanCentre { pos: vec3<f32>, P0: vec3<f32>, T1: vec3<f32>, T2: vec3<f32>, c: vec3<f32>, head: FanHead }
 
 fn fanCentre(fan: u32) -> FanCentre {
   let h = fanHead(fan);
@@ -428,7 +428,7 @@ fn fanCentre(fan: u32) -> FanCentre {
     T1 = t[0];
     T2 = t[1];
   }
-  return FanCentre(anchor + P0, P0, T1, T2, c, anchor);
+  return FanCentre(anchor + P0, P0, T1, T2, c, h);
 }
 
 // One dispatch: a thread per fan (its centre's limit, and per face the tangents of its own
@@ -446,13 +446,13 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     fan = staticBuf[params.ccVertexFan + v];
     if (fan != CC_NONE && ccVertexLimitWord_crease(fan) == 1u) { fan = CC_NONE; } // its own closed form
   }
-  var C = FanCentre(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  var C: FanCentre; // zero where the vertex has no fan
   if (fan != CC_NONE) { C = fanCentre(fan); }
   if (!isFan) {
     vertexLimit(v, fan != CC_NONE, C);
     return;
   }
-  let h = fanHead(fan);
+  let h = C.head; // the fan's words, read once (fanCentre)
   let ns = h.ns;
   let n = h.n;
   let boundary = h.boundary;
@@ -460,7 +460,7 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let D = h.D;
   let ia = h.ia;
   let ib = h.ib;
-  let anchor = C.anchor;
+  let anchor = h.anchor;
   let c = C.c;
   let P0 = C.P0;
   let T1 = C.T1;
