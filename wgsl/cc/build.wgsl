@@ -15,17 +15,13 @@
 // the packed words' getters (src/gpu/cc/words.ts).
 
 fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts); }
-fn pt(p: u32) -> vec3<f32> {
-  let o = ptAt(p);
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
 fn setPt(p: u32, v: vec3<f32>) {
   let o = ptAt(p);
   cageBuf[o] = v.x;
   cageBuf[o + 1u] = v.y;
   cageBuf[o + 2u] = v.z;
 }
-fn inp(i: u32) -> vec3<f32> { return pt(staticBuf[params.ccInputs + i]); }
+fn inp(i: u32) -> vec3<f32> { return ccP(staticBuf[params.ccInputs + i]); }
 
 // Face point p (its rule's corners are points of the level before): the centroid.
 fn facePoint(p: u32) -> vec3<f32> {
@@ -43,7 +39,7 @@ fn facePoint(p: u32) -> vec3<f32> {
 fn levelInp(i: u32) -> vec3<f32> {
   let p = staticBuf[params.ccInputs + i];
   if (p >= range.faceFirst && p < range.first + range.count) { return facePoint(p); }
-  return pt(p);
+  return ccP(p);
 }
 
 // Vertex masks (OpenSubdiv's Catmull-Clark vertex rules) over the inputs [v, e_0..e_{m-1}, F_0..F_{k-1}].
@@ -119,57 +115,17 @@ var<workgroup> P: array<vec3<f32>, 6u * WORKGROUP_SIZE>;   // 6 per thread: (1,0
 var<workgroup> C: array<vec3<f32>, WORKGROUP_SIZE>;    // the centre, at the fan's first thread
 var<workgroup> wideFanOf: u32;                          // the workgroup's wide fan, or CC_NONE
 
-fn fanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
 
 // A fan's words unpacked (src/gpu/cc/build.ts "fans"): sectors, valence, boundary, rule, depth D,
-// its anchor point, its slices' base and its crease pair (ia, ib).
-struct FanHead { ns: u32, n: u32, boundary: bool, rule: u32, D: u32, anchor: vec3<f32>, sliceBase: u32, ia: u32, ib: u32 }
+// its anchor point, its slices' base and its crease pair (ia, ib); f: its slices as
+// wgsl/cc/slices.wgsl reads them.
+struct FanHead { ns: u32, n: u32, boundary: bool, rule: u32, D: u32, anchor: vec3<f32>, sliceBase: u32, ia: u32, ib: u32, f: CCFan }
 
 fn fanHead(fan: u32) -> FanHead {
-  let w0 = fanWord(fan, 0u);
-  let pair = fanWord(fan, 6u);
-  return FanHead(ccFanWord_sectors(w0), ccFanWord_valence(w0), ccFanWord_boundary(w0) == 1u, ccFanWord_rule(w0), ccFanWord_depth(w0),
-                 pt(fanWord(fan, 1u)), fanWord(fan, 2u), ccPairWord_a(pair), ccPairWord_b(pair));
-}
-
-// One step of one sector: its 12 new points (a, b), a ∈ 1..3, b ∈ 0..3, at 4(a − 1) + b, from
-// its 6 old points p, the old centre c, the next sector's (1,0), (2,0) (n10, n20) and the
-// previous one's (1,0), (1,1), (1,2) (q10, q11, q12). The face points of the cells
-// are made here from those (the previous sector's two cells along this sector's axis too), so
-// a sector needs no other thread's results, only their old points. inf: this sector's axis is
-// infinitely sharp; pseudo: a boundary's pseudo-sector (its axis points only).
-fn sliceStep(p: array<vec3<f32>, 6>, c: vec3<f32>, n10: vec3<f32>, n20: vec3<f32>, q10: vec3<f32>, q11: vec3<f32>, q12: vec3<f32>,
-             inf: bool, pseudo: bool) -> array<vec3<f32>, 12> {
-  let p10 = p[0];
-  let p20 = p[1];
-  let p11 = p[2];
-  let p21 = p[3];
-  let p12 = p[4];
-  let p22 = p[5];
-  let f00 = 0.25 * (c + p10 + p11 + n10);
-  let f10 = 0.25 * (p10 + p20 + p21 + p11);
-  let f01 = 0.25 * (n10 + p11 + p12 + n20);
-  let f11 = 0.25 * (p11 + p21 + p22 + p12);
-  // The previous sector's cells 00 and 01: this sector's [0,1]×[−1,0] and [1,2]×[−1,0].
-  let g00 = 0.25 * (c + q10 + q11 + p10);
-  let g01 = 0.25 * (p10 + q11 + q12 + p20);
-  var o: array<vec3<f32>, 12>;
-  // Axis i: crease rules when infinitely sharp.
-  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
-  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
-  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
-  if (!pseudo) {
-    o[1] = f00;
-    o[9] = f10;
-    o[3] = f01;
-    o[11] = f11;
-    o[5] = 0.25 * (p10 + p11 + f00 + f10);   // (2,1)
-    o[2] = 0.25 * (n10 + p11 + f00 + f01);   // (1,2)
-    o[10] = 0.25 * (p11 + p21 + f10 + f11);  // (3,2)
-    o[7] = 0.25 * (p11 + p12 + f01 + f11);   // (2,3)
-    o[6] = 0.5 * p11 + 0.0625 * (p10 + p21 + p12 + n10) + 0.0625 * (f00 + f10 + f01 + f11); // (2,2)
-  }
-  return o;
+  let w0 = ccFanWord(fan, 0u);
+  let pair = ccFanWord(fan, 6u);
+  let f = ccFan(fan);
+  return FanHead(f.ns, f.n, f.boundary, ccFanWord_rule(w0), f.D, ccP(ccFanWord(fan, 1u)), f.base, ccPairWord_a(pair), ccPairWord_b(pair), f);
 }
 
 // The centre after a step: smooth (and dart) from every sector's (1,0) and its cell-00 face
@@ -204,6 +160,7 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   var D = 0u;
   var anchor = vec3<f32>(0.0);
   var sliceBase = 0u;
+  var fs: CCFan;
   var inf = false;
   var pseudo = false;
   var ia = 0u;
@@ -219,12 +176,13 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     D = h.D;
     anchor = h.anchor;
     sliceBase = h.sliceBase;
+    fs = h.f;
     ia = h.ia;
     ib = h.ib;
-    let sb = fanWord(fan, 3u) + 7u * sec;
+    let sb = ccFanWord(fan, 3u) + 7u * sec;
     inf = staticBuf[params.ccSectors + sb] == 1u;
     pseudo = boundary && sec == n;
-    for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = pt(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
+    for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = ccP(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
     if (sec == 0u) { C[lid] = vec3<f32>(0.0); }
   }
   // Neighbour threads (fans are contiguous; a boundary fan's sector 0 has no previous sector,
@@ -264,25 +222,19 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
       P[6u * lid + 5u] = o[6];
       // Step k's slice (layout: src/gpu/cc/build.ts): the centre, and every sector's 12 points
       // (a, b), a ∈ 1..3, b ∈ 0..3, at 4(a − 1) + b: the evaluator's sub-patches A, B, C of
-      // step k read them as they are (wgsl/cc/surface.wgsl ccEvalRegion).
+      // step k read them as they are (wgsl/cc/surface.wgsl ccEvalRegion), an odd fan's even
+      // steps made again from the step before where they are read (ccSliceMake).
       if (sec == 0u) {
         C[lid] = cNew;
         setPt(sliceBase + k - 1u, cNew);
       }
-      let sb = sliceBase + D + 12u * ((k - 1u) * ns + sec);
-      for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
+      if (ccSliceStored(fs, k)) {
+        let sb = ccSliceStepBase(fs, k) + 12u * sec;
+        for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
+      }
     }
     workgroupBarrier();
   }
-}
-
-// Old point j (in P's order: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)) of sector `sec` of a wide fan
-// before step k: the start level's (its sector words, as offsets from the anchor) at k = 1, else
-// step k − 1's slice.
-fn wideOld(fan: u32, h: FanHead, k: u32, sec: u32, j: u32) -> vec3<f32> {
-  if (k == 1u) { return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec + 1u + j]) - h.anchor; }
-  let at = array<u32, 6>(0u, 4u, 1u, 5u, 2u, 6u);
-  return pt(h.sliceBase + h.D + 12u * ((k - 2u) * h.ns + sec) + at[j]);
 }
 
 // A fan with more sectors than a workgroup has threads (any valence up to the fan word's field):
@@ -293,31 +245,21 @@ fn wideSlices(fan: u32, lid: u32) {
   let h = fanHead(fan);
   for (var k = 1u; k <= params.ccMaxDepth; k++) {
     if (k <= h.D) {
-      let c = select(pt(h.sliceBase + k - 2u), vec3<f32>(0.0), k == 1u);
+      let c = select(ccP(h.sliceBase + k - 2u), vec3<f32>(0.0), k == 1u);
       for (var sec = lid; sec < h.ns; sec += WORKGROUP_SIZE) {
-        let pseudo = h.boundary && sec == h.n;
-        var prev = select(sec - 1u, h.n - 1u, sec == 0u);
-        if (h.boundary && sec == 0u) { prev = sec; }
-        var next = select(sec + 1u, 0u, !h.boundary && sec == h.n - 1u);
-        if (pseudo) { next = sec; }
-        var p: array<vec3<f32>, 6>;
-        for (var j = 0u; j < 6u; j++) { p[j] = wideOld(fan, h, k, sec, j); }
-        let inf = staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * sec] == 1u;
-        let o = sliceStep(p, c, wideOld(fan, h, k, next, 0u), wideOld(fan, h, k, next, 1u),
-                          wideOld(fan, h, k, prev, 0u), wideOld(fan, h, k, prev, 2u),
-                          wideOld(fan, h, k, prev, 4u), inf, pseudo);
-        let sb = h.sliceBase + h.D + 12u * ((k - 1u) * h.ns + sec);
+        let o = ccSliceMake(h.f, h.anchor, k, sec);
+        let sb = ccSliceStepBase(h.f, k) + 12u * sec;
         for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
       }
       if (lid == 0u) {
         var cNew = c;
         if (h.rule == 1u) {
-          cNew = 0.75 * c + 0.125 * (wideOld(fan, h, k, h.ia, 0u) + wideOld(fan, h, k, h.ib, 0u));
+          cNew = 0.75 * c + 0.125 * (ccSliceOld(h.f, h.anchor, k, h.ia, 0u) + ccSliceOld(h.f, h.anchor, k, h.ib, 0u));
         } else if (h.rule == 0u) {
           var s = vec3<f32>(0.0);
           for (var j = 0u; j < h.n; j++) {
-            s += centreSmoothTerm(c, wideOld(fan, h, k, j, 0u), wideOld(fan, h, k, j, 2u),
-                                  wideOld(fan, h, k, (j + 1u) % h.n, 0u));
+            s += centreSmoothTerm(c, ccSliceOld(h.f, h.anchor, k, j, 0u), ccSliceOld(h.f, h.anchor, k, j, 2u),
+                                  ccSliceOld(h.f, h.anchor, k, (j + 1u) % h.n, 0u));
           }
           let nf = f32(h.n);
           cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
@@ -339,9 +281,12 @@ fn wideSlices(fan: u32, lid: u32) {
 fn ringPt(fan: u32, D: u32, ns: u32, anchor: vec3<f32>, i: u32, which: u32) -> vec3<f32> {
   // which: 0 → (1,0) of sector i, 1 → (1,1): the slice's points 0 and 1 of step D
   if (D == 0u) {
-    return pt(staticBuf[params.ccSectors + fanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
+    return ccP(staticBuf[params.ccSectors + ccFanWord(fan, 3u) + 7u * i + 1u + 2u * which]) - anchor;
   }
-  return pt(fanWord(fan, 2u) + D + 12u * ((D - 1u) * ns + i) + which);
+  let f = ccFan(fan);
+  if (ccSliceStored(f, D)) { return ccP(ccSliceStepBase(f, D) + 12u * i + which); }
+  let o = ccSliceMake(f, anchor, D, i); // an odd fan's even last step
+  return select(o[0], o[1], which == 1u);
 }
 
 // Tangents of the crease span of faces a..b−1 (axes a and b infinitely sharp, indices mod n):
@@ -374,7 +319,7 @@ fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec
   let j = select((i + 1u) % n, i + 1u, boundary);
   let ei = ringPt(fan, D, ns, anchor, i, 0u);
   let ej = ringPt(fan, D, ns, anchor, j, 0u);
-  let sb = params.ccSectors + fanWord(fan, 3u);
+  let sb = params.ccSectors + ccFanWord(fan, 3u);
   if (staticBuf[sb + 7u * i] == 1u && staticBuf[sb + 7u * j] == 1u) { return array<vec3<f32>, 2>(ei - c, ej - c); }
   return array<vec3<f32>, 2>(ringPt(fan, D, ns, anchor, i, 1u) - c, ej - ei);
 }
@@ -393,7 +338,7 @@ fn fanCentre(fan: u32) -> FanCentre {
   let D = h.D;
   let anchor = h.anchor;
   var c = vec3<f32>(0.0);
-  if (D > 0u) { c = pt(h.sliceBase + D - 1u); }
+  if (D > 0u) { c = ccP(h.sliceBase + D - 1u); }
   let ia = h.ia;
   let ib = h.ib;
   var P0 = c;
@@ -401,7 +346,7 @@ fn fanCentre(fan: u32) -> FanCentre {
   var T2 = vec3<f32>(0.0);
   if (rule == 0u && !boundary) {
     // Smooth (and dart): P = (n²c + 4Σe + Σd)/(n(n+5)); tangents with cos(iθ) from the CPU.
-    let cb = params.ccCos + fanWord(fan, 7u);
+    let cb = params.ccCos + ccFanWord(fan, 7u);
     let inv = bitcast<f32>(staticBuf[cb + n]);
     var se = vec3<f32>(0.0);
     for (var i = 0u; i < n; i++) {
@@ -465,7 +410,7 @@ fn limits(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   let P0 = C.P0;
   let T1 = C.T1;
   let T2 = C.T2;
-  let lb = fanWord(fan, 5u);
+  let lb = ccFanWord(fan, 5u);
   // Each face's own sector at a crease or corner (build.ts "fan limits"): the span of faces
   // between the two sharp edges round face i, or face i alone at a corner.
   // A crease's two spans are computed once each: ia..ib is the fan's own (T1, T2 above), the
@@ -510,13 +455,13 @@ fn vertexLimit(v: u32, hasFan: bool, centre: FanCentre) {
     let wa = array<f32, 3>(rho / 6.0, 1.0 - rho / 3.0, rho / 6.0);
     let wb = array<f32, 3>(1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0);
     let d = array<f32, 3>(-0.5, 0.0, 0.5);
-    let c = pt(staticBuf[b + 4u]);
+    let c = ccP(staticBuf[b + 4u]);
     var pp = vec3<f32>(0.0);
     var pa = vec3<f32>(0.0);
     var pb = vec3<f32>(0.0);
     for (var i = 0u; i < 3u; i++) {
       for (var j = 0u; j < 3u; j++) {
-        let q = pt(staticBuf[b + 3u * i + j]) - c;
+        let q = ccP(staticBuf[b + 3u * i + j]) - c;
         pp += wa[i] * wb[j] * q;
         pa += d[i] * wb[j] * q;
         pb += wa[i] * d[j] * q;

@@ -25,11 +25,8 @@ override CC_NGONS: bool = true;
 override CC_CREASE_PATCHES: bool = true;
 override CC_PHANTOMS: bool = true;
 override FLAT_BASELINE: bool = false;
+override CC_ODD_SLICES: bool = true;
 
-fn ccP(p: u32) -> vec3<f32> {
-  let o = select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts);
-  return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
-}
 
 fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
   let s = 1.0 - t;
@@ -99,26 +96,13 @@ fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
 // and every sector's 12 points (a, b), a ∈ 1..3, b ∈ 0..3 of its frame, as offsets from the
 // fan's anchor: patch-major, so that a point of sector i at step L is one bicubic of 16 points
 // read as they are, whatever L (the slice kernel made them once per rebuild, not once per vertex).
-struct CCFan { ns: u32, n: u32, boundary: bool, base: u32, sectors: u32, D: u32 }
-
-fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
-
-// Sector j + d: wrapping round an interior fan; on a boundary fan clamped to 0..n (n: the
-// pseudo-sector of the last axis), where the points read are discarded by the phantom rule.
-fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
-  let m = i32(j) + d;
-  if (f.boundary) { return u32(clamp(m, 0, i32(f.n))); }
-  let n = i32(f.n);
-  return u32(((m % n) + n) % n);
-}
-
 // Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step
 // L ≥ 1, by where its points lie: the 12 points of sectors i (own), i+1, i−1, i+2 at that step,
 // the centre, and the grid offset of its control point 0 (da, db).
 struct CCSubPatch { own: u32, next: u32, prev: u32, next2: u32, centre: u32, da: i32, db: i32 }
 
 fn ccSubPatchOf(f: CCFan, i: u32, L: u32, which: u32) -> CCSubPatch {
-  let step = f.base + f.D + 12u * (L - 1u) * f.ns;
+  let step = ccSliceStepBase(f, L);
   return CCSubPatch(step + 12u * i, step + 12u * ccNb(f, i, 1), step + 12u * ccNb(f, i, -1), step + 12u * ccNb(f, i, 2),
     f.base + L - 1u, select(0, -1, which == 2u), select(0, -1, which == 0u));
 }
@@ -160,6 +144,39 @@ fn ccRegionRow(r: CCRegionEval, q: u32) -> vec4<u32> {
   return vec4<u32>(ccSubPatchPoint(r.sub, q), ccSubPatchPoint(r.sub, q + 1u), ccSubPatchPoint(r.sub, q + 2u), ccSubPatchPoint(r.sub, q + 3u));
 }
 
+// Sub-patch `which` of sector i at an odd fan's even step L, summed with the weights w: its 16
+// points are not in memory, so the sectors that hold them (i, i + 1, and i − 1 for A, i + 2 for C;
+// B reads neither) are stepped again from the stored step L − 1, one at a time (one copy of the
+// step in the shader), each point weighted as it is made. The points are offsets from the fan's
+// anchor (the sum's origin).
+fn ccDerivedSum(f: CCFan, sub: CCRegionEval, L: u32, i: u32, which: u32, w: CCWeights) -> CCSum {
+  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  let centre = ccP(f.base + L - 1u);
+  for (var d = 0; d < 4; d++) {
+    if ((d == 2 && which != 0u) || (d == 3 && which != 2u)) { continue; }
+    var o = ccSliceMake(f, sub.origin, L, ccNb(f, i, select(select(d, -1, d == 2), 2, d == 3)));
+    for (var q = 0u; q < 16u; q++) {
+      // Grid point (a, b) of the sub-patch: which sector holds it (0 own, 1 i + 1, 2 i − 1,
+      // 3 i + 2; −1 the centre, counted with the own sector) and where, as ccSubPatchPoint finds
+      // its index.
+      let a = i32(q % 4u) + sub.sub.da;
+      let b = i32(q / 4u) + sub.sub.db;
+      var holder = 3;
+      var at = 0;
+      if (b < 0) { holder = 2; at = a; } else if (a >= 1) { holder = 0; at = 4 * (a - 1) + b; } else if (b >= 1) { holder = 1; at = 4 * (b - 1) - a; } else if (a == 0) { holder = -1; }
+      if (holder == d || (holder == -1 && d == 0)) {
+        let P = select(o[at], centre, holder == -1);
+        let wx = w.x[q % 4u];
+        let wy = w.y[q / 4u];
+        e.p += (wy * wx) * P;
+        e.pu += (wy * w.dx[q % 4u]) * P;
+        e.pv += (w.dy[q / 4u] * wx) * P;
+      }
+    }
+  }
+  return e;
+}
+
 fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   let side = 1u << dd;
   let fs = f32(side);
@@ -185,14 +202,19 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   var atVertex = false;
   var lb = 0u; // the fan's limit point, then its tangents at lt
   var lt = 0u;
+  var derived = false; // an odd fan's even step: its sub-patch's points made again, not read
+  var dFan: CCFan;
+  var dL = 0u;
+  var dSec = 0u;
+  var dWhich = 0u;
   if (!regular) {
     let fan = w1;
     let sec = ccRegionWord_sector(w0);
     let off = ccRegionWord_offset(w0);
     let ab = px * exp2(-f32(off));
     let fw = ccFanWord(fan, 0u);
-    let D = ccFanWord_depth(fw);
-    let f = CCFan(ccFanWord_sectors(fw), ccFanWord_valence(fw), ccFanWord_boundary(fw) == 1u, ccFanWord(fan, 2u), params.ccSectors + ccFanWord(fan, 3u), D);
+    let f = ccFan(fan);
+    let D = f.D;
     lb = ccFanWord(fan, 5u);
     // The limit tangents of this face's sector: the fan's own at a smooth centre, else face
     // sec's (build.ts "fan limits": a sharp crease or corner has a tangent plane per sector).
@@ -225,6 +247,10 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     if (CC_PHANTOMS && which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == 1u) { mask = 8u; }
     src.sub = ccSubPatchOf(f, sec, L, which);
     src.origin = ccP(ccFanWord(fan, 1u));
+    // An odd fan's even step is not stored: its sub-patch is summed below from points made
+    // again (ccDerivedSum).
+    derived = CC_ODD_SLICES && !ccSliceStored(f, L);
+    if (derived) { dFan = f; dL = L; dSec = sec; dWhich = which; }
     // The sub-patch's tangents along (a, b) are 2^L times its own, and (a, b) = rot(x, y)·2^(L − off).
     sc = exp2(f32(L) - f32(off));
   }
@@ -239,11 +265,15 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   }
   let w = ccWeights(bx, px.y, mask);
   // Summed relative to the patch's corner (0,0), point 5: f32 precision of small patches.
-  let o = ccP(ccRegionRow(src, 4u).y);
+  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
+  var o = vec3<f32>(0.0);
+  if (derived) {
+    e = ccDerivedSum(dFan, src, dL, dSec, dWhich, w);
+  } else {
+  o = ccP(ccRegionRow(src, 4u).y);
   // Row by row: a row's four points weighted in x (value and d/dx), then the row's weight in y
   // (value and d/dy). Every weight is read at a constant lane (the y weights rotate a lane per
   // row): an index into a vector that varies per iteration is slow on some compilers.
-  var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
   var wy = w.y;
   var wdy = w.dy;
   for (var r = 0u; r < 16u; r += 4u) {
@@ -259,6 +289,7 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     e.pv += wdy.x * row;
     wy = wy.yzwx;
     wdy = wdy.yzwx;
+  }
   }
   // Tangents along the region's (x, y), then the face's (fs per region side). Inside a fan's
   // last square the blend's tangents are taken as the ring point's (the radial blend has no

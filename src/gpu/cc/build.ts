@@ -68,14 +68,23 @@
  *   slices of fan F (depth D, ns threads = sectors + 1 on a boundary), all as OFFSETS from the
  *     fan's anchor (its centre at level s: f32 precision of deep levels):
  *       centres   D points, the centre after step k = 1..D at slot k − 1;
- *       points    per step k = 1..D, per sector j < ns, its 12 points (a, b), a ∈ 1..3, b ∈ 0..3
- *                 of its frame at 4(a − 1) + b: at D + 12((k − 1)·ns + j) (a boundary's
- *                 pseudo-sector has its axis points 0, 4, 8 only).
+ *       points    per stored step k, per sector j < ns, its 12 points (a, b), a ∈ 1..3, b ∈ 0..3
+ *                 of its frame at 4(a − 1) + b: at D + 12(slot(k)·ns + j) (a boundary's
+ *                 pseudo-sector has its axis points 0, 4, 8 only). Every step is stored,
+ *                 slot(k) = k − 1; or, for a fan whose word has `odd` (CatmullClarkOptions.slices),
+ *                 the odd steps only, slot(k) = (k − 1)/2: an even step is one step of the odd
+ *                 one before, made again where it is read (wgsl/cc/slices.wgsl ccSliceMake, the
+ *                 slice kernel's own step): half the slices' bytes, at four sectors' steps made
+ *                 again per vertex on an even step (step L holds 3·4^-L of a sector region's
+ *                 area: a fifth of it on even steps). The
+ *                 build takes every step unless that exceeds SLICE_BUDGET_BYTES_PER_FACE (imrod,
+ *                 all triangles: 6.6 → 4.0 KB per face). A fan wider than a workgroup keeps every
+ *                 step (its kernel reads the step before from memory).
  *     Why all of them (patch-major): a point of the surface near the EV lies on sub-patch A, B
  *     or C of one sector at one step L, and those 16 points are this sector's 12 and a few of
  *     its neighbours' (wgsl/cc/surface.wgsl ccEvalRegion). The slice kernel computes them anyway
  *     (in workgroup memory, once per rebuild); storing them costs 12 points per sector and step
- *     (GPU subdivision data in all: imrod 6.6 KB per face, suzanne 2.1, monsterfrog 1.4, bigguy 1.0) where keeping only the centre
+ *     (GPU subdivision data in all: imrod 6.6 KB per face with every step, 4.0 with the odd steps; suzanne 2.1, monsterfrog 1.4, bigguy 1.0) where keeping only the centre
  *     and the ring made every vertex redo up to L local steps of three sectors from the start
  *     level, the largest part of the exact surface's evaluation.
  *   Then the limits: P (absolute), T1, T2 (the vertex's: the factor rule, the flat baseline);
@@ -135,14 +144,27 @@ import { WORKGROUP_SIZE } from '../contract/constants.ts';
 import { CC_STATIC, type CcSection } from '../contract/cc.ts';
 import type { ArenaLayout } from '../contract/define.ts';
 import { CC_FAN_WORD, CC_MAX_FAN_SECTORS, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
-import { levelStack } from './levels.ts';
-import { fanTable, packFans, packThreads, vertexLimits } from './fans.ts';
-import { REGION_SECTOR, buildRegions, triangleRegions } from './regions.ts';
+import { type LevelStack, levelStack } from './levels.ts';
+import { type FanTable, type SliceSteps, fanTable, packFans, packThreads, vertexLimits } from './fans.ts';
+import { REGION_SECTOR, type Regions, type TriangleRegions, buildRegions, triangleRegions } from './regions.ts';
 
 export interface CatmullClarkOptions {
   /** Subdivision options (default: the cage file's, over OpenSubdiv's defaults). */
   subdiv?: SubdivOptions;
+  /**
+   * Which steps' sector points the fans' slices keep (src/gpu/cc/fans.ts SliceSteps). 'auto'
+   * (default): every step's (the faster evaluator), unless that puts the subdivision data above
+   * SLICE_BUDGET_BYTES_PER_FACE, then the odd steps' (half the slices' bytes).
+   */
+  slices?: SliceSteps | 'auto';
 }
+
+/**
+ * The memory bound of the subdivision data that 'auto' keeps to where halving the slices can: 4 KB
+ * per cage face (the talk's models: every step's slices cost imrod, all triangles with ~1.5 fans of
+ * depth 6 per face, 6.6 KB; its odd steps' 4.0 KB; the others stay at 1-2.1 KB with every step).
+ */
+export const SLICE_BUDGET_BYTES_PER_FACE = 4096;
 
 export interface CatmullClarkData {
   words: Uint32Array;
@@ -167,6 +189,8 @@ export interface CatmullClarkData {
   hasNgons: boolean;
   /** Some region takes phantom points (a boundary, an infinitely sharp edge or axis). */
   hasPhantoms: boolean;
+  /** Some fan keeps its odd steps' sector points only (CatmullClarkOptions.slices): the evaluator makes the even steps'. */
+  oddSlices: boolean;
   /** Per cage face: region depth (quads) or depth inside its sub-faces + 1 (n-gons); -1 holes. */
   faceDepth: Int8Array;
   /** Per cage face: its first region (-1 holes); the face has 4^d regions (n·4^(d−1) for n-gons). */
@@ -223,9 +247,26 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const ft = fanTable(lv.level);
   const regions = buildRegions(topo, sharp, cls, lv, ft);
   const vertexFan = vertexLimits(prepared, topo, lv, ft, regions.patchIdx);
-  const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms } = packFans(ft.fans, lv.levels);
+  const tris = triangleRegions(cage, prepared, nV0, regions);
+  const assemble = (slices: SliceSteps) => assembleData(nV0, lv, ft, regions, vertexFan, tris, slices);
+  const mode = opts.slices ?? 'auto';
+  if (mode !== 'auto') return assemble(mode);
+  const every = assemble('every');
+  return every.gpuBytes > SLICE_BUDGET_BYTES_PER_FACE * topo.nFaces && every.fanCount > 0 ? assemble('odd') : every;
+}
+
+/** The words and the point space of the build, its fans' slices keeping `slices` steps. */
+function assembleData(
+  nV0: number,
+  lv: LevelStack,
+  ft: FanTable,
+  regions: Regions,
+  vertexFan: Uint32Array,
+  { triRegion, poly, triKind }: TriangleRegions,
+  slices: SliceSteps,
+): CatmullClarkData {
+  const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms } = packFans(ft.fans, lv.levels, slices);
   const threadWords = packThreads(ft.fans, sliceFans);
-  const { triRegion, poly, triKind } = triangleRegions(cage, prepared, nV0, regions);
   const { levels, rules, inputs, levelRanges } = lv;
   const { fans } = ft;
   const { regionWords, patchIdx, faceRegion, faceDepth, patchCount, singleCreaseCount, sectorRegionCount } = regions;
@@ -264,6 +305,7 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
     triKind,
     hasNgons: poly.length > 0,
     hasPhantoms: axisPhantoms || regionMasks(regionWords.view),
+    oddSlices: slices === 'odd' && sliceFans.some((id) => fans[id].sectors.length <= WORKGROUP_SIZE),
     faceDepth,
     faceRegion,
     regions: regionWords.view.slice(),

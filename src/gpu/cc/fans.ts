@@ -288,6 +288,27 @@ export function vertexLimits(prepared: PreparedMesh, topo: HalfEdges, lv: LevelS
   return vertexFan;
 }
 
+/**
+ * Which steps' sector points a fan's slices keep (src/gpu/cc/build.ts "slices"): every step's, so
+ * a vertex reads its sub-patch as it is, or the odd steps' only (half the bytes), so a vertex on an
+ * even step's sub-patch makes its points by one step from the stored step before (the slice
+ * kernel's own sliceStep, wgsl/cc/slice-step.wgsl).
+ */
+export type SliceSteps = 'every' | 'odd';
+
+/** The steps whose sector points a fan of depth D keeps. */
+export const storedSteps = (D: number, odd: boolean): number => (odd ? Math.ceil(D / 2) : D);
+
+/**
+ * A fan's final depth: the depth its regions and vertex limit asked for, and round creases,
+ * corners, darts and boundaries 2^-3 smaller still: the radial blend's one exponent is a rougher
+ * model there (two rates, along and across).
+ */
+function fanDepth(F: FanRec): number {
+  if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) return Math.min(15, F.D + EXTRA_DEPTH_SHARP);
+  return F.D;
+}
+
 /** The fans' words and their places in the point space (after the levels), and which fans have slices. */
 export interface PackedFans {
   fanWords: U32;
@@ -308,7 +329,7 @@ export interface PackedFans {
  * fan (their depths are final): each fan's slices and limits in the point space, its words, and
  * the cos table of each smooth valence.
  */
-export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
+export function packFans(fans: FanRec[], levels: Level[], slices: SliceSteps = 'every'): PackedFans {
   // Points: the levels, then per fan its slices and limits.
   const lastLevel = levels[levels.length - 1];
   let nextPoint = lastLevel.base + lastLevel.he.nVerts;
@@ -320,15 +341,16 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
   let axisPhantoms = false;
   const sliceFans: number[] = [];
   fans.forEach((F, id) => {
-    // Creases, corners, darts, boundaries: the radial blend's one exponent is a rougher model
-    // there (two rates, along and across), so their last square is made 2^-3 smaller.
-    if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) F.D = Math.min(15, F.D + EXTRA_DEPTH_SHARP);
+    const D = fanDepth(F);
     const ns = F.sectors.length;
+    // A fan wider than a workgroup reads each step before from its stored slice (wgsl/cc/build.wgsl
+    // wideSlices), so it keeps every step.
+    const odd = slices === 'odd' && ns <= WORKGROUP_SIZE;
     const sliceBase = nextPoint;
-    nextPoint += F.D + 12 * F.D * ns;
+    nextPoint += D + 12 * storedSteps(D, odd) * ns;
     const limitBase = nextPoint;
     nextPoint += 3 + (F.rule === VRULE_SMOOTH ? 0 : 2 * F.n);
-    maxDepth = Math.max(maxDepth, F.D);
+    maxDepth = Math.max(maxDepth, D);
     let cosBase = 0;
     if (F.rule === VRULE_SMOOTH && !F.boundary) {
       let at = cosAt.get(F.n);
@@ -339,8 +361,8 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
       }
       cosBase = at;
     }
-    if (F.D > 15) throw new Error('fan depth > 15');
-    fanWords.push(CC_FAN_WORD.pack({ sectors: ns, valence: F.n, boundary: F.boundary, rule: F.rule, depth: F.D }));
+    if (D > 15) throw new Error('fan depth > 15');
+    fanWords.push(CC_FAN_WORD.pack({ sectors: ns, valence: F.n, boundary: F.boundary, rule: F.rule, depth: D, odd }));
     fanWords.push(levels[F.level].base + F.x);
     fanWords.push(sliceBase);
     fanWords.push(sectorWords.n);
@@ -349,8 +371,8 @@ export function packFans(fans: FanRec[], levels: Level[]): PackedFans {
     fanWords.push(CC_PAIR_WORD.pack({ a: F.ia, b: F.ib }));
     fanWords.push(cosBase);
     for (const s of F.sectors) for (const w of s) sectorWords.push(w);
-    if (F.D > 0) sliceFans.push(id);
-    if (F.D > 0 && F.sectors.some((q) => q[0] === 1)) axisPhantoms = true;
+    if (D > 0) sliceFans.push(id);
+    if (D > 0 && F.sectors.some((q) => q[0] === 1)) axisPhantoms = true;
   });
   return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms };
 }

@@ -264,12 +264,13 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
  * depth) and the corners of each regular n-gon used: what the evaluator starts its region lookup
  * from (wgsl/cc/surface.wgsl); with each triangle's patch kind for the colours.
  */
-export function triangleRegions(
-  cage: Cage,
-  prepared: PreparedMesh,
-  nV0: number,
-  regions: Regions,
-): { triRegion: Uint32Array; poly: number[]; triKind: Uint8Array } {
+export interface TriangleRegions {
+  triRegion: Uint32Array;
+  poly: number[];
+  triKind: Uint8Array;
+}
+
+export function triangleRegions(cage: Cage, prepared: PreparedMesh, nV0: number, regions: Regions): TriangleRegions {
   const { faceRegion, faceDepth, faceKindOf } = regions;
   // Triangles → regions.
   const nT = prepared.triangleCount;

@@ -49,7 +49,8 @@ export const CC_PAIR_WORD = defineBits('CcPairWord', { a: [0, 16], b: [16, 16] }
 
 /**
  * Word 0 of a fan. sectors: its threads (valence, + 1 pseudo-sector on a boundary); valence;
- * boundary; rule: the centre's (0 smooth or dart, 1 crease, 2 corner); depth: its steps D.
+ * boundary; rule: the centre's (0 smooth or dart, 1 crease, 2 corner); depth: its steps D;
+ * odd: its slices keep the sectors' points of the odd steps only (src/gpu/cc/build.ts "slices").
  */
 export const CC_FAN_WORD = defineBits('CcFanWord', {
   sectors: [0, 12],
@@ -57,6 +58,7 @@ export const CC_FAN_WORD = defineBits('CcFanWord', {
   boundary: [24, 1],
   rule: [25, 2],
   depth: [27, 4],
+  odd: [31, 1],
 });
 
 /** The most sectors a fan has (its word's field): the widest vertex the build takes. */

@@ -114,9 +114,17 @@ const catmullClark: SurfaceScheme = {
   flatBaseline: true,
   instancedKind: 'lent-limit',
   // wgsl/cc/surface.wgsl: n-gons (their kite parametrisation), single-crease patches (their
-  // basis), phantom points (boundaries and infinitely sharp edges).
+  // basis), phantom points (boundaries and infinitely sharp edges), fans keeping their odd steps
+  // only (an even step's sub-patch made again).
   specialise: ({ cc }): Record<string, number> =>
-    cc ? { CC_NGONS: +cc.hasNgons, CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0), CC_PHANTOMS: +cc.hasPhantoms } : {},
+    cc
+      ? {
+          CC_NGONS: +cc.hasNgons,
+          CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0),
+          CC_PHANTOMS: +cc.hasPhantoms,
+          CC_ODD_SLICES: +cc.oddSlices,
+        }
+      : {},
   surfaceCage: sameCage,
   hasData: (data) => data.cc !== undefined,
   prepare: (_device, cage, mesh) => ({ cc: buildCatmullClark(cage, mesh) }),

@@ -15,7 +15,7 @@ import {
 } from '../../../src/gpu/surface/registry.ts';
 import { tessellatorPasses } from '../../../src/gpu/tess/passes.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
-import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
+import { SLICE_BUDGET_BYTES_PER_FACE, buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { buildTopology, computeSharpness, DEFAULT_OPTIONS, loadCage, SHARPNESS_INFINITE } from '../../../src/mesh/index.ts';
 
 const ROOT = new URL('../../../', import.meta.url).pathname;
@@ -87,12 +87,16 @@ describe("the exact surface's specialisation says what each cage has", () => {
   // Each value is 1 exactly when the cage has what its code is for (wgsl/cc/surface.wgsl), found
   // here from the cage rather than from the build's tables: a face that is not a quad; a boundary
   // or an infinitely sharp edge (phantom points); a single-crease patch (the build's own count:
-  // which creases qualify is the build's decision, tests/gpu/cc/single-crease*.test.ts).
+  // which creases qualify is the build's decision, tests/gpu/cc/single-crease*.test.ts); fans
+  // keeping their odd steps only (the build's memory bound: every step's data above it).
   const dir = join(ROOT, 'public/models');
   for (const file of readdirSync(dir).filter((f) => f.endsWith('.obj'))) {
     it(file, () => {
       const cage = loadCage(readFileSync(join(dir, file), 'utf8')).cage;
-      const cc = buildCatmullClark(cage, prepareMesh(cage));
+      const mesh = prepareMesh(cage);
+      const cc = buildCatmullClark(cage, mesh);
+      const everyStep = buildCatmullClark(cage, mesh, { slices: 'every' });
+      const overBudget = everyStep.gpuBytes > SLICE_BUDGET_BYTES_PER_FACE * (cage.faceOffsets.length - 1) && everyStep.fanCount > 0;
       const topo = buildTopology(cage);
       const sharp = computeSharpness(cage, topo, { ...DEFAULT_OPTIONS, ...cage.fileOptions });
       const ngons = cage.faceOffsets.some((o, f) => f > 0 && o - cage.faceOffsets[f - 1] !== 4);
@@ -101,7 +105,9 @@ describe("the exact surface's specialisation says what each cage has", () => {
         CC_NGONS: +ngons,
         CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0),
         CC_PHANTOMS: +phantoms,
+        CC_ODD_SLICES: +overBudget,
       });
+      expect(cc.gpuBytes).toBe(overBudget ? buildCatmullClark(cage, mesh, { slices: 'odd' }).gpuBytes : everyStep.gpuBytes);
     });
   }
   it('the other surfaces have none', () => {

@@ -1,6 +1,7 @@
 /**
  * The passes that evaluate the surface are compiled per mesh with the surface's override values
- * (SurfaceScheme.specialise: wgsl/cc/surface.wgsl CC_NGONS, CC_CREASE_PATCHES, CC_PHANTOMS) and
+ * (SurfaceScheme.specialise: wgsl/cc/surface.wgsl CC_NGONS, CC_CREASE_PATCHES, CC_PHANTOMS,
+ * CC_ODD_SLICES) and
  * the tessellator's options (FLAT_BASELINE, DISPLACED): what they compile out is code the mesh
  * never runs, so the output is the general evaluator's, word for word. The values themselves are
  * held to what each cage has by tests/gpu/surface/registry.test.ts.
@@ -27,8 +28,8 @@ describe('a surface compiled for the mesh', () => {
   // torus: every value 0 (quads, closed, no creases); creature: n-gons, no phantoms or creases
   // (its extraordinary vertices' sectors run in both). Adaptive, so the flat blend runs too.
   it.each([
-    ['torus', torusObj, { CC_NGONS: 0, CC_CREASE_PATCHES: 0, CC_PHANTOMS: 0 }],
-    ['creature', creatureObj, { CC_NGONS: 1, CC_CREASE_PATCHES: 0, CC_PHANTOMS: 0 }],
+    ['torus', torusObj, { CC_NGONS: 0, CC_CREASE_PATCHES: 0, CC_PHANTOMS: 0, CC_ODD_SLICES: 0 }],
+    ['creature', creatureObj, { CC_NGONS: 1, CC_CREASE_PATCHES: 0, CC_PHANTOMS: 0, CC_ODD_SLICES: 0 }],
   ])(
     '%s: the same output as the general evaluator, word for word',
     async (_name, obj, values) => {
