@@ -10,8 +10,9 @@ BUILD="${OSD_TIME_BUILD:-$ROOT/.build/osd}"
 BIN="$BUILD/osd_time"
 SRC="$ROOT/tools/osd-check/osd_time.cpp"
 HDR="$ROOT/tools/osd-check/obj_reader.h"
+REF="$ROOT/tools/osd-check/refiner.h"
 mkdir -p "$BUILD"
-if [ ! -x "$BIN" ] || [ "$SRC" -nt "$BIN" ] || [ "$HDR" -nt "$BIN" ]; then
+if [ ! -x "$BIN" ] || [ "$SRC" -nt "$BIN" ] || [ "$HDR" -nt "$BIN" ] || [ "$REF" -nt "$BIN" ]; then
   g++ -O2 -std=c++17 -o "$BIN.tmp" "$SRC" -losdCPU >&2
   mv "$BIN.tmp" "$BIN"
 fi

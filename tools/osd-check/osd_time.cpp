@@ -7,9 +7,15 @@
 //             its patch points from the cage positions
 //   eval      (N+1)^2 samples per quad and per sub-face of a non-quad (OpenSubdiv's own
 //             sub-face parameterisation): position and both derivatives
+// then, from the parsed cage again, what an engine built on Far's adaptive patches prepares once per
+// topology (the peer of tessellab's CPU preparation, src/gpu/cc/build.ts):
+//   far       a fresh Far::TopologyRefiner, RefineAdaptive at isolation level 2, and
+//             Far::PatchTableFactory::Create with Gregory basis end caps (their local points'
+//             stencils included)
 // and prints one JSON line:
 //   {"faces", "samples", "failed", "ms_load", "ms_topology", "ms_surfaces", "ms_setup"
-//    (= topology + surfaces), "ms_eval", "ms_total" (= load + setup + eval), "checksum"}
+//    (= topology + surfaces), "ms_eval", "ms_total" (= load + setup + eval), "checksum",
+//    "far_patches", "ms_far_refine", "ms_far_patches", "ms_far" (= refine + patches)}
 // `failed` counts faces Bfr could not give a surface (none on the talk's four cages); the
 // checksum (sum of all coordinates) keeps the evaluation from being optimised away.
 //
@@ -19,6 +25,8 @@
 // uniform creasing, Catmark triangles; the file's option tags are ignored.
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/patchTable.h>
+#include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include "refiner.h"
@@ -112,10 +120,25 @@ int main(int argc, char **argv) {
     else run<double>(o, *refiner, N, approx, times, samples, failed, checksum);
     Clock::time_point t3 = Clock::now();
 
+    // Far: refiner, adaptive refinement (isolation 2) and the patch table with Gregory basis end
+    // caps, from the parsed cage (not timed again: the load above).
+    Clock::time_point f0 = Clock::now();
+    std::unique_ptr<Far::TopologyRefiner> adaptive = createRefiner(o, sdc);
+    if (!adaptive) { std::fprintf(stderr, "OpenSubdiv refused the topology\n"); return 3; }
+    adaptive->RefineAdaptive(Far::TopologyRefiner::AdaptiveOptions(2));
+    Clock::time_point f1 = Clock::now();
+    Far::PatchTableFactory::Options popts(2);
+    popts.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    std::unique_ptr<Far::PatchTable> patches(Far::PatchTableFactory::Create(*adaptive, popts));
+    Clock::time_point f2 = Clock::now();
+    const int farPatches = patches ? patches->GetNumPatchesTotal() : 0;
+
     const double load = ms(t1 - t0), topology = ms(t2 - t1), total = ms(t3 - t0);
     // Surfaces and evaluation are timed per face; the loop's own overhead goes with the surfaces.
     const double surfaces = ms(t3 - t2) - times[1];
-    std::printf("{\"faces\":%d,\"samples\":%ld,\"failed\":%d,\"grid\":%d,\"approx\":%d,\"real\":\"%s\",\"ms_load\":%.3f,\"ms_topology\":%.3f,\"ms_surfaces\":%.3f,\"ms_setup\":%.3f,\"ms_eval\":%.3f,\"ms_total\":%.3f,\"checksum\":%.17g}\n",
-                (int)o.counts.size(), samples, failed, N, approx, useFloat ? "float" : "double", load, topology, surfaces, topology + surfaces, times[1], total, checksum);
+    std::printf("{\"faces\":%d,\"samples\":%ld,\"failed\":%d,\"grid\":%d,\"approx\":%d,\"real\":\"%s\",\"ms_load\":%.3f,\"ms_topology\":%.3f,\"ms_surfaces\":%.3f,\"ms_setup\":%.3f,\"ms_eval\":%.3f,\"ms_total\":%.3f,\"checksum\":%.17g,"
+                "\"far_patches\":%d,\"ms_far_refine\":%.3f,\"ms_far_patches\":%.3f,\"ms_far\":%.3f}\n",
+                (int)o.counts.size(), samples, failed, N, approx, useFloat ? "float" : "double", load, topology, surfaces, topology + surfaces, times[1], total, checksum,
+                farPatches, ms(f1 - f0), ms(f2 - f1), ms(f2 - f0));
     return failed ? 4 : 0;
 }
