@@ -27,6 +27,7 @@ import { Tessellator } from '../src/gpu/tess/tessellator.ts';
 import { prepareMesh, type PreparedMesh } from '../src/gpu/tess/prepare.ts';
 import { headlessCamera, type HeadlessOptions } from '../src/gpu/tess/headless.ts';
 import { readBuffer } from '../src/gpu/device/readback.ts';
+import type { FactorParams } from '../src/gpu/contract/tessellated-mesh.ts';
 import { adaptiveRuleOf } from '../src/gpu/tess/factors.ts';
 import { phongEdgeFactors } from '../src/gpu/surface/phong.ts';
 import { BYTES_PER_TRIANGLE, BYTES_PER_VERTEX } from '../src/gpu/tess/factors.ts';
@@ -221,7 +222,19 @@ async function run(argv: string[]): Promise<number> {
     const cage = loadCage(readFileSync(`public/models/${file}`, 'utf8')).cage;
     const mesh = prepareMesh(cage);
     const cam = headlessCamera(mesh, { mode: 'fixed', fixedFactor });
-    const entries: { name: SurfaceId; tess: Tessellator; acc?: AccSurfaceData; samples: Record<string, number>[] }[] = [];
+    // Each surface on the cage it tessellates (an ACC scheme's after the Catmull-Clark steps its
+    // n-gons or semi-sharp creases need, src/subdiv/acc.ts accCage), at the factor that keeps the
+    // cage's edges cut as finely (halved per step: each step halves the edges).
+    type Entry = {
+      name: SurfaceId;
+      tess: Tessellator;
+      mesh: PreparedMesh;
+      cam: FactorParams;
+      steps: number;
+      acc?: AccSurfaceData;
+      samples: Record<string, number>[];
+    };
+    const entries: Entry[] = [];
     const refused = new Set<SurfaceId>();
     let ccData: CatmullClarkData | undefined;
     try {
@@ -232,34 +245,49 @@ async function run(argv: string[]): Promise<number> {
     for (const name of ['phong', 'catmull-clark', ...ACC_SCHEMES] as const) {
       if (refused.has(name)) continue;
       let acc: AccSurfaceData | undefined;
+      let own = { mesh, cam, steps: 0 };
       if (isAccSurface(name)) {
         try {
-          acc = prepareAccSurface(device, cage, mesh, name);
+          const sc = surfaceScheme(name).surfaceCage(cage);
+          if (sc.steps > 0) {
+            const m = prepareMesh(sc.cage);
+            own = {
+              mesh: m,
+              cam: headlessCamera(m, { mode: 'fixed', fixedFactor: Math.max(1, fixedFactor / 2 ** sc.steps) }),
+              steps: sc.steps,
+            };
+          }
+          acc = prepareAccSurface(device, sc.cage, own.mesh, name);
         } catch {
           refused.add(name);
           continue;
         }
       }
-      entries.push({ name, tess: surfaceOf(name), acc, samples: [] });
+      entries.push({ name, tess: surfaceOf(name), acc, samples: [], ...own });
     }
     for (let round = 0; round < rounds + 1; round++) {
       for (const e of entries) {
         // Each tessellator holds one mesh at a time: set it again (CPU-side packing; not timed).
-        e.tess.setMesh(mesh, surfaceScheme(e.name).patchBuild === 'refinement' ? ccData : undefined, e.acc);
+        e.tess.setMesh(e.mesh, surfaceScheme(e.name).patchBuild === 'refinement' ? ccData : undefined, e.acc);
         const enc = device.createCommandEncoder({ label: 'bench surface rebuild' });
-        e.tess.encode(enc, cam);
+        e.tess.encode(enc, e.cam);
         device.queue.submit([enc.finish()]);
         await device.queue.onSubmittedWorkDone(); // as timeRebuild: before the timestamp read's deadline starts
         const t = await e.tess.readTimings();
         if (round > 0) e.samples.push(t); // the first round warms up
       }
     }
-    const ms: Record<string, { tess: number; build: number }> = {};
+    const ms: Record<string, { tess: number; build: number; tris: number; steps: number }> = {};
     for (const e of entries) {
+      e.tess.setMesh(e.mesh, surfaceScheme(e.name).patchBuild === 'refinement' ? ccData : undefined, e.acc);
+      const enc = device.createCommandEncoder({ label: 'bench surface count' });
+      e.tess.encode(enc, e.cam);
+      device.queue.submit([enc.finish()]);
+      const tris = new Uint32Array(await readBuffer(device, e.tess.output.counts, 16))[1];
       const stages = Object.keys(e.samples[0] ?? {});
       const med = (k: string) => median(e.samples.map((x) => x[k] ?? 0));
       const build = stages.includes('subdivision') ? med('subdivision') : 0;
-      ms[e.name] = { tess: stages.filter((k) => k !== 'subdivision').reduce((a, k) => a + med(k), 0), build };
+      ms[e.name] = { tess: stages.filter((k) => k !== 'subdivision').reduce((a, k) => a + med(k), 0), build, tris, steps: e.steps };
       e.acc?.patches.destroy();
     }
     const exact = ms[EXACT];
@@ -267,10 +295,12 @@ async function run(argv: string[]): Promise<number> {
       const m = ms[name];
       if (!m) return 'refused';
       if (surfaceScheme(name).patchBuild === 'refinement') return `${m.tess.toFixed(3)} + ${m.build.toFixed(3)} build`;
-      return `${m.tess.toFixed(3)}${exact ? ` (${(m.tess / exact.tess).toFixed(2)}×)` : ''}`;
+      // On its own cage: the ratio per output triangle, and how many there were.
+      const ratio = exact ? (m.tess / m.tris / (exact.tess / exact.tris)).toFixed(2) : undefined;
+      const note = m.steps > 0 ? ` after ${m.steps} step${m.steps > 1 ? 's' : ''}: ${m.tris} tris` : '';
+      return `${m.tess.toFixed(3)}${ratio ? ` (${ratio}×${m.steps > 0 ? ' per tri' : ''})` : ''}${note}`;
     };
-    const out = new Uint32Array(await readBuffer(device, entries[0].tess.output.counts, 16));
-    const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${out[1]} | ${(['phong', 'catmull-clark', ...ACC_SCHEMES] as const).map(cell).join(' | ')} |`;
+    const row = `| ${file.replace('.obj', '')} | ${mesh.triangleCount} | ${ms.phong?.tris ?? '—'} | ${(['phong', 'catmull-clark', ...ACC_SCHEMES] as const).map(cell).join(' | ')} |`;
     console.log(row);
     surfaceRows.push(row);
   }
@@ -389,7 +419,10 @@ evaluated per vertex) and in brackets the ratio to exact Catmull-Clark's: median
 that rebuild every surface once each (round-robin, after a warm-up round). The patch builds are
 apart: the exact surface's is given after its "+"; the ACC build runs outside the tessellator's
 timed passes (its time is in the ACC section below). Flat baseline off. On SwiftShader only the
-ratios mean anything. *refused*: the scheme does not take the cage (n-gons, holes).
+ratios mean anything. An ACC scheme tessellates the cage after the Catmull-Clark steps its n-gons or
+semi-sharp creases need (src/subdiv/acc.ts accCage, as the demo does), at the factor halved per step; its
+cell then says how many triangles that made, and its ratio is per output triangle. *refused*: the
+scheme does not take the cage.
 
 | model | cage tris | out tris | Phong ms | Catmull-Clark ms | Bezier ACC ms | Gregory ACC ms | Pm ACC ms |
 |---|---:|---:|---:|---:|---:|---:|---:|

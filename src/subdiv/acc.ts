@@ -347,6 +347,8 @@ export interface AccCage {
   cage: Cage;
   /** Set when the cage was refined: what the stats and the CLI say. */
   note: string | null;
+  /** The Catmull-Clark steps taken (0: the cage itself). */
+  steps: number;
 }
 
 const accCages = new WeakMap<Cage, AccCage>();
@@ -390,7 +392,7 @@ export function accCage(cage: Cage): AccCage {
     }
     let refined = cage;
     for (let k = 0; k < steps; k++) refined = refineCage(refined).cage;
-    if (steps === 0) r = { cage, note: null };
+    if (steps === 0) r = { cage, note: null, steps };
     else {
       const why = [ngons ? 'the cage has n-gons' : '', sigma > 0 ? `semi-sharp creases up to ${+sigma.toPrecision(3)} decay` : '']
         .filter(Boolean)
@@ -400,6 +402,7 @@ export function accCage(cage: Cage): AccCage {
       r = {
         cage: refined,
         note: `${steps === 1 ? 'one Catmull-Clark step' : `${steps} Catmull-Clark steps`} first (${why}): ${faces} patches${left}`,
+        steps,
       };
     }
     accCages.set(cage, r);

@@ -43,16 +43,18 @@ function accError(cage: ReturnType<typeof loadCage>['cage'], scheme: (typeof ACC
 describe('accCage', () => {
   it('a quad cage without semi-sharp tags is taken as it is', () => {
     const cage = loadCage(torus).cage;
-    expect(accCage(cage)).toEqual({ cage, note: null });
+    expect(accCage(cage)).toEqual({ cage, note: null, steps: 0 });
   });
 
   it('n-gons: one step; semi-sharp creases: ceil(σ) steps, none left after them; the same object for every call', () => {
     const ico = loadCage(icosphere).cage;
     expect(accCage(ico).note).toBe('one Catmull-Clark step first (the cage has n-gons): 230 patches');
+    expect(accCage(ico).steps).toBe(1);
     const box = loadCage(creasedBox).cage; // σ up to 2.5
     const r = accCage(box);
     expect(r.cage.faceOffsets.length - 1).toBe(24 * 4 ** 3);
     expect(r.note).toBe('3 Catmull-Clark steps first (semi-sharp creases up to 2.5 decay): 1,536 patches');
+    expect(r.steps).toBe(3);
     expect([...r.cage.creases, ...r.cage.corners].every((t) => t.sharpness === 0 || t.sharpness >= 10)).toBe(true);
     expect(accCage(box)).toBe(r);
   });
@@ -60,6 +62,7 @@ describe('accCage', () => {
   it('at most ACC_MAX_STEPS steps: sharpness 9 keeps 5 of it (built sharp), and the note says so', () => {
     const r = accCage(cube({ creases: [[4, 5, 9]] }));
     expect(r.cage.faceOffsets.length - 1).toBe(6 * 4 ** ACC_MAX_STEPS);
+    expect(r.steps).toBe(ACC_MAX_STEPS);
     expect(r.note).toMatch(/what is left of sharper creases is built sharp/);
     expect(Math.max(...r.cage.creases.map((c) => (c.sharpness < 10 ? c.sharpness : 0)))).toBeCloseTo(5, 5);
   });

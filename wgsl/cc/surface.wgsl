@@ -16,7 +16,8 @@
 // What a cage's surface has, as override constants (SurfaceScheme.specialise,
 // src/gpu/surface/registry.ts): a pipeline made for a cage of quads alone carries no n-gon
 // parametrisation, one without single-crease patches no crease basis, one without boundaries or
-// infinitely sharp edges no phantom points; FLAT_BASELINE is the compute tessellator's
+// infinitely sharp edges no phantom points, one whose fans keep every step (CC_ODD_SLICES) no
+// sub-patches made again; FLAT_BASELINE is the compute tessellator's
 // flatBaseline option (off by default: the exact limit, as the instanced tessellator and the
 // error views take this code). Not a uniform: a shader pays for the code it carries as well as
 // for the code it runs (registers, occupancy; on a software GPU the compiled size is most of the
@@ -26,7 +27,6 @@ override CC_CREASE_PATCHES: bool = true;
 override CC_PHANTOMS: bool = true;
 override FLAT_BASELINE: bool = false;
 override CC_ODD_SLICES: bool = true;
-
 
 fn ccBasis(t: f32) -> array<vec4<f32>, 2> {
   let s = 1.0 - t;
@@ -96,6 +96,8 @@ fn ccRot(r: u32, x: f32, y: f32) -> vec2<f32> {
 // and every sector's 12 points (a, b), a ∈ 1..3, b ∈ 0..3 of its frame, as offsets from the
 // fan's anchor: patch-major, so that a point of sector i at step L is one bicubic of 16 points
 // read as they are, whatever L (the slice kernel made them once per rebuild, not once per vertex).
+// A fan over the memory bound keeps its odd steps' sector points only: an even step's sub-patch
+// is made again from the step before (ccDerivedSum).
 // Sub-patch A (0: [1,2]×[0,1]), B (1: [1,2]²) or C (2: [0,1]×[1,2]) of sector i after step
 // L ≥ 1, by where its points lie: the 12 points of sectors i (own), i+1, i−1, i+2 at that step,
 // the centre, and the grid offset of its control point 0 (da, db).
@@ -264,32 +266,33 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     bx = array<vec4<f32>, 2>(cw.value, cw.du);
   }
   let w = ccWeights(bx, px.y, mask);
-  // Summed relative to the patch's corner (0,0), point 5: f32 precision of small patches.
+  // Summed relative to the patch's corner (0,0), point 5: f32 precision of small patches (a
+  // sub-patch made again: relative to its fan's anchor, as its points are).
   var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));
   var o = vec3<f32>(0.0);
   if (derived) {
     e = ccDerivedSum(dFan, src, dL, dSec, dWhich, w);
   } else {
-  o = ccP(ccRegionRow(src, 4u).y);
-  // Row by row: a row's four points weighted in x (value and d/dx), then the row's weight in y
-  // (value and d/dy). Every weight is read at a constant lane (the y weights rotate a lane per
-  // row): an index into a vector that varies per iteration is slow on some compilers.
-  var wy = w.y;
-  var wdy = w.dy;
-  for (var r = 0u; r < 16u; r += 4u) {
-    let idx = ccRegionRow(src, r);
-    let P0 = ccP(idx.x) - o;
-    let P1 = ccP(idx.y) - o;
-    let P2 = ccP(idx.z) - o;
-    let P3 = ccP(idx.w) - o;
-    let row = w.x.x * P0 + w.x.y * P1 + w.x.z * P2 + w.x.w * P3;
-    let rowDx = w.dx.x * P0 + w.dx.y * P1 + w.dx.z * P2 + w.dx.w * P3;
-    e.p += wy.x * row;
-    e.pu += wy.x * rowDx;
-    e.pv += wdy.x * row;
-    wy = wy.yzwx;
-    wdy = wdy.yzwx;
-  }
+    o = ccP(ccRegionRow(src, 4u).y);
+    // Row by row: a row's four points weighted in x (value and d/dx), then the row's weight in y
+    // (value and d/dy). Every weight is read at a constant lane (the y weights rotate a lane per
+    // row): an index into a vector that varies per iteration is slow on some compilers.
+    var wy = w.y;
+    var wdy = w.dy;
+    for (var r = 0u; r < 16u; r += 4u) {
+      let idx = ccRegionRow(src, r);
+      let P0 = ccP(idx.x) - o;
+      let P1 = ccP(idx.y) - o;
+      let P2 = ccP(idx.z) - o;
+      let P3 = ccP(idx.w) - o;
+      let row = w.x.x * P0 + w.x.y * P1 + w.x.z * P2 + w.x.w * P3;
+      let rowDx = w.dx.x * P0 + w.dx.y * P1 + w.dx.z * P2 + w.dx.w * P3;
+      e.p += wy.x * row;
+      e.pu += wy.x * rowDx;
+      e.pv += wdy.x * row;
+      wy = wy.yzwx;
+      wdy = wdy.yzwx;
+    }
   }
   // Tangents along the region's (x, y), then the face's (fs per region side). Inside a fan's
   // last square the blend's tangents are taken as the ring point's (the radial blend has no

@@ -248,15 +248,20 @@ export function buildCatmullClark(cage: Cage, prepared: PreparedMesh, opts: Catm
   const regions = buildRegions(topo, sharp, cls, lv, ft);
   const vertexFan = vertexLimits(prepared, topo, lv, ft, regions.patchIdx);
   const tris = triangleRegions(cage, prepared, nV0, regions);
-  const assemble = (slices: SliceSteps) => assembleData(nV0, lv, ft, regions, vertexFan, tris, slices);
+  const pack = (slices: SliceSteps) => packData(nV0, lv, ft, regions, vertexFan, tris, slices);
   const mode = opts.slices ?? 'auto';
-  if (mode !== 'auto') return assemble(mode);
-  const every = assemble('every');
-  return every.gpuBytes > SLICE_BUDGET_BYTES_PER_FACE * topo.nFaces && every.fanCount > 0 ? assemble('odd') : every;
+  let data = pack(mode === 'auto' ? 'every' : mode);
+  if (mode === 'auto' && data.gpuBytes > SLICE_BUDGET_BYTES_PER_FACE * topo.nFaces && data.fanCount > 0) data = pack('odd');
+  // The static words, once, for the layout chosen.
+  const { sections, ...rest } = data;
+  const words = new Uint32Array(rest.layout.words);
+  for (const k of CC_STATIC.names) words.set(sections[k], rest.layout.offset[k]);
+  return { words, ...rest };
 }
 
-/** The words and the point space of the build, its fans' slices keeping `slices` steps. */
-function assembleData(
+/** The sections and the point space of the build, its fans' slices keeping `slices` steps (all
+ * but the static words' copy: packing is cheap, the copy is not where the levels are large). */
+function packData(
   nV0: number,
   lv: LevelStack,
   ft: FanTable,
@@ -264,7 +269,7 @@ function assembleData(
   vertexFan: Uint32Array,
   { triRegion, poly, triKind }: TriangleRegions,
   slices: SliceSteps,
-): CatmullClarkData {
+): Omit<CatmullClarkData, 'words'> & { sections: Record<CcSection, Uint32Array> } {
   const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms } = packFans(ft.fans, lv.levels, slices);
   const threadWords = packThreads(ft.fans, sliceFans);
   const { levels, rules, inputs, levelRanges } = lv;
@@ -285,12 +290,9 @@ function assembleData(
     vertexFan,
   };
   const layout = CC_STATIC.layout(Object.fromEntries(CC_STATIC.names.map((k) => [k, sections[k].length])) as Record<CcSection, number>);
-  const total = layout.words;
-  const words = new Uint32Array(total);
-  for (const k of CC_STATIC.names) words.set(sections[k], layout.offset[k]);
   const pointCount = nextPoint - nV0;
   return {
-    words,
+    sections,
     layout,
     pointCount,
     levelRanges,
@@ -312,7 +314,7 @@ function assembleData(
     fans: fanWords.view.slice(),
     triRegion,
     cageVertexCount: nV0,
-    gpuBytes: 4 * total + 12 * pointCount,
+    gpuBytes: 4 * layout.words + 12 * pointCount,
   };
 }
 

@@ -292,7 +292,7 @@ export function vertexLimits(prepared: PreparedMesh, topo: HalfEdges, lv: LevelS
  * Which steps' sector points a fan's slices keep (src/gpu/cc/build.ts "slices"): every step's, so
  * a vertex reads its sub-patch as it is, or the odd steps' only (half the bytes), so a vertex on an
  * even step's sub-patch makes its points by one step from the stored step before (the slice
- * kernel's own sliceStep, wgsl/cc/slice-step.wgsl).
+ * kernel's own sliceStep, wgsl/cc/slices.wgsl).
  */
 export type SliceSteps = 'every' | 'odd';
 

@@ -38,9 +38,11 @@ export interface SurfaceCage {
   cage: Cage;
   /** Why it is not the cage given (what the stats and the CLI say), or null when it is. */
   note: string | null;
+  /** Catmull-Clark steps from the cage given (each halves its edges): 0 when it is the same. */
+  steps: number;
 }
 
-const sameCage = (cage: Cage): SurfaceCage => ({ cage, note: null });
+const sameCage = (cage: Cage): SurfaceCage => ({ cage, note: null, steps: 0 });
 
 export interface SurfaceScheme {
   readonly id: SurfaceId;
