@@ -323,7 +323,7 @@ async function run(argv: string[]): Promise<number> {
     const fmt = (x: number) => x.toFixed(x < 10 ? 2 : 1);
     const ratio = (a: number | undefined, b: number) => (a === undefined ? '—' : `${(a / b).toFixed(1)}×`);
     // OpenSubdiv's exact surfaces against the warm preparation; Far's adaptive patches against the
-    // cold one (what a user pays on loading a cage: the first call in a fresh process).
+    // cold one (the cage's first call in this run; a user pays a fresh process's, which is more).
     const osdCells = (warmMs: number | undefined, coldMs?: number) =>
       osdMs === undefined || farMs === undefined
         ? '— | — | — | —'
@@ -390,7 +390,8 @@ surface factory, an exact \`Bfr::Surface<double>\` (approximation level 10) for 
 (sub-)face. *warm CPU prep / OpenSubdiv* is the ratio of the two CPU times (issue 9's target: ≤ 1). *Far adaptive ms*
 is what an engine on OpenSubdiv's adaptive patches prepares once per topology, timed in the same program from the parsed
 cage: \`Far::TopologyRefiner\`, \`RefineAdaptive\` at isolation level 2 and \`Far::PatchTableFactory\` with Gregory basis end
-caps; *cold CPU prep / Far* sets the first preparation in this process against it (issue 31's target: ≤ 1).
+caps; *cold CPU prep / Far* sets the cage's first preparation in this run against it (issue 31's target, ≤ 1, is
+for a fresh process, as \`npm run tessellate -- … --stats\` pays it; here the models before it have warmed the JIT).
 `
       : `(No OpenSubdiv column: ${osd.reason})
 `;
