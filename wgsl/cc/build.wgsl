@@ -12,7 +12,8 @@
 
 // Declared by the generated prelude (src/gpu/contract/contract.ts ccBuildPrelude): Params, the constants
 // (WORKGROUP_SIZE, GRID_X, CC_NONE), `range` and the bindings params, staticBuf, cageBuf; then
-// the packed words' getters (src/gpu/cc/words.ts).
+// the packed words' getters (src/gpu/cc/words.ts); then wgsl/cc/slices.wgsl, which the evaluator
+// shares: ccP (a point), ccFan and ccNb (a fan's slices and sectors), sliceStep, ccSliceMake.
 
 fn ptAt(p: u32) -> u32 { return select(params.offCtrl + 3u * (p - params.ccCageVerts), 3u * p, p < params.ccCageVerts); }
 fn setPt(p: u32, v: vec3<f32>) {
@@ -114,7 +115,6 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 var<workgroup> P: array<vec3<f32>, 6u * WORKGROUP_SIZE>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
 var<workgroup> C: array<vec3<f32>, WORKGROUP_SIZE>;    // the centre, at the fan's first thread
 var<workgroup> wideFanOf: u32;                          // the workgroup's wide fan, or CC_NONE
-
 
 // A fan's words unpacked (src/gpu/cc/build.ts "fans"): sectors, valence, boundary, rule, depth D,
 // its anchor point, its slices' base and its crease pair (ia, ib); f: its slices as
