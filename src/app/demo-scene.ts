@@ -413,7 +413,9 @@ export abstract class DemoScene extends DemoBase {
       if (this.#loadingFile === file) setLoading(`Loading ${file.name}: ${line}…`);
     };
     this.#loadingFile = file;
-    const load = () => loadModelFromFile(file, progress).then((m) => this.#fits(m));
+    // The worker refuses a cage this device cannot hold from its counts, before handing it over.
+    const fits = { maxFactor: MAX_FACTOR, bindingLimit: this.gpu.device.limits.maxStorageBufferBindingSize };
+    const load = () => loadModelFromFile(file, progress, fits).then((m) => this.#fits(m));
     const shown = await this.controller.loadModel(load, file.name, { pick: file.name }).finally(() => {
       if (this.#loadingFile === file) this.#loadingFile = null;
     });

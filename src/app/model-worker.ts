@@ -6,24 +6,35 @@
  * not copied) or the error: a CageError's issues go back as data, so the page shows the same
  * message with its line numbers.
  */
-import { type CageIssue, CageError } from '../mesh/index.ts';
+import { type CageIssue, CageError, LimitError } from '../mesh/index.ts';
 import { parseObjBytes, type ParsedFile } from './parse-obj.ts';
 import { buffersOf } from './transfer.ts';
+import { cageTooLarge } from '../gpu/tess/arenas.ts';
 
-export type ParseReply = { progress: string } | { loaded: ParsedFile } | { error: string; issues?: CageIssue[] };
+export type ParseReply = { progress: string } | { loaded: ParsedFile } | { error: string; issues?: CageIssue[]; limit?: boolean };
+
+/** What the page asks: the file, and the device's bounds, so that a cage it cannot hold is refused
+ * here from its counts (src/gpu/tess/arenas.ts cageTooLarge) rather than handed over: a cage of a
+ * million faces is hundreds of MB of arrays, whose arrival and collection on the page's thread were
+ * its longest tasks (180-350 ms on a busy machine) for a model it then refused. */
+export interface ParseRequest {
+  file: File;
+  fits?: { maxFactor: number; bindingLimit: number };
+}
 
 const post = (reply: ParseReply, transfer: Transferable[] = []) => (self as unknown as Worker).postMessage(reply, transfer);
 
-self.onmessage = async (e: MessageEvent<{ file: File }>) => {
-  const file = e.data.file;
+self.onmessage = async (e: MessageEvent<ParseRequest>) => {
+  const { file, fits } = e.data;
   try {
     post({ progress: `reading ${file.name}` });
     const bytes = new Uint8Array(await file.arrayBuffer());
     post({ progress: `parsing ${file.name}` });
-    const loaded = parseObjBytes(bytes);
+    const loaded = parseObjBytes(bytes, (cage) => (fits ? cageTooLarge(cage, fits.maxFactor, fits.bindingLimit) : null));
     post({ loaded }, [...buffersOf(loaded)]);
   } catch (err) {
     if (err instanceof CageError) post({ error: err.message, issues: err.issues });
+    else if (err instanceof LimitError) post({ error: err.message, limit: true });
     else post({ error: err instanceof Error ? err.message : String(err) });
   }
 };

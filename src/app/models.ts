@@ -8,6 +8,7 @@ import { decodeText, loadCage, type LoadedCage } from '../mesh/index.ts';
 import type { TriangulatedCage } from '../gpu/render/cage-mesh.ts';
 import { errorMessage } from './controller.ts';
 import { parseFileOffThread } from './parse-off-thread.ts';
+import type { ParseRequest } from './model-worker.ts';
 import { checkFileSize, MAX_MODEL_FILE_BYTES } from './file-size.ts';
 
 export interface ModelEntry {
@@ -69,9 +70,9 @@ export async function loadModelFromUrl(url: string, title: string): Promise<Load
 
 /** A user's OBJ file: refused from its size before it is read (src/app/file-size.ts), then read
  * and parsed in a worker (src/app/parse-off-thread.ts); `progress` hears what it is doing. */
-export async function loadModelFromFile(file: File, progress?: (line: string) => void): Promise<LoadedModel> {
+export async function loadModelFromFile(file: File, progress?: (line: string) => void, fits?: ParseRequest['fits']): Promise<LoadedModel> {
   checkFileSize(file, MAX_MODEL_FILE_BYTES, 'model files');
-  return drawable({ ...(await parseFileOffThread(file, progress)), title: file.name, localFile: true });
+  return drawable({ ...(await parseFileOffThread(file, progress, fits)), title: file.name, localFile: true });
 }
 
 /** A model that loads but would draw nothing is refused with the reason, not shown as an empty
