@@ -279,10 +279,7 @@ async function run(argv: string[]): Promise<number> {
     }
     const ms: Record<string, { tess: number; build: number; tris: number; steps: number }> = {};
     for (const e of entries) {
-      e.tess.setMesh(e.mesh, surfaceScheme(e.name).patchBuild === 'refinement' ? ccData : undefined, e.acc);
-      const enc = device.createCommandEncoder({ label: 'bench surface count' });
-      e.tess.encode(enc, e.cam);
-      device.queue.submit([enc.finish()]);
+      // Each surface has its own tessellator, whose last round above was this entry's rebuild.
       const tris = new Uint32Array(await readBuffer(device, e.tess.output.counts, 16))[1];
       const stages = Object.keys(e.samples[0] ?? {});
       const med = (k: string) => median(e.samples.map((x) => x[k] ?? 0));

@@ -7,9 +7,8 @@
  * message with its line numbers.
  */
 import { type CageIssue, CageError, LimitError } from '../mesh/index.ts';
-import { parseObjBytes, type ParsedFile } from './parse-obj.ts';
+import { type DeviceFits, parseObjBytes, type ParsedFile } from './parse-obj.ts';
 import { buffersOf } from './transfer.ts';
-import { cageTooLarge } from '../gpu/tess/arenas.ts';
 
 export type ParseReply = { progress: string } | { loaded: ParsedFile } | { error: string; issues?: CageIssue[]; limit?: boolean };
 
@@ -19,7 +18,7 @@ export type ParseReply = { progress: string } | { loaded: ParsedFile } | { error
  * its longest tasks (180-350 ms on a busy machine) for a model it then refused. */
 export interface ParseRequest {
   file: File;
-  fits?: { maxFactor: number; bindingLimit: number };
+  fits?: DeviceFits;
 }
 
 const post = (reply: ParseReply, transfer: Transferable[] = []) => (self as unknown as Worker).postMessage(reply, transfer);
@@ -30,7 +29,7 @@ self.onmessage = async (e: MessageEvent<ParseRequest>) => {
     post({ progress: `reading ${file.name}` });
     const bytes = new Uint8Array(await file.arrayBuffer());
     post({ progress: `parsing ${file.name}` });
-    const loaded = parseObjBytes(bytes, (cage) => (fits ? cageTooLarge(cage, fits.maxFactor, fits.bindingLimit) : null));
+    const loaded = parseObjBytes(bytes, fits);
     post({ loaded }, [...buffersOf(loaded)]);
   } catch (err) {
     if (err instanceof CageError) post({ error: err.message, issues: err.issues });

@@ -3,8 +3,7 @@
  * however large the file: the main thread only receives the finished cage. Where workers are
  * missing (unit tests in Node), the same work runs here.
  */
-import { type Cage, CageError, LimitError } from '../mesh/index.ts';
-import { cageTooLarge } from '../gpu/tess/arenas.ts';
+import { CageError, LimitError } from '../mesh/index.ts';
 import type { ParseReply, ParseRequest } from './model-worker.ts';
 import { parseObjBytes, type ParsedFile } from './parse-obj.ts';
 import { runWorkerOnce } from './worker-once.ts';
@@ -14,8 +13,7 @@ export function parseFileOffThread(
   progress: (line: string) => void = () => {},
   fits?: ParseRequest['fits'],
 ): Promise<ParsedFile> {
-  const refuse = (cage: Cage) => (fits ? cageTooLarge(cage, fits.maxFactor, fits.bindingLimit) : null);
-  if (typeof Worker === 'undefined') return file.arrayBuffer().then((b) => parseObjBytes(new Uint8Array(b), refuse));
+  if (typeof Worker === 'undefined') return file.arrayBuffer().then((b) => parseObjBytes(new Uint8Array(b), fits));
   const request: ParseRequest = { file, fits };
   return runWorkerOnce(
     () => new Worker(new URL('./model-worker.ts', import.meta.url), { type: 'module', name: `parse ${file.name}` }),
