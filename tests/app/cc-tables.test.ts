@@ -41,10 +41,12 @@ describe('CcTableCache', () => {
   });
 
   it('a cage the preparation refuses rejects with a message fit to show', async () => {
-    // A cube with a crease of sharpness 8: more uniform levels than the build makes.
+    // A cube with a crease of sharpness 8 under Chaikin's rule: its decay stays in uniform levels
+    // (semi-sharp creases under uniform creasing decay inside the slice kernel), more than the
+    // build makes.
     const cube = ['v -1 -1 -1', 'v 1 -1 -1', 'v 1 1 -1', 'v -1 1 -1', 'v -1 -1 1', 'v 1 -1 1', 'v 1 1 1', 'v -1 1 1'];
     const faces = ['f 1 4 3 2', 'f 5 6 7 8', 'f 1 2 6 5', 'f 2 3 7 6', 'f 3 4 8 7', 'f 4 1 5 8'];
-    const { cage } = loadCage([...cube, ...faces, 't crease 2/1/0 4 5 8'].join('\n'));
+    const { cage } = loadCage([...cube, ...faces, 't crease 2/1/0 4 5 8', 't creasemethod 0/0/1 chaikin'].join('\n'));
     await expect(new CcTableCache().get(cage)).rejects.toThrow(/more than 6 levels of refinement/);
   });
 });

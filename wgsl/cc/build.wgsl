@@ -110,7 +110,8 @@ fn points(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
 // Inside the slices every point but the centre and the axis points is a smooth valence-4
 // vertex, an edge point of an edge made inside a face, or a face point (the eligibility test
 // of build.ts), so the regular masks below are exact; the axis points use the crease rules
-// when the axis is infinitely sharp (boundaries, creases into the EV, darts).
+// by the axis's sharpness (infinitely sharp: boundaries, creases into the EV, darts; semi-sharp:
+// decaying one unit a step, wgsl/cc/slices.wgsl sliceStep), the centre its rule of the step.
 
 var<workgroup> P: array<vec3<f32>, 6u * WORKGROUP_SIZE>;   // 6 per thread: (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
 var<workgroup> C: array<vec3<f32>, WORKGROUP_SIZE>;    // the centre, at the fan's first thread
@@ -133,6 +134,32 @@ fn fanHead(fan: u32) -> FanHead {
 // or corner (it stays).
 fn centreSmoothTerm(c: vec3<f32>, p10: vec3<f32>, p11: vec3<f32>, n10: vec3<f32>) -> vec3<f32> {
   return p10 + 0.25 * (c + p10 + p11 + n10);
+}
+
+// The centre's rule in step k: the fan's one rule (word 0, the crease pair in word 6), or for a
+// centre with semi-sharp edges step k's entry of its table (word 8: src/gpu/cc/fans.ts
+// stepRules): the rule before and after the step, the crease pair and OpenSubdiv's W, as a
+// vertex point of the levels has them (`points`).
+struct CentreRule { parent: u32, child: u32, ia: u32, ib: u32, W: f32 }
+
+fn centreRule(fan: u32, rule: u32, ia: u32, ib: u32, k: u32) -> CentreRule {
+  let table = ccFanWord(fan, 8u);
+  if (table == CC_NONE) { return CentreRule(rule, rule, ia, ib, 1.0); }
+  let o = params.ccSectors + table + 3u * (k - 1u);
+  let w = staticBuf[o];
+  let pair = staticBuf[o + 1u];
+  return CentreRule(ccStepRuleWord_parent(w), ccStepRuleWord_child(w), ccPairWord_a(pair), ccPairWord_b(pair), bitcast<f32>(staticBuf[o + 2u]));
+}
+
+// The centre after a step by one rule, from the fan's old points in workgroup memory (its first
+// thread's `first`): smooth (and dart), crease along axes ia, ib, or corner (it stays).
+fn centreMask(rule: u32, c: vec3<f32>, first: u32, n: u32, ia: u32, ib: u32) -> vec3<f32> {
+  if (rule == 1u) { return 0.75 * c + 0.125 * (P[6u * (first + ia)] + P[6u * (first + ib)]); }
+  if (rule != 0u) { return c; }
+  var s = vec3<f32>(0.0);
+  for (var j = 0u; j < n; j++) { s += centreSmoothTerm(c, P[6u * (first + j)], P[6u * (first + j) + 2u], P[6u * (first + (j + 1u) % n)]); }
+  let nf = f32(n);
+  return ((nf - 2.0) / nf) * c + s / (nf * nf);
 }
 
 @compute @workgroup_size(WORKGROUP_SIZE)
@@ -161,7 +188,7 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   var anchor = vec3<f32>(0.0);
   var sliceBase = 0u;
   var fs: CCFan;
-  var inf = false;
+  var axisWord = 0u;
   var pseudo = false;
   var ia = 0u;
   var ib = 0u;
@@ -180,7 +207,7 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     ia = h.ia;
     ib = h.ib;
     let sb = ccFanWord(fan, 3u) + 7u * sec;
-    inf = staticBuf[params.ccSectors + sb] == 1u;
+    axisWord = staticBuf[params.ccSectors + sb];
     pseudo = boundary && sec == n;
     for (var j = 0u; j < 6u; j++) { P[6u * lid + j] = ccP(staticBuf[params.ccSectors + sb + 1u + j]) - anchor; }
     if (sec == 0u) { C[lid] = vec3<f32>(0.0); }
@@ -200,16 +227,12 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
     var cNew = c;
     if (live) {
       let p = array<vec3<f32>, 6>(P[6u * lid], P[6u * lid + 1u], P[6u * lid + 2u], P[6u * lid + 3u], P[6u * lid + 4u], P[6u * lid + 5u]);
-      o = sliceStep(p, c, P[6u * next], P[6u * next + 1u], P[6u * prev], P[6u * prev + 2u], P[6u * prev + 4u], inf, pseudo);
+      o = sliceStep(p, c, P[6u * next], P[6u * next + 1u], P[6u * prev], P[6u * prev + 2u], P[6u * prev + 4u],
+                    ccAxisSharpness(axisWord, k - 1u), pseudo);
       if (sec == 0u) {
-        if (rule == 1u) {
-          cNew = 0.75 * c + 0.125 * (P[6u * (first + ia)] + P[6u * (first + ib)]);
-        } else if (rule == 0u) {
-          var s = vec3<f32>(0.0);
-          for (var j = 0u; j < n; j++) { s += centreSmoothTerm(c, P[6u * (first + j)], P[6u * (first + j) + 2u], P[6u * (first + (j + 1u) % n)]); }
-          let nf = f32(n);
-          cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
-        }
+        let r = centreRule(fan, rule, ia, ib, k);
+        cNew = centreMask(r.parent, c, first, n, r.ia, r.ib);
+        if (r.child != r.parent) { cNew = r.W * cNew + (1.0 - r.W) * centreMask(r.child, c, first, n, r.ia, r.ib); }
       }
     }
     workgroupBarrier();
@@ -320,7 +343,7 @@ fn cornerTangents(fan: u32, D: u32, ns: u32, n: u32, boundary: bool, anchor: vec
   let ei = ringPt(fan, D, ns, anchor, i, 0u);
   let ej = ringPt(fan, D, ns, anchor, j, 0u);
   let sb = params.ccSectors + ccFanWord(fan, 3u);
-  if (staticBuf[sb + 7u * i] == 1u && staticBuf[sb + 7u * j] == 1u) { return array<vec3<f32>, 2>(ei - c, ej - c); }
+  if (staticBuf[sb + 7u * i] == CC_AXIS_INFINITE && staticBuf[sb + 7u * j] == CC_AXIS_INFINITE) { return array<vec3<f32>, 2>(ei - c, ej - c); }
   return array<vec3<f32>, 2>(ringPt(fan, D, ns, anchor, i, 1u) - c, ej - ei);
 }
 

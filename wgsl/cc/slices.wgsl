@@ -9,7 +9,7 @@ fn ccP(p: u32) -> vec3<f32> {
   return vec3<f32>(cageBuf[o], cageBuf[o + 1u], cageBuf[o + 2u]);
 }
 
-fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + 8u * fan + i]; }
+fn ccFanWord(fan: u32, i: u32) -> u32 { return staticBuf[params.ccFans + CC_FAN_WORDS * fan + i]; }
 
 // A fan's slices: sectors (threads), valence, boundary, first point, its sector words, depth D,
 // and whether it keeps its odd steps' sector points only.
@@ -32,6 +32,16 @@ fn ccNb(f: CCFan, j: u32, d: i32) -> u32 {
   return u32(((m % n) + n) % n);
 }
 
+// An axis's sharpness after `decays` levels below the fan's start, from its axis word (src/gpu/cc/
+// build.ts "sectors"): 0 smooth, AXIS_INFINITE when infinitely sharp, else σ − decays (≤ 0 once
+// it has decayed: smooth). Uniform creasing: one unit of sharpness a level.
+const AXIS_INFINITE: f32 = 3.0e38;
+fn ccAxisSharpness(w: u32, decays: u32) -> f32 {
+  if (w == CC_AXIS_INFINITE) { return AXIS_INFINITE; }
+  return select(bitcast<f32>(w) - f32(decays), 0.0, w == 0u);
+}
+fn ccAxisSharp(f: CCFan, sec: u32, decays: u32) -> f32 { return ccAxisSharpness(staticBuf[f.sectors + 7u * sec], decays); }
+
 // Whether step k's sector points are stored (every step's; an odd fan's odd steps'), and where
 // they start (sector j's 12 at 12j after it). The centres of every step are stored.
 fn ccSliceStored(f: CCFan, k: u32) -> bool { return !f.odd || (k & 1u) == 1u; }
@@ -41,10 +51,11 @@ fn ccSliceStepBase(f: CCFan, k: u32) -> u32 { return f.base + f.D + 12u * f.ns *
 // its 6 old points p, the old centre c, the next sector's (1,0), (2,0) (n10, n20) and the
 // previous one's (1,0), (1,1), (1,2) (q10, q11, q12). The face points of the cells
 // are made here from those (the previous sector's two cells along this sector's axis too), so
-// a sector needs no other thread's results, only their old points. inf: this sector's axis is
-// infinitely sharp; pseudo: a boundary's pseudo-sector (its axis points only).
+// a sector needs no other thread's results, only their old points. sigma: this sector's axis's
+// sharpness before the step (ccAxisSharpness); pseudo: a boundary's pseudo-sector (its axis
+// points only).
 fn sliceStep(p: array<vec3<f32>, 6>, c: vec3<f32>, n10: vec3<f32>, n20: vec3<f32>, q10: vec3<f32>, q11: vec3<f32>, q12: vec3<f32>,
-             inf: bool, pseudo: bool) -> array<vec3<f32>, 12> {
+             sigma: f32, pseudo: bool) -> array<vec3<f32>, 12> {
   let p10 = p[0];
   let p20 = p[1];
   let p11 = p[2];
@@ -59,10 +70,20 @@ fn sliceStep(p: array<vec3<f32>, 6>, c: vec3<f32>, n10: vec3<f32>, n20: vec3<f32
   let g00 = 0.25 * (c + q10 + q11 + p10);
   let g01 = 0.25 * (p10 + q11 + q12 + p20);
   var o: array<vec3<f32>, 12>;
-  // Axis i: crease rules when infinitely sharp.
-  o[0] = select(0.25 * (c + p10 + f00 + g00), 0.5 * (c + p10), inf);
-  o[8] = select(0.25 * (p10 + p20 + f10 + g01), 0.5 * (p10 + p20), inf);
-  o[4] = select(0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01), 0.75 * p10 + 0.125 * (c + p20), inf);
+  // Axis i, by its sharpness σ (the rules of the levels, wgsl/cc/build.wgsl `points`: OpenSubdiv's
+  // uniform creasing): its two edge points crease from σ ≥ 1, smooth at σ ≤ 0, between them the
+  // blend by σ; its vertex point (1,0), whose two axis halves have the one σ (the fan's
+  // eligibility), crease while the axis stays sharp after the step (σ > 1), smooth at σ ≤ 0,
+  // between them the crease rule blended with the smooth by OpenSubdiv's W, which is σ here.
+  let e0 = 0.25 * (c + p10 + f00 + g00);
+  let e0c = 0.5 * (c + p10);
+  let e1 = 0.25 * (p10 + p20 + f10 + g01);
+  let e1c = 0.5 * (p10 + p20);
+  let v = 0.5 * p10 + 0.0625 * (c + p20 + p11 + q11) + 0.0625 * (f00 + f10 + g00 + g01);
+  let vc = 0.75 * p10 + 0.125 * (c + p20);
+  o[0] = select(select(sigma * e0c + (1.0 - sigma) * e0, e0c, sigma >= 1.0), e0, sigma <= 0.0);
+  o[8] = select(select(sigma * e1c + (1.0 - sigma) * e1, e1c, sigma >= 1.0), e1, sigma <= 0.0);
+  o[4] = select(select(sigma * vc + (1.0 - sigma) * v, vc, sigma > 1.0), v, sigma <= 0.0);
   if (!pseudo) {
     o[1] = f00;
     o[9] = f10;
@@ -97,5 +118,5 @@ fn ccSliceMake(f: CCFan, anchor: vec3<f32>, k: u32, sec: u32) -> array<vec3<f32>
   for (var j = 0u; j < 6u; j++) { p[j] = ccSliceOld(f, anchor, k, sec, j); }
   return sliceStep(p, c, ccSliceOld(f, anchor, k, next, 0u), ccSliceOld(f, anchor, k, next, 1u),
                    ccSliceOld(f, anchor, k, prev, 0u), ccSliceOld(f, anchor, k, prev, 2u), ccSliceOld(f, anchor, k, prev, 4u),
-                   staticBuf[f.sectors + 7u * sec] == 1u, f.boundary && sec == f.n);
+                   ccAxisSharp(f, sec, k - 1u), f.boundary && sec == f.n);
 }

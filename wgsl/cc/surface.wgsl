@@ -8,8 +8,9 @@
 //          change of basis across it (wgsl/cc/crease-basis.wgsl; Nießner, Loop, Greiner 2012);
 //   SECTOR a sector of an extraordinary vertex's fan: after L = ceil(log2(1/max(a,b))) steps
 //          the point lies on one of the regular sub-patches A, B, C of the fan's slice at step
-//          L (src/gpu/cc/build.ts, "2. Fans"); inside the last square (2^-7 of the face) a radial blend from the
-//          vertex's limit to the exact ring round it.
+//          L (src/gpu/cc/build.ts, "2. Fans"), A and C single-crease patches while a semi-sharp
+//          axis beside them is still sharp at step L; inside the last square (2^-7 of the face) a
+//          radial blend from the vertex's limit to the exact ring round it.
 // Optionally (FLAT_BASELINE) blends from the flat triangle of the corners' limit positions to
 // the surface as the tess factor rises from 1 to 4.
 //
@@ -48,10 +49,9 @@ struct CCWeights { x: vec4<f32>, dx: vec4<f32>, y: vec4<f32>, dy: vec4<f32> }
 fn ccFoldLow(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(0.0, w.y + 2.0 * w.x, w.z - w.x, w.w); }
 fn ccFoldHigh(w: vec4<f32>) -> vec4<f32> { return vec4<f32>(w.x, w.y - w.w, w.z + 2.0 * w.w, 0.0); }
 
-// The x weights are given (value, d/dx per column): ccBasis(x), or a single-crease patch's row
-// weights (ccEvalRegion).
-fn ccWeights(bx: array<vec4<f32>, 2>, y: f32, mask: u32) -> CCWeights {
-  let by = ccBasis(y);
+// The weights are given (value, d/dx per column; value, d/dy per row): ccBasis, or across a
+// semi-sharp crease the crease basis's (ccEvalRegion).
+fn ccWeights(bx: array<vec4<f32>, 2>, by: array<vec4<f32>, 2>, mask: u32) -> CCWeights {
   var w = CCWeights(bx[0], bx[1], by[0], by[1]);
   if (!CC_PHANTOMS) { return w; }
   if ((mask & 1u) != 0u) { w.y = ccFoldLow(w.y); w.dy = ccFoldLow(w.dy); }
@@ -209,6 +209,12 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
   var dL = 0u;
   var dSec = 0u;
   var dWhich = 0u;
+  // A semi-sharp axis of the fan still sharp at the sub-patch's step (its σ − L > 0): sub-patch
+  // A's bottom row lies on axis sec, C's left column on axis sec + 1, and each is then a
+  // single-crease patch (the crease basis across that axis; the fan's eligibility makes the rest
+  // of its points regular, src/gpu/cc/fans.ts).
+  var creaseX = 0.0;
+  var creaseY = 0.0;
   if (!regular) {
     let fan = w1;
     let sec = ccRegionWord_sector(w0);
@@ -245,8 +251,10 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     }
     // Phantoms: A's bottom on axis sec, C's left on axis sec + 1, when infinitely sharp.
     mask = 0u;
-    if (CC_PHANTOMS && which == 0u && staticBuf[f.sectors + 7u * sec] == 1u) { mask = 1u; }
-    if (CC_PHANTOMS && which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == 1u) { mask = 8u; }
+    if (CC_PHANTOMS && which == 0u && staticBuf[f.sectors + 7u * sec] == CC_AXIS_INFINITE) { mask = 1u; }
+    if (CC_PHANTOMS && which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == CC_AXIS_INFINITE) { mask = 8u; }
+    if (CC_CREASE_PATCHES && which == 0u) { creaseY = ccAxisSharp(f, sec, L); }
+    if (CC_CREASE_PATCHES && which == 2u) { creaseX = ccAxisSharp(f, ccNb(f, sec, 1), L); }
     src.sub = ccSubPatchOf(f, sec, L, which);
     src.origin = ccP(ccFanWord(fan, 1u));
     // An odd fan's even step is not stored: its sub-patch is summed below from points made
@@ -265,7 +273,16 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     let cw = creaseRowWeights(bitcast<f32>(staticBuf[src.base + 16u]), px.x);
     bx = array<vec4<f32>, 2>(cw.value, cw.du);
   }
-  let w = ccWeights(bx, px.y, mask);
+  var by = ccBasis(px.y);
+  if (CC_CREASE_PATCHES && creaseX > 0.0 && creaseX < AXIS_INFINITE) {
+    let cw = creaseRowWeights(creaseX, px.x);
+    bx = array<vec4<f32>, 2>(cw.value, cw.du);
+  }
+  if (CC_CREASE_PATCHES && creaseY > 0.0 && creaseY < AXIS_INFINITE) {
+    let cw = creaseRowWeights(creaseY, px.y);
+    by = array<vec4<f32>, 2>(cw.value, cw.du);
+  }
+  let w = ccWeights(bx, by, mask);
   // Summed relative to the patch's corner (0,0), point 5: f32 precision of small patches (a
   // sub-patch made again: relative to its fan's anchor, as its points are).
   var e = CCSum(vec3<f32>(0.0), vec3<f32>(0.0), vec3<f32>(0.0));

@@ -20,24 +20,31 @@
  *    smooth, after the inputs: the two crease edges and the transitional weight W in f32 as
  *    OpenSubdiv computes it).
  * 2. Fans. A vertex x of level s is a fan centre ("eligible") when every point of its 2-ring
- *    other than x obeys the regular valence-4 masks: its faces are quads, its incident edges
- *    and its own sharpness are 0 or infinite, each neighbour (1,0) is a valence-4 vertex
- *    whose only sharp edges are the two halves of the axis (or a valence-3 boundary vertex on
- *    a boundary axis) and each diagonal (1,1) is a smooth interior valence-4 vertex. Then
- *    one refinement step of the fan reads only the axis sharpness and the
- *    centre's rule: every other point touched is a face point, an edge point of an edge made
- *    inside a face (sharpness 0), or the vertex point of (1,0) / (1,1) above; and after one
- *    step the new (1,0), (1,1) are again of that kind. So the slice kernel is exact at every
- *    depth for boundaries, infinitely sharp creases into the EV, darts and corners alike.
- *    Semi-sharp values never reach a fan: a vertex is eligible only once they have decayed,
- *    which the uniform levels do (exactly, with OpenSubdiv's transitions).
+ *    other than x obeys the regular valence-4 masks: its faces are quads, each neighbour (1,0)
+ *    is a valence-4 vertex whose only sharp edges are the two halves of the axis, of one
+ *    sharpness (or a valence-3 boundary vertex on a boundary axis), and each diagonal (1,1) is
+ *    a smooth interior valence-4 vertex. Then one refinement step of the fan reads only the
+ *    axes' sharpness and the centre's rule: every other point touched is a face point, an edge
+ *    point of an edge made inside a face (sharpness 0), or the vertex point of (1,0) / (1,1)
+ *    above; and after one step the new (1,0), (1,1) are again of that kind, the axes one unit
+ *    less sharp. So the slice kernel is exact at every depth for boundaries, creases into the
+ *    EV, darts and corners alike, infinitely sharp or SEMI-SHARP: under uniform creasing (the
+ *    default) a semi-sharp axis decays inside the kernel (wgsl/cc/slices.wgsl sliceStep: its
+ *    edge and vertex points by its sharpness σ − k, OpenSubdiv's blends below 1), the centre,
+ *    whose edges and own sharpness may be semi-sharp, takes each step's rule from a table
+ *    (src/gpu/cc/fans.ts stepRules: parent and child rule, crease pair and transitional W, as
+ *    the levels make a vertex point), and such a fan steps at least ceil(σ) + 1 times, so its
+ *    limit is taken by the rule that holds once every value has decayed. A cage vertex on a
+ *    straight semi-sharp crease is no fan centre (the single-crease patches and the closed-form
+ *    limit take it, below); under Chaikin's rule (the halves of an edge decay differently)
+ *    semi-sharp values never reach a fan, and the uniform levels decay them.
  * 3. Regions. Face f is split to the smallest depth d at which each of its level-d descendants
  *    is a regular patch (isRegularVertex at its 4 corners: smooth, boundary, infinitely sharp
  *    phantoms), a SINGLE-CREASE patch, or has an eligible fan centre at a corner (an EV SECTOR
  *    region; its fan may start at a coarser level s ≤ d: offset d − s). d = 0 for regular
  *    quads (1 region), 1 for quads at an EV (4), 2 where triangles are involved (16 per quad,
- *    12 per triangle), as in the talk's table, and deeper only where semi-sharp creases fail
- *    the single-crease test. A single-crease patch (singleCrease; Nießner, Loop, Greiner 2012, OpenSubdiv's
+ *    12 per triangle), as in the talk's table, and deeper only where semi-sharp creases are
+ *    neither single creases nor a fan's axes. A single-crease patch (singleCrease; Nießner, Loop, Greiner 2012, OpenSubdiv's
  *    isSingleCreasePatch conditions): a quad whose 4 corners are interior valence-4 vertices
  *    of quads without vertex sharpness, whose only sharp edges at the corners are the 3
  *    collinear edges A'A, AB, BB' of one side AB, all of one semi-sharp σ. Its limit is the
@@ -49,18 +56,17 @@
  *    rest smooth, valence 4) takes its limit from the closed form at the patch corner (its 3×3
  *    neighbourhood and σ; creaseVertexGrid) instead of a fan at the level where σ has decayed.
  *
- * Limits (honest): where a semi-sharp crease fails the single-crease test (it ends at a dart or
- * a boundary, meets another crease or a corner, or runs into an extraordinary vertex) its
- * sharpness still decays by UNIFORM levels of the whole cage, ceil(σ) of them (sharpness ≥ 7
- * needs more than MAX_LEVEL = 6 and is refused with a message, as are vertices of valence > 4,094,
- * the fan word's field, and faces of more than 64 corners). Chaikin's creasing rule (a crease's child sharpness averaged with its
- * neighbours') decays in the levels as OpenSubdiv does, without the single-crease closed form.
- * catmark_pawn's crease loops are all single-crease
- * (1 level, ~0.5 KB per face), but catmark_bishop and _car have σ ≈ 5 creases through valence-5
- * vertices and still take 6 levels (hundreds of KB per face), and the project's creased-box's
- * creases all end at the cube's corners (3 levels). The rest of the issue's design is what fixes
- * those: semi-sharp axes decaying inside the slice kernel (fans eligible at once) and levels
- * refined only round the faces that need them.
+ * Limits (honest): where a semi-sharp crease is neither a single crease nor the axis of an
+ * eligible fan (a crease that bends or changes its sharpness at a valence-4 vertex next to a
+ * centre, a semi-sharp crease beside a semi-sharp boundary-like feature, Chaikin's rule) its
+ * sharpness still decays by UNIFORM levels of the whole cage, ceil(σ) of them (more than
+ * MAX_LEVEL = 6 is refused with a message, as are vertices of valence > 4,094, the fan word's
+ * field, and faces of more than 64 corners). OpenSubdiv's 86 regression cages: catmark_car
+ * and _bishop (σ ≈ 5-6 creases through valence-5 vertices and ending at darts) took 6 levels
+ * and 266 / 231 KB per face before the fans took semi-sharp axes, now 1-2 levels and 1.4 /
+ * 1.9 KB; _rook, _helmet, _hole_test2, _gregory_test7 (σ 7-9) were refused; the project's
+ * creased box 3 levels and 6.8 KB, now 1 and 2.1 KB. Only the Chaikin cages keep deep levels
+ * (catmark_chaikin1: 5 levels, 105 KB per face).
  *
  * GPU point space (f32 xyz in cageBuf; index p < ccCageVerts, the cage's vertex count: the cage
  * positions; p ≥ ccCageVerts at offPoints + 3(p − ccCageVerts)):
@@ -110,10 +116,14 @@
  *   patchIdx per patch 16 point indices, then for a single-crease patch σ (f32 bits; the
  *            crease on the frame's x = 0 side); per crease vertex (vfan) 9 point indices of
  *            its 3×3 neighbourhood (3a + b, a across the crease) and σ
- *   fans     8 per fan: ns | n << 8 | boundary << 16 | rule << 17 | D << 20; anchor;
- *            slice base; sector base; alpha (f32); limit base; ia | ib << 8; cos base
- *   sectors  7 per sector (ns per fan): axis-infinite flag, (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
- *            at level s; the boundary pseudo-sector (axis n) has only (1,0), (2,0)
+ *   fans     CC_FAN_WORDS (9) per fan: CC_FAN_WORD; anchor;
+ *            slice base; sector base; alpha (f32); limit base; CC_PAIR_WORD (ia, ib); cos
+ *            base; step rules (word offset in `sectors`, or CC_NONE)
+ *   sectors  7 per sector (ns per fan): the axis word (0 smooth, CC_AXIS_INFINITE, or a
+ *            semi-sharp axis's σ at level s as f32 bits), (1,0) (2,0) (1,1) (2,1) (1,2) (2,2)
+ *            at level s; the boundary pseudo-sector (axis n) has only (1,0), (2,0); then, for
+ *            a fan with a semi-sharp axis, 3 words per step k = 1..D: the centre's
+ *            CC_STEP_RULE_WORD, crease pair and W (f32) (src/gpu/cc/fans.ts stepRules)
  *   threads  64 per slice workgroup: fan | sector << 24, or ~0 (idle)
  *   cos      per valence n used by a smooth fan: cos(2πi/n), i < n, then 1/(4λ−1)
  *   rules    2 per point of levels ≥ 1: w0, first input. w0 = kind (0 face, 1 edge, 2 vertex) |
@@ -143,7 +153,7 @@ import type { PreparedMesh } from '../tess/prepare.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
 import { CC_STATIC, type CcSection } from '../contract/cc.ts';
 import type { ArenaLayout } from '../contract/define.ts';
-import { CC_FAN_WORD, CC_MAX_FAN_SECTORS, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
+import { CC_FAN_WORD, CC_FAN_WORDS, CC_MAX_FAN_SECTORS, CC_REGION_WORD, CC_TRI_WORD } from './words.ts';
 import { type LevelStack, levelStack } from './levels.ts';
 import { type FanTable, type SliceSteps, fanTable, packFans, packThreads, vertexLimits } from './fans.ts';
 import { REGION_SECTOR, type Regions, type TriangleRegions, buildRegions, triangleRegions } from './regions.ts';
@@ -189,6 +199,9 @@ export interface CatmullClarkData {
   hasNgons: boolean;
   /** Some region takes phantom points (a boundary, an infinitely sharp edge or axis). */
   hasPhantoms: boolean;
+  /** Some fan has a semi-sharp axis (it decays in the slices; its sub-patches next to the axis
+   * take the crease basis): the evaluator carries the crease basis. */
+  semiAxes: boolean;
   /** Some fan keeps its odd steps' sector points only (CatmullClarkOptions.slices): the evaluator makes the even steps'. */
   oddSlices: boolean;
   /** Per cage face: region depth (quads) or depth inside its sub-faces + 1 (n-gons); -1 holes. */
@@ -270,7 +283,7 @@ function packData(
   { triRegion, poly, triKind }: TriangleRegions,
   slices: SliceSteps,
 ): Omit<CatmullClarkData, 'words'> & { sections: Record<CcSection, Uint32Array> } {
-  const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms } = packFans(ft.fans, lv.levels, slices);
+  const { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms, semiAxes } = packFans(ft.fans, lv.levels, slices);
   const threadWords = packThreads(ft.fans, sliceFans);
   const { levels, rules, inputs, levelRanges } = lv;
   const { fans } = ft;
@@ -307,6 +320,7 @@ function packData(
     triKind,
     hasNgons: poly.length > 0,
     hasPhantoms: axisPhantoms || regionMasks(regionWords.view),
+    semiAxes,
     oddSlices: slices === 'odd' && sliceFans.some((id) => fans[id].sectors.length <= WORKGROUP_SIZE),
     faceDepth,
     faceRegion,
@@ -340,7 +354,7 @@ export function regionOf(cc: CatmullClarkData, t: number, k: number, x: number, 
   if (CC_REGION_WORD.get(w0, 'kind') !== REGION_SECTOR) return { blended: false, sector: false };
   const [a, b] = rot(CC_REGION_WORD.get(w0, 'rot'), x * side - i, y * side - j);
   const off = CC_REGION_WORD.get(w0, 'offset');
-  const D = CC_FAN_WORD.get(cc.fans[8 * cc.regions[2 * reg + 1]], 'depth');
+  const D = CC_FAN_WORD.get(cc.fans[CC_FAN_WORDS * cc.regions[2 * reg + 1]], 'depth');
   // Blended inside the step-D square: max(a, b)·2^-offset < 2^-D.
   return { blended: Math.max(a, b) * 2 ** (D - off) < 1, sector: true };
 }

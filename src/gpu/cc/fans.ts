@@ -4,14 +4,33 @@
  * prepared vertex, and the packing of the fans into the point space (slices and limits), the fan,
  * sector and cos words, and the slice kernel's workgroups.
  */
-import { type HalfEdges, SHARPNESS_INFINITE, vertexRing } from '../../mesh/index.ts';
+import { type HalfEdges, SHARPNESS_INFINITE, decSharp, vertexRing } from '../../mesh/index.ts';
 import type { PreparedMesh } from '../tess/prepare.ts';
 import { CC_NONE } from '../contract/cc.ts';
 import { NO_OWNER, OWNER_WORD } from '../contract/tess.ts';
 import { WORKGROUP_SIZE } from '../contract/constants.ts';
-import { CC_FAN_WORD, CC_MAX_FAN_SECTORS, CC_PAIR_WORD, CC_THREAD_WORD, CC_VERTEX_LIMIT_WORD, CC_WIDE_FAN } from './words.ts';
+import {
+  CC_AXIS_INFINITE,
+  CC_FAN_WORD,
+  CC_MAX_FAN_SECTORS,
+  CC_PAIR_WORD,
+  CC_STEP_RULE_WORD,
+  CC_THREAD_WORD,
+  CC_VERTEX_LIMIT_WORD,
+  CC_WIDE_FAN,
+} from './words.ts';
 import { U32, f32bits } from './word-list.ts';
-import { type Level, type LevelStack, MAX_LEVEL, VRULE_CREASE, VRULE_SMOOTH, isQuadHe, isRegular, vertexRuleOf } from './levels.ts';
+import {
+  type Level,
+  type LevelStack,
+  MAX_LEVEL,
+  VRULE_CORNER,
+  VRULE_CREASE,
+  VRULE_SMOOTH,
+  isQuadHe,
+  isRegular,
+  vertexRuleOf,
+} from './levels.ts';
 import { creaseVertexGrid } from './single-crease.ts';
 
 const INF = SHARPNESS_INFINITE;
@@ -39,13 +58,26 @@ function isEligible(L: Level, x: number): boolean {
   return r;
 }
 
-/** Is y a valid axis neighbour (1,0) of a fan centre along an axis of sharpness axisSharp? */
+const isSemi = (s: number) => s > 0 && s < INF;
+
+/** Is y a valid axis neighbour (1,0) of a fan centre along an axis of sharpness axisSharp? Along
+ * a semi-sharp axis (uniform creasing only) y is an interior valence-4 vertex whose only sharp
+ * edges are the two halves of the axis, opposite in its ring and of one sharpness: the crease
+ * runs straight through y, so every step makes the same kind of point there, one sharpness lower. */
 function axisOk(L: Level, y: number, axisSharp: number): boolean {
   const m = L.he;
   if (L.vertSharp[y] !== 0) return false;
   const nf = m.vertHeOffsets[y + 1] - m.vertHeOffsets[y],
     ne = m.vertEdgeOffsets[y + 1] - m.vertEdgeOffsets[y];
   for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
+  if (isSemi(axisSharp)) {
+    if (L.chaikin || L.boundary[y] || nf !== 4 || ne !== 4) return false;
+    const ring = vertexRing(m, y);
+    if (!ring || ring.boundary || ring.he.length !== 4) return false;
+    const at = ring.he.map((h) => L.edgeSharp[m.heEdge[h]]);
+    const i = at.findIndex((v) => v !== 0);
+    return i >= 0 && i < 2 && at[i] === axisSharp && at[i + 2] === axisSharp && at[i + 1] === 0 && at[(i + 3) % 4] === 0;
+  }
   let nInf = 0;
   for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
     const s = L.edgeSharp[m.vertEdges[k]];
@@ -60,13 +92,24 @@ function axisOk(L: Level, y: number, axisSharp: number): boolean {
 
 function eligible(L: Level, x: number): boolean {
   const m = L.he;
-  if (!sharp0orInf(L.vertSharp[x])) return false;
-  for (let k = m.vertEdgeOffsets[x]; k < m.vertEdgeOffsets[x + 1]; k++) if (!sharp0orInf(L.edgeSharp[m.vertEdges[k]])) return false;
+  // Semi-sharp edges at the centre, and its own semi-sharp sharpness, decay inside the slice
+  // kernel (uniform creasing; the centre's rule per step from packFans' table), so a fan takes
+  // them at once, unless x is a cage vertex on a straight crease (single-crease patches round it
+  // and its closed-form limit, no slices: vertexLimits).
+  let semi = isSemi(L.vertSharp[x]);
+  for (let k = m.vertEdgeOffsets[x]; k < m.vertEdgeOffsets[x + 1]; k++) {
+    const s = L.edgeSharp[m.vertEdges[k]];
+    if (isSemi(s)) semi = true;
+    else if (!sharp0orInf(s)) return false;
+  }
+  if (semi && (L.chaikin || (L.base === 0 && creaseVertexGrid(L, x)))) return false;
   for (let k = m.vertHeOffsets[x]; k < m.vertHeOffsets[x + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
   const ring = vertexRing(m, x);
   if (!ring || ring.he.length === 0) return false;
   const n = ring.he.length;
   if (n + (ring.boundary ? 1 : 0) > CC_MAX_FAN_SECTORS) return false;
+  // A fan with a semi-sharp axis runs in one workgroup (the wide fans' kernel has one rule per fan).
+  if (semi && n + (ring.boundary ? 1 : 0) > WORKGROUP_SIZE) return false;
   // Axis neighbours: the edges x→e_i (and the trailing boundary edge).
   for (const h of ring.he) {
     if (!axisOk(L, m.faceIndices[m.heNext[h]], L.edgeSharp[m.heEdge[h]])) return false;
@@ -149,8 +192,13 @@ export interface FanRec {
   ib: number;
   alpha: number;
   cageVertex: number;
-  /** Per thread: axis-infinite flag and 6 global point indices. */
+  /** Per thread: its axis word (CC_AXIS_INFINITE, 0 smooth, or a semi-sharp axis's σ at level
+   * s as f32 bits) and 6 global point indices. */
   sectors: number[][];
+  /** Per thread: its axis's sharpness at level s (0, σ, or SHARPNESS_INFINITE). */
+  axis: number[];
+  /** The centre's vertex sharpness at level s (0, semi-sharp, or infinite). */
+  vertexSharp: number;
   /** The level-s face of each sector. */
   ringFaces: number[];
 }
@@ -164,12 +212,15 @@ function makeFan(L: Level, l: number, x: number): FanRec {
   const fi = m.faceIndices,
     nx = m.heNext;
   const sectors: number[][] = [];
+  const axis: number[] = [];
   let nInf = 0,
     ia = 0,
     ib = 0;
   for (let i = 0; i < n; i++) {
     const h = ring.he[i];
-    const inf = L.edgeSharp[m.heEdge[h]] >= INF ? 1 : 0;
+    const sharpness = L.edgeSharp[m.heEdge[h]];
+    const inf = sharpness >= INF ? 1 : 0;
+    axis.push(inf ? INF : sharpness);
     if (inf) {
       if (nInf === 0) ia = i;
       else ib = i;
@@ -177,19 +228,31 @@ function makeFan(L: Level, l: number, x: number): FanRec {
     }
     const t = m.heTwin[nx[h]];
     const u = m.heTwin[nx[nx[nx[t]]]];
-    sectors.push([inf, G(fi[nx[h]]), G(fi[nx[nx[t]]]), G(fi[nx[nx[h]]]), G(fi[nx[nx[nx[t]]]]), G(fi[nx[nx[nx[u]]]]), G(fi[nx[nx[u]]])]);
+    sectors.push([
+      inf ? CC_AXIS_INFINITE : isSemi(sharpness) ? f32bits(sharpness) : 0,
+      G(fi[nx[h]]),
+      G(fi[nx[nx[t]]]),
+      G(fi[nx[nx[h]]]),
+      G(fi[nx[nx[nx[t]]]]),
+      G(fi[nx[nx[nx[u]]]]),
+      G(fi[nx[nx[u]]]),
+    ]);
   }
   if (ring.boundary) {
     const hl = ring.he[n - 1];
     const w = m.heTwin[nx[nx[hl]]];
-    sectors.push([1, G(fi[m.hePrev[hl]]), G(fi[m.hePrev[w]]), G(x), G(x), G(x), G(x)]);
+    sectors.push([CC_AXIS_INFINITE, G(fi[m.hePrev[hl]]), G(fi[m.hePrev[w]]), G(x), G(x), G(x), G(x)]);
+    axis.push(INF);
     ib = n;
     nInf++;
   }
   const vs = L.vertSharp[x];
-  const rule = vertexRuleOf(nInf, vs);
-  const smoothInterior = !ring.boundary && nInf === 0 && vs === 0 && n >= 3;
-  const inf = sectors.map((q) => q[0]);
+  // The rule after every semi-sharp value has decayed (the limits kernel's; the slices take the
+  // rule of each step from stepRules).
+  const vsFinal = vs >= INF ? vs : 0;
+  const rule = vertexRuleOf(nInf, vsFinal);
+  const smoothInterior = !ring.boundary && nInf === 0 && vsFinal === 0 && n >= 3;
+  const inf = axis.map((a) => (a >= INF ? 1 : 0));
   return {
     level: l,
     x,
@@ -201,6 +264,8 @@ function makeFan(L: Level, l: number, x: number): FanRec {
     ib,
     cageVertex: -1,
     sectors,
+    axis,
+    vertexSharp: vs,
     ringFaces: ring.he.map((h) => m.heFace[h]),
     alpha: smoothInterior ? -Math.log2(subdominantEigenvalue(n)) : ringExponent(n, ring.boundary, rule, ia, ib, inf),
   };
@@ -305,8 +370,74 @@ export const storedSteps = (D: number, odd: boolean): number => (odd ? Math.ceil
  * model there (two rates, along and across).
  */
 function fanDepth(F: FanRec): number {
-  if (F.D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) return Math.min(15, F.D + EXTRA_DEPTH_SHARP);
-  return F.D;
+  let D = F.D;
+  if (D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) D = Math.min(15, D + EXTRA_DEPTH_SHARP);
+  // Semi-sharp axes decay inside the slices, and the limit is taken after they have: at least
+  // ceil(σ) + 1 steps, whether or not a region reads the slices (the limits kernel reads the
+  // last step's ring with the fan's final rule).
+  const semi = semiSharpest(F);
+  return semi > 0 ? Math.max(D, Math.ceil(semi) + 1) : D;
+}
+
+/** The largest semi-sharp value of a fan, its axes' and its centre's (0: none). */
+const semiSharpest = (F: FanRec): number =>
+  F.axis.reduce((m, a) => (isSemi(a) ? Math.max(m, a) : m), isSemi(F.vertexSharp) ? F.vertexSharp : 0);
+
+/**
+ * The centre's rule in each step k = 1..D of a fan with semi-sharp axes (3 words a step: its
+ * CC_STEP_RULE_WORD, its crease pair, W as f32 bits), as src/gpu/cc/levels.ts refineLevel makes
+ * a vertex point's, OpenSubdiv's uniform creasing: the parent rule from the axes still sharp
+ * before the step, the child rule from those sharp after it, and where they differ the
+ * transitional weight W, the mean sharpness of the axes whose sharpness ends at this step. The
+ * crease pair is the parent's if it is a crease, else the child's.
+ */
+function stepRules(F: FanRec, D: number): number[] {
+  const words: number[] = [];
+  let before = F.axis.slice();
+  let vs = F.vertexSharp;
+  for (let k = 1; k <= D; k++) {
+    const after = before.map(decSharp);
+    const vsAfter = decSharp(vs);
+    let nP = 0,
+      nC = 0,
+      pa = 0,
+      pb = 0,
+      ca = 0,
+      cb = 0,
+      tSum = 0,
+      tCount = 0;
+    if (vs > 0 && vsAfter === 0) {
+      tSum = Math.fround(vs);
+      tCount = 1;
+    }
+    before.forEach((s, i) => {
+      const c = after[i];
+      if (s > 0) {
+        if (nP === 0) pa = i;
+        else if (nP === 1) pb = i;
+        nP++;
+      }
+      if (c > 0) {
+        if (nC === 0) ca = i;
+        else if (nC === 1) cb = i;
+        nC++;
+      }
+      if (s > 0 && !(c > 0)) {
+        tSum = Math.fround(tSum + s);
+        tCount++;
+      }
+    });
+    const pr = vertexRuleOf(nP, vs);
+    let cr = vertexRuleOf(nC, vsAfter);
+    let W = 1;
+    if ((pr === VRULE_CREASE || pr === VRULE_CORNER) && cr !== pr) W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
+    else cr = pr;
+    const [a, b] = pr === VRULE_CREASE ? [pa, pb] : [ca, cb];
+    words.push(CC_STEP_RULE_WORD.pack({ parent: pr, child: cr }), CC_PAIR_WORD.pack({ a, b }), f32bits(W));
+    before = after;
+    vs = vsAfter;
+  }
+  return words;
 }
 
 /** The fans' words and their places in the point space (after the levels), and which fans have slices. */
@@ -322,6 +453,8 @@ export interface PackedFans {
   nextPoint: number;
   /** Some fan has an infinitely sharp axis (its sub-patches take phantom points there). */
   axisPhantoms: boolean;
+  /** Some sliced fan has a semi-sharp axis (its sub-patches next to it take the crease basis). */
+  semiAxes: boolean;
 }
 
 /**
@@ -339,6 +472,7 @@ export function packFans(fans: FanRec[], levels: Level[], slices: SliceSteps = '
   const cosAt = new Map<number, number>();
   let maxDepth = 0;
   let axisPhantoms = false;
+  let semiAxes = false;
   const sliceFans: number[] = [];
   fans.forEach((F, id) => {
     const D = fanDepth(F);
@@ -371,10 +505,16 @@ export function packFans(fans: FanRec[], levels: Level[], slices: SliceSteps = '
     fanWords.push(CC_PAIR_WORD.pack({ a: F.ia, b: F.ib }));
     fanWords.push(cosBase);
     for (const s of F.sectors) for (const w of s) sectorWords.push(w);
+    // Word 8: where the centre's per-step rules start in the sectors' words (a fan with a
+    // semi-sharp axis), else CC_NONE (its one rule, word 0's, in every step).
+    const semi = semiSharpest(F) > 0;
+    fanWords.push(semi ? sectorWords.n : CC_NONE);
+    if (semi) for (const w of stepRules(F, D)) sectorWords.push(w);
     if (D > 0) sliceFans.push(id);
-    if (D > 0 && F.sectors.some((q) => q[0] === 1)) axisPhantoms = true;
+    if (D > 0 && F.sectors.some((q) => q[0] === CC_AXIS_INFINITE)) axisPhantoms = true;
+    if (D > 0 && semi) semiAxes = true;
   });
-  return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms };
+  return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms, semiAxes };
 }
 
 /** The slice kernel's thread words: one thread per sector of each sliced fan; a fan wider than a

@@ -197,10 +197,13 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
             continue;
           }
         }
-        // An EV sector: a corner that is (or descends from) an eligible fan centre.
+        // An EV sector: a corner that is (or descends from) an eligible fan centre. A fan's
+        // eligibility covers the face's other three corners (its axis neighbours and diagonal),
+        // so with one irregular corner only that one can be the centre; with several (a centre
+        // whose semi-sharp axes run through its axis neighbours) any eligible one is.
         let found = false;
         for (let c = 0; c < 4 && !found; c++) {
-          if (nIrr > 0 && c !== irregular) continue;
+          if (nIrr === 1 && c !== irregular) continue;
           const x = m.faceIndices[a0 + c];
           const s = fanStart(x, d);
           if (s < 0) continue;

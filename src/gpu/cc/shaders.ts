@@ -14,9 +14,21 @@ import slicesWgsl from '../../../wgsl/cc/slices.wgsl?raw';
 import { wgslConstants } from '../contract/define.ts';
 import { CC_NONE } from '../contract/cc.ts';
 import { ccBuildPrelude } from '../contract/contract.ts';
-import { CC_WIDE_FAN, CC_WORDS } from './words.ts';
+import { CC_AXIS_INFINITE, CC_FAN_WORDS, CC_WIDE_FAN, CC_WORDS } from './words.ts';
 
 const wordsWgsl = CC_WORDS.map((w) => w.wgsl).join('\n');
 
-export const CC_SURFACE_WGSL = [wgslConstants({ CC_NONE }), wordsWgsl, creaseBasisWgsl, slicesWgsl, surfaceWgsl].join('\n');
-export const CC_BUILD_WGSL = [ccBuildPrelude(), wgslConstants({ CC_WIDE_FAN }), wordsWgsl, slicesWgsl, buildWgsl].join('\n');
+export const CC_SURFACE_WGSL = [
+  wgslConstants({ CC_NONE, CC_FAN_WORDS, CC_AXIS_INFINITE }),
+  wordsWgsl,
+  creaseBasisWgsl,
+  slicesWgsl,
+  surfaceWgsl,
+].join('\n');
+export const CC_BUILD_WGSL = [
+  ccBuildPrelude(),
+  wgslConstants({ CC_WIDE_FAN, CC_FAN_WORDS, CC_AXIS_INFINITE }),
+  wordsWgsl,
+  slicesWgsl,
+  buildWgsl,
+].join('\n');

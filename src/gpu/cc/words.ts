@@ -61,6 +61,17 @@ export const CC_FAN_WORD = defineBits('CcFanWord', {
   odd: [31, 1],
 });
 
+/** Words per fan (src/gpu/cc/build.ts "fans"). */
+export const CC_FAN_WORDS = 9;
+
+/** A sector's axis word (its first): infinitely sharp. 0 is smooth; anything else a semi-sharp
+ * axis's sharpness at the fan's start level, as f32 bits (which are never 1). */
+export const CC_AXIS_INFINITE = 1;
+
+/** A step's rule of a fan centre with semi-sharp edges (src/gpu/cc/fans.ts stepRules): the
+ * vertex rule before and after the step (0 smooth or dart, 1 crease, 2 corner). */
+export const CC_STEP_RULE_WORD = defineBits('CcStepRuleWord', { parent: [0, 2], child: [2, 2] });
+
 /** The most sectors a fan has (its word's field): the widest vertex the build takes. */
 export const CC_MAX_FAN_SECTORS = 2 ** CC_FAN_WORD.fields.sectors[1] - 1;
 
@@ -80,4 +91,13 @@ export const CC_WIDE_FAN = 2 ** CC_THREAD_WORD.fields.sector[1] - 1;
  */
 export const CC_TRI_WORD = defineBits('CcTriWord', { corners: [0, 8], fan: [8, 19], centred: [27, 1], depth: [28, 4] });
 
-export const CC_WORDS = [CC_REGION_WORD, CC_VERTEX_LIMIT_WORD, CC_RULE_WORD, CC_PAIR_WORD, CC_FAN_WORD, CC_THREAD_WORD, CC_TRI_WORD];
+export const CC_WORDS = [
+  CC_REGION_WORD,
+  CC_VERTEX_LIMIT_WORD,
+  CC_RULE_WORD,
+  CC_PAIR_WORD,
+  CC_FAN_WORD,
+  CC_STEP_RULE_WORD,
+  CC_THREAD_WORD,
+  CC_TRI_WORD,
+];

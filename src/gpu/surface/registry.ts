@@ -122,7 +122,7 @@ const catmullClark: SurfaceScheme = {
     cc
       ? {
           CC_NGONS: +cc.hasNgons,
-          CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0),
+          CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0 || cc.semiAxes),
           CC_PHANTOMS: +cc.hasPhantoms,
           CC_ODD_SLICES: +cc.oddSlices,
         }

@@ -31,16 +31,12 @@ const DIR = '../shared/cages';
 const TALK = new Set(['suzanne', 'bigguy', 'monsterfrog', 'imrod']); // tests/gpu/cc/talk-models.node.test.ts
 const MAX_BOUND = 1e-6;
 const SAMPLE = 400;
-/** The cages the exact surface refuses today, and why (issue 31): sharpness beyond the build's
- * uniform levels. Any other refusal fails,
- * and so does taking one of these without this list following. (Non-manifold cages load split
- * apart as OpenSubdiv makes them sharp: src/mesh/manifold.ts.) */
-const REFUSED: Record<string, RegExp> = {
-  catmark_gregory_test7: /levels of refinement/,
-  catmark_helmet: /levels of refinement/,
-  catmark_hole_test2: /levels of refinement/,
-  catmark_rook: /levels of refinement/,
-};
+/** The cages the exact surface refuses, and why: none since semi-sharp creases decay inside the
+ * slice kernel (gregory_test7, helmet, hole_test2 and rook, sharpness 7-9, were refused for the
+ * uniform levels they needed). Any refusal fails, and so would taking a cage listed here without
+ * this list following. (Non-manifold cages load split apart as OpenSubdiv makes them sharp:
+ * src/mesh/manifold.ts.) */
+const REFUSED: Record<string, RegExp> = {};
 
 /** Cages whose surface meets itself (faces glued back to back, folded over onto each other, and
  * the non-manifold cages, whose vertices and edges are split into copies at one position): the

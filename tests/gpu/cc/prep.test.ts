@@ -8,7 +8,7 @@ import { buildCatmullClark, regionOf, type CatmullClarkData } from '../../../src
 import { REGION_PATCH, REGION_SECTOR } from '../../../src/gpu/cc/regions.ts';
 import { TOTAL_DEPTH } from '../../../src/gpu/cc/fans.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
-import { CC_FAN_WORD } from '../../../src/gpu/cc/words.ts';
+import { CC_FAN_WORD, CC_FAN_WORDS } from '../../../src/gpu/cc/words.ts';
 import { type Cage, DEFAULT_OPTIONS, buildTopology, computeSharpness } from '../../../src/mesh/index.ts';
 import { levelStack } from '../../../src/gpu/cc/levels.ts';
 import { levelFromCage, refine } from '../../../src/subdiv/level.ts';
@@ -51,7 +51,7 @@ describe('Catmull-Clark preparation (topology only)', () => {
     }
     expect(cc.fanCount).toBe(8);
     for (let F = 0; F < 8; F++) {
-      const w0 = cc.fans[8 * F];
+      const w0 = cc.fans[CC_FAN_WORDS * F];
       expect(CC_FAN_WORD.get(w0, 'sectors')).toBe(3); // threads: 3 sectors
       expect(CC_FAN_WORD.get(w0, 'depth')).toBe(TOTAL_DEPTH - 1); // start level 1
     }
@@ -82,12 +82,16 @@ describe('Catmull-Clark preparation (topology only)', () => {
     }
   });
 
-  it('semi-sharp crease: faces refine until the sharpness has decayed (ceil σ levels)', () => {
+  it("semi-sharp crease through extraordinary vertices: the fans decay it, no level past the EVs' one", () => {
     const cage = cube({ creases: ringCrease(2.5) });
     const cc = prep(cage);
-    expect(cc.levels).toBe(3);
-    // The top face (its 4 edges creased) needs depth 3.
-    expect(cc.faceDepth[0]).toBe(3);
+    // Before the fans took semi-sharp axes: ceil σ = 3 uniform levels and depth 3 on the top face.
+    expect(cc.levels).toBe(1);
+    expect(cc.semiAxes).toBe(true);
+    // The top face (its 4 edges creased) is 4 sectors of its corners' fans, ...
+    expect(cc.faceDepth[0]).toBe(1);
+    // ... each of which steps at least until its crease has decayed (ceil σ + 1: the limit's rule).
+    expect(cc.maxDepth).toBeGreaterThanOrEqual(4);
   });
 
   it('region lookup: points within the last square of a fan are blended, others exact', () => {

@@ -136,9 +136,10 @@ describe('single-crease patches', () => {
     expect(CC_VERTEX_LIMIT_WORD.unpack(0xffffffff)).toEqual({ index: 0x7fffffff, crease: 1 }); // NONE stays NONE
   });
 
-  it('a crease into an extraordinary vertex still refines until it decays (ceil σ levels)', () => {
+  it('a crease into an extraordinary vertex is no single crease: its fans take it (no ceil σ levels)', () => {
     const cc = buildCatmullClark(cube({ creases: ringCrease(2.5) }), prepareMesh(cube({ creases: ringCrease(2.5) })));
-    expect(cc.levels).toBe(3);
+    expect(cc.levels).toBe(1);
     expect(cc.singleCreaseCount).toBe(0);
+    expect(cc.semiAxes).toBe(true);
   });
 });

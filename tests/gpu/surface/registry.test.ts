@@ -86,8 +86,10 @@ describe('the surface registry', () => {
 describe("the exact surface's specialisation says what each cage has", () => {
   // Each value is 1 exactly when the cage has what its code is for (wgsl/cc/surface.wgsl), found
   // here from the cage rather than from the build's tables: a face that is not a quad; a boundary
-  // or an infinitely sharp edge (phantom points); a single-crease patch (the build's own count:
-  // which creases qualify is the build's decision, tests/gpu/cc/single-crease*.test.ts); fans
+  // or an infinitely sharp edge (phantom points); a single-crease patch or a fan with a semi-sharp
+  // axis, both of which take the crease basis (the build's own count and flag: which creases
+  // qualify, and at which level a fan starts, are the build's decisions, tests/gpu/cc/
+  // single-crease*.test.ts and semi-sharp-fans.node.test.ts); fans
   // keeping their odd steps only (the build's memory bound: every step's data above it).
   const dir = join(ROOT, 'public/models');
   for (const file of readdirSync(dir).filter((f) => f.endsWith('.obj'))) {
@@ -103,7 +105,7 @@ describe("the exact surface's specialisation says what each cage has", () => {
       const phantoms = topo.vertBoundary.some((b) => b === 1) || sharp.edge.some((s) => s >= SHARPNESS_INFINITE);
       expect(surfaceScheme('catmull-clark').specialise({ cc })).toEqual({
         CC_NGONS: +ngons,
-        CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0),
+        CC_CREASE_PATCHES: +(cc.singleCreaseCount > 0 || cc.semiAxes),
         CC_PHANTOMS: +phantoms,
         CC_ODD_SLICES: +overBudget,
       });
