@@ -72,11 +72,25 @@ function axisOk(L: Level, y: number, axisSharp: number): boolean {
   for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) if (!isQuadHe(m, m.vertHe[k])) return false;
   if (isSemi(axisSharp)) {
     if (L.chaikin || L.boundary[y] || nf !== 4 || ne !== 4) return false;
-    const ring = vertexRing(m, y);
-    if (!ring || ring.boundary || ring.he.length !== 4) return false;
-    const at = ring.he.map((h) => L.edgeSharp[m.heEdge[h]]);
-    const i = at.findIndex((v) => v !== 0);
-    return i >= 0 && i < 2 && at[i] === axisSharp && at[i + 2] === axisSharp && at[i + 1] === 0 && at[(i + 3) % 4] === 0;
+    // Exactly two sharp edges, both of the axis's σ, and no face between them (opposite).
+    let a = -1,
+      b = -1;
+    for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
+      const e = m.vertEdges[k];
+      const s = L.edgeSharp[e];
+      if (s === 0) continue;
+      if (s !== axisSharp || b >= 0) return false;
+      if (a < 0) a = e;
+      else b = e;
+    }
+    if (b < 0) return false;
+    for (let k = m.vertHeOffsets[y]; k < m.vertHeOffsets[y + 1]; k++) {
+      const h = m.vertHe[k];
+      const e0 = m.heEdge[h],
+        e1 = m.heEdge[m.hePrev[h]];
+      if ((e0 === a && e1 === b) || (e0 === b && e1 === a)) return false;
+    }
+    return true;
   }
   let nInf = 0;
   for (let k = m.vertEdgeOffsets[y]; k < m.vertEdgeOffsets[y + 1]; k++) {
