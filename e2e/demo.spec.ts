@@ -159,9 +159,10 @@ test('a cage the Catmull-Clark preparation refuses falls back to Phong with a me
   const errors = collectErrors(page);
   await page.goto('/?model=torus&t=0');
   await ready(page);
-  // A semi-sharp crease of sharpness 8 that ends at the cube's corners needs 8 uniform levels:
-  // refused by the GPU path's preparation (src/gpu/cc/levels.ts MAX_LEVEL).
-  const cube = [...CUBE_LINES, 't crease 2/1/0 4 5 8'].join('\n');
+  // A semi-sharp crease of sharpness 8 under Chaikin's rule (which the fans do not take: the
+  // halves of an edge decay differently) needs 8 uniform levels: refused by the GPU path's
+  // preparation (src/gpu/cc/levels.ts MAX_LEVEL).
+  const cube = [...CUBE_LINES, 't crease 2/1/0 4 5 8', 't creasemethod 0/0/1 chaikin'].join('\n');
   await dropFile(page, 'sharp-cube.obj', `${cube}\n`);
   const toast = page.getByRole('status').filter({ hasText: 'No Catmull-Clark surface for sharp-cube.obj' });
   await expect(toast).toContainText('needs more than 6 levels of refinement');
