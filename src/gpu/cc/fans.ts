@@ -24,12 +24,13 @@ import {
   type Level,
   type LevelStack,
   MAX_LEVEL,
-  VRULE_CORNER,
   VRULE_CREASE,
   VRULE_SMOOTH,
+  type VertexStep,
   isQuadHe,
   isRegular,
   vertexRuleOf,
+  vertexStep,
 } from './levels.ts';
 import { creaseVertexGrid } from './single-crease.ts';
 
@@ -398,58 +399,22 @@ const semiSharpest = (F: FanRec): number =>
   F.axis.reduce((m, a) => (isSemi(a) ? Math.max(m, a) : m), isSemi(F.vertexSharp) ? F.vertexSharp : 0);
 
 /**
- * The centre's rule in each step k = 1..D of a fan with semi-sharp axes (3 words a step: its
- * CC_STEP_RULE_WORD, its crease pair, W as f32 bits), as src/gpu/cc/levels.ts refineLevel makes
- * a vertex point's, OpenSubdiv's uniform creasing: the parent rule from the axes still sharp
- * before the step, the child rule from those sharp after it, and where they differ the
- * transitional weight W, the mean sharpness of the axes whose sharpness ends at this step. The
- * crease pair is the parent's if it is a crease, else the child's.
+ * The centre's rule in each step k = 1..D of a fan with semi-sharp values (3 words a step: its
+ * CC_STEP_RULE_WORD, its crease pair, W as f32 bits): src/gpu/cc/levels.ts vertexStep, which makes
+ * the levels' vertex points' too, on the axes' and the centre's sharpness before and after the
+ * step (uniform creasing: one unit less each step).
  */
 function stepRules(F: FanRec, D: number): number[] {
   const words: number[] = [];
-  let before = F.axis.slice();
+  const step: VertexStep = { parent: 0, child: 0, a: 0, b: 0, W: 1 };
+  let before = F.axis;
   let vs = F.vertexSharp;
   for (let k = 1; k <= D; k++) {
     const after = before.map(decSharp);
-    const vsAfter = decSharp(vs);
-    let nP = 0,
-      nC = 0,
-      pa = 0,
-      pb = 0,
-      ca = 0,
-      cb = 0,
-      tSum = 0,
-      tCount = 0;
-    if (vs > 0 && vsAfter === 0) {
-      tSum = Math.fround(vs);
-      tCount = 1;
-    }
-    before.forEach((s, i) => {
-      const c = after[i];
-      if (s > 0) {
-        if (nP === 0) pa = i;
-        else if (nP === 1) pb = i;
-        nP++;
-      }
-      if (c > 0) {
-        if (nC === 0) ca = i;
-        else if (nC === 1) cb = i;
-        nC++;
-      }
-      if (s > 0 && !(c > 0)) {
-        tSum = Math.fround(tSum + s);
-        tCount++;
-      }
-    });
-    const pr = vertexRuleOf(nP, vs);
-    let cr = vertexRuleOf(nC, vsAfter);
-    let W = 1;
-    if ((pr === VRULE_CREASE || pr === VRULE_CORNER) && cr !== pr) W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
-    else cr = pr;
-    const [a, b] = pr === VRULE_CREASE ? [pa, pb] : [ca, cb];
-    words.push(CC_STEP_RULE_WORD.pack({ parent: pr, child: cr }), CC_PAIR_WORD.pack({ a, b }), f32bits(W));
+    const { parent, child, a, b, W } = vertexStep(before, after, vs, decSharp(vs), step);
+    words.push(CC_STEP_RULE_WORD.pack({ parent, child }), CC_PAIR_WORD.pack({ a, b }), f32bits(W));
     before = after;
-    vs = vsAfter;
+    vs = decSharp(vs);
   }
   return words;
 }

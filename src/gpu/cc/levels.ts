@@ -74,6 +74,68 @@ export function vertexRuleOf(nSharp: number, vs: number): number {
   return nSharp === 2 ? VRULE_CREASE : VRULE_SMOOTH; // 0: smooth, 1: dart (smooth mask)
 }
 
+/** A vertex point's rules in one step (OpenSubdiv's Catmull-Clark vertex rule with its transition). */
+export interface VertexStep {
+  parent: number;
+  child: number;
+  /** The crease pair, as indices into the edges given: the parent's if it is a crease, else the child's. */
+  a: number;
+  b: number;
+  /** Where the rules differ, the parent's weight: the mean sharpness of the values whose sharpness
+   * ends at this step (OpenSubdiv's fractional weight; under Chaikin, the edges whose child at the
+   * vertex is smooth). */
+  W: number;
+}
+
+/**
+ * The rules of a vertex point from the sharpness of its edges before (`ps`) and after (`cs`, the
+ * children at this vertex) the step, and its own before and after (`vs`, `vsChild`): the levels'
+ * vertex points (refineLevel) and a fan centre's steps (src/gpu/cc/fans.ts stepRules) alike.
+ * Written into `out` (no allocation per vertex).
+ */
+export function vertexStep(ps: ArrayLike<number>, cs: ArrayLike<number>, vs: number, vsChild: number, out: VertexStep): VertexStep {
+  let nP = 0,
+    nC = 0,
+    pa = 0,
+    pb = 0,
+    ca = 0,
+    cb = 0,
+    tSum = 0,
+    tCount = 0;
+  if (vs > 0 && vsChild === 0) {
+    tSum = Math.fround(vs);
+    tCount = 1;
+  }
+  for (let i = 0; i < ps.length; i++) {
+    const s = ps[i],
+      c = cs[i];
+    if (s > 0) {
+      if (nP === 0) pa = i;
+      else if (nP === 1) pb = i;
+      nP++;
+    }
+    if (c > 0) {
+      if (nC === 0) ca = i;
+      else if (nC === 1) cb = i;
+      nC++;
+    }
+    if (s > 0 && !(c > 0)) {
+      tSum = Math.fround(tSum + s);
+      tCount++;
+    }
+  }
+  out.parent = vertexRuleOf(nP, vs);
+  out.child = vertexRuleOf(nC, vsChild);
+  out.W = 1;
+  if ((out.parent === VRULE_CREASE || out.parent === VRULE_CORNER) && out.child !== out.parent) {
+    out.W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
+  } else out.child = out.parent;
+  const own = out.parent === VRULE_CREASE;
+  out.a = own ? pa : ca;
+  out.b = own ? pb : cb;
+  return out;
+}
+
 /**
  * Refine level L's topology once: the rules of level L+1's points, and level L+1. Each new edge
  * (v, E(e)) takes the sharpness of e's child at v: e's less one (uniform creasing), or under
@@ -92,6 +154,7 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
   const childAt = new Float64Array(m.vertEdges.length);
   const ps: number[] = [],
     cs: number[] = [];
+  const step: VertexStep = { parent: 0, child: 0, a: 0, b: 0, W: 1 };
   // Vertex points.
   for (let v = 0; v < nV; v++) {
     const e0 = m.vertEdgeOffsets[v],
@@ -100,57 +163,17 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
       h1 = m.vertHeOffsets[v + 1];
     const first = inputs.n;
     inputs.push(vBase + v);
-    let nSharp = 0,
-      nSharpChild = 0,
-      ia = 0,
-      ib = 0,
-      ca = 0,
-      cb = 0;
-    let tSum = 0,
-      tCount = 0;
     const vs = L.vertSharp[v];
-    if (vs > 0 && decSharp(vs) === 0) {
-      tSum = Math.fround(vs);
-      tCount = 1;
-    }
     ps.length = 0;
     for (let k = e0; k < e1; k++) ps.push(L.edgeSharp[m.vertEdges[k]]);
     childEdgeSharpAtVertex(ps, chaikin, cs);
     for (let k = e0; k < e1; k++) {
       const e = m.vertEdges[k];
       inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
-      const s = ps[k - e0],
-        c = cs[k - e0];
-      childAt[k] = c;
-      if (s > 0) {
-        if (nSharp === 0) ia = k - e0;
-        else if (nSharp === 1) ib = k - e0;
-        nSharp++;
-      }
-      if (c > 0) {
-        if (nSharpChild === 0) ca = k - e0;
-        else if (nSharpChild === 1) cb = k - e0;
-        nSharpChild++;
-      }
-      // The edges whose sharpness ends at this step, for the transition's weight (OpenSubdiv's
-      // fractional weight: under Chaikin, the semi-sharp edges whose child at v is smooth).
-      if (s > 0 && !(c > 0)) {
-        tSum = Math.fround(tSum + s);
-        tCount++;
-      }
+      childAt[k] = cs[k - e0];
     }
     for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
-    const pr = vertexRuleOf(nSharp, vs);
-    let cr = vertexRuleOf(nSharpChild, decSharp(vs));
-    let W = 1;
-    if ((pr === VRULE_CREASE || pr === VRULE_CORNER) && cr !== pr) {
-      W = tCount ? Math.min(1, Math.fround(tSum / tCount)) : 0;
-    } else cr = pr;
-    // The crease pair: the parent's if it is a crease, else the child's.
-    if (pr !== VRULE_CREASE) {
-      ia = ca;
-      ib = cb;
-    }
+    const { parent: pr, child: cr, a: ia, b: ib, W } = vertexStep(ps, cs, vs, decSharp(vs), step);
     // The rule word's count and faces fields (CC_RULE_WORD) bound the valence this build takes.
     const most = Math.min(2 ** CC_RULE_WORD.fields.count[1], 2 ** CC_RULE_WORD.fields.faces[1]) - 1;
     if (e1 - e0 > most || h1 - h0 > most)
