@@ -355,8 +355,11 @@ export function levelStack(topo: HalfEdges, sharp: Sharpness, chaikin = false): 
   const level = (l: number): Level => {
     if (l > MAX_LEVEL)
       throw new LimitError(
-        `Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (semi-sharp creases decay one level per unit of ` +
-          `sharpness; this cage has sharpness up to ${+maxSemiSharp().toPrecision(3)}: not supported)`,
+        `Catmull-Clark: a face needs more than ${MAX_LEVEL} levels of refinement (` +
+          (chaikin
+            ? "under Chaikin's creasing rule semi-sharp creases decay in levels of the whole cage"
+            : 'a semi-sharp crease that is neither a single crease nor the axis of a fan decays in levels of the whole cage') +
+          `, one per unit of sharpness; this cage has sharpness up to ${+maxSemiSharp().toPrecision(3)}: not supported)`,
       );
     while (levels.length <= l) {
       const L = levels[levels.length - 1];
