@@ -260,6 +260,19 @@ fn slices(@builtin(workgroup_id) wid: vec3<u32>, @builtin(local_invocation_index
   }
 }
 
+// centreMask for a wide fan: the old points from its stored slice (or the start level's).
+fn wideCentreMask(h: FanHead, k: u32, rule: u32, c: vec3<f32>, ia: u32, ib: u32) -> vec3<f32> {
+  if (rule == 1u) { return 0.75 * c + 0.125 * (ccSliceOld(h.f, h.anchor, k, ia, 0u) + ccSliceOld(h.f, h.anchor, k, ib, 0u)); }
+  if (rule != 0u) { return c; }
+  var s = vec3<f32>(0.0);
+  for (var j = 0u; j < h.n; j++) {
+    s += centreSmoothTerm(c, ccSliceOld(h.f, h.anchor, k, j, 0u), ccSliceOld(h.f, h.anchor, k, j, 2u),
+                          ccSliceOld(h.f, h.anchor, k, (j + 1u) % h.n, 0u));
+  }
+  let nf = f32(h.n);
+  return ((nf - 2.0) / nf) * c + s / (nf * nf);
+}
+
 // A fan with more sectors than a workgroup has threads (any valence up to the fan word's field):
 // the same steps, its threads taking sectors lid, lid + WORKGROUP_SIZE, …, reading the step
 // before from its stored slice (global memory) instead of workgroup memory, the centre made by
@@ -275,18 +288,9 @@ fn wideSlices(fan: u32, lid: u32) {
         for (var q = 0u; q < 12u; q++) { setPt(sb + q, o[q]); }
       }
       if (lid == 0u) {
-        var cNew = c;
-        if (h.rule == 1u) {
-          cNew = 0.75 * c + 0.125 * (ccSliceOld(h.f, h.anchor, k, h.ia, 0u) + ccSliceOld(h.f, h.anchor, k, h.ib, 0u));
-        } else if (h.rule == 0u) {
-          var s = vec3<f32>(0.0);
-          for (var j = 0u; j < h.n; j++) {
-            s += centreSmoothTerm(c, ccSliceOld(h.f, h.anchor, k, j, 0u), ccSliceOld(h.f, h.anchor, k, j, 2u),
-                                  ccSliceOld(h.f, h.anchor, k, (j + 1u) % h.n, 0u));
-          }
-          let nf = f32(h.n);
-          cNew = ((nf - 2.0) / nf) * c + s / (nf * nf);
-        }
+        let r = centreRule(fan, h.rule, h.ia, h.ib, k);
+        var cNew = wideCentreMask(h, k, r.parent, c, r.ia, r.ib);
+        if (r.child != r.parent) { cNew = r.W * cNew + (1.0 - r.W) * wideCentreMask(h, k, r.child, c, r.ia, r.ib); }
         setPt(h.sliceBase + k - 1u, cNew);
       }
     }

@@ -123,8 +123,6 @@ function eligible(L: Level, x: number): boolean {
   if (!ring || ring.he.length === 0) return false;
   const n = ring.he.length;
   if (n + (ring.boundary ? 1 : 0) > CC_MAX_FAN_SECTORS) return false;
-  // A fan with a semi-sharp axis runs in one workgroup (the wide fans' kernel has one rule per fan).
-  if (semi && n + (ring.boundary ? 1 : 0) > WORKGROUP_SIZE) return false;
   // Axis neighbours: the edges x→e_i (and the trailing boundary edge).
   for (const h of ring.he) {
     if (!axisOk(L, m.faceIndices[m.heNext[h]], L.edgeSharp[m.heEdge[h]])) return false;

@@ -3,7 +3,8 @@
  * wgsl/cc/build.wgsl wideSlices: a workgroup of their own, whose threads take the sectors in turn
  * and read the step before from the stored slices). A disk of 100 quads round an interior vertex
  * (smooth), with two infinitely sharp edges through it (a crease) and with three (a corner), and
- * the half-disk whose centre is on the boundary (its pseudo-sector): output vertices against the
+ * the half-disk whose centre is on the boundary (its pseudo-sector), and a semi-sharp crease
+ * through it (decaying in the wide kernel): output vertices against the
  * exact CPU reference within 1e-6 of the diagonal, no NaN; and the fan is a wide one (its
  * thread words say so). Before, such vertices were refused ("faces round it").
  */
@@ -45,7 +46,9 @@ afterAll(() => {
 });
 
 describe('wide fans: a vertex of 100 faces', () => {
-  const cases: [string, Cage][] = [
+  // [name, cage, fixed factor]: the semi-sharp crease's fan starts at level 2 (the ring's
+  // triangles), a sixteenth of a face round the centre, so its case samples at factor 32.
+  const cases: [string, Cage, number?][] = [
     ['interior, smooth', pole(false)],
     [
       'interior, a crease through it',
@@ -63,8 +66,19 @@ describe('wide fans: a vertex of 100 faces', () => {
       ]),
     ],
     ['on the boundary (a half-disk)', pole(true)],
+    // Semi-sharp: the crease decays inside the wide kernel (its centre's rule from the fan's
+    // step table, wgsl/cc/build.wgsl wideCentreMask); 3.5 at the cage, 1.5 at level 2 where the
+    // fan starts, so its rule changes from crease to smooth in its second step, with W = 0.5.
+    [
+      'interior, a semi-sharp crease through it',
+      pole(false, [
+        [0, 1, 3.5],
+        [0, 1 + N / 2, 3.5],
+      ]),
+      32,
+    ],
   ];
-  for (const [name, cage] of cases) {
+  for (const [name, cage, factor = 4] of cases) {
     it(`${name}: the limit within 1e-6 of the diagonal, no NaN; a wide fan`, async () => {
       const device = await getDevice();
       tess ??= Tessellator.create(device, bakeTables(64), {
@@ -78,7 +92,7 @@ describe('wide fans: a vertex of 100 faces', () => {
       const threads = cc.words.subarray(cc.layout.offset.threads, cc.layout.offset.threads + cc.layout.length.threads);
       const wide = [...threads].filter((w) => w !== CC_NONE && CC_THREAD_WORD.get(w, 'sector') === CC_WIDE_FAN);
       expect(wide.length, 'wide fans').toBeGreaterThan(0);
-      const out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 4));
+      const out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, factor));
       const { errs, max, nan } = outputErrors(new CCReference(cage, mesh, cc), out, 600);
       console.log(
         `${name}: ${wide.length} wide fan(s), ${out.triangleCount} triangles, checked ${errs.length}, max ${max.toExponential(2)}`,
