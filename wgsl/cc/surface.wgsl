@@ -249,12 +249,17 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
       px.x = a - 1.0;
       if (b < 1.0) { which = 0u; px.y = b; } else { which = 1u; }
     }
-    // Phantoms: A's bottom on axis sec, C's left on axis sec + 1, when infinitely sharp.
+    // The axis beside the sub-patch (A's bottom: axis sec; C's left: axis sec + 1; B has none),
+    // its sharpness at step L: infinitely sharp, phantom points there; semi-sharp and still
+    // sharp, the crease basis across it.
     mask = 0u;
-    if (CC_PHANTOMS && which == 0u && staticBuf[f.sectors + 7u * sec] == CC_AXIS_INFINITE) { mask = 1u; }
-    if (CC_PHANTOMS && which == 2u && staticBuf[f.sectors + 7u * ccNb(f, sec, 1)] == CC_AXIS_INFINITE) { mask = 8u; }
-    if (CC_CREASE_PATCHES && which == 0u) { creaseY = ccAxisSharp(f, sec, L); }
-    if (CC_CREASE_PATCHES && which == 2u) { creaseX = ccAxisSharp(f, ccNb(f, sec, 1), L); }
+    if (which != 1u) {
+      let s = ccAxisSharp(f, select(sec, ccNb(f, sec, 1), which == 2u), L);
+      if (CC_PHANTOMS && s >= AXIS_INFINITE) { mask = select(1u, 8u, which == 2u); }
+      if (CC_CREASE_PATCHES && s > 0.0 && s < AXIS_INFINITE) {
+        if (which == 0u) { creaseY = s; } else { creaseX = s; }
+      }
+    }
     src.sub = ccSubPatchOf(f, sec, L, which);
     src.origin = ccP(ccFanWord(fan, 1u));
     // An odd fan's even step is not stored: its sub-patch is summed below from points made
@@ -274,11 +279,11 @@ fn ccEvalRegion(first: u32, dd: u32, k: u32, x0: f32, y0: f32) -> SurfacePoint {
     bx = array<vec4<f32>, 2>(cw.value, cw.du);
   }
   var by = ccBasis(px.y);
-  if (CC_CREASE_PATCHES && creaseX > 0.0 && creaseX < AXIS_INFINITE) {
+  if (CC_CREASE_PATCHES && creaseX > 0.0) {
     let cw = creaseRowWeights(creaseX, px.x);
     bx = array<vec4<f32>, 2>(cw.value, cw.du);
   }
-  if (CC_CREASE_PATCHES && creaseY > 0.0 && creaseY < AXIS_INFINITE) {
+  if (CC_CREASE_PATCHES && creaseY > 0.0) {
     let cw = creaseRowWeights(creaseY, px.y);
     by = array<vec4<f32>, 2>(cw.value, cw.du);
   }

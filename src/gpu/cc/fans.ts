@@ -205,10 +205,10 @@ export interface FanRec {
   ib: number;
   alpha: number;
   cageVertex: number;
-  /** Per thread: its axis word (CC_AXIS_INFINITE, 0 smooth, or a semi-sharp axis's σ at level
-   * s as f32 bits) and 6 global point indices. */
+  /** Per thread: its 6 global point indices ((1,0) (2,0) (1,1) (2,1) (1,2) (2,2) at level s). */
   sectors: number[][];
-  /** Per thread: its axis's sharpness at level s (0, σ, or SHARPNESS_INFINITE). */
+  /** Per thread: its axis's sharpness at level s (0, σ, or SHARPNESS_INFINITE); packed as the
+   * sector's axis word (axisWord). */
   axis: number[];
   /** The centre's vertex sharpness at level s (0, semi-sharp, or infinite). */
   vertexSharp: number;
@@ -241,20 +241,12 @@ function makeFan(L: Level, l: number, x: number): FanRec {
     }
     const t = m.heTwin[nx[h]];
     const u = m.heTwin[nx[nx[nx[t]]]];
-    sectors.push([
-      inf ? CC_AXIS_INFINITE : isSemi(sharpness) ? f32bits(sharpness) : 0,
-      G(fi[nx[h]]),
-      G(fi[nx[nx[t]]]),
-      G(fi[nx[nx[h]]]),
-      G(fi[nx[nx[nx[t]]]]),
-      G(fi[nx[nx[nx[u]]]]),
-      G(fi[nx[nx[u]]]),
-    ]);
+    sectors.push([G(fi[nx[h]]), G(fi[nx[nx[t]]]), G(fi[nx[nx[h]]]), G(fi[nx[nx[nx[t]]]]), G(fi[nx[nx[nx[u]]]]), G(fi[nx[nx[u]]])]);
   }
   if (ring.boundary) {
     const hl = ring.he[n - 1];
     const w = m.heTwin[nx[nx[hl]]];
-    sectors.push([CC_AXIS_INFINITE, G(fi[m.hePrev[hl]]), G(fi[m.hePrev[w]]), G(x), G(x), G(x), G(x)]);
+    sectors.push([G(fi[m.hePrev[hl]]), G(fi[m.hePrev[w]]), G(x), G(x), G(x), G(x)]);
     axis.push(INF);
     ib = n;
     nInf++;
@@ -382,15 +374,17 @@ export const storedSteps = (D: number, odd: boolean): number => (odd ? Math.ceil
  * corners, darts and boundaries 2^-3 smaller still: the radial blend's one exponent is a rougher
  * model there (two rates, along and across).
  */
-function fanDepth(F: FanRec): number {
+function fanDepth(F: FanRec, semi: number): number {
   let D = F.D;
-  if (D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.sectors.every((q) => !q[0]))) D = Math.min(15, D + EXTRA_DEPTH_SHARP);
-  // Semi-sharp axes decay inside the slices, and the limit is taken after they have: at least
-  // ceil(σ) + 1 steps, whether or not a region reads the slices (the limits kernel reads the
-  // last step's ring with the fan's final rule).
-  const semi = semiSharpest(F);
+  if (D > 0 && !(F.rule === VRULE_SMOOTH && !F.boundary && F.axis.every((a) => a === 0))) D = Math.min(15, D + EXTRA_DEPTH_SHARP);
+  // Semi-sharp values (the largest: `semi`) decay inside the slices, and the limit is taken after
+  // they have: at least ceil(σ) + 1 steps, whether or not a region reads the slices (the limits
+  // kernel reads the last step's ring with the fan's final rule).
   return semi > 0 ? Math.max(D, Math.ceil(semi) + 1) : D;
 }
+
+/** A sector's axis word (src/gpu/cc/build.ts "sectors") from its axis's sharpness. */
+const axisWord = (a: number): number => (a >= INF ? CC_AXIS_INFINITE : a > 0 ? f32bits(a) : 0);
 
 /** The largest semi-sharp value of a fan, its axes' and its centre's (0: none). */
 const semiSharpest = (F: FanRec): number =>
@@ -452,7 +446,9 @@ export function packFans(fans: FanRec[], levels: Level[], slices: SliceSteps = '
   let semiAxes = false;
   const sliceFans: number[] = [];
   fans.forEach((F, id) => {
-    const D = fanDepth(F);
+    const sharpest = semiSharpest(F);
+    const semi = sharpest > 0;
+    const D = fanDepth(F, sharpest);
     const ns = F.sectors.length;
     // A fan wider than a workgroup reads each step before from its stored slice (wgsl/cc/build.wgsl
     // wideSlices), so it keeps every step.
@@ -481,14 +477,16 @@ export function packFans(fans: FanRec[], levels: Level[], slices: SliceSteps = '
     fanWords.push(limitBase);
     fanWords.push(CC_PAIR_WORD.pack({ a: F.ia, b: F.ib }));
     fanWords.push(cosBase);
-    for (const s of F.sectors) for (const w of s) sectorWords.push(w);
+    F.sectors.forEach((points, i) => {
+      sectorWords.push(axisWord(F.axis[i]));
+      for (const p of points) sectorWords.push(p);
+    });
     // Word 8: where the centre's per-step rules start in the sectors' words (a fan with a
-    // semi-sharp axis), else CC_NONE (its one rule, word 0's, in every step).
-    const semi = semiSharpest(F) > 0;
+    // semi-sharp value), else CC_NONE (its one rule, word 0's, in every step).
     fanWords.push(semi ? sectorWords.n : CC_NONE);
     if (semi) for (const w of stepRules(F, D)) sectorWords.push(w);
     if (D > 0) sliceFans.push(id);
-    if (D > 0 && F.sectors.some((q) => q[0] === CC_AXIS_INFINITE)) axisPhantoms = true;
+    if (D > 0 && F.axis.some((a) => a >= INF)) axisPhantoms = true;
     if (D > 0 && semi) semiAxes = true;
   });
   return { fanWords, sectorWords, cosWords, maxDepth, sliceFans, nextPoint, axisPhantoms, semiAxes };
