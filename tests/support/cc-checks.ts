@@ -12,7 +12,8 @@ import { regionOf, type CatmullClarkData } from '../../src/gpu/cc/build.ts';
 import { angleBetween } from './tess-checks.ts';
 import { decodeBary } from '../../src/gpu/contract/tess.ts';
 import { readMesh, type MeshReadback } from '../../src/gpu/device/readback.ts';
-import type { Tessellator } from '../../src/gpu/tess/tessellator.ts';
+import { Tessellator } from '../../src/gpu/tess/tessellator.ts';
+import { bakeTables } from '../../src/pattern/tables.ts';
 import type { FactorParams } from '../../src/gpu/contract/tessellated-mesh.ts';
 
 export interface ErrorStats {
@@ -135,6 +136,17 @@ export function randomSamples(mesh: PreparedMesh, n: number, seed = 1) {
 }
 
 /** One rebuild of `mesh` by a Catmull-Clark tessellator, read back; throws on a validation error. */
+/** The exact surface's compute tessellator the GPU checks tessellate with (the exact limit: flat
+ * baseline off; tables to factor 64), for up to `capacity` vertices and triangles. */
+export function exactTessellator(device: GPUDevice, capacity = 1 << 20): Tessellator {
+  return Tessellator.create(device, bakeTables(64), {
+    vertexCapacity: capacity,
+    triangleCapacity: capacity,
+    surface: 'catmull-clark',
+    flatBaseline: false,
+  });
+}
+
 export async function tessellateCC(
   device: GPUDevice,
   tess: Tessellator,

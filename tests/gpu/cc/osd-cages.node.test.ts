@@ -11,7 +11,7 @@
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
-import { CCReference, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
+import { CCReference, exactTessellator, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
 import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import type { MeshReadback } from '../../../src/gpu/device/readback.ts';
@@ -68,12 +68,7 @@ const names = present
 describe.skipIf(!present)("Catmull-Clark GPU path and the ACC schemes on OpenSubdiv's regression cages", () => {
   it('every cage is tessellated on its exact limit or refused with a reason', async () => {
     const device = await getDevice();
-    tess ??= Tessellator.create(device, bakeTables(64), {
-      vertexCapacity: 1 << 20,
-      triangleCapacity: 1 << 20,
-      surface: 'catmull-clark',
-      flatBaseline: false,
-    });
+    tess ??= exactTessellator(device);
     const rows: string[] = [];
     const failures: string[] = [];
     for (const name of names) {

@@ -21,11 +21,10 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
-import { CCReference, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
-import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
+import { CCReference, exactTessellator, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
+import type { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
-import { bakeTables } from '../../../src/pattern/tables.ts';
 import { type Cage, loadCage } from '../../../src/mesh/index.ts';
 
 const DIR = '../shared/cages';
@@ -69,12 +68,7 @@ describe('semi-sharp creases decaying inside the slice kernel', () => {
         expect(cc.levels).toBeLessThanOrEqual(2);
         expect(cc.gpuBytes / faces).toBeLessThanOrEqual(bound);
         const device = await getDevice();
-        tess ??= Tessellator.create(device, bakeTables(64), {
-          vertexCapacity: 1 << 20,
-          triangleCapacity: 1 << 20,
-          surface: 'catmull-clark',
-          flatBaseline: false,
-        });
+        tess ??= exactTessellator(device);
         const out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 3));
         const { errs, max, p99, nan, worst } = outputErrors(new CCReference(cage, mesh, cc), out, SAMPLE);
         console.log(

@@ -7,13 +7,12 @@
 import { describe, it, expect, afterAll } from 'vitest';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
 import { checkTessellation, angleBetween } from '../../support/tess-checks.ts';
-import { CCReference, randomSamples } from '../../support/cc-checks.ts';
-import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
+import { CCReference, exactTessellator, randomSamples } from '../../support/cc-checks.ts';
+import type { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { readBuffer, readMesh } from '../../../src/gpu/device/readback.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { sampleSurface } from '../../../src/gpu/tess/sample-surface.ts';
-import { bakeTables } from '../../../src/pattern/tables.ts';
 import { decodeBary } from '../../../src/gpu/contract/tess.ts';
 import { cornerLimit, creasedGridCube } from '../../support/single-crease-fixture.ts';
 
@@ -30,12 +29,7 @@ afterAll(() => {
 describe('single-crease patches on the GPU', () => {
   it('cube of 6×6 grids, crease loops σ = 2.7 and 0.5: one level only; surface and vertex limits exact', async () => {
     const device = await getDevice();
-    tess ??= Tessellator.create(device, bakeTables(64), {
-      vertexCapacity: 1 << 20,
-      triangleCapacity: 1 << 20,
-      surface: 'catmull-clark',
-      flatBaseline: false,
-    });
+    tess ??= exactTessellator(device);
     const t = tess;
     const cage = creasedGridCube(6, [
       [2, 2.7],

@@ -10,11 +10,10 @@
 import { describe, it, expect, afterAll } from 'vitest';
 import { existsSync, readFileSync } from 'node:fs';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
-import { CCReference, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
-import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
+import { CCReference, exactTessellator, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
+import type { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { SLICE_BUDGET_BYTES_PER_FACE, buildCatmullClark } from '../../../src/gpu/cc/build.ts';
-import { bakeTables } from '../../../src/pattern/tables.ts';
 import { loadCage } from '../../../src/mesh/index.ts';
 
 const DIR = '../shared/cages';
@@ -56,12 +55,7 @@ describe.skipIf(!present)("Catmull-Clark on the talk's models", () => {
         best = Math.min(best, performance.now() - t0);
       }
       const device = await getDevice();
-      tess ??= Tessellator.create(device, bakeTables(64), {
-        vertexCapacity: 1 << 21,
-        triangleCapacity: 1 << 21,
-        surface: 'catmull-clark',
-        flatBaseline: false,
-      });
+      tess ??= exactTessellator(device, 1 << 21);
       const out = await tessellateCC(device, tess, mesh, cc, testCamera(mesh, 1.5 * mesh.size, 3));
       const { errs, max, p99, nan, blended, worst } = outputErrors(new CCReference(cage, mesh, cc), out, SAMPLE);
       console.log(

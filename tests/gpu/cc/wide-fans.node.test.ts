@@ -10,13 +10,12 @@
  */
 import { afterAll, describe, expect, it } from 'vitest';
 import { getDevice, releaseDevice, testCamera } from '../../support/gpu-device.ts';
-import { CCReference, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
-import { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
+import { CCReference, exactTessellator, outputErrors, tessellateCC } from '../../support/cc-checks.ts';
+import type { Tessellator } from '../../../src/gpu/tess/tessellator.ts';
 import { prepareMesh } from '../../../src/gpu/tess/prepare.ts';
 import { buildCatmullClark } from '../../../src/gpu/cc/build.ts';
 import { CC_THREAD_WORD, CC_WIDE_FAN } from '../../../src/gpu/cc/words.ts';
 import { CC_NONE } from '../../../src/gpu/contract/cc.ts';
-import { bakeTables } from '../../../src/pattern/tables.ts';
 import { type Cage, makeCage } from '../../../src/mesh/index.ts';
 
 const N = 100;
@@ -81,12 +80,7 @@ describe('wide fans: a vertex of 100 faces', () => {
   for (const [name, cage, factor = 4] of cases) {
     it(`${name}: the limit within 1e-6 of the diagonal, no NaN; a wide fan`, async () => {
       const device = await getDevice();
-      tess ??= Tessellator.create(device, bakeTables(64), {
-        vertexCapacity: 1 << 19,
-        triangleCapacity: 1 << 19,
-        surface: 'catmull-clark',
-        flatBaseline: false,
-      });
+      tess ??= exactTessellator(device, 1 << 19);
       const mesh = prepareMesh(cage);
       const cc = buildCatmullClark(cage, mesh);
       const threads = cc.words.subarray(cc.layout.offset.threads, cc.layout.offset.threads + cc.layout.length.threads);
