@@ -164,16 +164,25 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
     const first = inputs.n;
     inputs.push(vBase + v);
     const vs = L.vertSharp[v];
-    ps.length = 0;
-    for (let k = e0; k < e1; k++) ps.push(L.edgeSharp[m.vertEdges[k]]);
-    childEdgeSharpAtVertex(ps, chaikin, cs);
+    // A smooth vertex (no sharp edge, no vertex sharpness; most of them) keeps the smooth rule in
+    // both steps and its edges' children stay smooth (childAt's zeros): no sharpness lists made.
+    let sharpHere = vs !== 0;
+    for (let k = e0; k < e1 && !sharpHere; k++) sharpHere = L.edgeSharp[m.vertEdges[k]] !== 0;
+    if (sharpHere) {
+      ps.length = 0;
+      for (let k = e0; k < e1; k++) ps.push(L.edgeSharp[m.vertEdges[k]]);
+      childEdgeSharpAtVertex(ps, chaikin, cs);
+      for (let k = e0; k < e1; k++) childAt[k] = cs[k - e0];
+      vertexStep(ps, cs, vs, decSharp(vs), step);
+    } else {
+      step.parent = step.child = VRULE_SMOOTH;
+    }
     for (let k = e0; k < e1; k++) {
       const e = m.vertEdges[k];
       inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
-      childAt[k] = cs[k - e0];
     }
     for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
-    const { parent: pr, child: cr, a: ia, b: ib, W } = vertexStep(ps, cs, vs, decSharp(vs), step);
+    const { parent: pr, child: cr, a: ia, b: ib, W } = step;
     // The rule word's count and faces fields (CC_RULE_WORD) bound the valence this build takes.
     const most = Math.min(2 ** CC_RULE_WORD.fields.count[1], 2 ** CC_RULE_WORD.fields.faces[1]) - 1;
     if (e1 - e0 > most || h1 - h0 > most)
@@ -295,7 +304,7 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
     e++;
   }
   const { vertHeOffsets, vertHe, vertEdgeOffsets, vertEdges } = vertexAdjacency(nVerts, faceIndices, edgeVerts);
-  return {
+  return halfEdgesOf({
     nVerts,
     nFaces: nHp,
     nEdges,
@@ -313,6 +322,34 @@ function refinedHalfEdges(m: HalfEdges, nVerts: number, faceOffsets: Int32Array,
     vertHe,
     vertEdgeOffsets,
     vertEdges,
+  });
+}
+
+/**
+ * The half-edges alone, as one object shape for every level: the cage's topology carries more
+ * fields (src/mesh/topology.ts Topology), and a level function that met both shapes was compiled
+ * for one, thrown away on meeting the other ("wrong map") and compiled again, on every level. A
+ * cage's first preparation runs this code cold (the user's wait), so it matters there.
+ */
+function halfEdgesOf(m: HalfEdges): HalfEdges {
+  return {
+    nVerts: m.nVerts,
+    nFaces: m.nFaces,
+    nEdges: m.nEdges,
+    faceOffsets: m.faceOffsets,
+    faceIndices: m.faceIndices,
+    heFace: m.heFace,
+    heNext: m.heNext,
+    hePrev: m.hePrev,
+    heTwin: m.heTwin,
+    heEdge: m.heEdge,
+    edgeVerts: m.edgeVerts,
+    edgeFaceCount: m.edgeFaceCount,
+    edgeHe: m.edgeHe,
+    vertHeOffsets: m.vertHeOffsets,
+    vertHe: m.vertHe,
+    vertEdgeOffsets: m.vertEdgeOffsets,
+    vertEdges: m.vertEdges,
   };
 }
 
@@ -342,7 +379,7 @@ export interface LevelStack {
 
 /** Level 0 (the cage) and the means to refine further; refuses levels past MAX_LEVEL with the cage's sharpest crease. */
 export function levelStack(topo: HalfEdges, sharp: Sharpness, chaikin = false): LevelStack {
-  const levels: Level[] = [makeLevel(topo, sharp.edge, sharp.vertex, sharp.hole, 0, chaikin)];
+  const levels: Level[] = [makeLevel(halfEdgesOf(topo), sharp.edge, sharp.vertex, sharp.hole, 0, chaikin)];
   const rules = new U32(),
     inputs = new U32();
   const levelRanges: [number, number, number, number][] = [];
