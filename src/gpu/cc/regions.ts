@@ -49,48 +49,65 @@ const AXES: [number, number, number, number][] = [
   [0, -1, 1, 0],
 ];
 
-function setGrid(grid: number[], c: number, r: number, v: number): void {
+/** The 16 slots of the patch being gathered (gatherPatch; -1 empty): one array, reused. */
+const grid = new Int32Array(16);
+
+function setGrid(c: number, r: number, v: number): void {
   if (c >= 0 && c < 4 && r >= 0 && r < 4) grid[4 * r + c] = v;
 }
 
 /**
  * The 16 point indices (global) of a regular level face g and its phantom mask, in the face's own
  * frame turned to start at corner `start` (its corner `start` at grid (1,1), the edge leaving it
- * along +x); null if a slot stays empty.
+ * along +x); null if a slot stays empty. (Indexed reads of the corner tables, no destructuring:
+ * a cage's first preparation runs this cold, once per region.)
  */
 function gatherPatch(L: Level, g: number, start = 0): { idx: number[]; mask: number } | null {
   const m = L.he;
   const a0 = m.faceOffsets[g];
-  const grid = new Array<number>(16).fill(-1);
+  grid.fill(-1);
   let mask = 0;
 
   for (let j = 0; j < 4; j++) {
     const h = a0 + ((j + start) & 3);
     if (L.edgeSharp[m.heEdge[h]] >= INF) mask |= 1 << j;
-    const [gc, gr] = GRID_POS[j];
-    const [ax, ay, bx, by] = AXES[j];
-    setGrid(grid, gc, gr, m.faceIndices[h]);
+    const gc = GRID_POS[j][0],
+      gr = GRID_POS[j][1];
+    const ax = AXES[j][0],
+      ay = AXES[j][1],
+      bx = AXES[j][2],
+      by = AXES[j][3];
+    setGrid(gc, gr, m.faceIndices[h]);
     const t1 = m.heTwin[m.hePrev[h]];
     if (t1 < 0) continue;
-    setGrid(grid, gc + bx - ax, gr + by - ay, m.faceIndices[m.heNext[m.heNext[t1]]]);
-    setGrid(grid, gc - ax, gr - ay, m.faceIndices[m.hePrev[t1]]);
+    setGrid(gc + bx - ax, gr + by - ay, m.faceIndices[m.heNext[m.heNext[t1]]]);
+    setGrid(gc - ax, gr - ay, m.faceIndices[m.hePrev[t1]]);
     const t2 = m.heTwin[m.hePrev[t1]];
     if (t2 < 0) continue;
-    setGrid(grid, gc - ax - bx, gr - ay - by, m.faceIndices[m.heNext[m.heNext[t2]]]);
-    setGrid(grid, gc - bx, gr - by, m.faceIndices[m.hePrev[t2]]);
+    setGrid(gc - ax - bx, gr - ay - by, m.faceIndices[m.heNext[m.heNext[t2]]]);
+    setGrid(gc - bx, gr - by, m.faceIndices[m.hePrev[t2]]);
     const t3 = m.heTwin[m.hePrev[t2]];
     if (t3 < 0) continue;
-    setGrid(grid, gc + ax - bx, gr + ay - by, m.faceIndices[m.heNext[m.heNext[t3]]]);
+    setGrid(gc + ax - bx, gr + ay - by, m.faceIndices[m.heNext[m.heNext[t3]]]);
   }
+  const idx = new Array<number>(16);
   for (let r = 0; r < 4; r++) {
     for (let c = 0; c < 4; c++) {
-      if (grid[4 * r + c] >= 0) continue;
-      const covered = (r === 0 && mask & 1) || (c === 3 && mask & 2) || (r === 3 && mask & 4) || (c === 0 && mask & 8);
-      if (!covered) return null;
-      grid[4 * r + c] = m.faceIndices[a0]; // discarded by the phantom reflection
+      let v = grid[4 * r + c];
+      if (v < 0) {
+        const covered = (r === 0 && mask & 1) || (c === 3 && mask & 2) || (r === 3 && mask & 4) || (c === 0 && mask & 8);
+        if (!covered) return null;
+        v = m.faceIndices[a0]; // discarded by the phantom reflection
+      }
+      idx[4 * r + c] = L.base + v;
     }
   }
-  return { idx: grid.map((v) => L.base + v), mask };
+  return { idx, mask };
+}
+
+/** A patch region's first word (its frame's turn, phantom mask, single crease, colour). */
+function patchWord(rot: number, mask: number, crease: boolean, patchKind: number): number {
+  return CC_REGION_WORD.pack({ kind: REGION_PATCH, rot, mask, offset: 0, sector: 0, crease, patchKind });
 }
 
 /** The region words and patch indices of every cage face, with its depth and first region. */
@@ -156,7 +173,8 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
       for (let l = N === 4 ? 0 : 1; l < d; l++) {
         const L = level(l);
         const next: Desc[] = [];
-        for (const q of desc) {
+        for (let n = 0; n < desc.length; n++) {
+          const q = desc[n];
           for (let c = 0; c < 4; c++) {
             const r = (q.r + c) & 3;
             next.push({ g: L.he.faceOffsets[q.g] + c, k: q.k, i: 2 * q.i + QUAD_OF_ROT[r][0], j: 2 * q.j + QUAD_OF_ROT[r][1], r });
@@ -169,7 +187,8 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
       type Reg = { w0: number; w1: number; patch?: number[]; sigma?: number };
       const regs: Reg[] = [];
       let ok = true;
-      for (const q of desc) {
+      for (let n = 0; n < desc.length; n++) {
+        const q = desc[n];
         const a0 = m.faceOffsets[q.g];
         let irregular = -1,
           nIrr = 0;
@@ -178,12 +197,10 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
             irregular = c;
             nIrr++;
           }
-        const patchWord = (rot: number, mask: number, crease: boolean) =>
-          CC_REGION_WORD.pack({ kind: REGION_PATCH, rot, mask, offset: 0, sector: 0, crease, patchKind: kind });
         if (nIrr === 0) {
           const p = gatherPatch(L, q.g);
           if (p) {
-            regs.push({ w0: patchWord(q.r, p.mask, false), w1: 0, patch: p.idx });
+            regs.push({ w0: patchWord(q.r, p.mask, false, kind), w1: 0, patch: p.idx });
             continue;
           }
         } else {
@@ -192,7 +209,7 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
           const sc = singleCrease(L, q.g);
           const p = sc && gatherPatch(L, q.g, sc.start);
           if (sc && p && p.mask === 0) {
-            regs.push({ w0: patchWord((q.r + sc.start) & 3, 0, true), w1: 0, patch: p.idx, sigma: sc.sigma });
+            regs.push({ w0: patchWord((q.r + sc.start) & 3, 0, true, kind), w1: 0, patch: p.idx, sigma: sc.sigma });
             singleCreaseCount++;
             continue;
           }
@@ -238,14 +255,16 @@ export function buildRegions(topo: Topology, sharp: Sharpness, cls: Classificati
       const side = 1 << dd;
       const base = regionWords.n / 2;
       const order = new Array<Reg>(regs.length);
-      desc.forEach((q, n) => {
+      for (let n = 0; n < desc.length; n++) {
+        const q = desc[n];
         order[q.k * side * side + q.j * side + q.i] = regs[n];
-      });
-      for (const rg of order) {
+      }
+      for (let n = 0; n < order.length; n++) {
+        const rg = order[n];
         if (rg.patch) {
           regionWords.push(rg.w0);
           regionWords.push(patchIdx.n);
-          for (const v of rg.patch) patchIdx.push(v);
+          for (let k = 0; k < rg.patch.length; k++) patchIdx.push(rg.patch[k]);
           if (rg.sigma !== undefined) patchIdx.push(f32bits(rg.sigma));
           patchCount++;
         } else {

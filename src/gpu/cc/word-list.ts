@@ -20,4 +20,11 @@ export class U32 {
   }
 }
 
-export const f32bits = (x: number): number => new Uint32Array(Float32Array.of(x).buffer)[0];
+const f32Scratch = new Float32Array(1);
+const u32Scratch = new Uint32Array(f32Scratch.buffer);
+/** x rounded to f32, as its bits (one scratch word, no arrays made per call: the preparation packs
+ * one per sharp point). */
+export const f32bits = (x: number): number => {
+  f32Scratch[0] = x;
+  return u32Scratch[0];
+};

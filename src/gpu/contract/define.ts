@@ -70,6 +70,8 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
   const fieldNames = entries.map(([f]) => f);
   const fieldScale = entries.map(([, [at]]) => 2 ** at);
   const fieldLimit = entries.map(([, [, bits]]) => 2 ** bits);
+  const fieldAt = entries.map(([, [at]]) => at);
+  const fieldBits = entries.map(([, [, bits]]) => bits);
   const prefix = wgslPrefix(name);
   // Shifts and masks rather than extractBits/insertBits: the same bits, but Tint polyfills those
   // two builtins (clamping their offset and count) and a software GPU's compiler keeps the calls.
@@ -100,14 +102,16 @@ export function defineBits<K extends string>(name: string, fields: Readonly<Reco
       }
       return w;
     },
+    // Indexed reads of the field tables, no destructuring: both run once per word in a cage's
+    // first preparation (cold code, where each destructured pair walks an iterator).
     unpack(word) {
       const out = {} as Record<K, number>;
-      for (const [f, [at, bits]] of entries) out[f] = extract(word, at, bits);
+      for (let i = 0; i < fieldNames.length; i++) out[fieldNames[i]] = extract(word, fieldAt[i], fieldBits[i]);
       return out;
     },
     get(word, field) {
-      const [at, bits] = fields[field];
-      return extract(word, at, bits);
+      const f = fields[field];
+      return extract(word, f[0], f[1]);
     },
   };
 }
