@@ -155,14 +155,35 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
   const ps: number[] = [],
     cs: number[] = [];
   const step: VertexStep = { parent: 0, child: 0, a: 0, b: 0, W: 1 };
+  // The words are written straight into the lists, room made for the most a level can take
+  // (a vertex: itself, its edges' far ends, its faces, a crease pair and W; an edge: 4 and σ; a
+  // face: its corners), and the rule words of the few kinds a level has packed once each
+  // (ruleWord): a cage's first preparation runs this loop cold, once per refined point.
+  const nHp = m.faceIndices.length;
+  const inA = inputs.reserve(3 * nV + 2 * nE + nHp + 5 * nE + nHp);
+  const ruA = rules.reserve(2 * (nV + nE + nF));
+  let inN = inputs.n,
+    ruN = rules.n;
+  const ruleWords = new Map<number, number>();
+  const ruleWord = (kind: number, parent: number, child: number, sharp: boolean, count: number, faces: number): number => {
+    const key = kind + 4 * (parent + 4 * (child + 4 * ((sharp ? 1 : 0) + 2 * (count + 65536 * faces))));
+    let w = ruleWords.get(key);
+    if (w === undefined) {
+      w = CC_RULE_WORD.pack({ kind, parent, child, sharp, count, faces });
+      ruleWords.set(key, w);
+    }
+    return w;
+  };
+  // The rule word's count and faces fields (CC_RULE_WORD) bound the valence this build takes.
+  const most = Math.min(2 ** CC_RULE_WORD.fields.count[1], 2 ** CC_RULE_WORD.fields.faces[1]) - 1;
   // Vertex points.
   for (let v = 0; v < nV; v++) {
     const e0 = m.vertEdgeOffsets[v],
       e1 = m.vertEdgeOffsets[v + 1];
     const h0 = m.vertHeOffsets[v],
       h1 = m.vertHeOffsets[v + 1];
-    const first = inputs.n;
-    inputs.push(vBase + v);
+    const first = inN;
+    inA[inN++] = vBase + v;
     const vs = L.vertSharp[v];
     // A smooth vertex (no sharp edge, no vertex sharpness; most of them) keeps the smooth rule in
     // both steps and its edges' children stay smooth (childAt's zeros): no sharpness lists made.
@@ -179,39 +200,38 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
     }
     for (let k = e0; k < e1; k++) {
       const e = m.vertEdges[k];
-      inputs.push(vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v);
+      inA[inN++] = vBase + m.edgeVerts[2 * e] + m.edgeVerts[2 * e + 1] - v;
     }
-    for (let k = h0; k < h1; k++) inputs.push(fBase + m.heFace[m.vertHe[k]]);
-    const { parent: pr, child: cr, a: ia, b: ib, W } = step;
-    // The rule word's count and faces fields (CC_RULE_WORD) bound the valence this build takes.
-    const most = Math.min(2 ** CC_RULE_WORD.fields.count[1], 2 ** CC_RULE_WORD.fields.faces[1]) - 1;
+    for (let k = h0; k < h1; k++) inA[inN++] = fBase + m.heFace[m.vertHe[k]];
+    const pr = step.parent,
+      cr = step.child;
     if (e1 - e0 > most || h1 - h0 > most)
       throw new LimitError(`a vertex of valence ${e1 - e0} is not supported by the Catmull-Clark build (at most ${most})`);
-    rules.push(CC_RULE_WORD.pack({ kind: RULE_VERTEX, parent: pr, child: cr, sharp: 0, count: e1 - e0, faces: h1 - h0 }));
-    rules.push(first);
+    ruA[ruN++] = ruleWord(RULE_VERTEX, pr, cr, false, e1 - e0, h1 - h0);
+    ruA[ruN++] = first;
     // A sharp vertex (either rule not smooth) carries its crease pair and W after its inputs.
     if (pr !== VRULE_SMOOTH || cr !== VRULE_SMOOTH) {
-      inputs.push(CC_PAIR_WORD.pack({ a: ia, b: ib }));
-      inputs.push(f32bits(W));
+      inA[inN++] = CC_PAIR_WORD.pack({ a: step.a, b: step.b });
+      inA[inN++] = f32bits(step.W);
     }
   }
   // Edge points.
   for (let e = 0; e < nE; e++) {
-    const first = inputs.n;
-    inputs.push(vBase + m.edgeVerts[2 * e]);
-    inputs.push(vBase + m.edgeVerts[2 * e + 1]);
+    const first = inN;
+    inA[inN++] = vBase + m.edgeVerts[2 * e];
+    inA[inN++] = vBase + m.edgeVerts[2 * e + 1];
     let n = 2;
     if (m.edgeFaceCount[e] === 2) {
       const h = m.edgeHe[e];
-      inputs.push(fBase + m.heFace[h]);
-      inputs.push(fBase + m.heFace[m.heTwin[h]]);
+      inA[inN++] = fBase + m.heFace[h];
+      inA[inN++] = fBase + m.heFace[m.heTwin[h]];
       n = 4;
     }
     // An interior edge with sharpness carries it after its inputs (flag bit 2).
     const sharpEdge = n === 4 && L.edgeSharp[e] !== 0;
-    if (sharpEdge) inputs.push(f32bits(L.edgeSharp[e]));
-    rules.push(CC_RULE_WORD.pack({ kind: RULE_EDGE, parent: 0, child: 0, sharp: sharpEdge, count: n, faces: 0 }));
-    rules.push(first);
+    if (sharpEdge) inA[inN++] = f32bits(L.edgeSharp[e]);
+    ruA[ruN++] = ruleWord(RULE_EDGE, 0, 0, sharpEdge, n, 0);
+    ruA[ruN++] = first;
   }
   // Face points.
   for (let f = 0; f < nF; f++) {
@@ -221,12 +241,16 @@ function refineLevel(L: Level, rules: U32, inputs: U32, chaikin: boolean): Level
       throw new LimitError(
         `a face of ${b - a} corners is not supported by the Catmull-Clark build (at most ${2 ** CC_RULE_WORD.fields.count[1] - 1})`,
       );
-    rules.push(CC_RULE_WORD.pack({ kind: RULE_FACE, parent: 0, child: 0, sharp: 0, count: b - a, faces: 0 }));
-    rules.push(inputs.n);
-    for (let h = a; h < b; h++) inputs.push(vBase + m.faceIndices[h]);
+    ruA[ruN++] = ruleWord(RULE_FACE, 0, 0, false, b - a, 0);
+    ruA[ruN++] = inN;
+    for (let h = a; h < b; h++) inA[inN++] = vBase + m.faceIndices[h];
   }
+  // A typed array drops writes past its end: the room above is a bound, held here.
+  if (inN > inA.length || ruN > ruA.length) throw new Error('refineLevel: a level wrote more words than it made room for');
+  inputs.n = inN;
+  rules.n = ruN;
   // Level L+1 topology.
-  const nHe = m.faceIndices.length;
+  const nHe = nHp;
   const faceOffsets = new Int32Array(nHe + 1);
   const faceIndices = new Int32Array(4 * nHe);
   const hole = new Uint8Array(nHe);

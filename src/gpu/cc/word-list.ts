@@ -15,6 +15,16 @@ export class U32 {
     }
     this.a[this.n++] = x >>> 0;
   }
+  /** Room for k more words; returns the array to write them into (at n, n + 1, …; the writer
+   * sets n after): a hot loop's writes without a call per word. */
+  reserve(k: number): Uint32Array {
+    if (this.n + k > this.a.length) {
+      const b = new Uint32Array(Math.max(2 * this.a.length, this.n + k));
+      b.set(this.a.subarray(0, this.n));
+      this.a = b;
+    }
+    return this.a;
+  }
   get view(): Uint32Array {
     return this.a.subarray(0, this.n);
   }
